@@ -1,0 +1,146 @@
+#pragma once
+/// Contact definitions as the deck states them: interactions (*SURFACE INTERACTION with
+/// *SURFACE BEHAVIOR and *FRICTION), contact pairs, general contact, smoothing and clearances.
+/// Defaults that depend on the mesh (penalty stiffness, tolerances) are left unset here and
+/// resolved by contact/ (see contact/normal_behavior.hpp), so `inpact check` can show both.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "source_loc.hpp"
+
+namespace inpact::model {
+
+enum class PressureOverclosure : std::uint8_t { Hard, Exponential, Linear, Tabular, Tied };
+
+/// How a hard (or softened) contact constraint is enforced. Default: what Abaqus picks for the
+/// formulation (penalty for finite-sliding surface-to-surface and general contact, else direct).
+enum class EnforcementMethod : std::uint8_t {
+  Default,
+  Direct,
+  PenaltyLinear,
+  PenaltyNonlinear,
+  AugmentedLagrange
+};
+
+/// *SURFACE BEHAVIOR.
+struct SurfaceBehavior {
+  PressureOverclosure pressure_overclosure = PressureOverclosure::Hard;
+  EnforcementMethod method = EnforcementMethod::Default;
+  bool no_separation = false;
+
+  // Hard contact with PENALTY (linear or nonlinear) or AUGMENTED LAGRANGE, data line fields.
+  std::optional<double> penalty_stiffness;  ///< unset: default from the underlying element stiffness
+  double clearance_at_zero_pressure = 0.0;
+  double stiffness_scale_factor = 1.0;
+  // PENALTY=NONLINEAR only; unset fields take Abaqus's defaults (resolved in contact/).
+  std::optional<double> initial_final_stiffness_ratio;
+  std::optional<double> upper_quadratic_limit_scale_factor;
+  std::optional<double> lower_quadratic_limit_ratio;
+
+  // Softened contact.
+  double exponential_c0 = 0.0;  ///< EXPONENTIAL: clearance at which pressure is zero
+  double exponential_p0 = 0.0;  ///< EXPONENTIAL: pressure at zero clearance
+  std::optional<double> linear_slope;  ///< LINEAR: k (CalculiX: k, σ∞, c0 follow)
+  std::optional<double> linear_sigma_inf;  ///< CalculiX LINEAR: tension limit σ∞
+  std::optional<double> linear_c0;         ///< CalculiX LINEAR: c0
+  std::vector<std::array<double, 2>> table;  ///< TABULAR: (pressure, overclosure) pairs
+  std::optional<double> tied_slope;          ///< CalculiX TIED: k
+
+  SourceLoc loc;
+};
+
+/// *FRICTION: isotropic Coulomb friction.
+struct Friction {
+  double mu = 0.0;
+  bool rough = false;     ///< ROUGH: no slip at all
+  bool lagrange = false;  ///< LAGRANGE: stick enforced with multipliers instead of elastic slip
+  std::optional<double> slip_tolerance;  ///< SLIP TOLERANCE (fraction of characteristic length)
+  std::optional<double> elastic_slip;    ///< ELASTIC SLIP (absolute)
+  std::optional<double> stick_slope;     ///< CalculiX: stick slope on the data line
+  SourceLoc loc;
+};
+
+/// *SURFACE INTERACTION with its options.
+struct SurfaceInteraction {
+  std::string name;
+  std::optional<SurfaceBehavior> behavior;  ///< unset: hard contact, default method
+  std::optional<Friction> friction;         ///< unset: frictionless
+  double out_of_plane_thickness = 1.0;      ///< data line (2D): contact area per unit length
+  SourceLoc loc;
+};
+
+enum class ContactDiscretization : std::uint8_t { NodeToSurface, SurfaceToSurface };
+
+/// *CONTACT PAIR data line under its parameters.
+struct ContactPair {
+  std::string slave;   ///< upper-case surface names
+  std::string master;
+  std::string interaction;
+  ContactDiscretization type = ContactDiscretization::NodeToSurface;
+  bool small_sliding = false;
+  /// ADJUST: absent; a distance (slave nodes within it are moved onto the master); or a node set.
+  std::optional<double> adjust_distance;
+  std::string adjust_nset;
+  std::string geometric_correction;  ///< name of a *SURFACE SMOOTHING definition
+  SourceLoc loc;
+};
+
+/// One *SURFACE PROPERTY ASSIGNMENT, PROPERTY=GEOMETRIC CORRECTION data line, or one line of a
+/// *SURFACE SMOOTHING definition.
+struct GeometricCorrection {
+  enum class Kind : std::uint8_t { Circumferential, Spherical, Toroidal } kind;
+  std::string surface;
+  std::array<double, 3> a{0, 0, 0};  ///< axis point (or sphere centre)
+  std::array<double, 3> b{0, 0, 0};  ///< second axis point
+  double radius = 0.0;               ///< TOROIDAL: distance of the arc centre from the axis
+  SourceLoc loc;
+};
+
+struct SurfaceSmoothing {
+  std::string name;
+  std::vector<GeometricCorrection> corrections;
+  SourceLoc loc;
+};
+
+/// *CONTACT with its sub-options (general contact). Empty surface names mean "all exterior".
+struct GeneralContact {
+  struct Inclusion {
+    std::string first, second;  ///< empty first and second: ALL EXTERIOR
+    SourceLoc loc;
+  };
+  struct PropertyAssignment {
+    std::string first, second;  ///< empty: the global assignment
+    std::string interaction;
+    SourceLoc loc;
+  };
+  bool defined = false;
+  std::vector<Inclusion> inclusions;
+  std::vector<Inclusion> exclusions;
+  std::vector<PropertyAssignment> property_assignments;
+  std::vector<GeometricCorrection> geometric_corrections;  ///< *SURFACE PROPERTY ASSIGNMENT
+  SourceLoc loc;
+};
+
+/// *CLEARANCE: initial clearance (or overclosure, negative) for the slave nodes of a pair.
+struct Clearance {
+  std::string slave, master;
+  std::optional<double> value;  ///< VALUE=: for every slave node
+  std::vector<std::pair<std::int32_t, double>> node_values;  ///< data lines: node row, clearance
+  SourceLoc loc;
+};
+
+/// *CONTACT CONTROLS within a step (applies to one pair, or to all when master/slave empty).
+struct ContactControls {
+  std::string master, slave;
+  std::optional<double> absolute_penetration_tolerance;
+  std::optional<double> relative_penetration_tolerance;
+  std::optional<double> stiffness_scale_factor;
+  bool user_adaptive_stiffness = false;  ///< STIFFNESS SCALE FACTOR=USER ADAPTIVE
+  bool reset = false;
+  SourceLoc loc;
+};
+
+}  // namespace inpact::model

@@ -1,0 +1,88 @@
+#include "element_types.hpp"
+
+#include <array>
+#include <cstddef>
+
+namespace inpact::model {
+namespace {
+
+// Face tables as the Abaqus manual numbers them (1-based there, 0-based here):
+// corners in the order that points the normal out of the element, then midside nodes.
+constexpr FaceDef face(std::initializer_list<int> corners, std::initializer_list<int> mids = {}) {
+  FaceDef f;
+  for (int n : corners) f.nodes[f.n_nodes++] = static_cast<std::uint8_t>(n - 1);
+  f.n_corners = f.n_nodes;
+  for (int n : mids) f.nodes[f.n_nodes++] = static_cast<std::uint8_t>(n - 1);
+  return f;
+}
+
+constexpr std::array<FaceDef, 6> kHex8 = {face({1, 2, 3, 4}), face({5, 8, 7, 6}), face({1, 5, 6, 2}),
+                                          face({2, 6, 7, 3}), face({3, 7, 8, 4}), face({4, 8, 5, 1})};
+constexpr std::array<FaceDef, 6> kHex20 = {
+    face({1, 2, 3, 4}, {9, 10, 11, 12}),  face({5, 8, 7, 6}, {16, 15, 14, 13}),
+    face({1, 5, 6, 2}, {17, 13, 18, 9}),  face({2, 6, 7, 3}, {18, 14, 19, 10}),
+    face({3, 7, 8, 4}, {19, 15, 20, 11}), face({4, 8, 5, 1}, {20, 16, 17, 12})};
+constexpr std::array<FaceDef, 4> kTet4 = {face({1, 2, 3}), face({1, 4, 2}), face({2, 4, 3}),
+                                          face({3, 4, 1})};
+constexpr std::array<FaceDef, 4> kTet10 = {face({1, 2, 3}, {5, 6, 7}), face({1, 4, 2}, {8, 9, 5}),
+                                           face({2, 4, 3}, {9, 10, 6}), face({3, 4, 1}, {10, 8, 7})};
+constexpr std::array<FaceDef, 5> kWedge6 = {face({1, 2, 3}), face({4, 6, 5}), face({1, 4, 5, 2}),
+                                            face({2, 5, 6, 3}), face({3, 6, 4, 1})};
+constexpr std::array<FaceDef, 4> kQuad4 = {face({1, 2}), face({2, 3}), face({3, 4}), face({4, 1})};
+constexpr std::array<FaceDef, 4> kQuad8 = {face({1, 2}, {5}), face({2, 3}, {6}), face({3, 4}, {7}),
+                                           face({4, 1}, {8})};
+constexpr std::array<FaceDef, 3> kTri3 = {face({1, 2}), face({2, 3}), face({3, 1})};
+constexpr std::array<FaceDef, 3> kTri6 = {face({1, 2}, {4}), face({2, 3}, {5}), face({3, 1}, {6})};
+
+using F = ElementFamily;
+using I = Integration;
+
+constexpr ElementTypeInfo kTypes[] = {
+    {"C3D8", F::Solid3D, I::Full, 3, 8, 1, kHex8},
+    {"C3D8R", F::Solid3D, I::Reduced, 3, 8, 1, kHex8},
+    {"C3D8I", F::Solid3D, I::IncompatibleModes, 3, 8, 1, kHex8},
+    {"C3D20", F::Solid3D, I::Full, 3, 20, 2, kHex20},
+    {"C3D20R", F::Solid3D, I::Reduced, 3, 20, 2, kHex20},
+    {"C3D4", F::Solid3D, I::Full, 3, 4, 1, kTet4},
+    {"C3D10", F::Solid3D, I::Full, 3, 10, 2, kTet10},
+    {"C3D6", F::Solid3D, I::Full, 3, 6, 1, kWedge6},
+    {"CPE4", F::PlaneStrain, I::Full, 2, 4, 1, kQuad4},
+    {"CPE4R", F::PlaneStrain, I::Reduced, 2, 4, 1, kQuad4},
+    {"CPE4I", F::PlaneStrain, I::IncompatibleModes, 2, 4, 1, kQuad4},
+    {"CPE8", F::PlaneStrain, I::Full, 2, 8, 2, kQuad8},
+    {"CPE8R", F::PlaneStrain, I::Reduced, 2, 8, 2, kQuad8},
+    {"CPE3", F::PlaneStrain, I::Full, 2, 3, 1, kTri3},
+    {"CPE6", F::PlaneStrain, I::Full, 2, 6, 2, kTri6},
+    {"CPS4", F::PlaneStress, I::Full, 2, 4, 1, kQuad4},
+    {"CPS4R", F::PlaneStress, I::Reduced, 2, 4, 1, kQuad4},
+    {"CPS4I", F::PlaneStress, I::IncompatibleModes, 2, 4, 1, kQuad4},
+    {"CPS8", F::PlaneStress, I::Full, 2, 8, 2, kQuad8},
+    {"CPS8R", F::PlaneStress, I::Reduced, 2, 8, 2, kQuad8},
+    {"CPS3", F::PlaneStress, I::Full, 2, 3, 1, kTri3},
+    {"CPS6", F::PlaneStress, I::Full, 2, 6, 2, kTri6},
+    {"CAX4", F::Axisymmetric, I::Full, 2, 4, 1, kQuad4},
+    {"CAX4R", F::Axisymmetric, I::Reduced, 2, 4, 1, kQuad4},
+    {"CAX4I", F::Axisymmetric, I::IncompatibleModes, 2, 4, 1, kQuad4},
+    {"CAX8", F::Axisymmetric, I::Full, 2, 8, 2, kQuad8},
+    {"CAX8R", F::Axisymmetric, I::Reduced, 2, 8, 2, kQuad8},
+    {"CAX3", F::Axisymmetric, I::Full, 2, 3, 1, kTri3},
+    {"CAX6", F::Axisymmetric, I::Full, 2, 6, 2, kTri6},
+};
+
+}  // namespace
+
+const ElementTypeInfo* find_element_type(std::string_view upper_name) {
+  for (const auto& t : kTypes)
+    if (t.name == upper_name) return &t;
+  return nullptr;
+}
+
+std::span<const ElementTypeInfo> element_types() { return kTypes; }
+
+const ElementTypeInfo& element_type(std::uint8_t index) { return kTypes[index]; }
+
+std::uint8_t element_type_index(const ElementTypeInfo& info) {
+  return static_cast<std::uint8_t>(&info - kTypes);
+}
+
+}  // namespace inpact::model

@@ -1,0 +1,47 @@
+#pragma once
+/// The element types inpact knows: node counts, dimension and the Abaqus face numbering
+/// (S1..S6 for solids, edges S1..S4 for 2D elements), used by surfaces and loads.
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace inpact::model {
+
+enum class ElementFamily : std::uint8_t {
+  Solid3D,      ///< C3D*
+  PlaneStrain,  ///< CPE*
+  PlaneStress,  ///< CPS*
+  Axisymmetric  ///< CAX*
+};
+
+enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
+
+/// A face of an element: its corner nodes first, then midside nodes, as local indices (0-based),
+/// in the Abaqus manual's order. For solids that order turns INTO the element by the right-hand
+/// rule (outward normal = -(x1-x0)×(x_last-x0)); for 2D elements the outward normal is the edge
+/// direction rotated clockwise. tests/model/test_element_types.cpp pins both.
+struct FaceDef {
+  std::uint8_t n_nodes = 0;
+  std::uint8_t n_corners = 0;
+  std::uint8_t nodes[8] = {};
+};
+
+struct ElementTypeInfo {
+  std::string_view name;     ///< Abaqus name, upper case
+  ElementFamily family;
+  Integration integration;
+  std::uint8_t dim;          ///< 2 or 3 (coordinates used)
+  std::uint8_t n_nodes;
+  std::uint8_t order;        ///< 1 or 2
+  std::span<const FaceDef> faces;  ///< faces[0] is S1
+};
+
+/// The type with this (upper-case) name, or nullptr when inpact does not support it.
+const ElementTypeInfo* find_element_type(std::string_view upper_name);
+/// Every supported type, for listing in error messages.
+std::span<const ElementTypeInfo> element_types();
+/// Type by its index in element_types() (what Elements::type stores).
+const ElementTypeInfo& element_type(std::uint8_t index);
+std::uint8_t element_type_index(const ElementTypeInfo& info);
+
+}  // namespace inpact::model

@@ -1,0 +1,109 @@
+#pragma once
+/// Boundary conditions, loads, amplitudes, constraints and initial conditions.
+/// Targets are resolved to rows by the parser; `target` keeps the text as written for reports.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "source_loc.hpp"
+
+namespace inpact::model {
+
+/// OP= on history keywords: MOD keeps earlier definitions and changes the named ones,
+/// NEW removes every earlier definition of this kind first.
+enum class Op : std::uint8_t { Mod, New };
+
+/// One data line of *BOUNDARY: DOFs first..last of the nodes set to `value`
+/// (type names such as ENCASTRE are expanded by the parser into DOF ranges with value 0).
+struct BoundaryEntry {
+  std::string target;
+  std::vector<std::int32_t> nodes;
+  int first_dof = 1;
+  int last_dof = 1;
+  double value = 0.0;
+  SourceLoc loc;
+};
+
+struct BoundaryBlock {
+  Op op = Op::Mod;
+  std::string amplitude;  ///< upper-case name; empty = the step's default
+  bool fixed = false;     ///< FIXED: hold the displacement at the start of the step
+  std::vector<BoundaryEntry> entries;
+  SourceLoc loc;
+};
+
+/// *CLOAD: a concentrated force (DOF 1..3) or moment on nodes.
+struct CloadEntry {
+  std::string target;
+  std::vector<std::int32_t> nodes;
+  int dof = 1;
+  double magnitude = 0.0;
+  SourceLoc loc;
+};
+
+struct CloadBlock {
+  Op op = Op::Mod;
+  std::string amplitude;
+  std::vector<CloadEntry> entries;
+  SourceLoc loc;
+};
+
+/// *DLOAD / *DSLOAD: pressure on element faces, or a body force per volume on elements.
+struct DloadEntry {
+  enum class Kind : std::uint8_t {
+    Pressure,  ///< P (2D: on the element's faces given by `face`) / Pn on face n
+    Gravity,   ///< GRAV: magnitude × direction × density
+    BodyForce  ///< BX, BY, BZ: force per unit volume in one direction
+  };
+  Kind kind = Kind::Pressure;
+  std::string target;
+  std::vector<std::int32_t> elements;  ///< rows
+  std::vector<std::uint8_t> faces;     ///< Pressure: face per element (0 = S1)
+  double magnitude = 0.0;
+  std::array<double, 3> direction{0, 0, 0};  ///< Gravity; BodyForce (unit axis)
+  SourceLoc loc;
+};
+
+struct DloadBlock {
+  Op op = Op::Mod;
+  std::string amplitude;
+  std::vector<DloadEntry> entries;
+  SourceLoc loc;
+};
+
+/// *TEMPERATURE in a step, or *INITIAL CONDITIONS, TYPE=TEMPERATURE: nodal temperatures.
+struct TemperatureEntry {
+  std::string target;
+  std::vector<std::int32_t> nodes;
+  double value = 0.0;
+  SourceLoc loc;
+};
+
+struct TemperatureBlock {
+  Op op = Op::Mod;
+  std::string amplitude;
+  std::vector<TemperatureEntry> entries;
+  SourceLoc loc;
+};
+
+/// *AMPLITUDE, DEFINITION=TABULAR: piecewise linear in step or total time.
+struct Amplitude {
+  std::string name;
+  enum class Time : std::uint8_t { Step, Total } time = Time::Step;
+  std::vector<std::array<double, 2>> points;  ///< (time, value), times non-decreasing
+  SourceLoc loc;
+};
+
+/// *EQUATION: Σ coefficient · u(node, dof) = 0; the first term's DOF is the one eliminated.
+struct Equation {
+  struct Term {
+    std::int32_t node;
+    int dof;
+    double coefficient;
+  };
+  std::vector<Term> terms;
+  SourceLoc loc;
+};
+
+}  // namespace inpact::model

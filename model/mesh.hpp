@@ -1,0 +1,86 @@
+#pragma once
+/// Nodes, elements, sets and surfaces: the geometric part of the model database.
+/// Rows are 0-based positions in these arrays; labels are the user's numbers. A label is unique
+/// only within its instance (Abaqus parts/instances), so every lookup takes both.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "label_map.hpp"
+#include "source_loc.hpp"
+
+namespace inpact::model {
+
+struct Nodes {
+  std::vector<std::int64_t> labels;
+  std::vector<std::array<double, 3>> coords;
+  std::vector<std::int32_t> instance;  ///< index into Model::instances
+  LabelMap index;                      ///< (instance, label) → row
+
+  std::size_t size() const { return labels.size(); }
+};
+
+/// All elements of all types in one compressed-row table; `type` indexes element_types().
+struct Elements {
+  std::vector<std::uint8_t> type;
+  std::vector<std::int64_t> labels;
+  std::vector<std::int32_t> instance;
+  std::vector<std::int64_t> offsets{0};  ///< connectivity of row e: conn[offsets[e] .. offsets[e+1])
+  std::vector<std::int32_t> conn;        ///< node rows
+  std::vector<SourceLoc> loc;            ///< the data line that defined the element
+  LabelMap index;
+
+  std::size_t size() const { return labels.size(); }
+  std::span<const std::int32_t> nodes_of(std::size_t e) const {
+    return {conn.data() + offsets[e], static_cast<std::size_t>(offsets[e + 1] - offsets[e])};
+  }
+};
+
+/// A node or element set: sorted, unique rows.
+struct Set {
+  std::string name;  ///< as written (upper-case key in the map)
+  std::vector<std::int32_t> rows;
+  bool internal = false;
+  SourceLoc loc;
+};
+
+/// One face of a solid or one edge of a 2D element: face 0 = S1.
+struct Face {
+  std::int32_t element;
+  std::uint8_t face;
+  bool operator==(const Face&) const = default;
+};
+
+struct Surface {
+  enum class Kind : std::uint8_t { Element, Node };
+  std::string name;
+  Kind kind = Kind::Element;
+  std::vector<Face> faces;          ///< Kind::Element
+  std::vector<std::int32_t> nodes;  ///< Kind::Node (rows)
+  std::vector<double> node_areas;   ///< Kind::Node: area per node (1.0 when not given)
+  SourceLoc loc;
+};
+
+/// *SOLID SECTION: which material the elements of an element set are made of.
+struct SolidSection {
+  std::string elset;     ///< upper-case set name
+  std::string material;  ///< upper-case material name
+  double thickness = 1.0;  ///< plane elements: out-of-plane thickness (Abaqus default 1)
+  std::string orientation;
+  SourceLoc loc;
+};
+
+/// Everything a *PART holds; also the model's own mesh (parts are merged into it per instance).
+struct Mesh {
+  Nodes nodes;
+  Elements elements;
+  std::map<std::string, Set> nsets;  ///< key: upper-case name ("INST.NAME" for instance sets)
+  std::map<std::string, Set> elsets;
+  std::map<std::string, Surface> surfaces;
+  std::vector<SolidSection> sections;
+};
+
+}  // namespace inpact::model

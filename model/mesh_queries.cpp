@@ -1,0 +1,67 @@
+#include "mesh_queries.hpp"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+
+#include "element_types.hpp"
+
+namespace inpact::model {
+
+std::vector<std::int32_t> face_nodes(const Elements& elements, Face face) {
+  const ElementTypeInfo& info = element_type(elements.type[face.element]);
+  const FaceDef& def = info.faces[face.face];
+  auto nodes = elements.nodes_of(face.element);
+  std::vector<std::int32_t> out(def.n_nodes);
+  for (int i = 0; i < def.n_nodes; ++i) out[i] = nodes[def.nodes[i]];
+  return out;
+}
+
+namespace {
+
+/// A face keyed by its sorted corner nodes (up to 4), so that the two elements sharing it agree.
+struct FaceKey {
+  std::array<std::int32_t, 4> n{-1, -1, -1, -1};
+  bool operator==(const FaceKey&) const = default;
+};
+
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (auto v : k.n) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+
+FaceKey key_of(const Elements& elements, Face face) {
+  const FaceDef& def = element_type(elements.type[face.element]).faces[face.face];
+  auto nodes = elements.nodes_of(face.element);
+  FaceKey k;
+  for (int i = 0; i < def.n_corners; ++i) k.n[i] = nodes[def.nodes[i]];
+  std::sort(k.n.begin(), k.n.begin() + def.n_corners);
+  return k;
+}
+
+}  // namespace
+
+std::vector<Face> exterior_faces(const Elements& elements, std::span<const std::int32_t> subset) {
+  // Count how often each face occurs over the whole mesh; a face seen once is exterior.
+  std::unordered_map<FaceKey, int, FaceKeyHash> count;
+  count.reserve(elements.size() * 4);
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto& info = element_type(elements.type[e]);
+    for (std::size_t f = 0; f < info.faces.size(); ++f)
+      ++count[key_of(elements, {static_cast<std::int32_t>(e), static_cast<std::uint8_t>(f)})];
+  }
+  std::vector<Face> out;
+  for (std::int32_t e : subset) {
+    const auto& info = element_type(elements.type[e]);
+    for (std::size_t f = 0; f < info.faces.size(); ++f) {
+      Face face{e, static_cast<std::uint8_t>(f)};
+      if (count[key_of(elements, face)] == 1) out.push_back(face);
+    }
+  }
+  return out;
+}
+
+}  // namespace inpact::model

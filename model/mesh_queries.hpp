@@ -1,0 +1,19 @@
+#pragma once
+/// Questions asked of a mesh by more than one folder: face nodes and exterior faces.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mesh.hpp"
+
+namespace inpact::model {
+
+/// Node rows of one face (corners first, then midside nodes).
+std::vector<std::int32_t> face_nodes(const Elements& elements, Face face);
+
+/// Faces of `subset` (element rows) not shared with any element of the whole mesh, matched by
+/// their corner nodes: the free surface Abaqus builds for a surface defined by an element set
+/// without face identifiers, and for ALL EXTERIOR general contact.
+std::vector<Face> exterior_faces(const Elements& elements, std::span<const std::int32_t> subset);
+
+}  // namespace inpact::model

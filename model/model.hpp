@@ -1,0 +1,45 @@
+#pragma once
+/// The model database: plain data filled by parser/ once, then read-only (const Model&).
+/// Everything that changes during an analysis lives in the solver's own state.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "contact.hpp"
+#include "element_types.hpp"
+#include "loads.hpp"
+#include "material.hpp"
+#include "mesh.hpp"
+#include "source_loc.hpp"
+#include "step.hpp"
+
+namespace inpact::model {
+
+struct Model {
+  SourceTable sources;
+  std::string heading;
+
+  /// Abaqus instance names; instances[0] is "" (the deck without parts, or the assembly's own
+  /// nodes). Node and element rows carry their instance index.
+  std::vector<std::string> instances{""};
+  Mesh mesh;
+
+  std::map<std::string, Material> materials;  ///< key: upper-case name
+  std::map<std::string, Amplitude> amplitudes;
+  std::vector<Equation> equations;
+
+  // Initial (model-level) conditions, in force from the first step on.
+  std::vector<BoundaryBlock> boundaries;
+  std::vector<TemperatureEntry> initial_temperatures;
+
+  // Contact.
+  std::map<std::string, SurfaceInteraction> interactions;
+  std::vector<ContactPair> contact_pairs;
+  GeneralContact general_contact;
+  std::map<std::string, SurfaceSmoothing> surface_smoothings;
+  std::vector<Clearance> clearances;
+
+  std::vector<Step> steps;
+};
+
+}  // namespace inpact::model

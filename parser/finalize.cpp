@@ -1,0 +1,154 @@
+#include "finalize.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "text.hpp"
+
+namespace inpact::parser {
+
+void resolve_pending_nodes(MeshBuild& build, Diagnostics& diags) {
+  auto& conn = build.mesh.elements.conn;
+  for (const PendingNode& p : build.pending) {
+    if (auto row = build.mesh.nodes.index.find(p.instance, p.label))
+      conn[p.conn_index] = *row;
+    else
+      diags.error(p.loc, "*ELEMENT", fmt::format("node {} is not defined", p.label));
+  }
+  build.pending.clear();
+}
+
+namespace {
+
+template <class Map>
+std::vector<std::string> keys(const Map& m) {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : m) out.push_back(k);
+  return out;
+}
+
+template <class Map>
+bool check_defined(Diagnostics& diags, const Map& map, const std::string& name, model::SourceLoc loc,
+                   const char* keyword, const char* what) {
+  if (map.count(name)) return true;
+  const std::string guess = did_you_mean(name, keys(map));
+  diags.error(loc, keyword, fmt::format("{} '{}' is not defined{}", what, name,
+                                        guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
+  return false;
+}
+
+void check_scopes_closed(BuildState& s, Diagnostics& diags) {
+  if (s.instance) diags.error(s.instance->loc, "*INSTANCE", "missing *END INSTANCE");
+  else if (s.part) diags.error(s.part->loc, "*PART", "missing *END PART");
+  if (s.scope == kAssemblyScope) diags.error({0, 0, 0}, "*ASSEMBLY", "missing *END ASSEMBLY before the end of the deck");
+  if (s.step) diags.error(s.step->loc, "*STEP", fmt::format("step '{}' has no *END STEP", s.step->name));
+}
+
+void check_sections(model::Model& m, Diagnostics& diags) {
+  std::vector<std::uint8_t> has_section(m.mesh.elements.size(), 0);
+  for (const auto& sec : m.mesh.sections) {
+    const bool elset_ok = check_defined(diags, m.mesh.elsets, sec.elset, sec.loc, "*SOLID SECTION", "element set");
+    if (check_defined(diags, m.materials, sec.material, sec.loc, "*SOLID SECTION", "material")) {
+      const model::Material& mat = m.materials.at(sec.material);
+      if (!mat.elastic)
+        diags.error(mat.loc, "*MATERIAL", fmt::format("material '{}' has no *ELASTIC definition, which a static analysis needs", mat.name));
+    }
+    if (!elset_ok) continue;
+    for (auto e : m.mesh.elsets.at(sec.elset).rows) {
+      if (has_section[e]) {
+        diags.error(sec.loc, "*SOLID SECTION", fmt::format("element {} already has a section", m.mesh.elements.labels[e]));
+        break;
+      }
+      has_section[e] = 1;
+    }
+  }
+  // Elements without a section cannot be analysed: report the first few by their own line.
+  int reported = 0;
+  std::size_t missing = 0;
+  for (std::size_t e = 0; e < has_section.size(); ++e) {
+    if (has_section[e]) continue;
+    ++missing;
+    if (reported < 3) {
+      diags.error(m.mesh.elements.loc[e], "*ELEMENT",
+                  fmt::format("element {} has no section (assign one with *SOLID SECTION)", m.mesh.elements.labels[e]));
+      ++reported;
+    }
+  }
+  if (missing > 3)
+    diags.error({0, 0, 0}, "*SOLID SECTION", fmt::format("{} elements in all have no section", missing));
+}
+
+void check_surface(const model::Model& m, Diagnostics& diags, const std::string& name, model::SourceLoc loc,
+                   const char* keyword) {
+  if (!name.empty()) check_defined(diags, m.mesh.surfaces, name, loc, keyword, "surface");
+}
+
+void check_contact(model::Model& m, Diagnostics& diags) {
+  auto check_pair = [&](const model::ContactPair& p) {
+    check_surface(m, diags, p.slave, p.loc, "*CONTACT PAIR");
+    check_surface(m, diags, p.master, p.loc, "*CONTACT PAIR");
+    check_defined(diags, m.interactions, p.interaction, p.loc, "*CONTACT PAIR", "surface interaction");
+    if (!p.geometric_correction.empty())
+      check_defined(diags, m.surface_smoothings, p.geometric_correction, p.loc, "*CONTACT PAIR",
+                    "surface smoothing");
+  };
+  for (const auto& p : m.contact_pairs) check_pair(p);
+  for (const auto& step : m.steps)
+    for (const auto& p : step.contact_pairs) check_pair(p);
+  const auto& gc = m.general_contact;
+  for (const auto& inc : gc.inclusions) {
+    check_surface(m, diags, inc.first, inc.loc, "*CONTACT INCLUSIONS");
+    check_surface(m, diags, inc.second, inc.loc, "*CONTACT INCLUSIONS");
+  }
+  for (const auto& inc : gc.exclusions) {
+    check_surface(m, diags, inc.first, inc.loc, "*CONTACT EXCLUSIONS");
+    check_surface(m, diags, inc.second, inc.loc, "*CONTACT EXCLUSIONS");
+  }
+  for (const auto& pa : gc.property_assignments) {
+    check_surface(m, diags, pa.first, pa.loc, "*CONTACT PROPERTY ASSIGNMENT");
+    check_surface(m, diags, pa.second, pa.loc, "*CONTACT PROPERTY ASSIGNMENT");
+    check_defined(diags, m.interactions, pa.interaction, pa.loc, "*CONTACT PROPERTY ASSIGNMENT", "surface interaction");
+  }
+  for (const auto& gcorr : gc.geometric_corrections)
+    check_surface(m, diags, gcorr.surface, gcorr.loc, "*SURFACE PROPERTY ASSIGNMENT");
+  for (const auto& [name, sm] : m.surface_smoothings)
+    for (const auto& c : sm.corrections) check_surface(m, diags, c.surface, c.loc, "*SURFACE SMOOTHING");
+  for (const auto& c : m.clearances) {
+    check_surface(m, diags, c.slave, c.loc, "*CLEARANCE");
+    check_surface(m, diags, c.master, c.loc, "*CLEARANCE");
+  }
+}
+
+void check_amplitude(const model::Model& m, Diagnostics& diags, const std::string& name, model::SourceLoc loc,
+                     const char* keyword) {
+  if (!name.empty()) check_defined(diags, m.amplitudes, name, loc, keyword, "amplitude");
+}
+
+void check_steps(model::Model& m, Diagnostics& diags) {
+  for (const auto& b : m.boundaries) check_amplitude(m, diags, b.amplitude, b.loc, "*BOUNDARY");
+  for (const auto& step : m.steps) {
+    if (!step.static_procedure)
+      diags.error(step.loc, "*STEP", fmt::format("step '{}' has no procedure (expected *STATIC)", step.name));
+    for (const auto& b : step.boundaries) check_amplitude(m, diags, b.amplitude, b.loc, "*BOUNDARY");
+    for (const auto& b : step.cloads) check_amplitude(m, diags, b.amplitude, b.loc, "*CLOAD");
+    for (const auto& b : step.dloads) check_amplitude(m, diags, b.amplitude, b.loc, "*DLOAD");
+    for (const auto& b : step.temperatures) check_amplitude(m, diags, b.amplitude, b.loc, "*TEMPERATURE");
+  }
+}
+
+}  // namespace
+
+void finalize_model(BuildState& state, Diagnostics& diags) {
+  check_scopes_closed(state, diags);
+  resolve_pending_nodes(state.model_mesh, diags);
+  state.model.mesh = std::move(state.model_mesh.mesh);
+  model::Model& m = state.model;
+  if (m.mesh.elements.size() == 0 && !diags.has_errors())
+    diags.error({0, 0, 0}, "*ELEMENT", "the model has no elements");
+  check_sections(m, diags);
+  check_contact(m, diags);
+  check_steps(m, diags);
+}
+
+}  // namespace inpact::parser

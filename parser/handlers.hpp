@@ -1,0 +1,18 @@
+#pragma once
+/// The keyword groups; each function appends its keywords' specs to the table.
+/// keyword_table.cpp calls them all, in one place.
+#include <vector>
+
+#include "keyword_spec.hpp"
+
+namespace inpact::parser {
+
+void add_mesh_keywords(std::vector<KeywordSpec>& table);      // kw_mesh.cpp
+void add_assembly_keywords(std::vector<KeywordSpec>& table);  // kw_assembly.cpp
+void add_material_keywords(std::vector<KeywordSpec>& table);  // kw_material.cpp
+void add_load_keywords(std::vector<KeywordSpec>& table);      // kw_loads.cpp
+void add_step_keywords(std::vector<KeywordSpec>& table);      // kw_step.cpp
+void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
+void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
+
+}  // namespace inpact::parser

@@ -1,0 +1,151 @@
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "keyword_spec.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+const KeywordParam* KeywordContext::param(std::string_view canonical) const {
+  const std::string key = normalize_name(canonical);
+  for (const auto& p : keyword.params)
+    if (p.name == key) return &p;
+  return nullptr;
+}
+
+std::string KeywordContext::name_value(std::string_view canonical) const {
+  const KeywordParam* p = param(canonical);
+  return p && p->value ? normalize_label(*p->value) : std::string();
+}
+
+std::string KeywordContext::choice_value(std::string_view canonical) const {
+  const KeywordParam* p = param(canonical);
+  return p && p->value ? normalize_name(*p->value) : std::string();
+}
+
+std::optional<double> KeywordContext::real_value(std::string_view canonical) const {
+  const KeywordParam* p = param(canonical);
+  if (!p || !p->value) return std::nullopt;
+  return parse_real(*p->value);
+}
+
+std::optional<std::int64_t> KeywordContext::int_value(std::string_view canonical) const {
+  const KeywordParam* p = param(canonical);
+  if (!p || !p->value) return std::nullopt;
+  return parse_int(*p->value);
+}
+
+void KeywordContext::error(model::SourceLoc loc, std::string message) {
+  diags.error(loc, kw(), std::move(message));
+}
+
+void KeywordContext::warning(model::SourceLoc loc, std::string message) {
+  diags.warning(loc, kw(), std::move(message));
+}
+
+void KeywordContext::error_param(std::string_view canonical, std::string message) {
+  const KeywordParam* p = param(canonical);
+  error(p ? (p->value ? p->value_loc : p->loc) : keyword.loc, std::move(message));
+}
+
+std::optional<double> KeywordContext::real(const Field& f, std::string_view what) {
+  auto v = parse_real(f.text);
+  if (!v)
+    error(f.loc, f.text.empty() ? fmt::format("{} is missing: expected a number", what)
+                                : fmt::format("{}: expected a number, found '{}'", what, f.text));
+  return v;
+}
+
+std::optional<std::int64_t> KeywordContext::integer(const Field& f, std::string_view what) {
+  auto v = parse_int(f.text);
+  if (!v)
+    error(f.loc, f.text.empty() ? fmt::format("{} is missing: expected an integer", what)
+                                : fmt::format("{}: expected an integer, found '{}'", what, f.text));
+  return v;
+}
+
+bool KeywordContext::check_count(const std::vector<Field>& fields, const Line& line,
+                                 std::size_t min, std::size_t max, std::string_view layout) {
+  if (fields.size() >= min && fields.size() <= max) return true;
+  const std::string expected = min == max ? fmt::format("{}", min)
+                               : max == SIZE_MAX ? fmt::format("at least {}", min)
+                                                 : fmt::format("{} to {}", min, max);
+  error(fields.empty() ? line.loc : fields.back().loc,
+        fmt::format("data line has {} field{}, expected {} ({})", fields.size(),
+                    fields.size() == 1 ? "" : "s", expected, layout));
+  return false;
+}
+
+std::optional<int> KeywordContext::dof(const Field& f, int max) {
+  auto v = integer(f, "degree of freedom");
+  if (!v) return std::nullopt;
+  if (*v < 1 || *v > max) {
+    error(f.loc, fmt::format("degree of freedom {} is out of range 1..{}", *v, max));
+    return std::nullopt;
+  }
+  return static_cast<int>(*v);
+}
+
+namespace {
+
+/// Splits `Instance.label` into instance index and label when the text has that form.
+std::optional<std::pair<std::int32_t, std::int64_t>> instance_label(const model::Model& m,
+                                                                     std::string_view text) {
+  const std::size_t dot = text.rfind('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  auto label = parse_int(text.substr(dot + 1));
+  if (!label) return std::nullopt;
+  const std::string inst = normalize_label(text.substr(0, dot));
+  for (std::size_t i = 1; i < m.instances.size(); ++i)
+    if (normalize_label(m.instances[i]) == inst)
+      return std::make_pair(static_cast<std::int32_t>(i), *label);
+  return std::nullopt;
+}
+
+template <class Lookup>
+std::optional<std::vector<std::int32_t>> resolve(KeywordContext& ctx, const Field& f,
+                                                  const std::map<std::string, model::Set>& sets,
+                                                  const model::LabelMap& index, const char* what,
+                                                  Lookup&& names) {
+  if (f.text.empty()) {
+    ctx.error(f.loc, fmt::format("{} label or set name is missing", what));
+    return std::nullopt;
+  }
+  if (auto label = parse_int(f.text)) {
+    if (auto row = index.find(ctx.label_instance, *label)) return std::vector<std::int32_t>{*row};
+    ctx.error(f.loc, fmt::format("{} {} is not defined", what, *label));
+    return std::nullopt;
+  }
+  const std::string key = normalize_label(f.text);
+  if (auto it = sets.find(key); it != sets.end()) return it->second.rows;
+  if (auto il = instance_label(ctx.model(), f.text)) {
+    if (auto row = index.find(il->first, il->second)) return std::vector<std::int32_t>{*row};
+    ctx.error(f.loc, fmt::format("{} {} is not defined", what, f.text));
+    return std::nullopt;
+  }
+  const std::string guess = did_you_mean(key, names());
+  ctx.error(f.loc, fmt::format("{} set '{}' is not defined{}", what, f.text,
+                               guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
+  return std::nullopt;
+}
+
+std::vector<std::string> keys_of(const std::map<std::string, model::Set>& sets) {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : sets) out.push_back(k);
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::vector<std::int32_t>> KeywordContext::nodes(const Field& f) {
+  const auto& sets = mesh().nsets;
+  return resolve(*this, f, sets, mesh().nodes.index, "node", [&] { return keys_of(sets); });
+}
+
+std::optional<std::vector<std::int32_t>> KeywordContext::elements(const Field& f) {
+  const auto& sets = mesh().elsets;
+  return resolve(*this, f, sets, mesh().elements.index, "element", [&] { return keys_of(sets); });
+}
+
+}  // namespace inpact::parser

@@ -1,0 +1,108 @@
+#pragma once
+/// The contract between the reader and the keyword handlers: each keyword declares its
+/// parameters (spelling, value type, choices, required), where it may appear and whether it
+/// takes data lines; the reader checks all of that before the handler runs, so handlers only
+/// interpret. The one table of keywords is in keyword_table.cpp.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "build_state.hpp"
+#include "diagnostics.hpp"
+#include "keyword_line.hpp"
+
+namespace inpact::parser {
+
+enum class ValueKind : std::uint8_t {
+  None,      ///< a bare flag: `NLGEOM`
+  Required,  ///< `NAME=value`
+  Optional   ///< either: `PENALTY` or `PENALTY=NONLINEAR`
+};
+
+enum class ValueType : std::uint8_t {
+  Text,         ///< anything (names, file paths)
+  Int,
+  Real,
+  Choice,       ///< one of `choices` (compared without case and blanks)
+  RealOrChoice  ///< a number or one of `choices` (`STIFFNESS SCALE FACTOR=USER ADAPTIVE`)
+};
+
+struct ParamSpec {
+  std::string_view name;  ///< canonical spelling, e.g. "PRESSURE-OVERCLOSURE"
+  ValueKind value = ValueKind::None;
+  ValueType type = ValueType::Text;
+  std::vector<std::string_view> choices = {};
+  bool required = false;
+};
+
+enum class DataLines : std::uint8_t { None, Optional, Required };
+
+struct KeywordContext;
+using Handler = void (*)(KeywordContext&);
+
+struct KeywordSpec {
+  std::string_view name;  ///< canonical spelling with the star: "*SURFACE BEHAVIOR"
+  unsigned scopes = kAnyScope;
+  std::vector<ParamSpec> params;
+  DataLines data = DataLines::None;
+  Handler handler = nullptr;
+  /// Non-empty: a sub-option that must follow one of these parent keywords (or its siblings).
+  std::vector<std::string_view> parents = {};
+  /// True for keywords whose data may come from a file (`INPUT=`).
+  bool input_file = false;
+};
+
+/// The table: every keyword inpact understands.
+std::span<const KeywordSpec> keyword_table();
+/// Abaqus keywords that inpact knows but cannot honour yet (a clear error, not "unknown").
+bool is_unsupported_abaqus_keyword(std::string_view normalized_name);
+
+/// What a handler gets: its keyword line (checked), its data lines, the model and diagnostics.
+struct KeywordContext {
+  const KeywordSpec& spec;
+  const KeywordLine& keyword;
+  std::span<const Line> data;
+  BuildState& state;
+  Diagnostics& diags;
+  /// The instance plain labels in data lines refer to (INSTANCE= on *NSET/*ELSET; else 0).
+  std::int32_t label_instance = 0;
+
+  model::Model& model() { return state.model; }
+  model::Mesh& mesh() { return state.mesh(); }
+  const std::string kw() const { return std::string(spec.name); }
+
+  // --- parameters (already validated against the spec) ---
+  const KeywordParam* param(std::string_view canonical) const;
+  bool has(std::string_view canonical) const { return param(canonical) != nullptr; }
+  /// Upper-case name value ("" when absent).
+  std::string name_value(std::string_view canonical) const;
+  /// The normalized choice ("NODETOSURFACE"), "" when absent or a bare flag.
+  std::string choice_value(std::string_view canonical) const;
+  std::optional<double> real_value(std::string_view canonical) const;
+  std::optional<std::int64_t> int_value(std::string_view canonical) const;
+
+  // --- diagnostics, prefixed with the keyword ---
+  void error(model::SourceLoc loc, std::string message);
+  void warning(model::SourceLoc loc, std::string message);
+  void error_param(std::string_view canonical, std::string message);
+
+  // --- data fields; each conversion reports its own error and returns nullopt ---
+  std::optional<double> real(const Field& f, std::string_view what);
+  std::optional<std::int64_t> integer(const Field& f, std::string_view what);
+  /// Checks the field count of a data line: `layout` says what was expected.
+  bool check_count(const std::vector<Field>& fields, const Line& line, std::size_t min,
+                   std::size_t max, std::string_view layout);
+  /// A 1-based DOF number in [1, max].
+  std::optional<int> dof(const Field& f, int max = 6);
+
+  // --- references in data lines ---
+  /// A node label (`12`), an instance node (`Part-1-1.12`) or a node set name → node rows.
+  std::optional<std::vector<std::int32_t>> nodes(const Field& f);
+  /// Same for elements and element sets.
+  std::optional<std::vector<std::int32_t>> elements(const Field& f);
+};
+
+}  // namespace inpact::parser

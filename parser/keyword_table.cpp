@@ -1,0 +1,40 @@
+/// The one table of keywords inpact understands, built from the keyword groups in order.
+#include <algorithm>
+#include <iterator>
+
+#include "handlers.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+std::span<const KeywordSpec> keyword_table() {
+  static const std::vector<KeywordSpec> table = [] {
+    std::vector<KeywordSpec> t;
+    add_mesh_keywords(t);
+    add_assembly_keywords(t);
+    add_material_keywords(t);
+    add_load_keywords(t);
+    add_step_keywords(t);
+    add_output_keywords(t);
+    add_contact_keywords(t);
+    return t;
+  }();
+  return table;
+}
+
+bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
+  // Abaqus keywords a deck may well contain that inpact cannot honour yet: saying so beats
+  // "unknown keyword" (and beats silently ignoring them, which would change the answer).
+  static constexpr std::string_view kUnsupported[] = {
+      "DYNAMIC", "FREQUENCY", "BUCKLE", "HEATTRANSFER", "COUPLEDTEMPERATURE-DISPLACEMENT",
+      "VISCO", "MODALDYNAMIC", "STEADYSTATEDYNAMICS", "EXPLICIT", "SOILS",
+      "SHELLSECTION", "BEAMSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION",
+      "BEAMGENERALSECTION", "PLASTIC", "HYPERELASTIC", "HYPERFOAM", "VISCOELASTIC", "CREEP",
+      "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
+      "ORIENTATION", "TRANSFORM", "COUPLING", "KINEMATIC", "DISTRIBUTING", "MPC", "TIE",
+      "RIGIDBODY", "MASS", "SPRING", "DASHPOT", "CONNECTORSECTION", "PRE-TENSIONSECTION",
+      "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
+  return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);
+}
+
+}  // namespace inpact::parser

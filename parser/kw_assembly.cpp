@@ -1,0 +1,174 @@
+/// *PART *END PART *ASSEMBLY *INSTANCE *END INSTANCE *END ASSEMBLY: the form Abaqus/CAE writes.
+/// A part is read into a mesh of its own; each instance copies it into the model's mesh with
+/// its transform, under a new instance index, and prefixes its set and surface names with
+/// "INSTANCE." so that assembly-level data can say `Part-1-1.Set-1`.
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "finalize.hpp"
+#include "handlers.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+void part(KeywordContext& ctx) {
+  const std::string key = ctx.name_value("NAME");
+  auto [it, inserted] = ctx.state.parts.try_emplace(key);
+  if (!inserted) {
+    ctx.error_param("NAME", fmt::format("part '{}' is defined twice", key));
+  }
+  it->second.name = ctx.param("NAME")->value.value_or(key);
+  it->second.loc = ctx.keyword.loc;
+  ctx.state.part = &it->second;
+  ctx.state.scope = kPartScope;
+}
+
+void end_part(KeywordContext& ctx) {
+  resolve_pending_nodes(ctx.state.part->build, ctx.diags);
+  ctx.state.part = nullptr;
+  ctx.state.scope = kModelScope;
+}
+
+void assembly(KeywordContext& ctx) {
+  if (ctx.state.assembly_seen) ctx.error(ctx.keyword.loc, "only one *ASSEMBLY is allowed");
+  ctx.state.assembly_seen = true;
+  ctx.state.scope = kAssemblyScope;
+}
+
+void end_assembly(KeywordContext& ctx) { ctx.state.scope = kModelScope; }
+
+void instance(KeywordContext& ctx) {
+  OpenInstance inst;
+  inst.name = ctx.param("NAME")->value.value_or("");
+  inst.part = ctx.name_value("PART");
+  inst.loc = ctx.keyword.loc;
+  std::vector<Field> f;
+  if (ctx.data.size() > 2) ctx.error(ctx.data[2].loc, "at most two data lines: translation, then rotation");
+  for (std::size_t i = 0; i < std::min<std::size_t>(ctx.data.size(), 2); ++i) {
+    split_fields(ctx.data[i], f);
+    if (i == 0) {
+      if (!ctx.check_count(f, ctx.data[i], 1, 3, "translation x, y, z")) continue;
+      for (std::size_t k = 0; k < f.size(); ++k)
+        if (!f[k].empty())
+          if (auto v = ctx.real(f[k], "translation")) inst.translation[k] = *v;
+    } else {
+      if (!ctx.check_count(f, ctx.data[i], 7, 7, "axis point a (x, y, z), point b (x, y, z), angle in degrees"))
+        continue;
+      for (std::size_t k = 0; k < 7; ++k)
+        if (auto v = ctx.real(f[k], k < 6 ? "rotation axis point" : "rotation angle")) inst.rotation[k] = *v;
+      inst.has_rotation = true;
+    }
+  }
+  auto pit = ctx.state.parts.find(inst.part);
+  if (pit == ctx.state.parts.end()) {
+    ctx.error_param("PART", fmt::format("part '{}' is not defined (a *PART must come before its instances)", inst.part));
+  } else {
+    inst.def = pit->second;
+  }
+  ctx.state.instance = std::move(inst);
+  ctx.state.part = &ctx.state.instance->def;
+  ctx.state.scope = kInstanceScope;
+}
+
+/// Rotates x about the axis through a and b by `degrees` (right-hand rule), Rodrigues' formula.
+std::array<double, 3> rotate(const std::array<double, 3>& x, const std::array<double, 7>& r) {
+  std::array<double, 3> k{r[3] - r[0], r[4] - r[1], r[5] - r[2]};
+  const double len = std::sqrt(k[0] * k[0] + k[1] * k[1] + k[2] * k[2]);
+  if (len == 0.0) return x;
+  for (double& c : k) c /= len;
+  const double th = r[6] * std::numbers::pi / 180.0, c = std::cos(th), s = std::sin(th);
+  const std::array<double, 3> v{x[0] - r[0], x[1] - r[1], x[2] - r[2]};
+  const double kv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
+  const std::array<double, 3> kxv{k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]};
+  std::array<double, 3> out;
+  for (int i = 0; i < 3; ++i) out[i] = r[i] + v[i] * c + kxv[i] * s + k[i] * kv * (1 - c);
+  return out;
+}
+
+/// Copies the part's mesh into the model's mesh as a new instance.
+void end_instance(KeywordContext& ctx) {
+  resolve_pending_nodes(ctx.state.instance->def.build, ctx.diags);
+  const OpenInstance inst = std::move(*ctx.state.instance);
+  ctx.state.instance.reset();
+  ctx.state.part = nullptr;
+  ctx.state.scope = kAssemblyScope;
+  auto& names = ctx.model().instances;
+  const std::string key = normalize_label(inst.name);
+  for (const auto& n : names)
+    if (normalize_label(n) == key) {
+      ctx.diags.error(inst.loc, "*INSTANCE", fmt::format("instance '{}' is defined twice", inst.name));
+      return;
+    }
+  const auto id = static_cast<std::int32_t>(names.size());
+  names.push_back(inst.name);
+
+  const model::Mesh& src = inst.def.build.mesh;
+  model::Mesh& dst = ctx.state.model_mesh.mesh;
+  const auto node_base = static_cast<std::int32_t>(dst.nodes.size());
+  const auto elem_base = static_cast<std::int32_t>(dst.elements.size());
+  for (std::size_t n = 0; n < src.nodes.size(); ++n) {
+    std::array<double, 3> x = src.nodes.coords[n];
+    for (int i = 0; i < 3; ++i) x[i] += inst.translation[i];  // translation first, then rotation
+    if (inst.has_rotation) x = rotate(x, inst.rotation);
+    dst.nodes.index.insert(id, src.nodes.labels[n], static_cast<std::int32_t>(dst.nodes.size()));
+    dst.nodes.labels.push_back(src.nodes.labels[n]);
+    dst.nodes.coords.push_back(x);
+    dst.nodes.instance.push_back(id);
+  }
+  model::Elements& de = dst.elements;
+  const model::Elements& se = src.elements;
+  for (std::size_t e = 0; e < se.size(); ++e) {
+    de.index.insert(id, se.labels[e], static_cast<std::int32_t>(de.size()));
+    de.labels.push_back(se.labels[e]);
+    de.type.push_back(se.type[e]);
+    de.instance.push_back(id);
+    de.loc.push_back(se.loc[e]);
+    for (std::int32_t n : se.nodes_of(e)) de.conn.push_back(n < 0 ? n : n + node_base);
+    de.offsets.push_back(static_cast<std::int64_t>(de.conn.size()));
+  }
+  const std::string prefix = key + ".";
+  for (const auto& [k, s] : src.nsets) {
+    model::Set copy = s;
+    copy.name = inst.name + "." + s.name;
+    for (auto& r : copy.rows) r += node_base;
+    dst.nsets[prefix + k] = std::move(copy);
+  }
+  for (const auto& [k, s] : src.elsets) {
+    model::Set copy = s;
+    copy.name = inst.name + "." + s.name;
+    for (auto& r : copy.rows) r += elem_base;
+    dst.elsets[prefix + k] = std::move(copy);
+  }
+  for (const auto& [k, s] : src.surfaces) {
+    model::Surface copy = s;
+    copy.name = inst.name + "." + s.name;
+    for (auto& f : copy.faces) f.element += elem_base;
+    for (auto& n : copy.nodes) n += node_base;
+    dst.surfaces[prefix + k] = std::move(copy);
+  }
+  for (const auto& sec : src.sections) {
+    model::SolidSection copy = sec;
+    copy.elset = prefix + sec.elset;
+    dst.sections.push_back(std::move(copy));
+  }
+}
+
+}  // namespace
+
+void add_assembly_keywords(std::vector<KeywordSpec>& t) {
+  t.push_back({"*PART", kModelScope, {{"NAME", ValueKind::Required, ValueType::Text, {}, true}}, DataLines::None, part});
+  t.push_back({"*END PART", kPartScope, {}, DataLines::None, end_part});
+  t.push_back({"*ASSEMBLY", kModelScope, {{"NAME", ValueKind::Required, ValueType::Text, {}, true}}, DataLines::None, assembly});
+  t.push_back({"*END ASSEMBLY", kAssemblyScope, {}, DataLines::None, end_assembly});
+  t.push_back({"*INSTANCE", kAssemblyScope,
+               {{"NAME", ValueKind::Required, ValueType::Text, {}, true},
+                {"PART", ValueKind::Required, ValueType::Text, {}, true}},
+               DataLines::Optional, instance});
+  t.push_back({"*END INSTANCE", kInstanceScope, {}, DataLines::None, end_instance});
+}
+
+}  // namespace inpact::parser

@@ -1,0 +1,7 @@
+#include "handlers.hpp"
+
+namespace inpact::parser {
+
+void add_load_keywords(std::vector<KeywordSpec>& t) { (void)t; }
+
+}  // namespace inpact::parser

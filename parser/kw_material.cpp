@@ -1,0 +1,121 @@
+/// *MATERIAL with *ELASTIC, *DENSITY, *EXPANSION; *SOLID SECTION.
+#include <fmt/format.h>
+
+#include "handlers.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+constexpr std::string_view kMaterial = "*MATERIAL";
+
+void material(KeywordContext& ctx) {
+  const std::string key = ctx.name_value("NAME");
+  auto [it, inserted] = ctx.model().materials.try_emplace(key);
+  if (!inserted) ctx.error_param("NAME", fmt::format("material '{}' is defined twice", key));
+  it->second.name = ctx.param("NAME")->value.value_or(key);
+  it->second.loc = ctx.keyword.loc;
+  ctx.state.material = &it->second;
+  ctx.state.open_parent = kMaterial;
+}
+
+/// The one data line of a material option that is not temperature dependent.
+const Line* single_line(KeywordContext& ctx) {
+  if (ctx.data.size() > 1)
+    ctx.error(ctx.data[1].loc, "temperature-dependent data (more than one data line) is not supported yet");
+  return ctx.data.empty() ? nullptr : &ctx.data[0];
+}
+
+// *ELASTIC, TYPE=ISOTROPIC (the default and the only type supported): E, ν.
+void elastic(KeywordContext& ctx) {
+  const std::string type = ctx.choice_value("TYPE");
+  if (!type.empty() && type != "ISOTROPIC" && type != "ISO") {
+    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only ISOTROPIC)", type));
+    return;
+  }
+  const Line* line = single_line(ctx);
+  std::vector<Field> f;
+  split_fields(*line, f);
+  if (!ctx.check_count(f, *line, 2, 3, "Young's modulus, Poisson's ratio[, temperature]")) return;
+  auto e = ctx.real(f[0], "Young's modulus");
+  auto nu = ctx.real(f[1], "Poisson's ratio");
+  if (!e || !nu) return;
+  if (*e <= 0) ctx.error(f[0].loc, fmt::format("Young's modulus must be positive, found {}", *e));
+  // ν = 0.5 makes the bulk modulus infinite; Abaqus/Standard rejects it for these elements too.
+  if (*nu <= -1.0 || *nu >= 0.5)
+    ctx.error(f[1].loc, fmt::format("Poisson's ratio must lie in (-1, 0.5), found {}", *nu));
+  ctx.state.material->elastic = model::Elastic{*e, *nu, line->loc};
+}
+
+// *DENSITY: ρ. Kept for gravity loads and later procedures.
+void density(KeywordContext& ctx) {
+  const Line* line = single_line(ctx);
+  std::vector<Field> f;
+  split_fields(*line, f);
+  if (!ctx.check_count(f, *line, 1, 2, "density[, temperature]")) return;
+  if (auto rho = ctx.real(f[0], "density")) ctx.state.material->density = *rho;
+}
+
+// *EXPANSION, TYPE=ISO, ZERO=: α (secant coefficient from the reference temperature ZERO).
+void expansion(KeywordContext& ctx) {
+  const std::string type = ctx.choice_value("TYPE");
+  if (!type.empty() && type != "ISO") {
+    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only ISO)", type));
+    return;
+  }
+  const Line* line = single_line(ctx);
+  std::vector<Field> f;
+  split_fields(*line, f);
+  if (!ctx.check_count(f, *line, 1, 2, "expansion coefficient[, temperature]")) return;
+  auto alpha = ctx.real(f[0], "expansion coefficient");
+  if (!alpha) return;
+  ctx.state.material->expansion = model::Expansion{*alpha, ctx.real_value("ZERO").value_or(0.0), line->loc};
+}
+
+// *SOLID SECTION, ELSET=, MATERIAL=: data line (optional) = thickness for plane elements.
+void solid_section(KeywordContext& ctx) {
+  model::SolidSection sec;
+  sec.elset = ctx.name_value("ELSET");
+  sec.material = ctx.name_value("MATERIAL");
+  sec.orientation = ctx.name_value("ORIENTATION");
+  sec.loc = ctx.keyword.loc;
+  if (!sec.orientation.empty())
+    ctx.error_param("ORIENTATION", "ORIENTATION is not supported yet (isotropic materials need none)");
+  if (!ctx.data.empty()) {
+    std::vector<Field> f;
+    split_fields(ctx.data[0], f);
+    if (!f.empty() && !f[0].empty()) {
+      auto t = ctx.real(f[0], "thickness");
+      if (t && *t <= 0) ctx.error(f[0].loc, fmt::format("thickness must be positive, found {}", *t));
+      else if (t) sec.thickness = *t;
+    }
+    if (ctx.data.size() > 1) ctx.error(ctx.data[1].loc, "expected at most one data line (thickness)");
+  }
+  ctx.mesh().sections.push_back(std::move(sec));
+}
+
+}  // namespace
+
+void add_material_keywords(std::vector<KeywordSpec>& t) {
+  const std::vector<std::string_view> parent{kMaterial};
+  t.push_back({"*MATERIAL", kModelScope, {{"NAME", ValueKind::Required, ValueType::Text, {}, true}}, DataLines::None, material});
+  t.push_back({"*ELASTIC", kModelScope,
+               {{"TYPE", ValueKind::Required, ValueType::Choice, {"ISOTROPIC", "ISO", "ORTHOTROPIC", "ENGINEERING CONSTANTS", "LAMINA", "ANISOTROPIC"}},
+                {"MODULI", ValueKind::Required, ValueType::Choice, {"LONG TERM", "INSTANTANEOUS"}},
+                {"DEPENDENCIES", ValueKind::Required, ValueType::Int}},
+               DataLines::Required, elastic, parent});
+  t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});
+  t.push_back({"*EXPANSION", kModelScope,
+               {{"TYPE", ValueKind::Required, ValueType::Choice, {"ISO", "ORTHO", "ANISO"}},
+                {"ZERO", ValueKind::Required, ValueType::Real},
+                {"DEPENDENCIES", ValueKind::Required, ValueType::Int}},
+               DataLines::Required, expansion, parent});
+  t.push_back({"*SOLID SECTION", kMeshScopes,
+               {{"ELSET", ValueKind::Required, ValueType::Text, {}, true},
+                {"MATERIAL", ValueKind::Required, ValueType::Text, {}, true},
+                {"ORIENTATION", ValueKind::Required}, {"CONTROLS", ValueKind::Required}},
+               DataLines::Optional, solid_section});
+}
+
+}  // namespace inpact::parser

@@ -1,0 +1,318 @@
+/// *HEADING *NODE *ELEMENT *NSET *ELSET *SURFACE: the mesh and its named regions.
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "finalize.hpp"
+#include "handlers.hpp"
+#include "model/mesh_queries.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+using model::Set;
+
+void sort_unique(std::vector<std::int32_t>& rows) {
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+}
+
+/// The set `name` in `sets`, created on first use (Abaqus appends to an existing set).
+Set& set_named(std::map<std::string, Set>& sets, const KeywordContext& ctx, std::string_view param) {
+  const std::string key = ctx.name_value(param);
+  Set& s = sets[key];
+  if (s.name.empty()) {
+    s.name = ctx.param(param)->value.value_or(key);
+    s.loc = ctx.keyword.loc;
+  }
+  return s;
+}
+
+// *HEADING: free text, kept for the report.
+void heading(KeywordContext& ctx) {
+  for (const Line& line : ctx.data) {
+    if (!ctx.model().heading.empty()) ctx.model().heading += '\n';
+    ctx.model().heading += std::string(trim(line.text));
+  }
+}
+
+// *NODE, NSET=: label, x, y[, z]. Missing coordinates are zero (2D decks give two).
+void node(KeywordContext& ctx) {
+  model::Nodes& nodes = ctx.mesh().nodes;
+  Set* nset = ctx.has("NSET") ? &set_named(ctx.mesh().nsets, ctx, "NSET") : nullptr;
+  std::vector<Field> f;
+  nodes.labels.reserve(nodes.labels.size() + ctx.data.size());
+  nodes.coords.reserve(nodes.coords.size() + ctx.data.size());
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 1, 7, "node label, x, y, z")) continue;
+    auto label = ctx.integer(f[0], "node label");
+    if (!label) continue;
+    if (*label <= 0) {
+      ctx.error(f[0].loc, fmt::format("node label {} must be positive", *label));
+      continue;
+    }
+    std::array<double, 3> x{0, 0, 0};
+    bool ok = true;
+    for (std::size_t i = 1; i < std::min<std::size_t>(f.size(), 4); ++i) {
+      if (f[i].empty()) continue;
+      auto v = ctx.real(f[i], fmt::format("coordinate {}", i));
+      if (!v) ok = false;
+      else x[i - 1] = *v;
+    }
+    if (!ok) continue;
+    const auto row = static_cast<std::int32_t>(nodes.labels.size());
+    if (!nodes.index.insert(0, *label, row)) {
+      ctx.error(f[0].loc, fmt::format("node {} is defined twice", *label));
+      continue;
+    }
+    nodes.labels.push_back(*label);
+    nodes.coords.push_back(x);
+    nodes.instance.push_back(0);
+    if (nset) nset->rows.push_back(row);
+  }
+  if (nset) sort_unique(nset->rows);
+}
+
+// *ELEMENT, TYPE=, ELSET=: label, node labels; a line ending in a comma continues.
+void element(KeywordContext& ctx) {
+  const std::string type_name = ctx.name_value("TYPE");
+  const model::ElementTypeInfo* type = model::find_element_type(type_name);
+  if (!type) {
+    std::vector<std::string> names;
+    for (const auto& t : model::element_types()) names.emplace_back(t.name);
+    const std::string guess = did_you_mean(type_name, names);
+    ctx.error_param("TYPE", fmt::format("element type '{}' is not supported{}", type_name,
+                                        guess.empty() ? fmt::format(" (supported: C3D8, C3D8R, C3D8I, C3D20(R), C3D4, C3D10, C3D6, CPE/CPS/CAX 3, 4, 6, 8 and their R/I forms)")
+                                                      : fmt::format(" (did you mean {}?)", guess)));
+    return;
+  }
+  MeshBuild& build = ctx.state.mesh_build();
+  model::Elements& el = build.mesh.elements;
+  const model::Nodes& nodes = build.mesh.nodes;
+  Set* elset = ctx.has("ELSET") ? &set_named(build.mesh.elsets, ctx, "ELSET") : nullptr;
+  const std::uint8_t type_index = model::element_type_index(*type);
+  const std::size_t need = 1 + type->n_nodes;
+  el.labels.reserve(el.labels.size() + ctx.data.size());
+  el.conn.reserve(el.conn.size() + ctx.data.size() * type->n_nodes);
+
+  std::vector<Field> f, record;
+  for (std::size_t i = 0; i < ctx.data.size(); ++i) {
+    const Line& first = ctx.data[i];
+    split_fields(first, record);
+    // Continuation: a record short of nodes whose line ends with a comma goes on.
+    while (record.size() < need && trim(ctx.data[i].text).ends_with(',') && i + 1 < ctx.data.size()) {
+      split_fields(ctx.data[++i], f);
+      record.insert(record.end(), f.begin(), f.end());
+    }
+    if (!ctx.check_count(record, first, need, need,
+                         fmt::format("element label and {} node labels for {}", type->n_nodes, type->name)))
+      continue;
+    auto label = ctx.integer(record[0], "element label");
+    if (!label) continue;
+    if (*label <= 0) {
+      ctx.error(record[0].loc, fmt::format("element label {} must be positive", *label));
+      continue;
+    }
+    const auto row = static_cast<std::int32_t>(el.labels.size());
+    if (!el.index.insert(0, *label, row)) {
+      auto prev = el.index.find(0, *label);
+      ctx.error(record[0].loc, fmt::format("element {} is defined twice (first at line {})", *label,
+                                           el.loc[*prev].line));
+      continue;
+    }
+    bool ok = true;
+    const std::size_t conn_start = el.conn.size();
+    for (std::size_t k = 1; k < need; ++k) {
+      auto n = ctx.integer(record[k], "node label");
+      if (!n) {
+        ok = false;
+        break;
+      }
+      if (auto r = nodes.index.find(0, *n)) {
+        el.conn.push_back(*r);
+      } else {
+        build.pending.push_back({el.conn.size(), *n, 0, record[k].loc});
+        el.conn.push_back(-1);
+      }
+    }
+    if (!ok) {
+      // Undo the partial element so the table stays consistent.
+      el.conn.resize(conn_start);
+      while (!build.pending.empty() && build.pending.back().conn_index >= conn_start) build.pending.pop_back();
+      continue;
+    }
+    el.labels.push_back(*label);
+    el.type.push_back(type_index);
+    el.instance.push_back(0);
+    el.offsets.push_back(static_cast<std::int64_t>(el.conn.size()));
+    el.loc.push_back(first.loc);
+    if (elset) elset->rows.push_back(row);
+  }
+  if (elset) sort_unique(elset->rows);
+}
+
+/// *NSET and *ELSET share their data forms: labels and set names, or GENERATE ranges.
+void fill_set(KeywordContext& ctx, bool is_node_set) {
+  model::Mesh& mesh = ctx.mesh();
+  auto& sets = is_node_set ? mesh.nsets : mesh.elsets;
+  const char* param = is_node_set ? "NSET" : "ELSET";
+  if (ctx.has("INSTANCE")) {
+    const std::string inst = ctx.name_value("INSTANCE");
+    const auto& names = ctx.model().instances;
+    auto it = std::find_if(names.begin() + 1, names.end(),
+                           [&](const std::string& n) { return normalize_label(n) == inst; });
+    if (it == names.end()) {
+      ctx.error_param("INSTANCE", fmt::format("instance '{}' is not defined", inst));
+      return;
+    }
+    ctx.label_instance = static_cast<std::int32_t>(it - names.begin());
+  }
+  Set& set = set_named(sets, ctx, param);
+  set.internal = set.internal || ctx.has("INTERNAL");
+  const model::LabelMap& index = is_node_set ? mesh.nodes.index : mesh.elements.index;
+  const char* what = is_node_set ? "node" : "element";
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (ctx.has("GENERATE")) {
+      if (!ctx.check_count(f, line, 2, 3, "first label, last label[, increment]")) continue;
+      auto a = ctx.integer(f[0], "first label");
+      auto b = ctx.integer(f[1], "last label");
+      auto step = f.size() > 2 && !f[2].empty() ? ctx.integer(f[2], "increment") : std::optional<std::int64_t>(1);
+      if (!a || !b || !step) continue;
+      if (*step <= 0 || *b < *a) {
+        ctx.error(line.loc, fmt::format("GENERATE needs first <= last and a positive increment (got {}, {}, {})", *a, *b, *step));
+        continue;
+      }
+      // Labels in the range that do not exist are skipped, as generated ranges often span gaps.
+      for (std::int64_t l = *a; l <= *b; l += *step)
+        if (auto r = index.find(ctx.label_instance, l)) set.rows.push_back(*r);
+      continue;
+    }
+    for (const Field& field : f) {
+      if (field.empty()) continue;
+      auto rows = is_node_set ? ctx.nodes(field) : ctx.elements(field);
+      if (rows) set.rows.insert(set.rows.end(), rows->begin(), rows->end());
+    }
+    (void)what;
+  }
+  sort_unique(set.rows);
+}
+
+void nset(KeywordContext& ctx) {
+  if (ctx.has("ELSET")) {
+    // *NSET, ELSET=: the nodes of an element set.
+    auto it = ctx.mesh().elsets.find(ctx.name_value("ELSET"));
+    if (it == ctx.mesh().elsets.end()) {
+      ctx.error_param("ELSET", fmt::format("element set '{}' is not defined", ctx.name_value("ELSET")));
+      return;
+    }
+    Set& set = set_named(ctx.mesh().nsets, ctx, "NSET");
+    resolve_pending_nodes(ctx.state.mesh_build(), ctx.diags);
+    for (std::int32_t e : it->second.rows)
+      for (std::int32_t n : ctx.mesh().elements.nodes_of(e)) set.rows.push_back(n);
+    sort_unique(set.rows);
+    return;
+  }
+  fill_set(ctx, true);
+}
+
+void elset(KeywordContext& ctx) { fill_set(ctx, false); }
+
+/// The face number of an `S1`..`S6` field for this element type, or nullopt with an error.
+std::optional<std::uint8_t> face_of(KeywordContext& ctx, const Field& f, std::int32_t element) {
+  const auto& info = model::element_type(ctx.mesh().elements.type[element]);
+  const std::string id = normalize_name(f.text);
+  if (id.size() == 2 && id[0] == 'S' && id[1] >= '1' && id[1] <= '6') {
+    const int n = id[1] - '1';
+    if (n < static_cast<int>(info.faces.size())) return static_cast<std::uint8_t>(n);
+    ctx.error(f.loc, fmt::format("element {} ({}) has no face {}: it has S1..S{}",
+                                 ctx.mesh().elements.labels[element], info.name, id, info.faces.size()));
+    return std::nullopt;
+  }
+  if (id == "SPOS" || id == "SNEG") {
+    ctx.error(f.loc, fmt::format("{} is a shell face; element {} ({}) is a solid", id,
+                                 ctx.mesh().elements.labels[element], info.name));
+    return std::nullopt;
+  }
+  ctx.error(f.loc, fmt::format("face identifier '{}' is not valid: expected S1..S{}", f.text, info.faces.size()));
+  return std::nullopt;
+}
+
+// *SURFACE, NAME=, TYPE=ELEMENT|NODE.
+void surface(KeywordContext& ctx) {
+  const std::string name = ctx.name_value("NAME");
+  model::Surface& surf = ctx.mesh().surfaces[name];
+  if (surf.name.empty()) {
+    surf.name = ctx.param("NAME")->value.value_or(name);
+    surf.loc = ctx.keyword.loc;
+  }
+  const std::string type = ctx.choice_value("TYPE");
+  surf.kind = type == "NODE" ? model::Surface::Kind::Node : model::Surface::Kind::Element;
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (surf.kind == model::Surface::Kind::Node) {
+      if (!ctx.check_count(f, line, 1, 2, "node or node set, area")) continue;
+      auto rows = ctx.nodes(f[0]);
+      double area = 1.0;
+      if (f.size() > 1 && !f[1].empty()) {
+        auto a = ctx.real(f[1], "area");
+        if (!a) continue;
+        area = *a;
+      }
+      if (!rows) continue;
+      for (auto r : *rows) {
+        surf.nodes.push_back(r);
+        surf.node_areas.push_back(area);
+      }
+      continue;
+    }
+    if (!ctx.check_count(f, line, 1, 2, "element or element set, face identifier")) continue;
+    auto rows = ctx.elements(f[0]);
+    if (!rows) continue;
+    if (f.size() == 1 || f[1].empty()) {
+      // No face given: the free faces of these elements.
+      resolve_pending_nodes(ctx.state.mesh_build(), ctx.diags);
+      auto faces = model::exterior_faces(ctx.mesh().elements, *rows);
+      surf.faces.insert(surf.faces.end(), faces.begin(), faces.end());
+      continue;
+    }
+    for (auto e : *rows) {
+      auto face = face_of(ctx, f[1], e);
+      if (!face) break;
+      surf.faces.push_back({e, *face});
+    }
+  }
+  if (surf.kind == model::Surface::Kind::Element && surf.faces.empty() && !ctx.diags.has_errors())
+    ctx.error(ctx.keyword.loc, fmt::format("surface '{}' has no faces", surf.name));
+}
+
+}  // namespace
+
+void add_mesh_keywords(std::vector<KeywordSpec>& t) {
+  t.push_back({"*HEADING", kModelScope, {}, DataLines::Optional, heading});
+  t.push_back({"*NODE", kMeshScopes, {{"NSET", ValueKind::Required}, {"SYSTEM", ValueKind::Required, ValueType::Choice, {"R"}}},
+               DataLines::Optional, node, {}, true});
+  t.push_back({"*ELEMENT", kMeshScopes,
+               {{"TYPE", ValueKind::Required, ValueType::Text, {}, true}, {"ELSET", ValueKind::Required}},
+               DataLines::Optional, element, {}, true});
+  t.push_back({"*NSET", kMeshScopes,
+               {{"NSET", ValueKind::Required, ValueType::Text, {}, true}, {"GENERATE"}, {"INTERNAL"},
+                {"UNSORTED"}, {"INSTANCE", ValueKind::Required}, {"ELSET", ValueKind::Required}},
+               DataLines::Optional, nset, {}, true});
+  t.push_back({"*ELSET", kMeshScopes,
+               {{"ELSET", ValueKind::Required, ValueType::Text, {}, true}, {"GENERATE"}, {"INTERNAL"},
+                {"UNSORTED"}, {"INSTANCE", ValueKind::Required}},
+               DataLines::Optional, elset, {}, true});
+  t.push_back({"*SURFACE", kMeshScopes,
+               {{"NAME", ValueKind::Required, ValueType::Text, {}, true},
+                {"TYPE", ValueKind::Required, ValueType::Choice, {"ELEMENT", "NODE"}},
+                {"INTERNAL"}},
+               DataLines::Required, surface, {}, true});
+}
+
+}  // namespace inpact::parser
