@@ -235,11 +235,7 @@ class DeckReader {
     }
     if (!p.value) return;
     const std::string& v = *p.value;
-    auto in_choices = [&] {
-      const std::string n = normalize_name(v);
-      return std::any_of(ps.choices.begin(), ps.choices.end(),
-                         [&](std::string_view c) { return normalize_name(c) == n; });
-    };
+    auto in_choices = [&] { return !match_choice(normalize_name(v), ps.choices).empty(); };
     auto choice_list = [&] {
       std::string s;
       for (std::size_t i = 0; i < ps.choices.size(); ++i) s += (i ? ", " : "") + std::string(ps.choices[i]);

@@ -19,9 +19,30 @@ std::string KeywordContext::name_value(std::string_view canonical) const {
   return p && p->value ? normalize_label(*p->value) : std::string();
 }
 
+std::string match_choice(const std::string& value, const std::vector<std::string_view>& choices) {
+  std::string prefix_match;
+  int n_prefix = 0;
+  for (std::string_view c : choices) {
+    const std::string n = normalize_name(c);
+    if (n == value) return n;
+    if (!value.empty() && n.starts_with(value)) {
+      prefix_match = n;
+      ++n_prefix;
+    }
+  }
+  return n_prefix == 1 ? prefix_match : std::string();
+}
+
 std::string KeywordContext::choice_value(std::string_view canonical) const {
   const KeywordParam* p = param(canonical);
-  return p && p->value ? normalize_name(*p->value) : std::string();
+  if (!p || !p->value) return {};
+  const std::string v = normalize_name(*p->value);
+  for (const auto& ps : spec.params)
+    if (normalize_name(ps.name) == p->name && !ps.choices.empty()) {
+      std::string m = match_choice(v, ps.choices);
+      return m.empty() ? v : m;
+    }
+  return v;
 }
 
 std::optional<double> KeywordContext::real_value(std::string_view canonical) const {

@@ -55,6 +55,10 @@ struct KeywordSpec {
   bool input_file = false;
 };
 
+/// `value` (normalized) matched against `choices`: exact, or the prefix of exactly one choice
+/// (Abaqus accepts unambiguous abbreviations). Returns the normalized choice, or "" if none.
+std::string match_choice(const std::string& value, const std::vector<std::string_view>& choices);
+
 /// The table: every keyword inpact understands.
 std::span<const KeywordSpec> keyword_table();
 /// Abaqus keywords that inpact knows but cannot honour yet (a clear error, not "unknown").
@@ -79,7 +83,8 @@ struct KeywordContext {
   bool has(std::string_view canonical) const { return param(canonical) != nullptr; }
   /// Upper-case name value ("" when absent).
   std::string name_value(std::string_view canonical) const;
-  /// The normalized choice ("NODETOSURFACE"), "" when absent or a bare flag.
+  /// The normalized choice ("NODETOSURFACE"), "" when absent or a bare flag. An abbreviation
+  /// that is the prefix of exactly one declared choice (Abaqus accepts `TYPE=ISO`) is expanded.
   std::string choice_value(std::string_view canonical) const;
   std::optional<double> real_value(std::string_view canonical) const;
   std::optional<std::int64_t> int_value(std::string_view canonical) const;
