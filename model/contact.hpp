@@ -13,6 +13,8 @@
 
 namespace inpact::model {
 
+/// PRESSURE-OVERCLOSURE. Tied is CalculiX's bonded law (*SURFACE BEHAVIOR,
+/// PRESSURE-OVERCLOSURE=TIED with a stiffness; the tangential stiffness is *FRICTION's stick slope).
 enum class PressureOverclosure : std::uint8_t { Hard, Exponential, Linear, Tabular, Tied };
 
 /// How a hard (or softened) contact constraint is enforced. Default: what Abaqus picks for the
@@ -40,13 +42,16 @@ struct SurfaceBehavior {
   std::optional<double> upper_quadratic_limit_scale_factor;
   std::optional<double> lower_quadratic_limit_ratio;
 
-  // Softened contact.
-  double exponential_c0 = 0.0;  ///< EXPONENTIAL: clearance at which pressure is zero
+  // Softened contact. Units: pressure per overclosure (force per overclosure for node-based
+  // surfaces), as for the penalty stiffness.
+  double exponential_c0 = 0.0;  ///< EXPONENTIAL: clearance at which pressure is zero (Abaqus meaning)
   double exponential_p0 = 0.0;  ///< EXPONENTIAL: pressure at zero clearance
   std::optional<double> linear_slope;  ///< LINEAR: k (CalculiX: k, σ∞, c0 follow)
   std::optional<double> linear_sigma_inf;  ///< CalculiX LINEAR: tension limit σ∞
   std::optional<double> linear_c0;         ///< CalculiX LINEAR: c0
-  std::vector<std::array<double, 2>> table;  ///< TABULAR: (pressure, overclosure) pairs
+  /// TABULAR: (pressure, overclosure) pairs in ascending overclosure, pressure increasing; zero
+  /// pressure below the first overclosure, the last slope continued beyond the last point.
+  std::vector<std::array<double, 2>> table;
   std::optional<double> tied_slope;          ///< CalculiX TIED: k
 
   SourceLoc loc;
@@ -69,6 +74,8 @@ struct SurfaceInteraction {
   std::optional<SurfaceBehavior> behavior;  ///< unset: hard contact, default method
   std::optional<Friction> friction;         ///< unset: frictionless
   double out_of_plane_thickness = 1.0;      ///< data line (2D): contact area per unit length
+  /// TRACKING THICKNESS: how far COPEN is tracked beyond the contact (unset: Abaqus's own).
+  std::optional<double> tracking_thickness;
   SourceLoc loc;
 };
 
@@ -85,6 +92,18 @@ struct ContactPair {
   std::optional<double> adjust_distance;
   std::string adjust_nset;
   std::string geometric_correction;  ///< name of a *SURFACE SMOOTHING definition
+  bool tied = false;  ///< TIED: the surfaces are bonded once adjusted (needs ADJUST)
+  /// EXTENSION ZONE: fraction of the end master facet's length the master surface is extended by
+  /// (node-to-surface; Abaqus default 0.1).
+  double extension_zone = 0.1;
+  /// HCRIT: largest penetration allowed in one iteration before the increment is cut back
+  /// (unset: half a characteristic slave face length, Abaqus's default).
+  std::optional<double> hcrit;
+  /// SMOOTH: fraction of a master facet over which finite-sliding node-to-surface smooths the
+  /// master normal between facets (Abaqus default 0.2).
+  double smooth = 0.2;
+  /// CalculiX LINEAR flag: the pair does not switch on nonlinear geometry.
+  bool linear = false;
   SourceLoc loc;
 };
 
@@ -107,8 +126,11 @@ struct SurfaceSmoothing {
 
 /// *CONTACT with its sub-options (general contact). Empty surface names mean "all exterior".
 struct GeneralContact {
+  /// One *CONTACT INCLUSIONS / EXCLUSIONS line. An empty name is the all-inclusive exterior
+  /// surface (both empty: ALL EXTERIOR self-contact); self-contact of a surface has
+  /// second == first (written `surf,` or `surf, surf`).
   struct Inclusion {
-    std::string first, second;  ///< empty first and second: ALL EXTERIOR
+    std::string first, second;
     SourceLoc loc;
   };
   struct PropertyAssignment {
@@ -138,7 +160,9 @@ struct ContactControls {
   std::optional<double> absolute_penetration_tolerance;
   std::optional<double> relative_penetration_tolerance;
   std::optional<double> stiffness_scale_factor;
-  bool user_adaptive_stiffness = false;  ///< STIFFNESS SCALE FACTOR=USER ADAPTIVE
+  /// STIFFNESS SCALE FACTOR=USER ADAPTIVE: reduced penalty stiffness in the early iterations of
+  /// the first increment, the full stiffness for its final iterations [AX p.781].
+  bool user_adaptive_stiffness = false;
   bool reset = false;
   SourceLoc loc;
 };
