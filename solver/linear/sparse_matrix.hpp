@@ -1,0 +1,41 @@
+#pragma once
+/// A sparse matrix in compressed-column form with 64-bit indices (what CHOLMOD's and
+/// UMFPACK's `_l` interfaces take without copying), and the builder of its pattern.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace inpact::solver {
+
+struct SparseMatrix {
+  std::int64_t n = 0;                  ///< square: n × n
+  std::vector<std::int64_t> col_ptr;   ///< n + 1
+  std::vector<std::int64_t> row_idx;   ///< sorted within each column
+  std::vector<double> values;
+  bool upper_only = false;             ///< symmetric, only entries with row <= col stored
+
+  std::size_t nnz() const { return row_idx.size(); }
+  void set_zero() { std::fill(values.begin(), values.end(), 0.0); }
+  /// Position of entry (row, col) in `values`, or -1 when it is not in the pattern.
+  std::int64_t find(std::int64_t row, std::int64_t col) const;
+  /// y = A x (the full matrix when upper_only).
+  void multiply(std::span<const double> x, std::span<double> y) const;
+};
+
+/// Collects the couplings of dense blocks (element DOF lists, constraint rows) and builds the
+/// compressed pattern once; the values are then assembled into it iteration after iteration.
+class PatternBuilder {
+ public:
+  explicit PatternBuilder(std::int64_t n) : n_(n), columns_(n) {}
+  /// Every pair of these (global, >= 0) DOFs couples; negative entries are skipped.
+  void add_block(std::span<const std::int64_t> dofs);
+  /// Couples row with col (and col with row).
+  void add_pair(std::int64_t row, std::int64_t col);
+  SparseMatrix build(bool upper_only) const;
+
+ private:
+  std::int64_t n_;
+  std::vector<std::vector<std::int64_t>> columns_;
+};
+
+}  // namespace inpact::solver
