@@ -15,7 +15,9 @@ namespace inpact::model {
 enum class Op : std::uint8_t { Mod, New };
 
 /// One data line of *BOUNDARY: DOFs first..last of the nodes set to `value`
-/// (type names such as ENCASTRE are expanded by the parser into DOF ranges with value 0).
+/// (type names such as ENCASTRE are expanded by the parser into DOF ranges with value 0; see
+/// parser/kw_loads.cpp). DOFs 4-6 are rotations: recorded as given, but the solid and plane
+/// elements inpact supports have only DOFs 1-3, so they constrain nothing.
 struct BoundaryEntry {
   std::string target;
   std::vector<std::int32_t> nodes;
@@ -67,6 +69,9 @@ struct DloadEntry {
 
 struct DloadBlock {
   Op op = Op::Mod;
+  /// From *DSLOAD (loads on a named surface). OP=NEW of *DLOAD removes earlier *DLOAD blocks and
+  /// OP=NEW of *DSLOAD earlier *DSLOAD blocks: Abaqus keeps the two kinds apart.
+  bool surface_load = false;
   std::string amplitude;
   std::vector<DloadEntry> entries;
   SourceLoc loc;
@@ -87,9 +92,20 @@ struct TemperatureBlock {
   SourceLoc loc;
 };
 
-/// *AMPLITUDE, DEFINITION=TABULAR: piecewise linear in step or total time.
+/// *AMPLITUDE: a multiplier of the load magnitudes as a function of step or total time.
+/// SCALEX/SCALEY/SHIFTX/SHIFTY are already applied to `points` by the parser.
 struct Amplitude {
+  enum class Definition : std::uint8_t {
+    /// Piecewise linear between the points; constant (first / last value) outside them. Two
+    /// points at the same time make a jump.
+    Tabular,
+    /// Abaqus "smooth step": between points i and i+1, with ξ = (t − t_i)/(t_{i+1} − t_i),
+    /// a = a_i + (a_{i+1} − a_i)·ξ³(10 − 15ξ + 6ξ²) (zero first and second derivatives at each
+    /// point); constant outside the points. Times strictly increasing.
+    SmoothStep
+  };
   std::string name;
+  Definition definition = Definition::Tabular;
   enum class Time : std::uint8_t { Step, Total } time = Time::Step;
   std::vector<std::array<double, 2>> points;  ///< (time, value), times non-decreasing
   SourceLoc loc;

@@ -26,6 +26,15 @@ struct SourceTable {
     files.push_back({std::move(path), included, from});
     return static_cast<std::uint32_t>(files.size() - 1);
   }
+
+  /// "file:line:col" ("file:line" without a column, "file" without a line).
+  std::string describe(SourceLoc loc) const {
+    std::string out = loc.file < files.size() ? files[loc.file].path : std::string("<unknown>");
+    if (loc.line == 0) return out;
+    out += ":" + std::to_string(loc.line);
+    if (loc.col != 0) out += ":" + std::to_string(loc.col);
+    return out;
+  }
 };
 
 }  // namespace inpact::model

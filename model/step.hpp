@@ -12,33 +12,63 @@
 namespace inpact::model {
 
 /// *STATIC: its data line (initial increment, time period, minimum, maximum increment).
+/// The parser always fills every field, blanks with the Abaqus defaults (parser/kw_step.cpp).
 struct StaticProcedure {
   bool direct = false;  ///< DIRECT: fixed increments of `initial_increment`
+  bool direct_no_stop = false;  ///< DIRECT=NO STOP: accept an increment after IC iterations
   double initial_increment = 1.0;  ///< Abaqus default: the time period
   double time_period = 1.0;
-  std::optional<double> min_increment;  ///< unset: min(initial, 1e-5 × period)
-  std::optional<double> max_increment;  ///< unset: the time period
+  std::optional<double> min_increment;  ///< default min(initial, 1e-5 × period)
+  std::optional<double> max_increment;  ///< default the time period (no upper limit)
   SourceLoc loc;
 };
 
-/// *CONTROLS, PARAMETERS=TIME INCREMENTATION (only the fields that were given are set).
+/// The data fields of a *CONTROLS block as given: a blank field stays unset, which means the
+/// Abaqus default for that position.
+using ControlFields = std::vector<std::optional<double>>;
+
+/// *CONTROLS, PARAMETERS=TIME INCREMENTATION: up to four data lines [K16 §3.75]. Line 1 holds
+/// the iteration counts I0, IR, IP, IC, IL, IG, IS, IA, IJ, IT, ?, ?, I_A^c (1-based positions;
+/// see parser/KEYWORDS.md for their meaning and defaults); line 2 the cutback and growth
+/// factors D_f, D_C, D_B, D_A, D_S, D_H, D_D, W_G, ...; lines 3-4 further factors.
 struct TimeIncrementationControls {
-  std::vector<std::optional<double>> line1;  ///< I0, IR, IP, IC, IL, IG, IS, IA, IJ, IT, ISC?...
-  std::vector<std::optional<double>> line2;  ///< Df, DC, DB, DA, DS, DH, DD, WG
+  ControlFields line1;
+  ControlFields line2;
+  ControlFields line3;
+  ControlFields line4;
   SourceLoc loc;
+
+  /// Line 1, field 13 (I_A^c): the maximum number of augmentations for *SURFACE BEHAVIOR,
+  /// AUGMENTED LAGRANGE [IG "Modifying the Number of Allowed Augmentations"]. Unset: the
+  /// solver's default (50 in current Abaqus prints, 6 in older ones).
+  std::optional<double> max_augmentations() const {
+    return line1.size() >= 13 ? line1[12] : std::nullopt;
+  }
 };
 
-/// *CONTROLS, PARAMETERS=FIELD: residual and correction tolerances (R_n^α, C_n^α, ...).
+/// *CONTROLS, PARAMETERS=FIELD: residual and correction tolerances. Line 1: R_n^α, C_n^α,
+/// q_0^α, q_u^α, R_p^α, ε^α, C_ε^α, R_l^α (CalculiX names, same as Abaqus); line 2 as given.
 struct FieldControls {
-  std::vector<std::optional<double>> values;
+  std::string field = "GLOBAL";  ///< FIELD=: GLOBAL or DISPLACEMENT (the only field inpact has)
+  ControlFields values;  ///< line 1
+  ControlFields line2;
   SourceLoc loc;
 };
 
+/// *CONTROLS, PARAMETERS=LINE SEARCH: N_ls, s_max, s_min, f_s, η_ls (Abaqus order; UNCONFIRMED).
+struct LineSearchControls {
+  ControlFields values;
+  SourceLoc loc;
+};
+
+/// The *CONTROLS blocks of one step. RESET returns every control to its default before the
+/// blocks after it in the step apply.
 struct Controls {
   bool reset = false;
-  bool analysis_discontinuous = false;
+  bool analysis_discontinuous = false;  ///< ANALYSIS=DISCONTINUOUS: expect many severe iterations
   std::optional<TimeIncrementationControls> time_incrementation;
   std::optional<FieldControls> field;
+  std::optional<LineSearchControls> line_search;
 };
 
 /// One output request: *NODE/*ELEMENT/*CONTACT OUTPUT under *OUTPUT, or a print/file request.
@@ -47,28 +77,48 @@ struct OutputRequest {
     NodeField, ElementField, ContactField,    ///< under *OUTPUT, FIELD
     NodeHistory, ElementHistory, ContactHistory,  ///< under *OUTPUT, HISTORY
     NodePrint, ElementPrint, ContactPrint,    ///< *NODE PRINT / *EL PRINT / *CONTACT PRINT (.dat)
-    NodeFile, ElementFile, ContactFile        ///< *NODE FILE / *EL FILE / *CONTACT FILE
+    NodeFile, ElementFile, ContactFile,       ///< *NODE FILE / *EL FILE / *CONTACT FILE
+    /// *OUTPUT, FIELD|HISTORY, VARIABLE=PRESELECT|ALL on its own: the whole model's preselected
+    /// (or all) variables, without a *NODE/*ELEMENT/*CONTACT OUTPUT naming them.
+    ModelField, ModelHistory
   };
+  /// OP= of the *OUTPUT block: ADD keeps the requests of earlier steps, NEW removes them all,
+  /// REPLACE replaces earlier requests of the same kind.
+  enum class Op : std::uint8_t { Add, New, Replace };
+  /// POSITION= of element output; Default = the keyword's own default (integration points for
+  /// *ELEMENT OUTPUT and *EL PRINT, nodes for *EL FILE in CalculiX).
+  enum class Position : std::uint8_t { Default, IntegrationPoints, Centroidal, Nodes, AveragedAtNodes };
   Kind kind;
   std::vector<std::string> variables;  ///< upper-case Abaqus identifiers (U, RF, S, CPRESS, ...)
   bool preselect = false;              ///< VARIABLE=PRESELECT (or no data line)
   bool all = false;                    ///< VARIABLE=ALL
   int frequency = 1;                   ///< every n-th increment; 0 = none (last only)
-  std::optional<int> number_interval;
-  bool time_marks = false;
+  std::optional<int> number_interval;  ///< NUMBER INTERVAL: n evenly spaced times in the step
+  bool time_marks = false;             ///< TIME MARKS=YES: at exact multiples of the interval
+  Op op = Op::Add;
+  Position position = Position::Default;
   std::string set;      ///< NSET / ELSET restriction, upper case; empty = whole model
-  std::string surface;  ///< contact output: SLAVE / MASTER / SURFACE restriction
-  bool totals = false;  ///< *NODE PRINT, TOTALS=YES
+  std::string surface;  ///< contact output: SLAVE (SECONDARY) or SURFACE restriction, upper case
+  std::string master;   ///< contact output: MASTER (MAIN) surface, upper case
+  bool totals = false;  ///< *NODE PRINT, TOTALS=YES (CalculiX TOTALS=ONLY also sets totals_only)
+  bool totals_only = false;
   bool summary = true;  ///< *NODE PRINT, SUMMARY
   SourceLoc loc;
 };
 
 struct Step {
-  std::string name;
+  std::string name;         ///< NAME, as written; default "Step-N" (N = 1-based position)
+  std::string description;  ///< the optional data line of *STEP
   bool nlgeom = false;
   int max_increments = 100;  ///< INC
   bool unsymm = false;
   enum class DefaultAmplitude : std::uint8_t { Ramp, Step } amplitude = DefaultAmplitude::Ramp;
+  /// EXTRAPOLATION: how the first guess of an increment is predicted from the previous ones
+  /// (Abaqus default LINEAR; PARABOLIC uses two previous increments; None = no extrapolation).
+  enum class Extrapolation : std::uint8_t { Linear, Parabolic, None } extrapolation = Extrapolation::Linear;
+  /// CONVERT SDI=YES (default per KEYWORDS.md): iterations with severe discontinuities (contact
+  /// status changes) are checked for convergence like equilibrium iterations; NO counts them apart.
+  bool convert_sdi = true;
   std::optional<StaticProcedure> static_procedure;  ///< the procedure (only static for now)
 
   std::vector<BoundaryBlock> boundaries;

@@ -76,6 +76,8 @@ struct BuildState {
   bool output_is_history = false;  ///< the open *OUTPUT is HISTORY
   int output_frequency = 1;
   std::optional<int> output_number_interval;
+  bool output_time_marks = false;
+  model::OutputRequest::Op output_op = model::OutputRequest::Op::Add;
   std::optional<std::string> smoothing;  ///< the open *SURFACE SMOOTHING name
 
   model::Step* step = nullptr;  ///< open *STEP

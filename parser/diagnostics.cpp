@@ -16,13 +16,7 @@ void Diagnostics::warning(SourceLoc loc, std::string keyword, std::string messag
   items_.push_back({Diagnostic::Severity::Warning, loc, std::move(keyword), std::move(message)});
 }
 
-std::string describe(SourceLoc loc, const SourceTable& sources) {
-  const std::string& path = loc.file < sources.files.size() ? sources.files[loc.file].path
-                                                            : std::string("<unknown>");
-  if (loc.line == 0) return path;
-  if (loc.col == 0) return fmt::format("{}:{}", path, loc.line);
-  return fmt::format("{}:{}:{}", path, loc.line, loc.col);
-}
+std::string describe(SourceLoc loc, const SourceTable& sources) { return sources.describe(loc); }
 
 std::string Diagnostics::format(const Diagnostic& d, const SourceTable& sources) const {
   std::string out = fmt::format("{}: {}: ", describe(d.loc, sources),

@@ -92,6 +92,7 @@ void check_contact(model::Model& m, Diagnostics& diags) {
     if (!p.geometric_correction.empty())
       check_defined(diags, m.surface_smoothings, p.geometric_correction, p.loc, "*CONTACT PAIR",
                     "surface smoothing");
+    if (!p.adjust_nset.empty()) check_defined(diags, m.mesh.nsets, p.adjust_nset, p.loc, "*CONTACT PAIR", "node set");
   };
   for (const auto& p : m.contact_pairs) check_pair(p);
   for (const auto& step : m.steps)
@@ -114,15 +115,53 @@ void check_contact(model::Model& m, Diagnostics& diags) {
     check_surface(m, diags, gcorr.surface, gcorr.loc, "*SURFACE PROPERTY ASSIGNMENT");
   for (const auto& [name, sm] : m.surface_smoothings)
     for (const auto& c : sm.corrections) check_surface(m, diags, c.surface, c.loc, "*SURFACE SMOOTHING");
+  // A clearance belongs to an existing pair [K16 §3.21].
+  auto has_pair = [&](const std::string& slave, const std::string& master) {
+    return std::any_of(m.contact_pairs.begin(), m.contact_pairs.end(),
+                       [&](const model::ContactPair& p) { return p.slave == slave && p.master == master; });
+  };
   for (const auto& c : m.clearances) {
     check_surface(m, diags, c.slave, c.loc, "*CLEARANCE");
     check_surface(m, diags, c.master, c.loc, "*CLEARANCE");
+    if (!has_pair(c.slave, c.master))
+      diags.error(c.loc, "*CLEARANCE", fmt::format("no *CONTACT PAIR has slave '{}' and master '{}'", c.slave, c.master));
   }
+  for (const auto& step : m.steps)
+    for (const auto& cc : step.contact_controls) {
+      check_surface(m, diags, cc.slave, cc.loc, "*CONTACT CONTROLS");
+      check_surface(m, diags, cc.master, cc.loc, "*CONTACT CONTROLS");
+    }
 }
 
 void check_amplitude(const model::Model& m, Diagnostics& diags, const std::string& name, model::SourceLoc loc,
                      const char* keyword) {
   if (!name.empty()) check_defined(diags, m.amplitudes, name, loc, keyword, "amplitude");
+}
+
+/// GRAV loads act through the density: every element they load needs a material with *DENSITY
+/// (without one the load would silently be zero).
+void check_gravity_density(const model::Model& m, Diagnostics& diags) {
+  std::vector<const model::Material*> material_of;  // element row → material, built on first need
+  for (const auto& step : m.steps)
+    for (const auto& b : step.dloads)
+      for (const auto& e : b.entries) {
+        if (e.kind != model::DloadEntry::Kind::Gravity) continue;
+        if (material_of.empty()) {
+          material_of.assign(m.mesh.elements.size(), nullptr);
+          for (const auto& sec : m.mesh.sections) {
+            auto set = m.mesh.elsets.find(sec.elset);
+            auto mat = m.materials.find(sec.material);
+            if (set == m.mesh.elsets.end() || mat == m.materials.end()) continue;  // reported above
+            for (std::int32_t row : set->second.rows) material_of[row] = &mat->second;
+          }
+        }
+        for (std::int32_t row : e.elements)
+          if (const model::Material* mat = material_of[row]; mat && !mat->density) {
+            diags.error(e.loc, "*DLOAD", fmt::format("GRAV needs the density of material '{}' (add *DENSITY to it)",
+                                                     mat->name));
+            break;
+          }
+      }
 }
 
 void check_steps(model::Model& m, Diagnostics& diags) {
@@ -132,9 +171,11 @@ void check_steps(model::Model& m, Diagnostics& diags) {
       diags.error(step.loc, "*STEP", fmt::format("step '{}' has no procedure (expected *STATIC)", step.name));
     for (const auto& b : step.boundaries) check_amplitude(m, diags, b.amplitude, b.loc, "*BOUNDARY");
     for (const auto& b : step.cloads) check_amplitude(m, diags, b.amplitude, b.loc, "*CLOAD");
-    for (const auto& b : step.dloads) check_amplitude(m, diags, b.amplitude, b.loc, "*DLOAD");
+    for (const auto& b : step.dloads)
+      check_amplitude(m, diags, b.amplitude, b.loc, b.surface_load ? "*DSLOAD" : "*DLOAD");
     for (const auto& b : step.temperatures) check_amplitude(m, diags, b.amplitude, b.loc, "*TEMPERATURE");
   }
+  check_gravity_density(m, diags);
 }
 
 }  // namespace

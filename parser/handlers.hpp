@@ -10,9 +10,15 @@ namespace inpact::parser {
 void add_mesh_keywords(std::vector<KeywordSpec>& table);      // kw_mesh.cpp
 void add_assembly_keywords(std::vector<KeywordSpec>& table);  // kw_assembly.cpp
 void add_material_keywords(std::vector<KeywordSpec>& table);  // kw_material.cpp
-void add_load_keywords(std::vector<KeywordSpec>& table);      // kw_loads.cpp
+void add_load_keywords(std::vector<KeywordSpec>& table);      // kw_loads.cpp, calls the two below
+void add_amplitude_keywords(std::vector<KeywordSpec>& table);  // kw_amplitude.cpp
+void add_equation_keywords(std::vector<KeywordSpec>& table);   // kw_equation.cpp
 void add_step_keywords(std::vector<KeywordSpec>& table);      // kw_step.cpp
 void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
 void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
+
+/// Model data that changes the analysis (boundary conditions, initial conditions, equations)
+/// must precede the first *STEP; false, with an error, when it follows one (kw_loads.cpp).
+bool model_data_before_steps(KeywordContext& ctx);
 
 }  // namespace inpact::parser

@@ -1,7 +1,406 @@
+/// *BOUNDARY *CLOAD *DLOAD *DSLOAD *TEMPERATURE *INITIAL CONDITIONS: prescribed values and loads.
+/// *AMPLITUDE (kw_amplitude.cpp) and *EQUATION (kw_equation.cpp) register with this group.
+/// Sources: K16 §2.12 (*BOUNDARY), §4.31 (*DLOAD) and CCX, see KEYWORDS.md.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
 #include "handlers.hpp"
+#include "model/element_types.hpp"
+#include "text.hpp"
 
 namespace inpact::parser {
 
-void add_load_keywords(std::vector<KeywordSpec>& t) { (void)t; }
+namespace {
+
+using model::Op;
+
+Op op_of(const KeywordContext& ctx) { return ctx.choice_value("OP") == "NEW" ? Op::New : Op::Mod; }
+
+/// Parameters that select features inpact does not have: each one given is an error.
+void reject_params(KeywordContext& ctx, std::initializer_list<std::string_view> names) {
+  for (std::string_view p : names)
+    if (ctx.has(p)) ctx.error_param(p, fmt::format("{} is not supported yet", p));
+}
+
+/// History loads without data lines only make sense as OP=NEW: "remove every earlier load of
+/// this kind" (how Abaqus/CAE deactivates loads in later steps).
+bool data_or_new(KeywordContext& ctx) {
+  if (!ctx.data.empty() || op_of(ctx) == Op::New) return true;
+  ctx.error(ctx.keyword.loc, "data lines are missing (without them only OP=NEW, which removes earlier loads, "
+                             "makes sense)");
+  return false;
+}
+
+bool starts_with_letter(std::string_view s) {
+  return !s.empty() && std::isalpha(static_cast<unsigned char>(s.front()));
+}
+
+// --- *BOUNDARY -------------------------------------------------------------------------------
+
+struct DofRange {
+  int first, last;
+};
+
+/// The "type" format of *BOUNDARY: zero values on these DOFs [K16 §2.12]; DOF sets from
+/// [FEMGV] (secondary source). 1-3 are displacements, 4-6 rotations about x, y, z. inpact's
+/// solid and plane elements have DOFs 1-3 only, so the rotational part is recorded but
+/// constrains nothing.
+struct BoundaryType {
+  std::string_view name;
+  std::vector<DofRange> dofs;
+};
+const std::vector<BoundaryType>& boundary_types() {
+  static const std::vector<BoundaryType> types{
+      {"XSYMM", {{1, 1}, {5, 6}}},          // symmetry about a plane x = const: u1 = ur2 = ur3 = 0
+      {"YSYMM", {{2, 2}, {4, 4}, {6, 6}}},  // y = const: u2 = ur1 = ur3 = 0
+      {"ZSYMM", {{3, 5}}},                  // z = const: u3 = ur1 = ur2 = 0
+      {"XASYMM", {{2, 4}}},                 // antisymmetry about x = const: u2 = u3 = ur1 = 0
+      {"YASYMM", {{1, 1}, {3, 3}, {5, 5}}}, // y = const: u1 = u3 = ur2 = 0
+      {"ZASYMM", {{1, 2}, {6, 6}}},         // z = const: u1 = u2 = ur3 = 0
+      {"PINNED", {{1, 3}}},                 // all displacements: u1 = u2 = u3 = 0
+      {"ENCASTRE", {{1, 6}}}};              // fully built in: every displacement and rotation
+  return types;
+}
+
+/// One data line of *BOUNDARY into entries: `node|set, first[, last[, value]]` or `node|set, TYPE`.
+void boundary_line(KeywordContext& ctx, const Line& line, bool fixed, std::vector<model::BoundaryEntry>& out) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, 2, 4, "node or node set, first DOF[, last DOF[, value]] or node or node set, type"))
+    return;
+  auto nodes = ctx.nodes(f[0]);
+  model::BoundaryEntry e;
+  e.target = std::string(f[0].text);
+  e.loc = line.loc;
+  if (starts_with_letter(f[1].text)) {
+    const std::string type = normalize_name(f[1].text);
+    const auto& types = boundary_types();
+    auto it = std::find_if(types.begin(), types.end(), [&](const BoundaryType& t) { return t.name == type; });
+    if (it == types.end()) {
+      std::vector<std::string> names;
+      for (const auto& t : types) names.emplace_back(t.name);
+      const std::string guess = did_you_mean(type, names);
+      ctx.error(f[1].loc, fmt::format("'{}' is not a boundary type{}", f[1].text,
+                                      guess.empty() ? " (expected a DOF number or XSYMM, YSYMM, ZSYMM, XASYMM, YASYMM, "
+                                                      "ZASYMM, PINNED, ENCASTRE)"
+                                                    : fmt::format(" (did you mean {}?)", guess)));
+      return;
+    }
+    if (f.size() > 2) {
+      ctx.error(f[2].loc, fmt::format("the boundary type {} takes no further fields", type));
+      return;
+    }
+    if (!nodes) return;
+    e.nodes = std::move(*nodes);
+    for (const DofRange& r : it->dofs) {
+      e.first_dof = r.first;
+      e.last_dof = r.last;
+      out.push_back(e);
+    }
+    return;
+  }
+  auto first = ctx.dof(f[1]);
+  auto last = f.size() > 2 && !f[2].empty() ? ctx.dof(f[2]) : first;
+  std::optional<double> value = 0.0;
+  if (f.size() > 3 && !f[3].empty()) {
+    value = ctx.real(f[3], "prescribed value");
+    if (fixed && value) ctx.warning(f[3].loc, "the value is ignored: FIXED holds the value at the start of the step");
+  }
+  if (!nodes || !first || !last || !value) return;
+  if (*last < *first) {
+    ctx.error(f[2].loc, fmt::format("the last DOF {} is smaller than the first DOF {}", *last, *first));
+    return;
+  }
+  e.nodes = std::move(*nodes);
+  e.first_dof = *first;
+  e.last_dof = *last;
+  e.value = fixed ? 0.0 : *value;
+  out.push_back(std::move(e));
+}
+
+// *BOUNDARY: model data (no parameters, in force from the first step) or history data with
+// OP=MOD|NEW, AMPLITUDE=, TYPE=DISPLACEMENT, FIXED [K16 §2.12].
+void boundary(KeywordContext& ctx) {
+  const bool history = ctx.state.scope == kStepScope;
+  model::BoundaryBlock b;
+  b.loc = ctx.keyword.loc;
+  if (!history) {
+    if (!model_data_before_steps(ctx)) return;
+    for (const auto& p : ctx.keyword.params)
+      ctx.error(p.loc, fmt::format("{} applies only in a *STEP: model-level *BOUNDARY takes no parameters", p.name));
+  } else {
+    b.op = op_of(ctx);
+    b.amplitude = ctx.name_value("AMPLITUDE");
+    b.fixed = ctx.has("FIXED");
+    const std::string type = ctx.choice_value("TYPE");
+    if (!type.empty() && type != "DISPLACEMENT")
+      ctx.error_param("TYPE", fmt::format("TYPE={} is not supported (static steps prescribe displacements)", type));
+    if (b.fixed && ctx.has("TYPE")) ctx.error_param("TYPE", "TYPE cannot be used with FIXED");
+    reject_params(ctx, {"USER", "SUBMODEL", "PHANTOM"});
+    // LOAD CASE is accepted and left unread: only *BUCKLE steps use it, every other procedure
+    // ignores it [K16]. Abaqus: the OP parameter must be the same for all *BOUNDARY options within a step.
+    for (const auto& other : ctx.state.step->boundaries)
+      if (other.op != b.op) {
+        ctx.error_param("OP", fmt::format("OP must be the same on every *BOUNDARY of a step (line {} has OP={})",
+                                          other.loc.line, other.op == Op::New ? "NEW" : "MOD"));
+        break;
+      }
+  }
+  for (const Line& line : ctx.data) boundary_line(ctx, line, b.fixed, b.entries);
+  if (b.op == Op::New || !ctx.data.empty())
+    (history ? ctx.state.step->boundaries : ctx.model().boundaries).push_back(std::move(b));
+}
+
+// --- *CLOAD ----------------------------------------------------------------------------------
+
+// *CLOAD, OP=, AMPLITUDE=: `node|set, dof, magnitude`.
+void cload(KeywordContext& ctx) {
+  if (!data_or_new(ctx)) return;
+  reject_params(ctx, {"FOLLOWER", "USER", "ORIENTATION"});
+  model::CloadBlock b;
+  b.op = op_of(ctx);
+  b.amplitude = ctx.name_value("AMPLITUDE");
+  b.loc = ctx.keyword.loc;
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 3, 3, "node or node set, DOF, magnitude")) continue;
+    auto nodes = ctx.nodes(f[0]);
+    auto dof = ctx.dof(f[1]);
+    auto magnitude = ctx.real(f[2], "magnitude");
+    if (!nodes || !dof || !magnitude) continue;
+    if (*dof > 3)
+      ctx.warning(f[1].loc, fmt::format("DOF {} is a rotation: inpact's solid and plane elements have none, so "
+                                        "this moment acts on nothing", *dof));
+    b.entries.push_back({std::string(f[0].text), std::move(*nodes), *dof, *magnitude, line.loc});
+  }
+  ctx.state.step->cloads.push_back(std::move(b));
+}
+
+// --- *DLOAD / *DSLOAD ------------------------------------------------------------------------
+
+/// OP, AMPLITUDE and the parameters both distributed-load keywords share.
+model::DloadBlock dload_block(KeywordContext& ctx) {
+  // Pressure on the deformed face (a follower load) is the Abaqus default; FOLLOWER=NO is not.
+  if (ctx.choice_value("FOLLOWER") == "NO") ctx.error_param("FOLLOWER", "FOLLOWER=NO is not supported yet");
+  reject_params(ctx, {"CONSTANT RESULTANT", "ORIENTATION", "USER"});
+  model::DloadBlock b;
+  b.op = op_of(ctx);
+  b.amplitude = ctx.name_value("AMPLITUDE");
+  b.loc = ctx.keyword.loc;
+  return b;
+}
+
+/// `Pn` → face n-1 when every element has that face; nullopt (with an error) otherwise.
+std::optional<std::uint8_t> pressure_face(KeywordContext& ctx, const Field& label, int n,
+                                          const std::vector<std::int32_t>& elements) {
+  const auto& el = ctx.mesh().elements;
+  for (std::int32_t e : elements) {
+    const auto& info = model::element_type(el.type[e]);
+    if (n > static_cast<int>(info.faces.size())) {
+      ctx.error(label.loc, fmt::format("element {} ({}) has no face {}: its pressure labels are P1..P{}", el.labels[e],
+                                       info.name, n, info.faces.size()));
+      return std::nullopt;
+    }
+  }
+  return static_cast<std::uint8_t>(n - 1);
+}
+
+// *DLOAD, OP=, AMPLITUDE=: `element|elset, Pn, p` (pressure on face n, positive into the
+// element), `element|elset, GRAV, g, n1, n2, n3` (gravity: g along the direction n, which is
+// normalised; needs *DENSITY), `element|elset, BX|BY|BZ, b` (force per unit volume).
+void dload(KeywordContext& ctx) {
+  if (!data_or_new(ctx)) return;
+  model::DloadBlock b = dload_block(ctx);
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 3, 6, "element or element set, load type, magnitude[, direction]")) continue;
+    auto elements = ctx.elements(f[0]);
+    const std::string label = normalize_name(f[1].text);
+    auto magnitude = ctx.real(f[2], "magnitude");
+    if (!elements || !magnitude) continue;
+    model::DloadEntry e;
+    e.target = std::string(f[0].text);
+    e.magnitude = *magnitude;
+    e.loc = line.loc;
+    const bool face_label = label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '9';
+    if (label == "P") {
+      ctx.error(f[1].loc, "P (without a face number) is for shells and beams: on solid and plane elements give the "
+                          "face, P1, P2, ...");
+      continue;
+    } else if (face_label) {
+      auto face = pressure_face(ctx, f[1], label[1] - '0', *elements);
+      if (!face) continue;
+      e.kind = model::DloadEntry::Kind::Pressure;
+      e.faces.assign(elements->size(), *face);
+    } else if (label == "GRAV") {
+      if (!ctx.check_count(f, line, 6, 6, "element or element set, GRAV, magnitude, direction x, y, z")) continue;
+      double norm2 = 0;
+      bool ok = true;
+      for (int i = 0; i < 3; ++i) {
+        auto v = ctx.real(f[3 + i], "gravity direction");
+        if (!v) ok = false;
+        else e.direction[i] = *v, norm2 += *v * *v;
+      }
+      if (!ok) continue;
+      if (norm2 == 0) {
+        ctx.error(f[3].loc, "the gravity direction is the zero vector");
+        continue;
+      }
+      for (double& c : e.direction) c /= std::sqrt(norm2);
+      e.kind = model::DloadEntry::Kind::Gravity;
+    } else if (label == "BX" || label == "BY" || label == "BZ") {
+      if (!ctx.check_count(f, line, 3, 3, "element or element set, BX|BY|BZ, magnitude")) continue;
+      e.kind = model::DloadEntry::Kind::BodyForce;
+      e.direction[label[1] - 'X'] = 1.0;
+    } else {
+      std::vector<std::string> names{"GRAV", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6"};
+      const std::string guess = did_you_mean(label, names);
+      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, BX, BY, BZ){}",
+                                      f[1].text, guess.empty() ? "" : fmt::format("; did you mean {}?", guess)));
+      continue;
+    }
+    e.elements = std::move(*elements);
+    b.entries.push_back(std::move(e));
+  }
+  ctx.state.step->dloads.push_back(std::move(b));
+}
+
+// *DSLOAD, OP=, AMPLITUDE=: `surface, P, p` — a pressure on the faces of an element-based
+// surface, stored like *DLOAD Pn with one face per element.
+void dsload(KeywordContext& ctx) {
+  if (!data_or_new(ctx)) return;
+  model::DloadBlock b = dload_block(ctx);
+  b.surface_load = true;
+  std::vector<Field> f;
+  const auto& surfaces = ctx.mesh().surfaces;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 3, 3, "surface, P, magnitude")) continue;
+    auto magnitude = ctx.real(f[2], "magnitude");
+    if (normalize_name(f[1].text) != "P") {
+      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported on *DSLOAD (only P, a pressure)", f[1].text));
+      continue;
+    }
+    const std::string key = normalize_label(f[0].text);
+    auto it = surfaces.find(key);
+    if (it == surfaces.end()) {
+      std::vector<std::string> names;
+      for (const auto& [k, s] : surfaces) names.push_back(k);
+      const std::string guess = did_you_mean(key, names);
+      ctx.error(f[0].loc, fmt::format("surface '{}' is not defined{}", f[0].text,
+                                      guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
+      continue;
+    }
+    if (it->second.kind != model::Surface::Kind::Element) {
+      ctx.error(f[0].loc, fmt::format("surface '{}' is node-based: a pressure needs element faces", f[0].text));
+      continue;
+    }
+    if (!magnitude) continue;
+    model::DloadEntry e;
+    e.kind = model::DloadEntry::Kind::Pressure;
+    e.target = std::string(f[0].text);
+    e.magnitude = *magnitude;
+    e.loc = line.loc;
+    for (const model::Face& face : it->second.faces) {
+      e.elements.push_back(face.element);
+      e.faces.push_back(face.face);
+    }
+    b.entries.push_back(std::move(e));
+  }
+  ctx.state.step->dloads.push_back(std::move(b));
+}
+
+// --- temperatures ----------------------------------------------------------------------------
+
+/// `node|set, T` lines (the gradient fields Abaqus allows are for shells and beams).
+std::vector<model::TemperatureEntry> temperature_lines(KeywordContext& ctx) {
+  std::vector<model::TemperatureEntry> out;
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 2, 2, "node or node set, temperature")) continue;
+    auto nodes = ctx.nodes(f[0]);
+    auto t = ctx.real(f[1], "temperature");
+    if (nodes && t) out.push_back({std::string(f[0].text), std::move(*nodes), *t, line.loc});
+  }
+  return out;
+}
+
+// *TEMPERATURE, OP=, AMPLITUDE=: prescribed nodal temperatures in a step.
+void temperature(KeywordContext& ctx) {
+  if (!data_or_new(ctx)) return;
+  reject_params(ctx, {"USER", "FILE", "BSTEP", "BINC", "ESTEP", "EINC", "INPUT", "MIDSIDE", "INTERPOLATE"});
+  model::TemperatureBlock b;
+  b.op = op_of(ctx);
+  b.amplitude = ctx.name_value("AMPLITUDE");
+  b.loc = ctx.keyword.loc;
+  b.entries = temperature_lines(ctx);
+  ctx.state.step->temperatures.push_back(std::move(b));
+}
+
+// *INITIAL CONDITIONS, TYPE=TEMPERATURE: the temperatures at the start of the analysis.
+void initial_conditions(KeywordContext& ctx) {
+  if (!model_data_before_steps(ctx)) return;
+  const std::string type = ctx.choice_value("TYPE");
+  if (type != "TEMPERATURE") {
+    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only TEMPERATURE)", ctx.param("TYPE")->value.value_or("")));
+    return;
+  }
+  reject_params(ctx, {"USER", "FILE", "STEP", "INC", "INPUT"});
+  auto entries = temperature_lines(ctx);
+  auto& dst = ctx.model().initial_temperatures;
+  dst.insert(dst.end(), std::make_move_iterator(entries.begin()), std::make_move_iterator(entries.end()));
+}
+
+}  // namespace
+
+bool model_data_before_steps(KeywordContext& ctx) {
+  if (ctx.model().steps.empty()) return true;
+  ctx.error(ctx.keyword.loc, "model data must come before the first *STEP");
+  return false;
+}
+
+void add_load_keywords(std::vector<KeywordSpec>& t) {
+  using VK = ValueKind;
+  using VT = ValueType;
+  const ParamSpec op{"OP", VK::Required, VT::Choice, {"MOD", "NEW"}};
+  const ParamSpec amp{"AMPLITUDE", VK::Required};
+  t.push_back({"*BOUNDARY", kModelDataScopes | kStepScope,
+               {op, amp, {"TYPE", VK::Required, VT::Choice, {"DISPLACEMENT", "VELOCITY", "ACCELERATION"}},
+                {"FIXED", VK::None}, {"USER", VK::None}, {"LOAD CASE", VK::Required, VT::Int},
+                {"SUBMODEL", VK::None}, {"PHANTOM", VK::Required}},
+               DataLines::Optional, boundary});
+  t.push_back({"*CLOAD", kStepScope,
+               {op, amp, {"FOLLOWER", VK::None}, {"USER", VK::None}, {"ORIENTATION", VK::Required}},
+               DataLines::Optional, cload});
+  const std::vector<ParamSpec> dload_params{op, amp,
+                                            {"FOLLOWER", VK::Optional, VT::Choice, {"YES", "NO"}},
+                                            {"CONSTANT RESULTANT", VK::Optional, VT::Choice, {"YES", "NO"}},
+                                            {"ORIENTATION", VK::Required},
+                                            {"USER", VK::None}};
+  t.push_back({"*DLOAD", kStepScope, dload_params, DataLines::Optional, dload});
+  t.push_back({"*DSLOAD", kStepScope, dload_params, DataLines::Optional, dsload});
+  t.push_back({"*TEMPERATURE", kStepScope,
+               {op, amp, {"USER", VK::None}, {"FILE", VK::Required}, {"BSTEP", VK::Required, VT::Int},
+                {"BINC", VK::Required, VT::Int}, {"ESTEP", VK::Required, VT::Int}, {"EINC", VK::Required, VT::Int},
+                {"INPUT", VK::Required}, {"MIDSIDE", VK::None}, {"INTERPOLATE", VK::None}},
+               DataLines::Optional, temperature});
+  t.push_back({"*INITIAL CONDITIONS", kModelDataScopes,
+               {{"TYPE", VK::Required, VT::Choice,
+                 {"TEMPERATURE", "STRESS", "VELOCITY", "FIELD", "PLASTIC STRAIN", "HARDENING", "SOLUTION", "RATIO",
+                  "PORE PRESSURE", "SATURATION", "CONTACT", "ROTATING VELOCITY", "INITIAL GAP", "DISPLACEMENT",
+                  "FLUID PRESSURE", "MASS FLOW RATE", "CONCENTRATION", "SPECIFIC ENERGY", "DENSITY"},
+                 true},
+                {"USER", VK::None}, {"FILE", VK::Required}, {"STEP", VK::Required, VT::Int},
+                {"INC", VK::Required, VT::Int}, {"INPUT", VK::Required}},
+               DataLines::Required, initial_conditions});
+  add_amplitude_keywords(t);
+  add_equation_keywords(t);
+}
 
 }  // namespace inpact::parser

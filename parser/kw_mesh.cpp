@@ -58,7 +58,8 @@ void node(KeywordContext& ctx) {
     bool ok = true;
     for (std::size_t i = 1; i < std::min<std::size_t>(f.size(), 4); ++i) {
       if (f[i].empty()) continue;
-      auto v = ctx.real(f[i], fmt::format("coordinate {}", i));
+      static constexpr std::string_view kCoordinate[] = {"", "coordinate 1", "coordinate 2", "coordinate 3"};
+      auto v = ctx.real(f[i], kCoordinate[i]);
       if (!v) ok = false;
       else x[i - 1] = *v;
     }
@@ -95,6 +96,7 @@ void element(KeywordContext& ctx) {
   Set* elset = ctx.has("ELSET") ? &set_named(build.mesh.elsets, ctx, "ELSET") : nullptr;
   const std::uint8_t type_index = model::element_type_index(*type);
   const std::size_t need = 1 + type->n_nodes;
+  const std::string layout = fmt::format("element label and {} node labels for {}", type->n_nodes, type->name);
   el.labels.reserve(el.labels.size() + ctx.data.size());
   el.conn.reserve(el.conn.size() + ctx.data.size() * type->n_nodes);
 
@@ -107,20 +109,11 @@ void element(KeywordContext& ctx) {
       split_fields(ctx.data[++i], f);
       record.insert(record.end(), f.begin(), f.end());
     }
-    if (!ctx.check_count(record, first, need, need,
-                         fmt::format("element label and {} node labels for {}", type->n_nodes, type->name)))
-      continue;
+    if (!ctx.check_count(record, first, need, need, layout)) continue;
     auto label = ctx.integer(record[0], "element label");
     if (!label) continue;
     if (*label <= 0) {
       ctx.error(record[0].loc, fmt::format("element label {} must be positive", *label));
-      continue;
-    }
-    const auto row = static_cast<std::int32_t>(el.labels.size());
-    if (!el.index.insert(0, *label, row)) {
-      auto prev = el.index.find(0, *label);
-      ctx.error(record[0].loc, fmt::format("element {} is defined twice (first at line {})", *label,
-                                           el.loc[*prev].line));
       continue;
     }
     bool ok = true;
@@ -137,6 +130,15 @@ void element(KeywordContext& ctx) {
         build.pending.push_back({el.conn.size(), *n, 0, record[k].loc});
         el.conn.push_back(-1);
       }
+    }
+    // The label is indexed only once the whole record is good: an index entry for an element
+    // that was then dropped would point at the row of the next element.
+    const auto row = static_cast<std::int32_t>(el.labels.size());
+    if (ok && !el.index.insert(0, *label, row)) {
+      auto prev = el.index.find(0, *label);
+      ctx.error(record[0].loc, fmt::format("element {} is defined twice (first at line {})", *label,
+                                           el.loc[*prev].line));
+      ok = false;
     }
     if (!ok) {
       // Undo the partial element so the table stays consistent.

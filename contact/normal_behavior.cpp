@@ -1,0 +1,310 @@
+#include "normal_behavior.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "model/element_types.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+using model::EnforcementMethod;
+using model::PressureOverclosure;
+
+/// [AX p.784]: Lagrange multipliers switch on above this multiple of k_e.
+constexpr double kLagrangeLimit = 1000.0;
+
+bool penalty_type(EnforcementMethod m) {
+  return m == EnforcementMethod::PenaltyLinear || m == EnforcementMethod::PenaltyNonlinear ||
+         m == EnforcementMethod::AugmentedLagrange;
+}
+
+/// The method Abaqus/Standard picks when the deck names none (KEYWORDS.md Part C d, [IG]).
+void choose_default_method(ResolvedNormalBehavior& r, model::ContactDiscretization discretization,
+                           bool small_sliding, bool general_contact, bool self_contact_3d) {
+  auto set = [&](EnforcementMethod m, const char* why) {
+    r.method = m;
+    r.method_reason = why;
+  };
+  if (r.law != PressureOverclosure::Hard) set(EnforcementMethod::Direct, "softened laws are enforced directly");
+  else if (general_contact) set(EnforcementMethod::PenaltyLinear, "Abaqus default for general contact");
+  else if (small_sliding) set(EnforcementMethod::Direct, "Abaqus default for small-sliding pairs");
+  else if (discretization == model::ContactDiscretization::SurfaceToSurface)
+    set(EnforcementMethod::PenaltyLinear, "Abaqus default for finite-sliding surface-to-surface pairs");
+  else if (self_contact_3d)
+    set(EnforcementMethod::AugmentedLagrange, "Abaqus default for 3-D node-to-surface self-contact");
+  else set(EnforcementMethod::Direct, "Abaqus default for node-to-surface pairs");
+}
+
+}  // namespace
+
+ResolvedNormalBehavior resolve_normal_behavior(const model::SurfaceInteraction* interaction,
+                                               model::ContactDiscretization discretization,
+                                               bool small_sliding, bool general_contact,
+                                               const NormalBehaviorOptions& options) {
+  ResolvedNormalBehavior r;
+  if (interaction && interaction->behavior) r.deck = *interaction->behavior;
+  r.law = r.deck.pressure_overclosure;
+  if (r.deck.method != EnforcementMethod::Default) {
+    r.method = r.deck.method;
+    r.method_is_default = false;
+    r.method_reason = "given in *SURFACE BEHAVIOR";
+  } else {
+    choose_default_method(r, discretization, small_sliding, general_contact, options.self_contact_3d);
+  }
+
+  const model::ContactControls* cc = options.controls;
+  if (cc) r.user_adaptive_stiffness = cc->user_adaptive_stiffness;
+  if (!penalty_type(r.method)) return r;
+
+  // Default stiffness multiples of k_e: linear penalty 10 [IG "Linear Penalty Method"],
+  // nonlinear final stiffness 100 [IG], augmented Lagrange 1000 [AX p.782]. The step's
+  // STIFFNESS SCALE FACTOR multiplies the behaviour's own factor [AX p.781].
+  r.default_factor = r.method == EnforcementMethod::PenaltyLinear      ? 10.0
+                     : r.method == EnforcementMethod::PenaltyNonlinear ? 100.0
+                                                                       : 1000.0;
+  r.given_stiffness = r.deck.penalty_stiffness;
+  r.scale_factor = r.deck.stiffness_scale_factor * (cc && cc->stiffness_scale_factor ? *cc->stiffness_scale_factor : 1.0);
+  r.initial_final_ratio = r.deck.initial_final_stiffness_ratio.value_or(r.initial_final_ratio);
+  r.upper_quadratic_limit = r.deck.upper_quadratic_limit_scale_factor.value_or(r.upper_quadratic_limit);
+  r.lower_quadratic_ratio = r.deck.lower_quadratic_limit_ratio.value_or(r.lower_quadratic_ratio);
+
+  if (r.method != EnforcementMethod::AugmentedLagrange) return r;
+  // Penetration tolerance [AX p.782-783]: 0.1 % of the characteristic interface length, 5 % for
+  // finite-sliding surface-to-surface (general contact in Abaqus/Standard is that formulation),
+  // the default scaled by 1/√f_k when f_k < 1 (f_k: both scale factors together, since [AX]
+  // names "the interface discussed below", which is both); a given tolerance is never scaled.
+  if (cc && cc->absolute_penetration_tolerance) {
+    r.tolerance = *cc->absolute_penetration_tolerance;
+    r.tolerance_is_absolute = true;
+    r.tolerance_is_default = false;
+  } else if (cc && cc->relative_penetration_tolerance) {
+    r.tolerance = *cc->relative_penetration_tolerance;
+    r.tolerance_is_default = false;
+  } else {
+    const bool finite_sts =
+        general_contact || (discretization == model::ContactDiscretization::SurfaceToSurface && !small_sliding);
+    double t = finite_sts ? 0.05 : 0.001;
+    if (r.scale_factor < 1.0) t /= std::sqrt(r.scale_factor);
+    r.tolerance = t;
+  }
+  return r;
+}
+
+double penalty_stiffness(const ResolvedNormalBehavior& r, double ke) {
+  if (!penalty_type(r.method)) return 0.0;
+  return (r.given_stiffness ? *r.given_stiffness : r.default_factor * ke) * r.scale_factor;
+}
+
+bool uses_lagrange_multipliers(const ResolvedNormalBehavior& r, double ke, double slope) {
+  if (penalty_type(r.method)) return penalty_stiffness(r, ke) > kLagrangeLimit * ke;
+  if (r.law == PressureOverclosure::Hard) return true;  // direct hard contact: always
+  return slope > kLagrangeLimit * ke;
+}
+
+std::optional<double> penetration_tolerance(const ResolvedNormalBehavior& r, double l_char) {
+  if (!r.tolerance) return std::nullopt;
+  return r.tolerance_is_absolute ? *r.tolerance : *r.tolerance * l_char;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mesh scales.
+//
+// k_e: Abaqus does not publish its "representative underlying element stiffness" (KEYWORDS.md
+// Part C a). inpact takes, per slave facet, the stiffness of its element against a pressure on
+// that facet, per unit area — the units of a penalty stiffness and of a softened law's slope
+// (pressure per overclosure), so k_pen and k_e compare directly:
+//     k_f = M / h,   h = V_e / A_f  (3-D; 2-D: element area / edge length)
+// where h is the element's thickness normal to the facet (exact for a brick or a prism, a third
+// of the height for a tetrahedron) and M the constrained (P-wave) modulus
+//     M = E (1 − ν) / ((1 + ν)(1 − 2ν))   (3-D, plane strain, axisymmetric)
+//     M = E / (1 − ν²)                     (plane stress)
+// because the layer under a contact patch is held laterally by the material around it, so it
+// deforms in uniaxial strain, not uniaxial stress. k_e is the median over the facets: robust to
+// a few distorted or tiny elements, and O(n) with nth_element.
+// Characteristic length: the median facet size, √A_f in 3-D and the edge length in 2-D — the
+// "typical facet size" the manuals name (the averaging rule is not published either).
+// Only corner nodes are used (straight-sided elements): an estimate, and cheap.
+
+namespace {
+
+using Vec = std::array<double, 3>;
+
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
+
+/// Area of a 3-D facet from its corners (a quadrilateral through its diagonals: exact when
+/// planar, the projected area when warped).
+double facet_area(const std::vector<Vec>& c) {
+  if (c.size() == 3) return 0.5 * norm(cross(sub(c[1], c[0]), sub(c[2], c[0])));
+  return 0.5 * norm(cross(sub(c[2], c[0]), sub(c[3], c[1])));
+}
+
+std::vector<Vec> corners(const model::Model& m, std::size_t e, const model::FaceDef& f) {
+  auto nodes = m.mesh.elements.nodes_of(e);
+  std::vector<Vec> out(f.n_corners);
+  for (int i = 0; i < f.n_corners; ++i) out[i] = m.mesh.nodes.coords[nodes[f.nodes[i]]];
+  return out;
+}
+
+/// Volume of a 3-D element by the divergence theorem over its faces, split into triangles.
+double element_volume(const model::Model& m, std::size_t e) {
+  const model::ElementTypeInfo& info = model::element_type(m.mesh.elements.type[e]);
+  double six_v = 0.0;
+  for (const model::FaceDef& f : info.faces) {
+    const auto c = corners(m, e, f);
+    for (std::size_t i = 1; i + 1 < c.size(); ++i) six_v += dot(c[0], cross(c[i], c[i + 1]));
+  }
+  return std::abs(six_v) / 6.0;
+}
+
+/// Area of a 2-D element (shoelace over its corners, which are its first nodes in order).
+double element_area(const model::Model& m, std::size_t e) {
+  const model::ElementTypeInfo& info = model::element_type(m.mesh.elements.type[e]);
+  auto nodes = m.mesh.elements.nodes_of(e);
+  const std::size_t n = info.faces.size();  // a 2-D element has as many corners as edges
+  double twice = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec& a = m.mesh.nodes.coords[nodes[i]];
+    const Vec& b = m.mesh.nodes.coords[nodes[(i + 1) % n]];
+    twice += a[0] * b[1] - b[0] * a[1];
+  }
+  return std::abs(twice) / 2.0;
+}
+
+double constrained_modulus(const model::Elastic& el, model::ElementFamily family) {
+  const double e = el.youngs_modulus, nu = el.poissons_ratio;
+  if (family == model::ElementFamily::PlaneStress) return e / (1.0 - nu * nu);
+  return e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+}
+
+/// The elastic constants of every element (null where no section or no *ELASTIC).
+std::vector<const model::Elastic*> element_elasticity(const model::Model& m) {
+  std::vector<const model::Elastic*> out(m.mesh.elements.size(), nullptr);
+  for (const model::SolidSection& sec : m.mesh.sections) {
+    auto set = m.mesh.elsets.find(sec.elset);
+    auto mat = m.materials.find(sec.material);
+    if (set == m.mesh.elsets.end() || mat == m.materials.end() || !mat->second.elastic) continue;
+    for (std::int32_t e : set->second.rows) out[e] = &*mat->second.elastic;
+  }
+  return out;
+}
+
+double median(std::vector<double>& v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+}  // namespace
+
+std::optional<SurfaceScales> surface_scales(const model::Model& m, const model::Surface& surface) {
+  if (surface.kind != model::Surface::Kind::Element) return std::nullopt;
+  const auto elastic = element_elasticity(m);
+  std::vector<double> stiffness, size;
+  stiffness.reserve(surface.faces.size());
+  size.reserve(surface.faces.size());
+  for (const model::Face& face : surface.faces) {
+    const std::size_t e = static_cast<std::size_t>(face.element);
+    if (!elastic[e]) continue;
+    const model::ElementTypeInfo& info = model::element_type(m.mesh.elements.type[e]);
+    const auto c = corners(m, e, info.faces[face.face]);
+    double facet = 0.0, thickness = 0.0;
+    if (info.dim == 3) {
+      const double area = facet_area(c);
+      facet = std::sqrt(area);
+      thickness = area > 0 ? element_volume(m, e) / area : 0.0;
+    } else {
+      facet = norm(sub(c[1], c[0]));
+      thickness = facet > 0 ? element_area(m, e) / facet : 0.0;
+    }
+    if (thickness <= 0) continue;  // a degenerate element says nothing about stiffness
+    stiffness.push_back(constrained_modulus(*elastic[e], info.family) / thickness);
+    size.push_back(facet);
+  }
+  if (stiffness.empty()) return std::nullopt;
+  SurfaceScales s;
+  s.n_facets = stiffness.size();
+  s.element_stiffness = median(stiffness);
+  s.characteristic_length = median(size);
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+std::string law_text(const ResolvedNormalBehavior& r) {
+  const model::SurfaceBehavior& b = r.deck;
+  switch (r.law) {
+    case PressureOverclosure::Hard: return b.no_separation ? "hard contact, no separation" : "hard contact";
+    case PressureOverclosure::Exponential:
+      return fmt::format("exponential softened contact (c0 = {:g}, p0 = {:g})", b.exponential_c0, b.exponential_p0);
+    case PressureOverclosure::Linear:
+      return fmt::format("linear softened contact (slope {:g})", b.linear_slope.value_or(0.0));
+    case PressureOverclosure::Tabular: return fmt::format("tabular softened contact ({} points)", b.table.size());
+    case PressureOverclosure::Tied: return fmt::format("tied contact (stiffness {:g})", b.tied_slope.value_or(0.0));
+  }
+  return {};
+}
+
+const char* method_text(EnforcementMethod m) {
+  switch (m) {
+    case EnforcementMethod::Direct: return "direct";
+    case EnforcementMethod::PenaltyLinear: return "linear penalty";
+    case EnforcementMethod::PenaltyNonlinear: return "nonlinear penalty";
+    case EnforcementMethod::AugmentedLagrange: return "augmented Lagrange";
+    case EnforcementMethod::Default: break;
+  }
+  return "default";
+}
+
+}  // namespace
+
+std::string describe(const ResolvedNormalBehavior& r, const std::optional<SurfaceScales>& scales) {
+  std::string out = fmt::format("{}, {} ({})", law_text(r), method_text(r.method), r.method_reason);
+  const bool penalty = penalty_type(r.method);
+  if (penalty) {
+    out += r.given_stiffness ? fmt::format(", stiffness {:g}", *r.given_stiffness)
+                             : fmt::format(", stiffness {:g} × k_e", r.default_factor);
+    if (r.scale_factor != 1.0) out += fmt::format(" × {:g}", r.scale_factor);
+    if (scales) out += fmt::format(" = {:.4g} (k_e = {:.4g})", penalty_stiffness(r, scales->element_stiffness),
+                                   scales->element_stiffness);
+    if (r.method == EnforcementMethod::PenaltyNonlinear)
+      out += fmt::format(", K_i/K_f {:g}, quadratic from {:g} to {:g} of the facet size", r.initial_final_ratio,
+                         r.lower_quadratic_ratio * r.upper_quadratic_limit, r.upper_quadratic_limit);
+    if (r.user_adaptive_stiffness) out += ", user-adaptive in the first increment";
+  }
+  if (penalty && (scales || !r.given_stiffness)) {
+    // A default stiffness is a multiple of k_e, so the comparison needs no k_e value.
+    const double ke = scales ? scales->element_stiffness : 1.0;
+    out += uses_lagrange_multipliers(r, ke) ? ", Lagrange multipliers (k > 1000 k_e)"
+                                            : ", no Lagrange multipliers (k ≤ 1000 k_e)";
+  } else if (penalty)
+    out += ", Lagrange multipliers if k > 1000 k_e";
+  else if (r.law == PressureOverclosure::Hard)
+    out += ", Lagrange multipliers";
+  else
+    out += ", Lagrange multipliers where the slope exceeds 1000 k_e";
+  if (r.tolerance) {
+    if (r.tolerance_is_absolute) out += fmt::format(", penetration tolerance {:g}", *r.tolerance);
+    else {
+      out += fmt::format(", penetration tolerance {:g} % of the characteristic length", *r.tolerance * 100.0);
+      if (scales) out += fmt::format(" = {:.4g}", *penetration_tolerance(r, scales->characteristic_length));
+    }
+    if (r.tolerance_is_default) out += " (default)";
+  }
+  return out;
+}
+
+}  // namespace inpact::contact
