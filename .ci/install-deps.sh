@@ -10,6 +10,7 @@ packages=(
   libhdf5-dev                                # results file
   libfmt-dev libcli11-dev                    # formatting, command line
   libgtest-dev                               # tests
+  python3-h5py python3-meshio python3-paraview xvfb xauth  # results-file reader tests (tests/io)
 )
 
 missing=()

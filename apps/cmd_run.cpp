@@ -1,10 +1,83 @@
+/// `inpact run`: read the deck, run the analysis, and write JOB.h5 (+ .xdmf) and JOB.sta.
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <unistd.h>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "io/io_error.hpp"
+#include "io/results_writer.hpp"
+#include "io/sha256.hpp"
+#include "io/status_log.hpp"
 #include "parser/read_deck.hpp"
+#include "solver/analysis.hpp"
+#include "solver/analysis_error.hpp"
 
 namespace inpact::app {
+
+namespace {
+
+/// Connects the analysis to the results file, the status log and the terminal.
+class RunObserver final : public solver::AnalysisObserver {
+ public:
+  RunObserver(io::ResultsWriter& results, io::StatusLog& status, const RunOptions& options)
+      : results_(results), status_(status), options_(options), tty_(isatty(fileno(stdout)) != 0) {}
+
+  void step_started(const model::Step& step, int number) override {
+    results_.begin_step(step);
+    status_.note(fmt::format("STEP {} BEGINS ({})", number, step.name));
+    if (!options_.quiet) std::printf("step %d (%s)\n", number, step.name.c_str());
+  }
+  void iteration(const solver::IterationRecord& r) override {
+    if (options_.verbose)
+      std::printf("  inc %d att %d iter %d  max residual %.3e (%.2e of the average force)  max correction %.3e\n",
+                  r.increment, r.attempt, r.iteration, r.max_residual, r.residual_ratio, r.max_correction);
+  }
+  void attempt_finished(const solver::StatusRow& row) override {
+    status_.write(row);
+    results_.append_status(row);
+    if (options_.quiet) return;
+    const std::string line = fmt::format("  step {} inc {} att {}{}  iterations {}  step time {:.4g}  dt {:.3g}",
+                                         row.step, row.increment, row.attempt, row.cut_back ? "U" : "",
+                                         row.total_iters, row.step_time, row.inc_of_time);
+    // On a terminal the progress line is rewritten in place; in a log, one line each.
+    if (tty_) std::printf("\r%-78s", line.c_str());
+    else std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  }
+  void frame(const solver::Frame& frame) override { results_.write_frame(frame); }
+  void message(std::string_view text) override {
+    if (tty_ && !options_.quiet) std::printf("\n");
+    std::fprintf(stderr, "%.*s\n", static_cast<int>(text.size()), text.data());
+  }
+  void end_line() {
+    if (tty_ && !options_.quiet) std::printf("\n");
+  }
+
+ private:
+  io::ResultsWriter& results_;
+  io::StatusLog& status_;
+  const RunOptions& options_;
+  bool tty_;
+};
+
+/// SHA-256 over the deck and every file it included, in reading order.
+std::string deck_digest(const model::Model& m) {
+  std::string all;
+  for (const auto& f : m.sources.files) {
+    std::ifstream in(f.path, std::ios::binary);
+    std::ostringstream buf;
+    buf << in.rdbuf();
+    all += buf.str();
+  }
+  return io::sha256(all);
+}
+
+}  // namespace
 
 int run_analysis(const RunOptions& options) {
   parser::ReadOptions read_options;
@@ -16,11 +89,42 @@ int run_analysis(const RunOptions& options) {
                  result.diagnostics.error_count());
     return kDeckError;
   }
-  // The analysis procedures come with the solid mechanics core; until then say so plainly
-  // rather than write results that look like an answer.
-  std::fprintf(stderr, "%s: the deck is valid, but this build of inpact cannot analyse it yet "
-                       "(the solver is not built); nothing was written\n", options.deck.c_str());
-  return kAnalysisFailed;
+  const std::string job = options.job.empty() ? std::filesystem::path(options.deck).stem().string() : options.job;
+  const std::filesystem::path dir = options.output_dir;
+  try {
+    std::filesystem::create_directories(dir);
+    io::ResultsWriter results =
+        io::ResultsWriter::create(dir / (job + ".h5"), result.model, deck_digest(result.model), INPACT_VERSION);
+    io::StatusLog status(dir / (job + ".sta"), INPACT_VERSION);
+    RunObserver observer(results, status, options);
+    solver::AnalysisOptions analysis_options;
+    analysis_options.threads = options.threads;
+    solver::AnalysisOutcome outcome;
+    try {
+      outcome = solver::run_analysis(result.model, observer, analysis_options);
+    } catch (const solver::AnalysisError& e) {
+      observer.end_line();
+      results.finish(io::RunStatus::Aborted);
+      status.finish(false);
+      std::fprintf(stderr, "%s: error: %s\n", options.deck.c_str(), e.what());
+      return kDeckError;
+    }
+    observer.end_line();
+    results.finish(outcome.completed ? io::RunStatus::Completed : io::RunStatus::Aborted);
+    status.finish(outcome.completed);
+    if (!outcome.completed) {
+      std::fprintf(stderr, "%s: the analysis stopped: %s\n", options.deck.c_str(), outcome.message.c_str());
+      return kAnalysisFailed;
+    }
+    if (!options.quiet) std::printf("%s: completed; results in %s\n", job.c_str(), results.h5_path().c_str());
+    return kOk;
+  } catch (const io::IoError& e) {
+    std::fprintf(stderr, "inpact: I/O error: %s\n", e.what());
+    return kIoError;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::fprintf(stderr, "inpact: I/O error: %s\n", e.what());
+    return kIoError;
+  }
 }
 
 }  // namespace inpact::app

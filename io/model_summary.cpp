@@ -1,9 +1,12 @@
 #include "model_summary.hpp"
 
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+
+#include "contact/normal_behavior.hpp"
 
 namespace inpact::io {
 
@@ -55,6 +58,85 @@ void write_materials(std::ostream& out, const model::Model& m) {
           s.thickness != 1.0 ? fmt::format(", thickness {:g}", s.thickness) : "");
 }
 
+const char* discretization_name(model::ContactDiscretization d) {
+  return d == model::ContactDiscretization::SurfaceToSurface ? "surface-to-surface" : "node-to-surface";
+}
+
+/// Scales of the slave surface, or of the master when the slave is node-based.
+std::optional<contact::SurfaceScales> pair_scales(const model::Model& m, const std::string& slave,
+                                                  const std::string& master) {
+  for (const std::string* name : {&slave, &master}) {
+    auto it = m.mesh.surfaces.find(*name);
+    if (it == m.mesh.surfaces.end()) continue;
+    if (auto s = contact::surface_scales(m, it->second)) return s;
+  }
+  return std::nullopt;
+}
+
+const model::SurfaceInteraction* interaction_named(const model::Model& m, const std::string& name) {
+  auto it = m.interactions.find(name);
+  return it == m.interactions.end() ? nullptr : &it->second;
+}
+
+const char* correction_name(model::GeometricCorrection::Kind k) {
+  switch (k) {
+    case model::GeometricCorrection::Kind::Circumferential: return "CIRCUMFERENTIAL";
+    case model::GeometricCorrection::Kind::Spherical: return "SPHERICAL";
+    case model::GeometricCorrection::Kind::Toroidal: return "TOROIDAL";
+  }
+  return "";
+}
+
+void write_correction(std::ostream& out, const model::GeometricCorrection& c) {
+  print(out, "    {} {} a=({:g}, {:g}, {:g})", c.surface, correction_name(c.kind), c.a[0], c.a[1], c.a[2]);
+  if (c.kind != model::GeometricCorrection::Kind::Spherical) print(out, " b=({:g}, {:g}, {:g})", c.b[0], c.b[1], c.b[2]);
+  if (c.kind == model::GeometricCorrection::Kind::Toroidal) print(out, " R={:g}", c.radius);
+  print(out, "\n");
+}
+
+void write_contact(std::ostream& out, const model::Model& m) {
+  print(out, "Interactions {:>8}\n", m.interactions.size());
+  for (const auto& [k, i] : m.interactions) {
+    print(out, "  {}: ", i.name);
+    if (i.friction) print(out, "friction mu = {:g}{}", i.friction->mu, i.friction->rough ? " (ROUGH)" : "");
+    else print(out, "frictionless");
+    print(out, "\n");
+  }
+  std::vector<const model::ContactPair*> pairs;
+  for (const auto& p : m.contact_pairs) pairs.push_back(&p);
+  for (const auto& step : m.steps)
+    for (const auto& p : step.contact_pairs) pairs.push_back(&p);
+  print(out, "Contact pairs {:>7}\n", pairs.size());
+  for (const auto* p : pairs) {
+    print(out, "  {} / {}: {}, {} sliding, interaction {}\n", p->slave, p->master, discretization_name(p->type),
+          p->small_sliding ? "small" : "finite", p->interaction);
+    const auto resolved = contact::resolve_normal_behavior(interaction_named(m, p->interaction), p->type,
+                                                           p->small_sliding, false);
+    print(out, "    {}\n", contact::describe(resolved, pair_scales(m, p->slave, p->master)));
+    if (!p->geometric_correction.empty()) print(out, "    smoothing: {}\n", p->geometric_correction);
+  }
+  const auto& gc = m.general_contact;
+  if (gc.defined) {
+    print(out, "General contact\n");
+    for (const auto& inc : gc.inclusions)
+      print(out, "  include {}\n", inc.first.empty() ? std::string("ALL EXTERIOR") : inc.first + ", " + inc.second);
+    for (const auto& exc : gc.exclusions) print(out, "  exclude {}, {}\n", exc.first, exc.second);
+    for (const auto& pa : gc.property_assignments) {
+      print(out, "  property {}: {}\n", pa.first.empty() ? std::string("(global)") : pa.first + ", " + pa.second,
+            pa.interaction);
+      const auto resolved = contact::resolve_normal_behavior(interaction_named(m, pa.interaction),
+                                                             model::ContactDiscretization::SurfaceToSurface, false, true);
+      print(out, "    {}\n", contact::describe(resolved));
+    }
+    if (!gc.geometric_corrections.empty()) print(out, "  smoothing assignments:\n");
+    for (const auto& c : gc.geometric_corrections) write_correction(out, c);
+  }
+  for (const auto& [k, sm] : m.surface_smoothings) {
+    print(out, "Surface smoothing {}\n", sm.name);
+    for (const auto& c : sm.corrections) write_correction(out, c);
+  }
+}
+
 const char* procedure_name(const model::Step& s) { return s.static_procedure ? "STATIC" : "(none)"; }
 
 void write_steps(std::ostream& out, const model::Model& m) {
@@ -86,6 +168,7 @@ void write_model_summary(std::ostream& out, const model::Model& m) {
   if (!m.heading.empty()) print(out, "{}\n\n", m.heading);
   write_mesh(out, m);
   write_materials(out, m);
+  write_contact(out, m);
   write_steps(out, m);
 }
 

@@ -160,6 +160,12 @@ class DeckReader {
   }
 
   bool check_scope(const KeywordSpec& spec, const KeywordLine& kw) {
+    // Abaqus reads all model data before the first step: after one, only steps may follow.
+    if (state_.scope == kModelScope && !state_.model.steps.empty() && spec.name != "*STEP" &&
+        (spec.scopes & kModelScope)) {
+      diags().error(kw.loc, std::string(spec.name), "model data must come before the first *STEP");
+      return false;
+    }
     if (!(spec.scopes & state_.scope)) {
       diags().error(kw.loc, std::string(spec.name),
                     fmt::format("not allowed {}; it belongs in {}", scope_name(state_.scope),

@@ -17,8 +17,4 @@ void add_step_keywords(std::vector<KeywordSpec>& table);      // kw_step.cpp
 void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
 void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
 
-/// Model data that changes the analysis (boundary conditions, initial conditions, equations)
-/// must precede the first *STEP; false, with an error, when it follows one (kw_loads.cpp).
-bool model_data_before_steps(KeywordContext& ctx);
-
 }  // namespace inpact::parser

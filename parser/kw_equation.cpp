@@ -58,7 +58,6 @@ void add_equations(KeywordContext& ctx, const std::vector<RawTerm>& terms, model
 // Σ coefficient·u = 0, and the first term's DOF is the one eliminated, so its coefficient must
 // not be zero.
 void equation(KeywordContext& ctx) {
-  if (!model_data_before_steps(ctx)) return;
   std::vector<Field> f;
   std::size_t i = 0;
   while (i < ctx.data.size()) {

@@ -128,7 +128,6 @@ void boundary(KeywordContext& ctx) {
   model::BoundaryBlock b;
   b.loc = ctx.keyword.loc;
   if (!history) {
-    if (!model_data_before_steps(ctx)) return;
     for (const auto& p : ctx.keyword.params)
       ctx.error(p.loc, fmt::format("{} applies only in a *STEP: model-level *BOUNDARY takes no parameters", p.name));
   } else {
@@ -345,7 +344,6 @@ void temperature(KeywordContext& ctx) {
 
 // *INITIAL CONDITIONS, TYPE=TEMPERATURE: the temperatures at the start of the analysis.
 void initial_conditions(KeywordContext& ctx) {
-  if (!model_data_before_steps(ctx)) return;
   const std::string type = ctx.choice_value("TYPE");
   if (type != "TEMPERATURE") {
     ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only TEMPERATURE)", ctx.param("TYPE")->value.value_or("")));
@@ -358,12 +356,6 @@ void initial_conditions(KeywordContext& ctx) {
 }
 
 }  // namespace
-
-bool model_data_before_steps(KeywordContext& ctx) {
-  if (ctx.model().steps.empty()) return true;
-  ctx.error(ctx.keyword.loc, "model data must come before the first *STEP");
-  return false;
-}
 
 void add_load_keywords(std::vector<KeywordSpec>& t) {
   using VK = ValueKind;

@@ -1,0 +1,178 @@
+#include "results_view.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace inpact::io {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct CellTypes {
+  std::uint8_t vtk;
+  std::int32_t xdmf;
+  const char* xdmf_name;
+};
+
+CellTypes cell_types(const model::ElementTypeInfo& t) {
+  // VTK_TRIANGLE 5, VTK_QUAD 9, VTK_TETRA 10, VTK_HEXAHEDRON 12, VTK_WEDGE 13,
+  // VTK_QUADRATIC_TRIANGLE 22, VTK_QUADRATIC_QUAD 23, VTK_QUADRATIC_TETRA 24,
+  // VTK_QUADRATIC_HEXAHEDRON 25; XDMF numbers from XdmfTopologyType.cpp.
+  if (t.dim == 3) {
+    switch (t.n_nodes) {
+      case 4: return {10, 6, "Tetrahedron"};
+      case 6: return {13, 8, "Wedge"};
+      case 8: return {12, 9, "Hexahedron"};
+      case 10: return {24, 38, "Tetrahedron_10"};
+      case 20: return {25, 48, "Hexahedron_20"};
+    }
+  } else {
+    switch (t.n_nodes) {
+      case 3: return {5, 4, "Triangle"};
+      case 4: return {9, 5, "Quadrilateral"};
+      case 6: return {22, 36, "Triangle_6"};
+      case 8: return {23, 37, "Quadrilateral_8"};
+    }
+  }
+  return {0, 0, ""};
+}
+
+// Abaqus tensor component suffix → VTK symmetric tensor slot (XX YY ZZ XY YZ XZ).
+int vtk_tensor_slot(const std::string& label, const std::string& key) {
+  if (label.size() != key.size() + 2 || label.compare(0, key.size(), key) != 0) return -1;
+  const std::string ij = label.substr(key.size());
+  if (ij == "11") return 0;
+  if (ij == "22") return 1;
+  if (ij == "33") return 2;
+  if (ij == "12" || ij == "21") return 3;
+  if (ij == "23" || ij == "32") return 4;
+  if (ij == "13" || ij == "31") return 5;
+  return -1;
+}
+
+ViewArray nodal_array(const model::Model& model, const FieldData& f, std::size_t n_comp) {
+  const std::size_t n_nodes = model.mesh.nodes.size();
+  const std::size_t nloc = f.values.size() / n_comp;
+  // 2-component nodal vectors (plane models) are padded to 3 so they read as vectors.
+  const std::size_t out_comp = n_comp == 2 ? 3 : n_comp;
+  ViewArray a{f.key, false, out_comp, std::vector<double>(n_nodes * out_comp, kNaN)};
+  for (std::size_t i = 0; i < nloc; ++i) {
+    const std::size_t row = f.nodes.empty() ? i : static_cast<std::size_t>(f.nodes[i]);
+    double* dst = &a.values[row * out_comp];
+    const double* src = &f.values[i * n_comp];
+    // A node in several contact pairs keeps the value of largest magnitude.
+    if (!f.pair.empty() && !std::isnan(dst[0]) && std::abs(dst[0]) >= std::abs(src[0])) continue;
+    for (std::size_t c = 0; c < n_comp; ++c) dst[c] = src[c];
+    for (std::size_t c = n_comp; c < out_comp; ++c) dst[c] = 0.0;
+  }
+  return a;
+}
+
+void element_arrays(const model::Model& model, const FieldData& f, std::size_t n_comp,
+                    const std::filesystem::path& path, std::vector<ViewArray>& out) {
+  const auto& elements = model.mesh.elements;
+  const std::size_t n_cells = elements.size();
+  const std::size_t nloc = f.values.size() / n_comp;
+
+  // Tensor fields (S11 S22 ... / E11 ...) become 6-component VTK symmetric tensors.
+  std::vector<int> slot(n_comp, -1);
+  bool tensor = n_comp >= 3;
+  for (std::size_t c = 0; c < n_comp && tensor; ++c) {
+    slot[c] = vtk_tensor_slot(f.component_labels[c], f.key);
+    tensor = slot[c] >= 0;
+  }
+  const std::size_t out_comp = tensor ? 6 : n_comp;
+  std::vector<double> sum(n_cells * out_comp, 0.0);
+  std::vector<std::int32_t> count(n_cells, 0);
+  for (std::size_t i = 0; i < nloc; ++i) {
+    const std::int32_t inst = f.instance.empty() ? 0 : f.instance[i];
+    const auto row = elements.index.find(inst, f.elements[i]);
+    if (!row)
+      throw IoError(path, fmt::format("field {}: element {} (instance {}) is not in the model", f.key,
+                                      f.elements[i], inst));
+    const std::size_t e = static_cast<std::size_t>(*row);
+    ++count[e];
+    for (std::size_t c = 0; c < n_comp; ++c)
+      sum[e * out_comp + (tensor ? static_cast<std::size_t>(slot[c]) : c)] += f.values[i * n_comp + c];
+  }
+  ViewArray a{f.key, true, out_comp, std::vector<double>(n_cells * out_comp, kNaN)};
+  for (std::size_t e = 0; e < n_cells; ++e)
+    if (count[e])
+      for (std::size_t c = 0; c < out_comp; ++c) a.values[e * out_comp + c] = sum[e * out_comp + c] / count[e];
+
+  if (tensor && f.key == "S") {
+    // von Mises of the element-average stress.
+    ViewArray mises{"S_Mises", true, 1, std::vector<double>(n_cells, kNaN)};
+    for (std::size_t e = 0; e < n_cells; ++e) {
+      if (!count[e]) continue;
+      const double* s = &a.values[e * 6];
+      const double d = (s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0]);
+      mises.values[e] = std::sqrt(0.5 * d + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+    }
+    out.push_back(std::move(a));
+    out.push_back(std::move(mises));
+    return;
+  }
+  out.push_back(std::move(a));
+}
+
+// VTK's wedge has its base (0,1,2) turning away from the top face (3,4,5) by the right-hand
+// rule; Abaqus's C3D6 face S1 (1,2,3) turns into the element. Swapping the second and third node
+// of both triangles maps one onto the other (VTK's vtkCellValidator pins this in tests/io).
+constexpr std::uint8_t kWedgeToVtk[] = {0, 2, 1, 3, 5, 4};
+
+}  // namespace
+
+std::span<const std::uint8_t> vtk_node_order(const model::ElementTypeInfo& type) {
+  if (type.dim == 3 && type.n_nodes == 6) return kWedgeToVtk;
+  return {};
+}
+
+std::uint8_t vtk_cell_type(const model::ElementTypeInfo& type) { return cell_types(type).vtk; }
+std::int32_t xdmf_cell_type(const model::ElementTypeInfo& type) { return cell_types(type).xdmf; }
+const char* xdmf_topology_name(const model::ElementTypeInfo& type) { return cell_types(type).xdmf_name; }
+
+ViewTopology build_view_topology(const model::Mesh& mesh) {
+  const auto& el = mesh.elements;
+  ViewTopology t;
+  t.vtk_types.reserve(el.size());
+  t.vtk_offsets.reserve(el.size() + 1);
+  t.vtk_offsets.push_back(0);
+  t.vtk_connectivity.reserve(el.conn.size());
+  t.xdmf_mixed.reserve(el.conn.size() + el.size());
+  for (std::size_t e = 0; e < el.size(); ++e) {
+    const auto& type = model::element_type(el.type[e]);
+    const CellTypes ct = cell_types(type);
+    t.vtk_types.push_back(ct.vtk);
+    t.xdmf_mixed.push_back(ct.xdmf);
+    // Abaqus node order is VTK's (and XDMF's) for every supported type but the wedge.
+    const auto nodes = el.nodes_of(e);
+    const auto order = vtk_node_order(type);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const std::int32_t n = nodes[order.empty() ? i : order[i]];
+      t.vtk_connectivity.push_back(n);
+      t.xdmf_mixed.push_back(n);
+    }
+    t.vtk_offsets.push_back(static_cast<std::int64_t>(t.vtk_connectivity.size()));
+  }
+  return t;
+}
+
+std::vector<ViewArray> build_view_arrays(const model::Model& model, const Frame& frame,
+                                         const std::filesystem::path& path) {
+  std::vector<ViewArray> out;
+  for (const FieldData& f : frame.fields) {
+    const std::size_t n_comp = f.component_labels.size();
+    if (n_comp == 0) continue;
+    if (f.position == Position::Nodal)
+      out.push_back(nodal_array(model, f, n_comp));
+    else
+      element_arrays(model, f, n_comp, path, out);
+  }
+  return out;
+}
+
+}  // namespace inpact::io

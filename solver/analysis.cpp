@@ -1,0 +1,162 @@
+#include "analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "analysis_model.hpp"
+#include "assembler.hpp"
+#include "dof_map.hpp"
+#include "field_output.hpp"
+#include "linear/linear_solver.hpp"
+#include "newton.hpp"
+#include "solution_controls.hpp"
+#include "step_conditions.hpp"
+
+namespace inpact::solver {
+
+namespace {
+
+/// What a step needs while it runs, built when it starts. Not movable: the assembler keeps a
+/// reference to the DOF map beside it.
+struct StepRun {
+  StepRun(const AnalysisModel& am, std::size_t index, const ConditionHistory& history, double total_time)
+      : step(am.model->steps[index]),
+        number(static_cast<int>(index + 1)),
+        start_time(total_time),
+        conditions(am, step, history, total_time),
+        dofs(DofMap::build(am, conditions.prescribed())),
+        assembler(am, dofs),
+        controls(solution_controls(step)),
+        output(select_output(*am.model, index)) {}
+  StepRun(const StepRun&) = delete;
+
+  const model::Step& step;
+  int number;  ///< 1-based
+  double start_time;
+  StepConditions conditions;
+  DofMap dofs;
+  Assembler assembler;
+  SolutionControls controls;
+  OutputSelection output;
+};
+
+/// Reactions at the prescribed DOFs: RF = f_int − f_ext (zero elsewhere).
+std::vector<double> reactions(const DofMap& dofs, const IncrementState& s) {
+  std::vector<double> rf(s.u.size(), 0.0);
+  for (std::int64_t d = 0; d < dofs.n_dof(); ++d)
+    if (dofs.kind(d) == DofMap::Kind::Prescribed) rf[d] = s.f_int[d] - s.f_ext[d];
+  return rf;
+}
+
+std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
+  if (d < 0) return "";
+  const auto& nodes = am.model->mesh.nodes;
+  const std::size_t node = static_cast<std::size_t>(d / am.dim);
+  const std::string inst = am.model->instances[nodes.instance[node]];
+  return fmt::format(", largest residual at node {}{} DOF {}", inst.empty() ? "" : inst + ".", nodes.labels[node],
+                     d % am.dim + 1);
+}
+
+void write_frame(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
+                 double nlgeom, AnalysisObserver& observer) {
+  Frame frame;
+  frame.increment = increment;
+  frame.step_time = t;
+  frame.total_time = run.start_time + t;
+  frame.fields = compute_fields(am, run.output, s.u, reactions(run.dofs, s), nlgeom, run.conditions.temperature_change(t));
+  observer.frame(frame);
+}
+
+/// The increments of one step: automatic (or DIRECT fixed) incrementation with cutbacks.
+AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementState& state, AnalysisObserver& observer) {
+  const model::StaticProcedure& proc = *run.step.static_procedure;
+  const double period = proc.time_period;
+  const double dt_min = proc.min_increment.value_or(std::min(proc.initial_increment, 1e-5 * period));
+  const double dt_max = proc.max_increment.value_or(period);
+  const SolutionControls& c = run.controls;
+  auto cholmod = make_cholmod_solver();
+  auto umfpack = make_umfpack_solver();
+
+  double t = 0.0, dt = std::min(proc.initial_increment, period);
+  double force_sum = 0.0;
+  int force_count = 0, easy_in_a_row = 0;
+  for (int increment = 1; t < period * (1 - 1e-12); ++increment) {
+    if (increment > run.step.max_increments)
+      return {false, fmt::format("step {} ({}): more increments needed than INC={} allows, at step time {:.6g}",
+                                 run.number, run.step.name, run.step.max_increments, t)};
+    dt = std::min(dt, period - t);
+    if (period - t - dt < 1e-12 * period) dt = period - t;
+    IncrementState trial;
+    NewtonOutcome outcome;
+    bool cut_back_this_increment = false;
+    for (int attempt = 1;; ++attempt) {
+      trial = state;
+      NewtonContext ctx{am, run.conditions, run.assembler, *cholmod, *umfpack, c, observer, run.step.nlgeom,
+                        force_sum, force_count, run.number, increment, attempt};
+      outcome = solve_increment(ctx, t + dt, trial);
+      StatusRow row;
+      row.step = run.number;
+      row.increment = increment;
+      row.attempt = attempt;
+      row.cut_back = !outcome.converged;
+      row.equil_iters = row.total_iters = outcome.iterations;
+      // A cut-back attempt shows the time at the start of the increment, as Abaqus does.
+      row.step_time = t + (outcome.converged ? dt : 0.0);
+      row.total_time = run.start_time + row.step_time;
+      row.inc_of_time = dt;
+      observer.attempt_finished(row);
+      if (outcome.converged) break;
+      const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}",
+                                            run.number, run.step.name, increment, attempt, t, dt, outcome.failure,
+                                            describe_dof(am, outcome.worst_dof));
+      if (proc.direct) return {false, where + " (DIRECT incrementation cannot cut back)"};
+      if (attempt > c.max_cutbacks) return {false, where + fmt::format(" — gave up after {} cutbacks", c.max_cutbacks)};
+      if (dt * c.cutback_factor < dt_min)
+        return {false, where + fmt::format(" — the increment would fall below the minimum {:.3g}", dt_min)};
+      observer.message(where + fmt::format("; cutting back to {:.3g}", dt * c.cutback_factor));
+      dt *= c.cutback_factor;
+      cut_back_this_increment = true;
+    }
+    state = std::move(trial);
+    t += dt;
+    force_sum += outcome.average_force;
+    ++force_count;
+    const bool last = t >= period * (1 - 1e-12);
+    if (last || increment % run.output.frequency == 0) write_frame(am, run, state, increment, t, run.step.nlgeom, observer);
+    // Grow the increment after two easy ones in a row (never right after a cutback).
+    easy_in_a_row = (!cut_back_this_increment && outcome.iterations <= c.easy_iterations) ? easy_in_a_row + 1 : 0;
+    if (!proc.direct && easy_in_a_row >= 2) dt = std::min(dt * c.growth_factor, dt_max);
+  }
+  return {true, ""};
+}
+
+}  // namespace
+
+AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
+  (void)options;
+  const AnalysisModel am = build_analysis_model(model);
+  ConditionHistory history = initial_history(am);
+  IncrementState state;
+  state.u.assign(am.n_dof(), 0.0);
+  state.f_int.assign(am.n_dof(), 0.0);
+  state.f_ext.assign(am.n_dof(), 0.0);
+  double total_time = 0.0;
+  for (std::size_t s = 0; s < model.steps.size(); ++s) {
+    const model::Step& step = model.steps[s];
+    observer.step_started(step, static_cast<int>(s + 1));
+    StepRun run(am, s, history, total_time);
+    for (const auto& v : run.output.not_computed)
+      observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
+                                   step.name, v));
+    AnalysisOutcome outcome = run_increments(am, run, state, observer);
+    if (!outcome.completed) return outcome;
+    history = run.conditions.end_state(reactions(run.dofs, state));
+    total_time += step.static_procedure->time_period;
+  }
+  return {true, ""};
+}
+
+}  // namespace inpact::solver

@@ -1,0 +1,51 @@
+#include "analysis_model.hpp"
+
+#include <fmt/format.h>
+
+#include "analysis_error.hpp"
+
+namespace inpact::solver {
+
+std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
+  const auto& mesh = model->mesh;
+  auto nodes = mesh.elements.nodes_of(e);
+  std::vector<elements::Vec3> x(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) x[i] = mesh.nodes.coords[nodes[i]];
+  return x;
+}
+
+AnalysisModel build_analysis_model(const model::Model& m) {
+  AnalysisModel am;
+  am.model = &m;
+  const auto& el = m.mesh.elements;
+  am.elements.resize(el.size());
+  if (el.size() == 0) throw AnalysisError("the model has no elements");
+
+  // One kind of model at a time: the DOFs per node and the axisymmetric ring integration
+  // apply to the whole model.
+  const auto& first = model::element_type(el.type[0]);
+  am.dim = first.dim;
+  am.axisymmetric = first.family == model::ElementFamily::Axisymmetric;
+  for (std::size_t e = 0; e < el.size(); ++e) {
+    const auto& t = model::element_type(el.type[e]);
+    if (t.dim != am.dim || (t.family == model::ElementFamily::Axisymmetric) != am.axisymmetric)
+      throw AnalysisError(fmt::format("{}: element {} ({}) cannot be combined with {} elements in one model",
+                                      m.sources.describe(el.loc[e]), el.labels[e], t.name, first.name));
+    am.elements[e].type = &t;
+  }
+
+  for (const auto& sec : m.mesh.sections) {
+    const model::Material& mat = m.materials.at(sec.material);
+    for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
+      ElementSetup& s = am.elements[e];
+      s.material.youngs_modulus = mat.elastic->youngs_modulus;
+      s.material.poissons_ratio = mat.elastic->poissons_ratio;
+      s.material.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
+      s.section.thickness = sec.thickness;
+      s.density = mat.density.value_or(0.0);
+    }
+  }
+  return am;
+}
+
+}  // namespace inpact::solver

@@ -1,0 +1,34 @@
+#pragma once
+/// What the analysis needs per element, resolved once from the model database: its type,
+/// material constants and section data, and the model's number of DOFs per node.
+#include <vector>
+
+#include "elements/element_kernel.hpp"
+#include "model/model.hpp"
+
+namespace inpact::solver {
+
+struct ElementSetup {
+  const model::ElementTypeInfo* type = nullptr;
+  elements::ElasticConstants material;
+  elements::SectionData section;
+  double density = 0.0;
+};
+
+struct AnalysisModel {
+  const model::Model* model = nullptr;
+  int dim = 3;  ///< DOFs per node: 3 for solids, 2 for plane and axisymmetric models
+  bool axisymmetric = false;
+  std::vector<ElementSetup> elements;  ///< per element row
+
+  std::size_t n_nodes() const { return model->mesh.nodes.size(); }
+  std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }
+  /// Reference coordinates of element e's nodes.
+  std::vector<elements::Vec3> coords(std::size_t e) const;
+};
+
+/// Resolves sections and materials per element; throws AnalysisError (citing the deck) when
+/// the model cannot be analysed: 2D and 3D elements mixed, axisymmetric mixed with plane.
+AnalysisModel build_analysis_model(const model::Model& model);
+
+}  // namespace inpact::solver

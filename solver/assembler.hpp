@@ -1,0 +1,55 @@
+#pragma once
+/// Assembly of the element contributions: the reduced tangent K_r = Tᵀ K T into a pattern built
+/// once per DOF map, and the full internal force vector f_int(u) (reactions are read from it).
+#include <span>
+#include <vector>
+
+#include "analysis_model.hpp"
+#include "dof_map.hpp"
+#include "linear/sparse_matrix.hpp"
+
+namespace inpact::solver {
+
+struct AssemblyRequest {
+  bool tangent = true;
+  bool nlgeom = false;
+  std::span<const double> delta_t;  ///< nodal temperature change, or empty
+};
+
+struct AssemblyResult {
+  /// Spatial average of the magnitudes of the element nodal forces, Abaqus's q^α "typical
+  /// flux" that residuals are measured against.
+  double average_force = 0.0;
+  std::size_t n_force_entries = 0;  ///< how many element nodal forces the average is over
+  /// Smallest Jacobian determinant met at an integration point, and its element row.
+  double min_jacobian = 0.0;
+  std::int64_t min_jacobian_element = -1;
+};
+
+class Assembler {
+ public:
+  Assembler(const AnalysisModel& am, const DofMap& dofs);
+
+  /// The reduced tangent's pattern (upper triangle); assemble() fills its values.
+  SparseMatrix& tangent() { return tangent_; }
+  const DofMap& dofs() const { return dofs_; }
+
+  /// Internal forces at u (full, overwritten) and, when asked, the reduced tangent.
+  AssemblyResult assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int);
+
+  /// Reduces a full vector to the equations: r_eq = Σ_d w_d r_d over the DOFs feeding each one.
+  void reduce(std::span<const double> full, std::span<double> reduced) const;
+
+ private:
+  /// Global DOFs of element e, node-major.
+  void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
+
+  /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
+  void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
+
+  const AnalysisModel& am_;
+  const DofMap& dofs_;
+  SparseMatrix tangent_;
+};
+
+}  // namespace inpact::solver

@@ -1,0 +1,94 @@
+#include "dof_map.hpp"
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include "analysis_error.hpp"
+
+namespace inpact::solver {
+
+std::span<const MasterTerm> DofMap::masters(std::int64_t d) const {
+  return {master_.data() + master_ptr_[d], static_cast<std::size_t>(master_ptr_[d + 1] - master_ptr_[d])};
+}
+
+void DofMap::update_dependent(std::vector<double>& u) const {
+  for (std::int64_t d = 0; d < n_dof(); ++d) {
+    if (kind_[d] != Kind::Dependent) continue;
+    double v = 0.0;
+    for (const auto& m : masters(d)) v += m.weight * u[m.dof];
+    u[d] = v;
+  }
+}
+
+DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed) {
+  const model::Model& m = *am.model;
+  const std::int64_t n = static_cast<std::int64_t>(am.n_dof());
+  DofMap map;
+  map.kind_.assign(n, Kind::Unused);
+  // A DOF is used when an element connects its node.
+  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
+    for (std::int32_t node : m.mesh.elements.nodes_of(e))
+      for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(node) * am.dim + c] = Kind::Free;
+  for (std::int64_t d = 0; d < n; ++d)
+    if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
+
+  // *EQUATION: the first term's DOF is eliminated: u0 = −Σ_{k≥1} (c_k / c_0) u_k.
+  std::map<std::int64_t, std::vector<MasterTerm>> dependent;
+  auto dof_of = [&](const model::Equation::Term& t) { return static_cast<std::int64_t>(t.node) * am.dim + (t.dof - 1); };
+  for (const auto& eq : m.equations) {
+    const std::string where = m.sources.describe(eq.loc);
+    for (const auto& t : eq.terms)
+      if (t.dof > am.dim)
+        throw AnalysisError(fmt::format("{}: *EQUATION: degree of freedom {} does not exist in this model (nodes have {})",
+                                        where, t.dof, am.dim));
+    const std::int64_t d0 = dof_of(eq.terms[0]);
+    if (map.kind_[d0] == Kind::Prescribed)
+      throw AnalysisError(fmt::format("{}: *EQUATION: the first (eliminated) degree of freedom, node {} dof {}, also "
+                                      "has a boundary condition; put another DOF first", where,
+                                      m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
+    if (dependent.count(d0))
+      throw AnalysisError(fmt::format("{}: *EQUATION: node {} dof {} is already eliminated by another equation", where,
+                                      m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
+    std::vector<MasterTerm> terms;
+    for (std::size_t k = 1; k < eq.terms.size(); ++k)
+      terms.push_back({dof_of(eq.terms[k]), -eq.terms[k].coefficient / eq.terms[0].coefficient});
+    dependent[d0] = std::move(terms);
+    map.kind_[d0] = Kind::Dependent;
+  }
+  // Substitute dependents into each other until every term is independent.
+  for (auto& [d, terms] : dependent) {
+    for (int pass = 0;; ++pass) {
+      if (pass > static_cast<int>(dependent.size()))
+        throw AnalysisError("*EQUATION: the equations eliminate each other's degrees of freedom in a cycle");
+      std::vector<MasterTerm> next;
+      bool substituted = false;
+      for (const auto& t : terms) {
+        auto it = dependent.find(t.dof);
+        if (it == dependent.end() || it->first == d) {
+          next.push_back(t);
+          continue;
+        }
+        substituted = true;
+        for (const auto& s : it->second) next.push_back({s.dof, t.weight * s.weight});
+      }
+      terms = std::move(next);
+      if (!substituted) break;
+    }
+  }
+
+  map.eq_.assign(n, -1);
+  map.master_ptr_.assign(n + 1, 0);
+  for (std::int64_t d = 0; d < n; ++d) {
+    if (map.kind_[d] == Kind::Free) map.eq_[d] = map.n_eq_++;
+    if (map.kind_[d] == Kind::Dependent) {
+      for (const auto& t : dependent[d]) map.master_.push_back(t);
+    } else if (map.kind_[d] != Kind::Unused) {
+      map.master_.push_back({d, 1.0});
+    }
+    map.master_ptr_[d + 1] = static_cast<std::int64_t>(map.master_.size());
+  }
+  return map;
+}
+
+}  // namespace inpact::solver

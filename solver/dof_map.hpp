@@ -1,0 +1,51 @@
+#pragma once
+/// How every DOF of the model relates to the unknowns of the reduced system.
+///
+/// Global DOF d = node_row · dim + component. Each DOF is one of
+///  - free: an unknown of the linear system (equation number eq(d) >= 0);
+///  - prescribed: its value comes from a boundary condition (no equation);
+///  - dependent: eliminated by a *EQUATION, u_d = Σ w_i u_i over independent DOFs;
+///  - unused: a node no element connects (no stiffness; held at zero, not reported).
+/// Assembly expands each element DOF into its independent DOFs ("masters") with weights, so
+/// K_reduced = Tᵀ K T without ever forming T.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis_model.hpp"
+
+namespace inpact::solver {
+
+struct MasterTerm {
+  std::int64_t dof;  ///< an independent (free or prescribed) DOF
+  double weight;
+};
+
+class DofMap {
+ public:
+  enum class Kind : std::uint8_t { Free, Prescribed, Dependent, Unused };
+
+  /// `prescribed[d]`: DOF d has a boundary condition in this step.
+  /// Throws AnalysisError when an equation's dependent DOF is also prescribed, or appears as
+  /// the dependent DOF of two equations, or the equations form a cycle.
+  static DofMap build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed);
+
+  std::int64_t n_dof() const { return static_cast<std::int64_t>(kind_.size()); }
+  std::int64_t n_equations() const { return n_eq_; }
+  Kind kind(std::int64_t d) const { return kind_[d]; }
+  std::int64_t equation(std::int64_t d) const { return eq_[d]; }
+  /// The independent DOFs DOF d is made of: itself (weight 1) unless it is dependent.
+  std::span<const MasterTerm> masters(std::int64_t d) const;
+  /// Sets every dependent DOF of u from its masters (after the independent ones changed).
+  void update_dependent(std::vector<double>& u) const;
+
+ private:
+  std::vector<Kind> kind_;
+  std::vector<std::int64_t> eq_;
+  std::vector<std::int64_t> master_ptr_;  ///< masters of d: master_[master_ptr_[d] .. master_ptr_[d+1])
+  std::vector<MasterTerm> master_;
+  std::int64_t n_eq_ = 0;
+};
+
+}  // namespace inpact::solver

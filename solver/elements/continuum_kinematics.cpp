@@ -1,0 +1,140 @@
+#include "continuum_kinematics.hpp"
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+namespace inpact::solver::elements {
+
+using model::ElementFamily;
+
+namespace {
+
+// Voigt index pairs in Abaqus order.
+constexpr int kVi[6] = {0, 1, 2, 0, 0, 1};
+constexpr int kVj[6] = {0, 1, 2, 1, 2, 2};
+
+Eigen::Matrix3d voigt_to_tensor(const Vec6& v, bool engineering_shear) {
+  const double s = engineering_shear ? 0.5 : 1.0;
+  Eigen::Matrix3d t;
+  t << v(0), s * v(3), s * v(4), s * v(3), v(1), s * v(5), s * v(4), s * v(5), v(2);
+  return t;
+}
+
+Voigt6 tensor_to_voigt(const Eigen::Matrix3d& t, bool engineering_shear) {
+  const double s = engineering_shear ? 2.0 : 1.0;
+  return {t(0, 0), t(1, 1), t(2, 2), s * t(0, 1), s * t(0, 2), s * t(1, 2)};
+}
+
+// Plane stress: the out-of-plane strain that makes σ33 = 0 for an isotropic material,
+// ε33 = −ν/(1−ν)(ε11 + ε22 − 2ε_th) + ε_th (also used for E33 with St. Venant–Kirchhoff).
+double plane_stress_e33(const ElasticConstants& m, const Vec6& e, double eth) {
+  const double nu = m.poissons_ratio;
+  return -nu / (1 - nu) * (e(0) + e(1) - 2 * eth) + eth;
+}
+
+}  // namespace
+
+Mat6 elasticity_matrix(ElementFamily family, const ElasticConstants& m) {
+  const double E = m.youngs_modulus, nu = m.poissons_ratio;
+  const double mu = E / (2 * (1 + nu));
+  Mat6 D = Mat6::Zero();
+  if (family == ElementFamily::PlaneStress) {
+    const double c = E / (1 - nu * nu);
+    D(0, 0) = D(1, 1) = c;
+    D(0, 1) = D(1, 0) = c * nu;
+    D(3, 3) = mu;
+    return D;
+  }
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) D(i, j) = lambda;
+    D(i, i) = lambda + 2 * mu;
+    D(i + 3, i + 3) = mu;
+  }
+  return D;
+}
+
+PointState point_state(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const PointData& pd,
+                       const Eigen::Ref<const Eigen::VectorXd>& u) {
+  PointState st;
+  const int n = static_cast<int>(pd.N.size());
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();  // ∇₀u
+  double ur = 0.0;
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < dim; ++i) {
+      const double ua = u(a * dim + i);
+      H.row(i) += ua * pd.grad.row(a);
+      if (i == 0) ur += pd.N(a) * ua;
+    }
+  if (family == ElementFamily::Axisymmetric) H(2, 2) = ur / pd.radius;
+  st.F += H;
+  if (nlgeom) {
+    const Eigen::Matrix3d E = 0.5 * (st.F.transpose() * st.F - Eigen::Matrix3d::Identity());
+    st.strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
+  } else {
+    st.strain << H(0, 0), H(1, 1), H(2, 2), H(0, 1) + H(1, 0), H(0, 2) + H(2, 0), H(1, 2) + H(2, 1);
+  }
+  Vec6 eth = Vec6::Zero();
+  eth.head<3>().setConstant(pd.thermal_strain);
+  st.stress = D * (st.strain - eth);
+  return st;
+}
+
+void add_point_contribution(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const PointData& pd,
+                            const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K) {
+  const int n = static_cast<int>(pd.N.size());
+  const int nd = n * dim;
+  const Eigen::Matrix3d F = nlgeom ? st.F : Eigen::Matrix3d::Identity();
+  const bool axi = family == ElementFamily::Axisymmetric;
+  // B(k, a·dim + i) = ∂E_k/∂u_ai: for E_pq = ½(F_ip ∂N_a/∂X_q + F_iq ∂N_a/∂X_p) (×2 for shear).
+  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, nd);
+  B.setZero();
+  for (int a = 0; a < n; ++a) {
+    const Eigen::RowVector3d g = pd.grad.row(a);
+    for (int i = 0; i < dim; ++i) {
+      auto col = B.col(a * dim + i);
+      for (int k = 0; k < 3; ++k) col(k) = F(i, k) * g(k);
+      for (int k = 3; k < 6; ++k) col(k) = F(i, kVi[k]) * g(kVj[k]) + F(i, kVj[k]) * g(kVi[k]);
+    }
+    if (axi) B(2, a * dim) += F(2, 2) * pd.N(a) / pd.radius;  // δE33 = F33 δu_r / R
+  }
+  if (f) f->noalias() += (B.transpose() * st.stress) * pd.dv;
+  if (!K) return;
+  K->noalias() += (B.transpose() * (D * pd.dv) * B);
+  if (!nlgeom) return;
+  // Geometric (initial-stress) stiffness.
+  const Eigen::Matrix3d S = voigt_to_tensor(st.stress, false);
+  const Eigen::MatrixXd G = pd.grad * S * pd.grad.transpose() * pd.dv;  // n × n
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      for (int i = 0; i < dim; ++i) (*K)(a * dim + i, b * dim + i) += G(a, b);
+      if (axi) (*K)(a * dim, b * dim) += st.stress(2) * pd.N(a) * pd.N(b) / (pd.radius * pd.radius) * pd.dv;
+    }
+}
+
+void point_output(ElementFamily family, const ElasticConstants& m, bool nlgeom, const PointData& pd,
+                  const PointState& st, PointResult& out) {
+  Vec6 strain = st.strain;
+  if (family == ElementFamily::PlaneStress) strain(2) = plane_stress_e33(m, strain, pd.thermal_strain);
+  out.volume = pd.dv;
+  if (!nlgeom) {
+    for (int k = 0; k < 6; ++k) {
+      out.stress[k] = st.stress(k);
+      out.strain[k] = strain(k);
+    }
+    return;
+  }
+  Eigen::Matrix3d F = st.F;
+  if (family == ElementFamily::PlaneStress) F(2, 2) = std::sqrt(1 + 2 * strain(2));  // E33 → stretch
+  const double J = F.determinant();
+  const Eigen::Matrix3d S = voigt_to_tensor(st.stress, false);
+  out.stress = tensor_to_voigt(F * S * F.transpose() / J, false);
+  // LE = ½ ln(V²), V² = F Fᵀ (left Cauchy–Green).
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(F * F.transpose());
+  const Eigen::Vector3d logl = eig.eigenvalues().array().log() * 0.5;
+  const Eigen::Matrix3d LE = eig.eigenvectors() * logl.asDiagonal() * eig.eigenvectors().transpose();
+  out.strain = tensor_to_voigt(LE, true);
+}
+
+}  // namespace inpact::solver::elements

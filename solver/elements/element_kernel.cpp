@@ -1,0 +1,203 @@
+#include "element_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include "continuum_kinematics.hpp"
+#include "hourglass.hpp"
+#include "incompatible_modes.hpp"
+#include "quadrature.hpp"
+#include "shape_functions.hpp"
+
+namespace inpact::solver::elements {
+
+using model::ElementFamily;
+using model::Integration;
+
+namespace {
+
+struct Mapping {
+  Eigen::MatrixXd J;      // J(i, j) = ∂X_i/∂ξ_j
+  double det = 0.0;
+  Eigen::MatrixX3d grad;  // ∇₀N_a
+  double radius = 0.0;    // Σ N_a X_a (the r of CAX)
+  Vec3 x{};               // point coordinates
+};
+
+Mapping map_point(Shape shape, int dim, const Eigen::MatrixXd& X, const std::array<double, 3>& xi) {
+  const ShapeValues sv = evaluate_shape(shape, xi);
+  const int n = sv.n_nodes;
+  Eigen::MatrixXd dN(n, dim);
+  for (int a = 0; a < n; ++a)
+    for (int j = 0; j < dim; ++j) dN(a, j) = sv.dN[a][j];
+  Mapping m;
+  m.J = X.transpose() * dN;
+  m.det = m.J.determinant();
+  m.grad = Eigen::MatrixX3d::Zero(n, 3);
+  if (m.det != 0.0) m.grad.leftCols(dim) = dN * m.J.inverse();  // ∇₀N_aᵀ = ∂N_a/∂ξᵀ J⁻¹
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < dim; ++i) m.x[i] += sv.N[a] * X(a, i);
+  m.radius = m.x[0];
+  return m;
+}
+
+// The measure that turns w·det J into a volume: thickness (plane), 2πr (CAX) or 1 (3D).
+double out_of_plane_measure(ElementFamily family, const SectionData& section, double radius) {
+  switch (family) {
+    case ElementFamily::Axisymmetric: return 2 * std::numbers::pi * radius;
+    case ElementFamily::PlaneStrain:
+    case ElementFamily::PlaneStress: return section.thickness;
+    case ElementFamily::Solid3D: return 1.0;
+  }
+  return 1.0;
+}
+
+struct Assembled {
+  Eigen::VectorXd f;
+  Eigen::MatrixXd K;
+  std::vector<PointState> states;
+};
+
+Assembled assemble(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const std::vector<PointData>& pts,
+                   const Eigen::VectorXd& u, bool want_k) {
+  Assembled r;
+  r.f = Eigen::VectorXd::Zero(u.size());
+  if (want_k) r.K = Eigen::MatrixXd::Zero(u.size(), u.size());
+  for (const PointData& pd : pts) {
+    r.states.push_back(point_state(family, dim, D, nlgeom, pd, u));
+    add_point_contribution(family, dim, D, nlgeom, pd, r.states.back(), &r.f, want_k ? &r.K : nullptr);
+  }
+  return r;
+}
+
+}  // namespace
+
+ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                              std::span<const double> u, const ElasticConstants& material,
+                              const SectionData& section, const ElementRequest& request,
+                              std::span<const double> delta_t) {
+  const int dim = type.dim;
+  const int n = type.n_nodes;
+  const int n_dof = n * dim;
+  if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n_dof ||
+      (!delta_t.empty() && static_cast<int>(delta_t.size()) != n))
+    throw std::invalid_argument("compute_element: coordinate, displacement or temperature count mismatch");
+
+  const ElementFamily family = type.family;
+  const Shape shape = element_shape(type);
+  const Mat6 D = elasticity_matrix(family, material);
+  const bool incompatible = type.integration == Integration::IncompatibleModes;
+  const bool hourglass = type.integration == Integration::Reduced && type.order == 1;
+  const int n_modes = incompatible ? n_incompatible_modes(dim) : 0;
+  const int n_total = n + n_modes;
+
+  Eigen::MatrixXd X(n, dim);
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < dim; ++i) X(a, i) = coords[a][i];
+
+  ElementSystem sys;
+  sys.n_dof = n_dof;
+
+  // Centre of the quadrilateral/brick: Jacobian for the incompatible modes, gradients for the
+  // hourglass control.
+  Mapping centre;
+  if (incompatible || hourglass) centre = map_point(shape, dim, X, {0, 0, 0});
+  Eigen::MatrixXd J0_inv_t;
+  double j0 = 0.0;
+  if (incompatible) {
+    J0_inv_t = centre.J.inverse().transpose();
+    j0 = centre.det * (family == ElementFamily::Axisymmetric ? centre.radius : 1.0);
+  }
+
+  // Reference data of every integration point.
+  const std::vector<QuadraturePoint> rule = element_rule(type);
+  std::vector<PointData> pts;
+  std::vector<Vec3> point_coords;
+  sys.min_jacobian = std::numeric_limits<double>::infinity();
+  for (const QuadraturePoint& q : rule) {
+    const Mapping m = map_point(shape, dim, X, q.xi);
+    sys.min_jacobian = std::min(sys.min_jacobian, m.det);
+    const ShapeValues sv = evaluate_shape(shape, q.xi);
+    PointData pd;
+    pd.N = Eigen::VectorXd::Zero(n_total);
+    for (int a = 0; a < n; ++a) pd.N(a) = sv.N[a];
+    pd.grad = Eigen::MatrixX3d::Zero(n_total, 3);
+    pd.grad.topRows(n) = m.grad;
+    pd.radius = m.radius;
+    pd.dv = q.weight * m.det * out_of_plane_measure(family, section, m.radius);
+    if (incompatible) {
+      const double j = m.det * (family == ElementFamily::Axisymmetric ? m.radius : 1.0);
+      pd.grad.bottomRows(n_modes) = incompatible_mode_gradients(dim, q.xi.data(), J0_inv_t, j0, j);
+    }
+    if (!delta_t.empty()) {
+      double dt = 0.0;
+      for (int a = 0; a < n; ++a) dt += sv.N[a] * delta_t[a];
+      pd.thermal_strain = material.expansion * dt;
+    }
+    pts.push_back(std::move(pd));
+    point_coords.push_back(m.x);
+  }
+  if (sys.min_jacobian <= 0.0) return sys;  // the caller reports the distorted element
+
+  Eigen::VectorXd uf = Eigen::VectorXd::Zero(n_total * dim);
+  for (int k = 0; k < n_dof; ++k) uf(k) = u[k];
+
+  const bool want_k = request.stiffness || incompatible;
+  Assembled as = assemble(family, dim, D, request.nlgeom, pts, uf, want_k);
+
+  Eigen::VectorXd f = as.f.head(n_dof);
+  Eigen::MatrixXd K;
+  if (incompatible) {
+    // Solve f_α(u, α) = 0 for the internal modes: one step when linear, Newton with NLGEOM.
+    const int na = n_modes * dim;
+    const double ref = std::max(as.f.norm(), 1e-300);
+    for (int it = 0; it < 30; ++it) {
+      const Eigen::VectorXd fa = as.f.tail(na);
+      if (it > 0 && (!request.nlgeom || fa.norm() <= 1e-13 * ref)) break;
+      const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
+      uf.tail(na) -= Kaa.ldlt().solve(fa);
+      as = assemble(family, dim, D, request.nlgeom, pts, uf, true);
+      sys.local_iterations = it + 1;
+    }
+    const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
+    const Eigen::MatrixXd Kua = as.K.topRightCorner(n_dof, na);
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kaa);
+    f = as.f.head(n_dof) - Kua * ldlt.solve(as.f.tail(na));
+    if (request.stiffness) K = as.K.topLeftCorner(n_dof, n_dof) - Kua * ldlt.solve(Kua.transpose());
+  } else {
+    f = as.f;
+    if (request.stiffness) K = std::move(as.K);
+  }
+
+  if (hourglass) {
+    const double volume = pts.front().dv;  // the one-point rule integrates the whole element
+    const Eigen::MatrixXd b = centre.grad.leftCols(dim);
+    const Eigen::MatrixXd Khg =
+        hourglass_stiffness(dim, X, b, volume, material.shear_modulus(), section.hourglass_scale);
+    f += Khg * uf.head(n_dof);
+    if (request.stiffness) K += Khg;
+  }
+
+  if (request.internal_force) sys.internal_force.assign(f.data(), f.data() + n_dof);
+  if (request.stiffness) {
+    sys.stiffness.resize(static_cast<std::size_t>(n_dof) * n_dof);
+    for (int i = 0; i < n_dof; ++i)
+      for (int j = 0; j < n_dof; ++j) sys.stiffness[static_cast<std::size_t>(i) * n_dof + j] = K(i, j);
+  }
+  if (request.point_output) {
+    sys.points.resize(pts.size());
+    for (std::size_t p = 0; p < pts.size(); ++p) {
+      point_output(family, material, request.nlgeom, pts[p], as.states[p], sys.points[p]);
+      sys.points[p].coords = point_coords[p];
+    }
+  }
+  return sys;
+}
+
+}  // namespace inpact::solver::elements

@@ -1,0 +1,87 @@
+#pragma once
+/// Element kernels for small-strain and total-Lagrangian (NLGEOM) linear elasticity: pure
+/// functions from element coordinates, displacements and material data to the element
+/// stiffness, internal force and integration-point stresses. No Eigen, no global state, no I/O.
+///
+/// Conventions (shared by every kernel in solver/elements/):
+///  - DOFs are node-major: (u1, u2[, u3]) of node 1, then node 2, …; 2 per node in 2D, 3 in 3D.
+///  - 2D elements use x (= r for CAX) and y (= z); the z coordinate of a Vec3 is ignored.
+///  - Stress/strain components are stored in Abaqus order 11, 22, 33, 12, 13, 23 with
+///    engineering shear strains (γ12 = 2ε12), as Abaqus prints them. For CAX, 33 is the hoop
+///    direction θθ; plane-stress elements report σ33 = 0 and the thickness strain ε33.
+///  - Axisymmetric quantities are integrated over the full ring (dV = 2πr dA): Abaqus wants
+///    point loads and reactions of axisymmetric models "integrated around the circumference;
+///    that is, the total value on the ring" (Abaqus Elements Guide, axisymmetric element
+///    library, "Conventions").
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "model/element_types.hpp"
+
+namespace inpact::solver::elements {
+
+using Vec3 = std::array<double, 3>;
+using Voigt6 = std::array<double, 6>;
+
+/// Isotropic linear elasticity (*ELASTIC) and isotropic expansion (*EXPANSION).
+struct ElasticConstants {
+  double youngs_modulus = 0.0;
+  double poissons_ratio = 0.0;
+  double expansion = 0.0;  ///< α; thermal strain α·ΔT on the diagonal
+  double shear_modulus() const { return youngs_modulus / (2 * (1 + poissons_ratio)); }
+};
+
+/// Section data the kernels need.
+struct SectionData {
+  double thickness = 1.0;  ///< plane strain / plane stress out-of-plane thickness (Abaqus default 1)
+  /// Stiffness of the hourglass control of C3D8R/CPE4R/CPS4R/CAX4R as a fraction of the shear
+  /// modulus (see hourglass.hpp); 0.005 mirrors Abaqus's default scaling r_F·G = 0.005·G.
+  double hourglass_scale = 0.005;
+};
+
+struct ElementRequest {
+  bool stiffness = true;       ///< fill ElementSystem::stiffness
+  bool internal_force = true;  ///< fill ElementSystem::internal_force
+  bool point_output = false;   ///< fill ElementSystem::points (stress, strain, coordinates)
+  bool nlgeom = false;         ///< total Lagrangian, St. Venant–Kirchhoff (see continuum_kinematics.hpp)
+};
+
+/// Results at one integration point.
+struct PointResult {
+  Voigt6 stress{};  ///< Cauchy stress (small strain: the engineering stress)
+  Voigt6 strain{};  ///< small strain ε (nlgeom: logarithmic strain LE = ½ ln(F Fᵀ)), engineering shear
+  Vec3 coords{};    ///< reference coordinates of the point
+  double volume = 0.0;  ///< reference volume it represents (Abaqus IVOL; 2πr·dA for CAX)
+};
+
+struct ElementSystem {
+  int n_dof = 0;
+  std::vector<double> stiffness;       ///< n_dof × n_dof, row-major; symmetric
+  /// n_dof; ∫ Bᵀ D(ε − ε_th) dV (+ hourglass force): with ΔT ≠ 0 this already includes minus the
+  /// equivalent thermal load, so the residual is f_ext − internal_force.
+  std::vector<double> internal_force;
+  std::vector<PointResult> points;
+  /// Smallest det J at an integration point. When ≤ 0 the element is inverted or degenerate and
+  /// nothing else is filled; the caller reports it with the element's deck location.
+  double min_jacobian = 0.0;
+  int local_iterations = 0;   ///< nlgeom incompatible modes: Newton iterations on the internal modes
+
+  double k(int i, int j) const { return stiffness[static_cast<std::size_t>(i) * n_dof + j]; }
+};
+
+/// Stiffness K = ∂f_int/∂u, internal force f_int(u) = ∫ Bᵀσ dV (plus the hourglass force for
+/// reduced integration) and point output for one element.
+///
+/// coords: reference coordinates of the element's nodes (Abaqus node order).
+/// u: nodal displacements, node-major, type.dim values per node.
+/// delta_t: nodal temperature change T − T_initial (empty: none); the thermal strain
+///          α·ΔT·I enters as an initial strain, σ = D(ε − ε_th), so f_int already contains
+///          the equivalent thermal load with the opposite sign.
+ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                              std::span<const double> u, const ElasticConstants& material,
+                              const SectionData& section, const ElementRequest& request,
+                              std::span<const double> delta_t = {});
+
+}  // namespace inpact::solver::elements

@@ -1,0 +1,109 @@
+#include "face_loads.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "quadrature.hpp"
+#include "shape_functions.hpp"
+
+namespace inpact::solver::elements {
+
+using model::ElementFamily;
+
+namespace {
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Calls visit(N (face-local), n dA (outward, measure included)) at each face quadrature point.
+template <class Visit>
+void integrate_face(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int face,
+                    const SectionData& section, Visit&& visit) {
+  if (face < 0 || face >= static_cast<int>(type.faces.size()))
+    throw std::invalid_argument("integrate_face: face index out of range");
+  const model::FaceDef& fd = type.faces[face];
+  const Shape fs = face_shape(fd.n_nodes, fd.n_corners);
+  const bool axi = type.family == ElementFamily::Axisymmetric;
+  // N (degree ≤ 2) × the area factor (degree ≤ 2 on a quadratic face, +1 for the CAX radius).
+  const int order = 2 * type.order + (axi ? 1 : 0);
+  for (const QuadraturePoint& q : face_rule(fs, order)) {
+    const ShapeValues sv = evaluate_shape(fs, q.xi);
+    Vec3 x{}, ts{}, tt{};
+    for (int a = 0; a < fd.n_nodes; ++a) {
+      const Vec3& X = coords[fd.nodes[a]];
+      for (int i = 0; i < 3; ++i) {
+        x[i] += sv.N[a] * X[i];
+        ts[i] += sv.dN[a][0] * X[i];
+        tt[i] += sv.dN[a][1] * X[i];
+      }
+    }
+    Vec3 nda{};
+    if (type.dim == 3) {
+      const Vec3 c = cross(ts, tt);  // points into the solid
+      nda = {-c[0] * q.weight, -c[1] * q.weight, -c[2] * q.weight};
+    } else {
+      const double m = type.family == ElementFamily::Axisymmetric ? 2 * std::numbers::pi * x[0] : section.thickness;
+      nda = {ts[1] * q.weight * m, -ts[0] * q.weight * m, 0.0};  // edge direction rotated clockwise
+    }
+    visit(sv, nda);
+  }
+}
+
+}  // namespace
+
+std::vector<double> pressure_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int face,
+                                  double p, const SectionData& section) {
+  std::vector<double> f(static_cast<std::size_t>(type.n_nodes) * type.dim, 0.0);
+  if (face < 0 || face >= static_cast<int>(type.faces.size()))
+    throw std::invalid_argument("pressure_load: face index out of range");
+  const model::FaceDef& fd = type.faces[static_cast<std::size_t>(face)];
+  integrate_face(type, coords, face, section, [&](const ShapeValues& sv, const Vec3& nda) {
+    for (int a = 0; a < fd.n_nodes; ++a)
+      for (int i = 0; i < type.dim; ++i) f[static_cast<std::size_t>(fd.nodes[a]) * type.dim + i] -= sv.N[a] * p * nda[i];
+  });
+  return f;
+}
+
+double face_area(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int face,
+                 const SectionData& section) {
+  double area = 0.0;
+  integrate_face(type, coords, face, section, [&](const ShapeValues&, const Vec3& nda) {
+    area += std::sqrt(nda[0] * nda[0] + nda[1] * nda[1] + nda[2] * nda[2]);
+  });
+  return area;
+}
+
+std::vector<double> body_force_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                                    const Vec3& b, const SectionData& section) {
+  const int dim = type.dim, n = type.n_nodes;
+  std::vector<double> f(static_cast<std::size_t>(n) * dim, 0.0);
+  const Shape shape = element_shape(type);
+  // Integrate with the full rule of the shape even for reduced-integration types: the
+  // consistent load of a quadratic element needs it (Abaqus does the same for loads).
+  model::ElementTypeInfo full = type;
+  full.integration = model::Integration::Full;
+  for (const QuadraturePoint& q : element_rule(full)) {
+    const ShapeValues sv = evaluate_shape(shape, q.xi);
+    double J[3][3] = {};
+    double r = 0.0;
+    for (int a = 0; a < n; ++a) {
+      r += sv.N[a] * coords[a][0];
+      for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j) J[i][j] += coords[a][i] * sv.dN[a][j];
+    }
+    double det = dim == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
+                          : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                                J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                                J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    double dv = q.weight * det;
+    if (type.family == ElementFamily::Axisymmetric) dv *= 2 * std::numbers::pi * r;
+    else if (dim == 2) dv *= section.thickness;
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < dim; ++i) f[static_cast<std::size_t>(a) * dim + i] += sv.N[a] * b[i] * dv;
+  }
+  return f;
+}
+
+}  // namespace inpact::solver::elements

@@ -1,0 +1,142 @@
+#include "newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace inpact::solver {
+
+namespace {
+
+/// Largest |r| over the equations, and the DOF it sits on.
+std::pair<double, std::int64_t> largest_residual(const DofMap& dofs, std::span<const double> r_full) {
+  double worst = 0.0;
+  std::int64_t at = -1;
+  for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
+    if (dofs.kind(d) != DofMap::Kind::Free) continue;
+    const double v = std::abs(r_full[d]);
+    if (!(v <= worst)) {  // also catches NaN
+      worst = v;
+      at = d;
+    }
+  }
+  return {worst, at};
+}
+
+/// Abaqus's q: the spatial average of the force magnitudes over the model, element nodal forces
+/// and applied loads together (without the applied loads the first iteration of a load-driven
+/// increment would see no force at all).
+double average_force(const AssemblyResult& assembly, std::span<const double> f_ext) {
+  double sum = assembly.average_force * static_cast<double>(assembly.n_force_entries);
+  std::size_t count = assembly.n_force_entries;
+  for (double f : f_ext)
+    if (f != 0.0) {
+      sum += std::abs(f);
+      ++count;
+    }
+  return count ? sum / static_cast<double>(count) : 0.0;
+}
+
+}  // namespace
+
+NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& state) {
+  const DofMap& dofs = ctx.assembler.dofs();
+  const std::size_t n = static_cast<std::size_t>(dofs.n_dof());
+  const std::size_t n_eq = static_cast<std::size_t>(dofs.n_equations());
+  const std::vector<double> u_start = state.u;
+  const std::vector<double> delta_t = ctx.conditions.temperature_change(t);
+
+  // Impose the boundary conditions of time t, then iterate on the free DOFs.
+  ctx.conditions.apply_prescribed(t, u_start, state.u);
+  dofs.update_dependent(state.u);
+  state.f_ext.assign(n, 0.0);
+  ctx.conditions.external_force(t, state.f_ext);
+  state.f_int.assign(n, 0.0);
+
+  std::vector<double> r_full(n), r(n_eq), du(n_eq);
+  NewtonOutcome out;
+  std::vector<double> history;  // largest residual per iteration
+  LinearSolver* solver = &ctx.cholmod;
+
+  for (int k = 0;; ++k) {
+    AssemblyRequest request;
+    request.tangent = true;
+    request.nlgeom = ctx.nlgeom;
+    request.delta_t = delta_t;
+    const AssemblyResult asm_result = ctx.assembler.assemble(state.u, request, state.f_int);
+    for (std::size_t d = 0; d < n; ++d) r_full[d] = state.f_ext[d] - state.f_int[d];
+    ctx.assembler.reduce(r_full, r);
+
+    const auto [max_r, worst] = largest_residual(dofs, r_full);
+    out.average_force = average_force(asm_result, state.f_ext);
+    out.max_residual = max_r;
+    out.worst_dof = worst;
+    out.iterations = k;
+    // q̃: the force magnitude averaged over the step's converged increments and this one.
+    const double q = (ctx.force_sum + out.average_force) / (ctx.force_count + 1);
+    double max_correction = 0.0;
+    if (k > 0) max_correction = *std::max_element(du.begin(), du.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    ctx.observer.iteration({ctx.step_number, ctx.increment, ctx.attempt, k, max_r, q > 0 ? max_r / q : 0.0,
+                            std::abs(max_correction), worst});
+
+    if (!std::isfinite(max_r)) {
+      out.failure = "the residual is not a number (NaN or infinite)";
+      return out;
+    }
+    if (asm_result.min_jacobian <= 0.0) {
+      out.failure = fmt::format("element {} is turned inside out (Jacobian {:.3g})",
+                                ctx.am.model->mesh.elements.labels[asm_result.min_jacobian_element],
+                                asm_result.min_jacobian);
+      return out;
+    }
+    // Convergence (from the second pass on, a correction exists to judge).
+    double max_du_inc = 0.0;
+    for (std::size_t d = 0; d < n; ++d) max_du_inc = std::max(max_du_inc, std::abs(state.u[d] - u_start[d]));
+    const bool no_force = q <= 0.0;  // nothing loads the model: equilibrium is exact or nothing
+    if (no_force || max_r <= ctx.controls.linear_tolerance * q) {
+      out.converged = true;  // Abaqus accepts a residual this small without the correction test
+      return out;
+    }
+    if (k > 0 && max_r <= ctx.controls.residual_tolerance * q &&
+        std::abs(max_correction) <= ctx.controls.correction_tolerance * max_du_inc) {
+      out.converged = true;
+      return out;
+    }
+    history.push_back(max_r);
+    if (k >= ctx.controls.max_iterations) {
+      out.failure = fmt::format("no convergence in {} iterations", k);
+      return out;
+    }
+    const std::size_t h = history.size();
+    if (k >= ctx.controls.divergence_check_after && h >= 3 && history[h - 1] > history[h - 2] &&
+        history[h - 2] > history[h - 3]) {
+      out.failure = "the residual grows in two consecutive iterations (diverging)";
+      return out;
+    }
+
+    // Solve K Δu = r; a tangent that is not positive definite goes to UMFPACK.
+    FactorStatus status = solver->factorize(ctx.assembler.tangent());
+    if (status == FactorStatus::NotPositiveDefinite) {
+      solver = &ctx.umfpack;
+      status = solver->factorize(ctx.assembler.tangent());
+    }
+    if (status == FactorStatus::Singular || status == FactorStatus::NotPositiveDefinite) {
+      out.failure = "the stiffness matrix is singular: a part of the model is free to move as a rigid body "
+                    "(check its boundary conditions)";
+      return out;
+    }
+    if (status == FactorStatus::OutOfMemory) {
+      out.failure = "out of memory in the factorisation";
+      return out;
+    }
+    solver->solve(r, du);
+    for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
+      const std::int64_t eq = dofs.equation(d);
+      if (eq >= 0) state.u[d] += du[eq];
+    }
+    dofs.update_dependent(state.u);
+  }
+}
+
+}  // namespace inpact::solver

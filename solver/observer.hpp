@@ -1,0 +1,30 @@
+#pragma once
+/// How the analysis reports progress: apps/ connects an observer that writes the status log,
+/// the progress line and the results file, so the solver never includes io/.
+#include <string_view>
+
+#include "model/step.hpp"
+#include "results_frame.hpp"
+
+namespace inpact::solver {
+
+/// One Newton iteration, for the progress line and the iteration table of -v.
+struct IterationRecord {
+  int step, increment, attempt, iteration;
+  double max_residual;     ///< largest residual force at a free DOF
+  double residual_ratio;   ///< max_residual / the time-averaged force
+  double max_correction;   ///< largest displacement correction of this iteration
+  std::int64_t worst_dof;  ///< global DOF of the largest residual
+};
+
+class AnalysisObserver {
+ public:
+  virtual ~AnalysisObserver() = default;
+  virtual void step_started(const model::Step& step, int step_number) {}
+  virtual void iteration(const IterationRecord& record) {}
+  virtual void attempt_finished(const StatusRow& row) {}
+  virtual void frame(const Frame& frame) {}
+  virtual void message(std::string_view text) {}
+};
+
+}  // namespace inpact::solver

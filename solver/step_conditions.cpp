@@ -1,0 +1,228 @@
+#include "step_conditions.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "elements/face_loads.hpp"
+
+namespace inpact::solver {
+
+namespace {
+
+using Key = ConditionHistory::DloadKey;
+
+/// Key of a distributed-load definition: the face for pressure, the axis for body forces.
+int dload_key(const model::DloadEntry& e, std::size_t i) {
+  switch (e.kind) {
+    case model::DloadEntry::Kind::Pressure: return e.faces[i];
+    case model::DloadEntry::Kind::BodyForce:
+      return 100 + static_cast<int>(std::max_element(e.direction.begin(), e.direction.end(),
+                                                     [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+                                    e.direction.begin());
+    case model::DloadEntry::Kind::Gravity: return 200;
+  }
+  return 0;
+}
+
+/// *BOUNDARY blocks applied to a map of DOF definitions; OP=NEW empties it first and records
+/// the DOFs it released.
+void apply_boundaries(const AnalysisModel& am, const std::vector<model::BoundaryBlock>& blocks,
+                      std::map<std::int64_t, ConditionHistory::Value>& defs, std::vector<std::int64_t>* released) {
+  for (const auto& b : blocks) {
+    if (b.op == model::Op::New) {
+      if (released)
+        for (const auto& [d, v] : defs) released->push_back(d);
+      defs.clear();
+    }
+    for (const auto& e : b.entries)
+      for (std::int32_t node : e.nodes)
+        for (int dof = e.first_dof; dof <= std::min(e.last_dof, am.dim); ++dof) {
+          const std::int64_t d = static_cast<std::int64_t>(node) * am.dim + dof - 1;
+          defs[d] = {e.value, b.amplitude, e.value};
+        }
+  }
+}
+
+}  // namespace
+
+ConditionHistory initial_history(const AnalysisModel& am) {
+  ConditionHistory h;
+  apply_boundaries(am, am.model->boundaries, h.boundary, nullptr);
+  for (const auto& t : am.model->initial_temperatures)
+    for (std::int32_t n : t.nodes) h.temperature[n] = {t.value, "", t.value};
+  h.reactions.assign(am.n_dof(), 0.0);
+  return h;
+}
+
+StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step, const ConditionHistory& previous,
+                               double step_start_time)
+    : am_(am), step_(step), start_time_(step_start_time), previous_(previous), target_(previous) {
+  std::vector<std::int64_t> released;
+  apply_boundaries(am, step.boundaries, target_.boundary, &released);
+  for (std::int64_t d : released)
+    if (!target_.boundary.count(d) && d < static_cast<std::int64_t>(previous.reactions.size()))
+      released_reaction_[d] = previous.reactions[d];
+
+  for (const auto& b : step.cloads) {
+    if (b.op == model::Op::New) target_.cload.clear();
+    for (const auto& e : b.entries)
+      if (e.dof <= am.dim)
+        for (std::int32_t node : e.nodes)
+          target_.cload[static_cast<std::int64_t>(node) * am.dim + e.dof - 1] = {e.magnitude, b.amplitude, e.magnitude};
+  }
+  for (const auto& b : step.dloads) {
+    if (b.op == model::Op::New)
+      std::erase_if(target_.dload, [&](const auto& kv) { return kv.first.surface_load == b.surface_load; });
+    for (const auto& e : b.entries)
+      for (std::size_t i = 0; i < e.elements.size(); ++i) {
+        const Key key{e.elements[i], dload_key(e, i), b.surface_load};
+        double magnitude = e.magnitude;
+        if (e.kind == model::DloadEntry::Kind::Gravity) magnitude *= am.elements[e.elements[i]].density;
+        target_.dload[key] = {magnitude, e.direction, b.amplitude, magnitude};
+      }
+  }
+  for (const auto& b : step.temperatures) {
+    if (b.op == model::Op::New) target_.temperature.clear();
+    for (const auto& e : b.entries)
+      for (std::int32_t n : e.nodes) target_.temperature[n] = {e.value, b.amplitude, e.value};
+  }
+
+  prescribed_.assign(am.n_dof(), 0);
+  for (const auto& [d, v] : target_.boundary) prescribed_[d] = 1;
+  for (const auto& [k, v] : previous_.dload) add_dload_shape(k);
+  for (const auto& [k, v] : target_.dload) add_dload_shape(k);
+  initial_temperature_.assign(am.n_nodes(), 0.0);
+  for (const auto& t : am.model->initial_temperatures)
+    for (std::int32_t n : t.nodes) initial_temperature_[n] = t.value;
+}
+
+void StepConditions::add_dload_shape(const Key& key) {
+  if (dload_shape_.count(key)) return;
+  const ElementSetup& setup = am_.elements[key.element];
+  const auto coords = am_.coords(key.element);
+  std::vector<double> f;
+  if (key.key < 100) {
+    f = elements::pressure_load(*setup.type, coords, key.key, 1.0, setup.section);
+  } else {
+    // Body forces per unit magnitude: the direction is applied in external_force.
+    elements::Vec3 unit{0, 0, 0};
+    if (key.key < 200) unit[key.key - 100] = 1.0;
+    f = key.key < 200 ? elements::body_force_load(*setup.type, coords, unit, setup.section) : std::vector<double>{};
+  }
+  auto& shape = dload_shape_[key];
+  const auto nodes = am_.model->mesh.elements.nodes_of(key.element);
+  if (key.key == 200) {
+    // Gravity: one shape per axis, folded with the direction when evaluated.
+    for (int axis = 0; axis < am_.dim; ++axis) {
+      elements::Vec3 unit{0, 0, 0};
+      unit[axis] = 1.0;
+      const auto g = elements::body_force_load(*setup.type, coords, unit, setup.section);
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        shape.emplace_back(static_cast<std::int64_t>(nodes[a]) * am_.dim + axis, g[a * am_.dim + axis]);
+    }
+    return;
+  }
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (int c = 0; c < am_.dim; ++c)
+      if (f[a * am_.dim + c] != 0.0) shape.emplace_back(static_cast<std::int64_t>(nodes[a]) * am_.dim + c, f[a * am_.dim + c]);
+}
+
+double StepConditions::ramp(double t) const {
+  if (step_.amplitude == model::Step::DefaultAmplitude::Step) return 1.0;
+  const double period = step_.static_procedure ? step_.static_procedure->time_period : 1.0;
+  return std::clamp(t / period, 0.0, 1.0);
+}
+
+double StepConditions::amplitude(const std::string& name, double t) const {
+  const model::Amplitude& a = am_.model->amplitudes.at(name);
+  const double time = a.time == model::Amplitude::Time::Total ? start_time_ + t : t;
+  const auto& p = a.points;
+  if (p.empty()) return 0.0;
+  if (time <= p.front()[0]) return p.front()[1];
+  if (time >= p.back()[0]) return p.back()[1];
+  auto it = std::upper_bound(p.begin(), p.end(), time, [](double v, const auto& pt) { return v < pt[0]; });
+  const auto& hi = *it;
+  const auto& lo = *(it - 1);
+  const double xi = (time - lo[0]) / (hi[0] - lo[0]);
+  const double w = a.definition == model::Amplitude::Definition::SmoothStep
+                       ? xi * xi * xi * (10 - 15 * xi + 6 * xi * xi)
+                       : xi;
+  return lo[1] + (hi[1] - lo[1]) * w;
+}
+
+template <class V>
+double StepConditions::value_at(const V* prev, const V* target, double t) const {
+  if (target && !target->amplitude.empty()) return target->value * amplitude(target->amplitude, t);
+  const double start = prev ? prev->end_value : 0.0;
+  const double end = target ? target->value : 0.0;
+  return start + (end - start) * ramp(t);
+}
+
+void StepConditions::apply_prescribed(double t, std::span<const double> u_start, std::span<double> u) const {
+  for (const auto& [d, def] : target_.boundary) {
+    if (!def.amplitude.empty()) {
+      u[d] = def.value * amplitude(def.amplitude, t);
+    } else {
+      // From wherever the DOF was at the step start (a new BC on a free DOF starts there).
+      u[d] = u_start[d] + (def.value - u_start[d]) * ramp(t);
+    }
+  }
+}
+
+void StepConditions::external_force(double t, std::span<double> f) const {
+  std::fill(f.begin(), f.end(), 0.0);
+  auto find = [](const auto& map, const auto& key) -> const auto* {
+    auto it = map.find(key);
+    return it == map.end() ? nullptr : &it->second;
+  };
+  auto each_key = [](const auto& a, const auto& b, auto&& fn) {
+    for (const auto& [k, v] : a) fn(k);
+    for (const auto& [k, v] : b)
+      if (!a.count(k)) fn(k);
+  };
+  each_key(previous_.cload, target_.cload,
+           [&](std::int64_t d) { f[d] += value_at(find(previous_.cload, d), find(target_.cload, d), t); });
+  each_key(previous_.dload, target_.dload, [&](const Key& k) {
+    const auto* prev = find(previous_.dload, k);
+    const auto* target = find(target_.dload, k);
+    const double v = value_at(prev, target, t);
+    if (v == 0.0) return;
+    const auto& dir = (target ? target : prev)->direction;
+    for (const auto& [d, w] : dload_shape_.at(k)) {
+      double scale = v;
+      if (k.key == 200) scale *= dir[d % am_.dim];  // gravity: the axis of this DOF
+      f[d] += scale * w;
+    }
+  });
+  for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
+}
+
+std::vector<double> StepConditions::temperature_change(double t) const {
+  if (previous_.temperature.empty() && target_.temperature.empty()) return {};
+  std::vector<double> dt(am_.n_nodes(), 0.0);
+  for (std::size_t n = 0; n < dt.size(); ++n) {
+    const auto key = static_cast<std::int32_t>(n);
+    auto p = previous_.temperature.find(key);
+    auto q = target_.temperature.find(key);
+    const auto* prev = p == previous_.temperature.end() ? nullptr : &p->second;
+    const auto* target = q == target_.temperature.end() ? nullptr : &q->second;
+    if (!prev && !target) continue;
+    // A node with only an initial temperature keeps it (T − T_initial = 0).
+    const double temp = target ? value_at(prev, target, t) : prev->end_value;
+    dt[n] = temp - initial_temperature_[n];
+  }
+  return dt;
+}
+
+ConditionHistory StepConditions::end_state(std::span<const double> reactions) const {
+  ConditionHistory h = target_;
+  const double period = step_.static_procedure ? step_.static_procedure->time_period : 1.0;
+  for (auto& [d, v] : h.boundary) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
+  for (auto& [d, v] : h.cload) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
+  for (auto& [k, v] : h.dload) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
+  for (auto& [n, v] : h.temperature) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
+  h.reactions.assign(reactions.begin(), reactions.end());
+  return h;
+}
+
+}  // namespace inpact::solver

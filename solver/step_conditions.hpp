@@ -1,0 +1,95 @@
+#pragma once
+/// The boundary conditions, loads and temperatures in force during one step, and their values
+/// at any time of it, following Abaqus's rules for static steps:
+///  - a value defined in this step without an amplitude ramps linearly from its value at the
+///    end of the previous step (0 for a new load; the current displacement for a boundary
+///    condition) to the new one over the step (*STEP, AMPLITUDE=RAMP, the static default), or
+///    applies at once (AMPLITUDE=STEP);
+///  - with AMPLITUDE=name the value is magnitude × a(t);
+///  - OP=MOD (default) changes the definitions it names and keeps the others; OP=NEW removes
+///    every earlier one of its kind first: removed loads ramp down to zero, and a removed
+///    boundary condition leaves its reaction as a load that ramps down to zero.
+/// Loads act on the reference geometry (no follower pressure yet).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <map>
+#include <span>
+#include <vector>
+
+#include "analysis_model.hpp"
+
+namespace inpact::solver {
+
+/// What carries over from one step to the next: every definition in force with the value it
+/// reached, and the reactions at the constrained DOFs.
+struct ConditionHistory {
+  struct Value {
+    double value = 0.0;      ///< the magnitude as defined
+    std::string amplitude;   ///< upper-case amplitude name; empty = the step's ramp/step
+    double end_value = 0.0;  ///< what it reached at the end of its step (= value × a(t_end))
+  };
+  std::map<std::int64_t, Value> boundary;  ///< key: global DOF
+  std::map<std::int64_t, Value> cload;     ///< key: global DOF
+  /// Distributed loads by (element row, load key): key = face (0..5) for pressure, 100 + axis
+  /// for body forces, 200 for gravity; the value holds the magnitude (with density for GRAV).
+  struct DloadKey {
+    std::int32_t element;
+    int key;
+    bool surface_load;
+    auto operator<=>(const DloadKey&) const = default;
+  };
+  struct DloadValue {
+    double value = 0.0;
+    std::array<double, 3> direction{0, 0, 0};
+    std::string amplitude;
+    double end_value = 0.0;
+  };
+  std::map<DloadKey, DloadValue> dload;
+  std::map<std::int32_t, Value> temperature;  ///< key: node row
+  std::vector<double> reactions;              ///< per global DOF, at the end of the step
+};
+
+/// The state before the first step: the model-level boundary conditions (in force from the
+/// start, at their values) and the initial temperatures.
+ConditionHistory initial_history(const AnalysisModel& am);
+
+class StepConditions {
+ public:
+  /// `step_start_time`: total time at the start of the step (for TIME=TOTAL amplitudes).
+  StepConditions(const AnalysisModel& am, const model::Step& step, const ConditionHistory& previous,
+                 double step_start_time);
+
+  /// Per global DOF: 1 when a boundary condition prescribes it in this step.
+  const std::vector<std::uint8_t>& prescribed() const { return prescribed_; }
+  /// Writes the prescribed DOFs' values at step time t into u; `u_start` is u at the step start.
+  void apply_prescribed(double t, std::span<const double> u_start, std::span<double> u) const;
+  /// External force vector at step time t (size n_dof), overwritten.
+  void external_force(double t, std::span<double> f) const;
+  /// Nodal temperature change T(t) − T_initial, or empty when the model has no temperatures.
+  std::vector<double> temperature_change(double t) const;
+  /// The definitions in force at the end of the step, for the next one.
+  ConditionHistory end_state(std::span<const double> reactions) const;
+
+ private:
+  double ramp(double t) const;
+  double amplitude(const std::string& name, double t) const;
+  /// Value at step time t of a definition that was `prev` at the step start and is `target` in
+  /// this step (either may be absent).
+  template <class V>
+  double value_at(const V* prev, const V* target, double t) const;
+  void add_dload_shape(const ConditionHistory::DloadKey& key);
+
+  const AnalysisModel& am_;
+  const model::Step& step_;
+  double start_time_;
+  ConditionHistory previous_;  ///< values at the step start
+  ConditionHistory target_;    ///< definitions in force in this step (values = targets)
+  std::vector<std::uint8_t> prescribed_;
+  std::map<std::int64_t, double> released_reaction_;  ///< BCs removed by OP=NEW: ramp to 0
+  std::vector<double> initial_temperature_;
+  /// Global nodal forces of each distributed load at unit magnitude (reference geometry).
+  std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int64_t, double>>> dload_shape_;
+};
+
+}  // namespace inpact::solver

@@ -1,0 +1,57 @@
+#pragma once
+// Reference and distorted element geometries for the element-kernel tests.
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "model/element_types.hpp"
+#include "solver/elements/element_kernel.hpp"
+#include "solver/elements/shape_functions.hpp"
+
+namespace inpact::test {
+
+using solver::elements::Vec3;
+
+/// Nodes of the reference element of `type` (unit cube/square/simplex, wedge of height 1),
+/// scaled and shifted: 2D elements are placed at x ∈ [2, 3] so that CAX radii are positive.
+inline std::vector<Vec3> reference_coords(const model::ElementTypeInfo& type) {
+  using solver::elements::Shape;
+  const Shape s = solver::elements::element_shape(type);
+  std::vector<Vec3> x(type.n_nodes);
+  for (int a = 0; a < type.n_nodes; ++a) {
+    const auto xi = solver::elements::node_parametric_coords(s, a);
+    switch (s) {
+      case Shape::Hex8:
+      case Shape::Hex20: x[a] = {(xi[0] + 1) / 2, (xi[1] + 1) / 2, (xi[2] + 1) / 2}; break;
+      case Shape::Wedge6: x[a] = {xi[0], xi[1], (xi[2] + 1) / 2}; break;
+      case Shape::Quad4:
+      case Shape::Quad8: x[a] = {2 + (xi[0] + 1) / 2, (xi[1] + 1) / 2, 0}; break;
+      case Shape::Tri3:
+      case Shape::Tri6: x[a] = {2 + xi[0], xi[1], 0}; break;
+      default: x[a] = xi;  // tets
+    }
+  }
+  return x;
+}
+
+/// A deterministic, clearly non-affine distortion of the reference element (corners moved by
+/// up to ~0.12, midside nodes moved off the chord), still with a positive Jacobian.
+inline std::vector<Vec3> distorted_coords(const model::ElementTypeInfo& type) {
+  std::vector<Vec3> x = reference_coords(type);
+  for (int a = 0; a < type.n_nodes; ++a)
+    for (int i = 0; i < type.dim; ++i) x[a][i] += 0.12 * std::sin(1.7 * a + 2.3 * i + 0.4) * (a % 3 == 1 ? 1 : 0.6);
+  return x;
+}
+
+/// Node-major displacement vector of the field u(X) = c + A·X (A is dim × dim, row-major 3×3).
+template <class Field>
+std::vector<double> nodal_field(const model::ElementTypeInfo& type, const std::vector<Vec3>& x, Field&& field) {
+  std::vector<double> u(static_cast<std::size_t>(type.n_nodes) * type.dim);
+  for (int a = 0; a < type.n_nodes; ++a) {
+    const Vec3 v = field(x[a]);
+    for (int i = 0; i < type.dim; ++i) u[static_cast<std::size_t>(a) * type.dim + i] = v[i];
+  }
+  return u;
+}
+
+}  // namespace inpact::test
