@@ -5,5 +5,5 @@ cd "$(dirname "$0")/.."
 bash .ci/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --target inpact
-# The solver is not built yet: the default job is the datacheck of the default deck.
-build/apps/inpact check decks/punch_on_block.inp
+# The default job: a thick cylinder under internal pressure (Lamé), results in build/jobs/.
+build/apps/inpact run decks/thick_cylinder.inp -o build/jobs

@@ -16,6 +16,7 @@
 #include "parser/read_deck.hpp"
 #include "solver/analysis.hpp"
 #include "solver/analysis_error.hpp"
+#include "solver/analysis_model.hpp"
 
 namespace inpact::app {
 
@@ -91,6 +92,13 @@ int run_analysis(const RunOptions& options) {
   }
   const std::string job = options.job.empty() ? std::filesystem::path(options.deck).stem().string() : options.job;
   const std::filesystem::path dir = options.output_dir;
+  // A model the analysis cannot take is a deck error: found before any file is created.
+  try {
+    solver::build_analysis_model(result.model);
+  } catch (const solver::AnalysisError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kDeckError;
+  }
   try {
     std::filesystem::create_directories(dir);
     io::ResultsWriter results =
@@ -106,7 +114,7 @@ int run_analysis(const RunOptions& options) {
       observer.end_line();
       results.finish(io::RunStatus::Aborted);
       status.finish(false);
-      std::fprintf(stderr, "%s: error: %s\n", options.deck.c_str(), e.what());
+      std::fprintf(stderr, "%s\n", e.what());
       return kDeckError;
     }
     observer.end_line();

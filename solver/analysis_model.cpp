@@ -29,10 +29,22 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   for (std::size_t e = 0; e < el.size(); ++e) {
     const auto& t = model::element_type(el.type[e]);
     if (t.dim != am.dim || (t.family == model::ElementFamily::Axisymmetric) != am.axisymmetric)
-      throw AnalysisError(fmt::format("{}: element {} ({}) cannot be combined with {} elements in one model",
+      throw AnalysisError(fmt::format("{}: error: *ELEMENT: element {} ({}) cannot be combined with {} elements in one model",
                                       m.sources.describe(el.loc[e]), el.labels[e], t.name, first.name));
     am.elements[e].type = &t;
   }
+
+  // Contact is enforced by contact/, which the analysis does not drive yet: a deck with contact
+  // must not run as if its bodies could pass through each other.
+  const model::ContactPair* pair = !m.contact_pairs.empty() ? &m.contact_pairs.front() : nullptr;
+  for (const auto& step : m.steps)
+    if (!pair && !step.contact_pairs.empty()) pair = &step.contact_pairs.front();
+  if (pair)
+    throw AnalysisError(fmt::format("{}: error: *CONTACT PAIR: contact is not analysed by this version of inpact yet",
+                                    m.sources.describe(pair->loc)));
+  if (m.general_contact.defined)
+    throw AnalysisError(fmt::format("{}: error: *CONTACT: contact is not analysed by this version of inpact yet",
+                                    m.sources.describe(m.general_contact.loc)));
 
   for (const auto& sec : m.mesh.sections) {
     const model::Material& mat = m.materials.at(sec.material);

@@ -40,15 +40,15 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
     const std::string where = m.sources.describe(eq.loc);
     for (const auto& t : eq.terms)
       if (t.dof > am.dim)
-        throw AnalysisError(fmt::format("{}: *EQUATION: degree of freedom {} does not exist in this model (nodes have {})",
+        throw AnalysisError(fmt::format("{}: error: *EQUATION: degree of freedom {} does not exist in this model (nodes have {})",
                                         where, t.dof, am.dim));
     const std::int64_t d0 = dof_of(eq.terms[0]);
     if (map.kind_[d0] == Kind::Prescribed)
-      throw AnalysisError(fmt::format("{}: *EQUATION: the first (eliminated) degree of freedom, node {} dof {}, also "
+      throw AnalysisError(fmt::format("{}: error: *EQUATION: the first (eliminated) degree of freedom, node {} dof {}, also "
                                       "has a boundary condition; put another DOF first", where,
                                       m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
     if (dependent.count(d0))
-      throw AnalysisError(fmt::format("{}: *EQUATION: node {} dof {} is already eliminated by another equation", where,
+      throw AnalysisError(fmt::format("{}: error: *EQUATION: node {} dof {} is already eliminated by another equation", where,
                                       m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
     std::vector<MasterTerm> terms;
     for (std::size_t k = 1; k < eq.terms.size(); ++k)

@@ -58,6 +58,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
   NewtonOutcome out;
   std::vector<double> history;  // largest residual per iteration
   LinearSolver* solver = &ctx.cholmod;
+  double increment_force = 0.0;
 
   for (int k = 0;; ++k) {
     AssemblyRequest request;
@@ -69,12 +70,18 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     ctx.assembler.reduce(r_full, r);
 
     const auto [max_r, worst] = largest_residual(dofs, r_full);
-    out.average_force = average_force(asm_result, state.f_ext);
+    const double q_now = average_force(asm_result, state.f_ext);
     out.max_residual = max_r;
     out.worst_dof = worst;
     out.iterations = k;
     // q̃: the force magnitude averaged over the step's converged increments and this one.
-    const double q = (ctx.force_sum + out.average_force) / (ctx.force_count + 1);
+    // q̃: the force magnitude averaged over the step's converged increments and this one, where
+    // this one counts with the largest q of its iterations. A rigid-body move ends with nearly
+    // no force at all; measured against its own round-off it would never converge, measured
+    // against the forces its first iteration met, it does.
+    increment_force = std::max(increment_force, q_now);
+    out.average_force = increment_force;
+    const double q = (ctx.force_sum + increment_force) / (ctx.force_count + 1);
     double max_correction = 0.0;
     if (k > 0) max_correction = *std::max_element(du.begin(), du.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
     ctx.observer.iteration({ctx.step_number, ctx.increment, ctx.attempt, k, max_r, q > 0 ? max_r / q : 0.0,

@@ -26,7 +26,7 @@ struct IncrementState {
 struct NewtonOutcome {
   bool converged = false;
   int iterations = 0;
-  double average_force = 0.0;  ///< q of the last assembly, for the step's time average
+  double average_force = 0.0;  ///< q of the increment (largest over its iterations), for the time average
   double max_residual = 0.0;
   std::int64_t worst_dof = -1;
   std::string failure;  ///< why it did not converge
