@@ -2,7 +2,7 @@
 // each class of bad data reported at its file:line:col.
 #include <gtest/gtest.h>
 
-#include "deck_fixture.hpp"
+#include "fixtures/deck_fixture.hpp"
 
 using namespace inpact;
 using inpact::test::DeckDir;

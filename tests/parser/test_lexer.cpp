@@ -1,7 +1,7 @@
 // The keyword language itself: comments, case and blanks, continuation, includes, parameters.
 #include <gtest/gtest.h>
 
-#include "deck_fixture.hpp"
+#include "fixtures/deck_fixture.hpp"
 #include "parser/fields.hpp"
 #include "parser/keyword_line.hpp"
 #include "parser/parameters.hpp"

@@ -1,7 +1,7 @@
 // *BOUNDARY *CLOAD *DLOAD *DSLOAD *TEMPERATURE *INITIAL CONDITIONS *AMPLITUDE *EQUATION.
 #include <gtest/gtest.h>
 
-#include "deck_fixture.hpp"
+#include "fixtures/deck_fixture.hpp"
 
 using namespace inpact;
 using inpact::test::DeckDir;

@@ -1,7 +1,7 @@
 // *NODE *ELEMENT *NSET *ELSET *SURFACE *SOLID SECTION *MATERIAL into the model database.
 #include <gtest/gtest.h>
 
-#include "deck_fixture.hpp"
+#include "fixtures/deck_fixture.hpp"
 
 using namespace inpact;
 using inpact::test::DeckDir;

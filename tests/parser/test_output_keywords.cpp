@@ -1,7 +1,7 @@
 // *OUTPUT with its sub-options, the print keywords and CalculiX's *... FILE keywords.
 #include <gtest/gtest.h>
 
-#include "deck_fixture.hpp"
+#include "fixtures/deck_fixture.hpp"
 
 using namespace inpact;
 using inpact::test::DeckDir;

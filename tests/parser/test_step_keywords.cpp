@@ -1,7 +1,7 @@
 // *STEP *STATIC *END STEP *CONTROLS into the model's steps.
 #include <gtest/gtest.h>
 
-#include "deck_fixture.hpp"
+#include "fixtures/deck_fixture.hpp"
 
 using namespace inpact;
 using inpact::test::DeckDir;
