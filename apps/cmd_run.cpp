@@ -1,4 +1,4 @@
-/// `inpact run`: read the deck, run the analysis, and write JOB.h5 (+ .xdmf) and JOB.sta.
+/// `inpact run`: read the deck, run the analysis, and write JOB.h5 (+ .xdmf), JOB.sta and JOB.dat.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "io/dat_report.hpp"
 #include "io/io_error.hpp"
 #include "io/results_writer.hpp"
 #include "io/sha256.hpp"
@@ -22,14 +23,15 @@ namespace inpact::app {
 
 namespace {
 
-/// Connects the analysis to the results file, the status log and the terminal.
+/// Connects the analysis to the results file, the status log, the print file and the terminal.
 class RunObserver final : public solver::AnalysisObserver {
  public:
-  RunObserver(io::ResultsWriter& results, io::StatusLog& status, const RunOptions& options)
-      : results_(results), status_(status), options_(options), tty_(isatty(fileno(stdout)) != 0) {}
+  RunObserver(io::ResultsWriter& results, io::StatusLog& status, io::DatReport& dat, const RunOptions& options)
+      : results_(results), status_(status), dat_(dat), options_(options), tty_(isatty(fileno(stdout)) != 0) {}
 
   void step_started(const model::Step& step, int number) override {
     results_.begin_step(step);
+    dat_.begin_step(step, number);
     status_.note(fmt::format("STEP {} BEGINS ({})", number, step.name));
     if (!options_.quiet) std::printf("step %d (%s)\n", number, step.name.c_str());
   }
@@ -51,6 +53,7 @@ class RunObserver final : public solver::AnalysisObserver {
     std::fflush(stdout);
   }
   void frame(const solver::Frame& frame) override { results_.write_frame(frame); }
+  void print_frame(const solver::PrintFrame& frame) override { dat_.write(frame); }
   void message(std::string_view text) override {
     if (tty_ && !options_.quiet) std::printf("\n");
     std::fprintf(stderr, "%.*s\n", static_cast<int>(text.size()), text.data());
@@ -62,6 +65,7 @@ class RunObserver final : public solver::AnalysisObserver {
  private:
   io::ResultsWriter& results_;
   io::StatusLog& status_;
+  io::DatReport& dat_;
   const RunOptions& options_;
   bool tty_;
 };
@@ -104,7 +108,8 @@ int run_analysis(const RunOptions& options) {
     io::ResultsWriter results =
         io::ResultsWriter::create(dir / (job + ".h5"), result.model, deck_digest(result.model), INPACT_VERSION);
     io::StatusLog status(dir / (job + ".sta"), INPACT_VERSION);
-    RunObserver observer(results, status, options);
+    io::DatReport dat(dir / (job + ".dat"), INPACT_VERSION, result.model.heading);
+    RunObserver observer(results, status, dat, options);
     solver::AnalysisOptions analysis_options;
     analysis_options.threads = options.threads;
     solver::AnalysisOutcome outcome;
@@ -114,12 +119,14 @@ int run_analysis(const RunOptions& options) {
       observer.end_line();
       results.finish(io::RunStatus::Aborted);
       status.finish(false);
+      dat.finish(false);
       std::fprintf(stderr, "%s\n", e.what());
       return kDeckError;
     }
     observer.end_line();
     results.finish(outcome.completed ? io::RunStatus::Completed : io::RunStatus::Aborted);
     status.finish(outcome.completed);
+    dat.finish(outcome.completed);
     if (!outcome.completed) {
       std::fprintf(stderr, "%s: the analysis stopped: %s\n", options.deck.c_str(), outcome.message.c_str());
       return kAnalysisFailed;

@@ -92,7 +92,7 @@ struct OutputRequest {
   std::vector<std::string> variables;  ///< upper-case Abaqus identifiers (U, RF, S, CPRESS, ...)
   bool preselect = false;              ///< VARIABLE=PRESELECT (or no data line)
   bool all = false;                    ///< VARIABLE=ALL
-  int frequency = 1;                   ///< every n-th increment; 0 = none (last only)
+  int frequency = 1;                   ///< every n-th increment and the last; 0 = no output at all
   std::optional<int> number_interval;  ///< NUMBER INTERVAL: n evenly spaced times in the step
   bool time_marks = false;             ///< TIME MARKS=YES: at exact multiples of the interval
   Op op = Op::Add;

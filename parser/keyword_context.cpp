@@ -70,11 +70,21 @@ void KeywordContext::error_param(std::string_view canonical, std::string message
   error(p ? (p->value ? p->value_loc : p->loc) : keyword.loc, std::move(message));
 }
 
+namespace {
+/// A field's text quoted for a message: `'1.O'`, or cut after 60 characters
+/// (`'xxxx...' (1000000 characters)`) so that a field a megabyte long cannot flood the report.
+std::string quoted(std::string_view text) {
+  constexpr std::size_t kMax = 60;
+  if (text.size() <= kMax) return fmt::format("'{}'", text);
+  return fmt::format("'{}...' ({} characters)", text.substr(0, kMax), text.size());
+}
+}  // namespace
+
 std::optional<double> KeywordContext::real(const Field& f, std::string_view what) {
   auto v = parse_real(f.text);
   if (!v)
     error(f.loc, f.text.empty() ? fmt::format("{} is missing: expected a number", what)
-                                : fmt::format("{}: expected a number, found '{}'", what, f.text));
+                                : fmt::format("{}: expected a number, found {}", what, quoted(f.text)));
   return v;
 }
 
@@ -82,7 +92,7 @@ std::optional<std::int64_t> KeywordContext::integer(const Field& f, std::string_
   auto v = parse_int(f.text);
   if (!v)
     error(f.loc, f.text.empty() ? fmt::format("{} is missing: expected an integer", what)
-                                : fmt::format("{}: expected an integer, found '{}'", what, f.text));
+                                : fmt::format("{}: expected an integer, found {}", what, quoted(f.text)));
   return v;
 }
 

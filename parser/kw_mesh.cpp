@@ -190,8 +190,24 @@ void fill_set(KeywordContext& ctx, bool is_node_set) {
         continue;
       }
       // Labels in the range that do not exist are skipped, as generated ranges often span gaps.
-      for (std::int64_t l = *a; l <= *b; l += *step)
-        if (auto r = index.find(ctx.label_instance, l)) set.rows.push_back(*r);
+      // The arithmetic is unsigned (no overflow near the int64 limits), and a range wider than
+      // the mesh is matched against the mesh's labels instead of walked label by label, which
+      // for `1, 9223372036854775807` would never end.
+      const auto first = static_cast<std::uint64_t>(*a);
+      const auto inc = static_cast<std::uint64_t>(*step);
+      const std::uint64_t n_range = (static_cast<std::uint64_t>(*b) - first) / inc + 1;
+      const auto& labels = is_node_set ? mesh.nodes.labels : mesh.elements.labels;
+      if (n_range > labels.size()) {
+        for (std::size_t row = 0; row < labels.size(); ++row) {
+          const std::int64_t l = labels[row];
+          if (l < *a || l > *b || (static_cast<std::uint64_t>(l) - first) % inc != 0) continue;
+          auto r = index.find(ctx.label_instance, l);
+          if (r && static_cast<std::size_t>(*r) == row) set.rows.push_back(*r);
+        }
+        continue;
+      }
+      for (std::uint64_t k = 0; k < n_range; ++k)
+        if (auto r = index.find(ctx.label_instance, static_cast<std::int64_t>(first + k * inc))) set.rows.push_back(*r);
       continue;
     }
     for (const Field& field : f) {

@@ -27,16 +27,17 @@ namespace {
 /// than tab, CR, LF and FF), or npos. Tested in blocks without an early exit so that the
 /// compiler vectorises it: it runs over every byte of every deck.
 std::size_t first_control_byte(std::string_view text) {
-  auto is_bad = [](char ch) {
+  // Bitwise & rather than &&: no branch per byte.
+  auto is_bad = [](char ch) -> unsigned {
     const auto c = static_cast<unsigned char>(ch);
-    return c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f';
+    return (c < 0x20) & (c != '\n') & (c != '\r') & (c != '\t') & (c != '\f');
   };
   constexpr std::size_t kBlock = 64;
   std::size_t i = 0;
   for (; i + kBlock <= text.size(); i += kBlock) {
-    bool any = false;
-    for (std::size_t k = 0; k < kBlock; ++k) any |= is_bad(text[i + k]);
-    if (any) break;
+    unsigned n_bad = 0;
+    for (std::size_t k = 0; k < kBlock; ++k) n_bad += is_bad(text[i + k]);
+    if (n_bad) break;
   }
   for (; i < text.size(); ++i)
     if (is_bad(text[i])) return i;

@@ -8,6 +8,7 @@
 
 #include "analysis_model.hpp"
 #include "assembler.hpp"
+#include "blas_info.hpp"
 #include "dof_map.hpp"
 #include "field_output.hpp"
 #include "linear/linear_solver.hpp"
@@ -22,15 +23,15 @@ namespace {
 /// What a step needs while it runs, built when it starts. Not movable: the assembler keeps a
 /// reference to the DOF map beside it.
 struct StepRun {
-  StepRun(const AnalysisModel& am, std::size_t index, const ConditionHistory& history, double total_time)
+  StepRun(const AnalysisModel& am, std::size_t index, const ConditionHistory& history, double total_time, int threads)
       : step(am.model->steps[index]),
         number(static_cast<int>(index + 1)),
         start_time(total_time),
         conditions(am, step, history, total_time),
         dofs(DofMap::build(am, conditions.prescribed())),
-        assembler(am, dofs),
+        assembler(am, dofs, threads),
         controls(solution_controls(step)),
-        output(select_output(*am.model, index)) {}
+        output(am, index) {}
   StepRun(const StepRun&) = delete;
 
   const model::Step& step;
@@ -40,14 +41,17 @@ struct StepRun {
   DofMap dofs;
   Assembler assembler;
   SolutionControls controls;
-  OutputSelection output;
+  StepOutput output;
 };
 
-/// Reactions at the prescribed DOFs: RF = f_int − f_ext (zero elsewhere).
+/// Reactions at the prescribed DOFs: RF = f_int − f_ext (zero elsewhere). A DOF that an
+/// *EQUATION ties to a prescribed DOF passes its force on to it with the equation's weight.
 std::vector<double> reactions(const DofMap& dofs, const IncrementState& s) {
   std::vector<double> rf(s.u.size(), 0.0);
   for (std::int64_t d = 0; d < dofs.n_dof(); ++d)
-    if (dofs.kind(d) == DofMap::Kind::Prescribed) rf[d] = s.f_int[d] - s.f_ext[d];
+    if (dofs.kind(d) == DofMap::Kind::Prescribed || dofs.kind(d) == DofMap::Kind::Dependent)
+      for (const auto& m : dofs.masters(d))
+        if (dofs.kind(m.dof) == DofMap::Kind::Prescribed) rf[m.dof] += m.weight * (s.f_int[d] - s.f_ext[d]);
   return rf;
 }
 
@@ -60,14 +64,31 @@ std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
                      d % am.dim + 1);
 }
 
-void write_frame(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
-                 double nlgeom, AnalysisObserver& observer) {
-  Frame frame;
-  frame.increment = increment;
-  frame.step_time = t;
-  frame.total_time = run.start_time + t;
-  frame.fields = compute_fields(am, run.output, s.u, reactions(run.dofs, s), nlgeom, run.conditions.temperature_change(t));
-  observer.frame(frame);
+/// The output due at a converged increment: a results frame and/or the printed tables.
+void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
+                  double dt, const OutputDue& due, AnalysisObserver& observer) {
+  if (!due.any_field() && !due.any_print()) return;
+  OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom,
+                                       run.conditions.temperature_change(t));
+  if (due.any_field()) {
+    Frame frame;
+    frame.increment = increment;
+    frame.step_time = t;
+    frame.total_time = run.start_time + t;
+    frame.fields = std::move(values.fields);
+    observer.frame(frame);
+  }
+  if (due.any_print()) {
+    PrintFrame print;
+    print.step = run.number;
+    print.increment = increment;
+    print.step_time = t;
+    print.total_time = run.start_time + t;
+    print.inc_of_time = dt;
+    print.time_period = run.step.static_procedure->time_period;
+    print.tables = std::move(values.tables);
+    observer.print_frame(print);
+  }
 }
 
 /// The increments of one step: automatic (or DIRECT fixed) incrementation with cutbacks.
@@ -89,6 +110,8 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
                                  run.number, run.step.name, run.step.max_increments, t)};
     dt = std::min(dt, period - t);
     if (period - t - dt < 1e-12 * period) dt = period - t;
+    const double dt_unmarked = dt;  // *OUTPUT, TIME MARKS=YES: end the increment on the next mark
+    dt = run.output.limit_increment(t, dt);
     IncrementState trial;
     NewtonOutcome outcome;
     bool cut_back_this_increment = false;
@@ -125,7 +148,9 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
     force_sum += outcome.average_force;
     ++force_count;
     const bool last = t >= period * (1 - 1e-12);
-    if (last || increment % run.output.frequency == 0) write_frame(am, run, state, increment, t, run.step.nlgeom, observer);
+    write_output(am, run, state, increment, t, dt, run.output.due(increment, t, last), observer);
+    // After an increment cut short by a time mark, go on with the size the controller chose.
+    if (dt < dt_unmarked && !cut_back_this_increment) dt = dt_unmarked;
     // Grow the increment after two easy ones in a row (never right after a cutback).
     easy_in_a_row = (!cut_back_this_increment && outcome.iterations <= c.easy_iterations) ? easy_in_a_row + 1 : 0;
     if (!proc.direct && easy_in_a_row >= 2) dt = std::min(dt * c.growth_factor, dt_max);
@@ -136,7 +161,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
 }  // namespace
 
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
-  (void)options;
+  set_blas_threads(options.threads);
   const AnalysisModel am = build_analysis_model(model);
   ConditionHistory history = initial_history(am);
   IncrementState state;
@@ -147,8 +172,8 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
-    StepRun run(am, s, history, total_time);
-    for (const auto& v : run.output.not_computed)
+    StepRun run(am, s, history, total_time, options.threads);
+    for (const auto& v : run.output.not_computed())
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));
     AnalysisOutcome outcome = run_increments(am, run, state, observer);

@@ -6,6 +6,7 @@
 
 #include "analysis_model.hpp"
 #include "dof_map.hpp"
+#include "elements/element_kernel.hpp"
 #include "linear/sparse_matrix.hpp"
 
 namespace inpact::solver {
@@ -28,7 +29,8 @@ struct AssemblyResult {
 
 class Assembler {
  public:
-  Assembler(const AnalysisModel& am, const DofMap& dofs);
+  /// `threads`: element computations run on this many threads (the sum stays in element order).
+  Assembler(const AnalysisModel& am, const DofMap& dofs, int threads = 1);
 
   /// The reduced tangent's pattern (upper triangle); assemble() fills its values.
   SparseMatrix& tangent() { return tangent_; }
@@ -44,12 +46,14 @@ class Assembler {
   /// Global DOFs of element e, node-major.
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
 
+  elements::ElementSystem compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
 
   const AnalysisModel& am_;
   const DofMap& dofs_;
   SparseMatrix tangent_;
+  int threads_ = 1;
 };
 
 }  // namespace inpact::solver

@@ -20,4 +20,9 @@ std::string blas_description() {
   return "reference or unknown BLAS (install libopenblas-dev for a ten times faster factorisation)";
 }
 
+void set_blas_threads(int n) {
+  using SetFn = void (*)(int);
+  if (void* sym = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetFn>(sym)(n);
+}
+
 }  // namespace inpact::solver

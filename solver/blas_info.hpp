@@ -8,4 +8,7 @@ namespace inpact::solver {
 /// "OpenBLAS 0.3.21 ..." when OpenBLAS is loaded, else "reference or unknown BLAS".
 std::string blas_description();
 
+/// Threads the BLAS may use under the factorisation (OpenBLAS; no effect on other BLAS).
+void set_blas_threads(int n);
+
 }  // namespace inpact::solver

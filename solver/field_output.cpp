@@ -1,6 +1,8 @@
 #include "field_output.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 
 #include "elements/element_kernel.hpp"
 
@@ -8,25 +10,73 @@ namespace inpact::solver {
 
 namespace {
 
-using Kind = model::OutputRequest::Kind;
+using model::OutputRequest;
+using Kind = OutputRequest::Kind;
 
-/// Identifiers the solid mechanics core computes; PRESELECT is Abaqus's default set of them.
-const std::set<std::string> kComputed = {"U", "RF", "S", "E"};
-const std::set<std::string> kPreselect = {"U", "RF", "S", "E"};
-
-bool is_field_request(Kind k) {
-  return k == Kind::NodeField || k == Kind::ElementField || k == Kind::ContactField || k == Kind::ModelField;
+/// Output database requests (*OUTPUT, FIELD|HISTORY and what it holds): OP= applies to them.
+bool is_odb(Kind k) {
+  switch (k) {
+    case Kind::NodeField: case Kind::ElementField: case Kind::ContactField: case Kind::ModelField:
+    case Kind::NodeHistory: case Kind::ElementHistory: case Kind::ContactHistory: case Kind::ModelHistory:
+      return true;
+    default: return false;
+  }
 }
 
-FieldData nodal_field(const AnalysisModel& am, const std::string& key, std::span<const double> values) {
-  FieldData f;
-  f.key = key;
-  f.position = Position::Nodal;
-  for (int c = 1; c <= am.dim; ++c) f.component_labels.push_back(key + std::to_string(c));
-  f.nodes.resize(am.n_nodes());
-  for (std::size_t i = 0; i < am.n_nodes(); ++i) f.nodes[i] = static_cast<std::int64_t>(i);
-  f.values.assign(values.begin(), values.end());
-  return f;
+/// Requests written to the results file as fields; CalculiX's *... FILE ones included (inpact
+/// writes them into JOB.h5, not a .frd file).
+bool is_field(Kind k) {
+  switch (k) {
+    case Kind::NodeField: case Kind::ElementField: case Kind::ContactField: case Kind::ModelField:
+    case Kind::NodeFile: case Kind::ElementFile: case Kind::ContactFile:
+      return true;
+    default: return false;
+  }
+}
+
+bool is_print(Kind k) { return k == Kind::NodePrint || k == Kind::ElementPrint || k == Kind::ContactPrint; }
+
+/// Print and file requests: a step that gives one of a kind replaces the carried-over ones.
+bool replaced_by_kind(Kind k) { return is_print(k) || k == Kind::NodeFile || k == Kind::ElementFile || k == Kind::ContactFile; }
+
+enum class Domain : std::uint8_t { Node, Element, Contact, Model };
+
+Domain domain_of(Kind k) {
+  switch (k) {
+    case Kind::NodeField: case Kind::NodeFile: case Kind::NodePrint: case Kind::NodeHistory: return Domain::Node;
+    case Kind::ElementField: case Kind::ElementFile: case Kind::ElementPrint: case Kind::ElementHistory:
+      return Domain::Element;
+    case Kind::ContactField: case Kind::ContactFile: case Kind::ContactPrint: case Kind::ContactHistory:
+      return Domain::Contact;
+    default: return Domain::Model;
+  }
+}
+
+bool all_digits(std::string_view s, std::size_t n) {
+  return s.size() == n && std::all_of(s.begin(), s.end(), [](char c) { return c >= '1' && c <= '3'; });
+}
+
+/// "U", "U2" → true for base "U" (one component digit); "S", "S12" for tensors (two digits).
+bool is_variable(std::string_view v, std::string_view base, std::size_t digits) {
+  if (v.substr(0, base.size()) != base) return false;
+  const std::string_view rest = v.substr(base.size());
+  return rest.empty() || all_digits(rest, digits);
+}
+
+/// The results-file key a field request's variable asks for, or "" when inpact has none.
+std::string field_key(std::string_view v, Domain d) {
+  const bool node = d == Domain::Node || d == Domain::Model;
+  const bool element = d == Domain::Element || d == Domain::Model;
+  if (node) {
+    for (std::string_view k : {"U", "RF", "COORD"})
+      if (is_variable(v, k, 1)) return std::string(k);
+  }
+  if (element) {
+    if (v == "MISES") return "S";
+    for (std::string_view k : {"S", "E"})
+      if (is_variable(v, k, 2)) return std::string(k);
+  }
+  return "";
 }
 
 /// Abaqus's components: 3D 11 22 33 12 13 23; plane and axisymmetric 11 22 33 12.
@@ -36,81 +86,441 @@ std::vector<std::string> tensor_labels(const std::string& key, int dim) {
   return l;
 }
 
-}  // namespace
-
-OutputSelection select_output(const model::Model& model, std::size_t step_index) {
-  OutputSelection sel;
-  for (std::size_t s = step_index + 1; s-- > 0;) {
-    const auto& requests = model.steps[s].output;
-    if (std::none_of(requests.begin(), requests.end(), [](const auto& r) { return is_field_request(r.kind); }))
-      continue;
-    int frequency = 0;
-    for (const auto& r : requests) {
-      if (!is_field_request(r.kind)) continue;
-      frequency = frequency == 0 ? r.frequency : std::min(frequency, std::max(r.frequency, 1));
-      if (r.preselect || r.all || r.variables.empty()) sel.fields.insert(kPreselect.begin(), kPreselect.end());
-      for (const auto& v : r.variables) {
-        if (kComputed.count(v)) sel.fields.insert(v);
-        else if (std::find(sel.not_computed.begin(), sel.not_computed.end(), v) == sel.not_computed.end())
-          sel.not_computed.push_back(v);
-      }
-    }
-    sel.frequency = std::max(frequency, 1);
-    return sel;
-  }
-  sel.fields = {"U", "RF", "S"};
-  return sel;
+std::vector<std::string> vector_labels(const std::string& key, int dim) {
+  std::vector<std::string> l;
+  for (int c = 1; c <= dim; ++c) l.push_back(key + std::to_string(c));
+  return l;
 }
 
-std::vector<FieldData> compute_fields(const AnalysisModel& am, const OutputSelection& selection,
-                                        std::span<const double> u, std::span<const double> rf, bool nlgeom,
-                                        std::span<const double> delta_t) {
-  std::vector<FieldData> out;
-  if (selection.fields.count("U")) out.push_back(nodal_field(am, "U", u));
-  if (selection.fields.count("RF")) out.push_back(nodal_field(am, "RF", rf));
-  const bool want_s = selection.fields.count("S") > 0, want_e = selection.fields.count("E") > 0;
-  if (!want_s && !want_e) return out;
-
-  const auto& mesh = am.model->mesh;
-  const std::size_t n_comp = am.dim == 3 ? 6 : 4;
-  FieldData s, e;
-  s.key = "S";
-  e.key = "E";
-  s.position = e.position = Position::IntegrationPoint;
-  s.component_labels = tensor_labels("S", am.dim);
-  e.component_labels = tensor_labels("E", am.dim);
-  elements::ElementRequest request;
-  request.stiffness = false;
-  request.internal_force = false;
-  request.point_output = true;
-  request.nlgeom = nlgeom;
-  std::vector<double> u_el, dt_el;
-  for (std::size_t el = 0; el < mesh.elements.size(); ++el) {
-    const ElementSetup& setup = am.elements[el];
-    const auto nodes = mesh.elements.nodes_of(el);
-    u_el.clear();
-    dt_el.clear();
-    for (std::int32_t node : nodes) {
-      for (int c = 0; c < am.dim; ++c) u_el.push_back(u[static_cast<std::size_t>(node) * am.dim + c]);
-      if (!delta_t.empty()) dt_el.push_back(delta_t[node]);
+/// The printed columns of a print request's variable (U → U1 U2 U3, S33 → S33), or none
+/// when inpact does not print it.
+std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) {
+  auto component = [&](const std::vector<std::string>& labels) -> std::vector<std::string> {
+    if (std::find(labels.begin(), labels.end(), v) != labels.end()) return {v};
+    return {};
+  };
+  if (d == Domain::Node) {
+    for (const char* k : {"U", "RF", "COORD"}) {
+      if (v == k) return vector_labels(k, dim);
+      if (is_variable(v, k, 1)) return component(vector_labels(k, dim));
     }
-    const auto sys = elements::compute_element(*setup.type, am.coords(el), u_el, setup.material, setup.section,
-                                               request, dt_el);
-    for (std::size_t p = 0; p < sys.points.size(); ++p) {
-      for (FieldData* f : {&s, &e}) {
-        f->elements.push_back(mesh.elements.labels[el]);
-        f->ip.push_back(static_cast<std::int32_t>(p + 1));
-      }
-      const auto& pt = sys.points[p];
-      // 2D keeps 11 22 33 12 (Voigt slots 0, 1, 2, 3).
-      for (std::size_t c = 0; c < n_comp; ++c) {
-        s.values.push_back(pt.stress[c]);
-        e.values.push_back(pt.strain[c]);
-      }
+  } else if (d == Domain::Element) {
+    if (v == "MISES") return {v};
+    if (v == "COORD") return vector_labels(v, dim);
+    if (is_variable(v, "COORD", 1)) return component(vector_labels("COORD", dim));
+    for (const char* k : {"S", "E"}) {
+      if (v == k) return tensor_labels(k, dim);
+      if (is_variable(v, k, 2)) return component(tensor_labels(k, dim));
     }
   }
-  if (want_s) out.push_back(std::move(s));
-  if (want_e) out.push_back(std::move(e));
+  return {};
+}
+
+void add_unique(std::vector<std::string>& list, const std::string& v) {
+  if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
+}
+
+constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E"};
+
+bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
+
+}  // namespace
+
+// --- Which requests are in force --------------------------------------------------------
+
+std::vector<OutputRequest> requests_in_force(const model::Model& model, std::size_t step_index) {
+  std::vector<OutputRequest> in_force;
+  auto remove = [&](auto pred) { std::erase_if(in_force, pred); };
+  for (std::size_t s = 0; s <= step_index && s < model.steps.size(); ++s) {
+    const auto& given = model.steps[s].output;
+    // OP=NEW: "discontinue all requests from previous steps" (output database requests).
+    if (std::any_of(given.begin(), given.end(), [](const auto& r) { return is_odb(r.kind) && r.op == OutputRequest::Op::New; }))
+      remove([](const OutputRequest& r) { return is_odb(r.kind); });
+    for (const auto& g : given) {
+      if (is_odb(g.kind) && g.op == OutputRequest::Op::Replace) remove([&](const OutputRequest& r) { return r.kind == g.kind; });
+      if (replaced_by_kind(g.kind)) remove([&](const OutputRequest& r) { return r.kind == g.kind; });
+    }
+    // The first step without field requests gets Abaqus's default: the preselected variables.
+    if (s == 0 && std::none_of(given.begin(), given.end(), [](const auto& r) { return is_field(r.kind); })) {
+      OutputRequest preselect;
+      preselect.kind = Kind::ModelField;
+      preselect.preselect = true;
+      in_force.push_back(std::move(preselect));
+    }
+    in_force.insert(in_force.end(), given.begin(), given.end());
+  }
+  return in_force;
+}
+
+// --- Timing -----------------------------------------------------------------------------
+
+OutputTiming::OutputTiming(const OutputRequest& r, double period)
+    : frequency_(r.frequency), n_interval_(r.number_interval.value_or(0)), time_marks_(r.time_marks),
+      period_(period), tol_(1e-9 * period) {}
+
+bool OutputTiming::due(int increment, double t, bool last) {
+  if (n_interval_ > 0) {
+    bool reached = false;
+    while (next_ <= n_interval_ && t >= mark(next_) - tol_) {
+      reached = true;
+      ++next_;
+    }
+    return reached || last;
+  }
+  if (frequency_ <= 0) return false;
+  return last || increment % frequency_ == 0;
+}
+
+std::optional<double> OutputTiming::next_mark(double t) const {
+  if (!time_marks_ || n_interval_ <= 0) return std::nullopt;
+  for (int k = next_; k <= n_interval_; ++k)
+    if (mark(k) > t + tol_) return mark(k);
+  return std::nullopt;
+}
+
+bool OutputDue::any_field() const { return std::find(field.begin(), field.end(), true) != field.end(); }
+bool OutputDue::any_print() const { return std::find(print.begin(), print.end(), true) != print.end(); }
+
+// --- The step's output ------------------------------------------------------------------
+
+StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
+  const model::Model& model = *am.model;
+  const model::Step& step = model.steps.at(step_index);
+  const double period = step.static_procedure ? step.static_procedure->time_period : 1.0;
+  for (const OutputRequest& r : requests_in_force(model, step_index)) {
+    const bool field = is_field(r.kind), print = is_print(r.kind);
+    if (!field && !print) continue;  // history output is not written yet
+    ActiveRequest a;
+    a.request = r;
+    const Domain d = domain_of(r.kind);
+    if (!r.set.empty() && d != Domain::Contact) {
+      const auto& sets = d == Domain::Node ? model.mesh.nsets : model.mesh.elsets;
+      a.whole_model = false;
+      if (auto it = sets.find(r.set); it != sets.end()) a.rows = it->second.rows;
+      std::sort(a.rows.begin(), a.rows.end());
+    }
+    if (field) {
+      if (r.preselect || r.all) {
+        if (d == Domain::Node || d == Domain::Model) a.variables.insert(a.variables.end(), {"U", "RF"});
+        if (r.all && (d == Domain::Node || d == Domain::Model)) a.variables.push_back("COORD");
+        if (d == Domain::Element || d == Domain::Model) a.variables.insert(a.variables.end(), {"S", "E"});
+      }
+      for (const std::string& v : r.variables) {
+        const std::string key = field_key(v, d);
+        if (key.empty()) add_unique(not_computed_, v);
+        else add_unique(a.variables, key);
+      }
+      field_timing_.emplace_back(r, period);
+      field_.push_back(std::move(a));
+    } else {
+      for (const std::string& v : r.variables) {
+        const auto columns = print_columns(v, d, am.dim);
+        if (columns.empty()) add_unique(not_computed_, v);
+        for (const auto& c : columns) add_unique(a.variables, c);
+      }
+      print_timing_.emplace_back(r, period);
+      print_.push_back(std::move(a));
+    }
+  }
+}
+
+std::set<std::string> StepOutput::field_keys() const {
+  std::set<std::string> keys;
+  for (const auto& a : field_) keys.insert(a.variables.begin(), a.variables.end());
+  return keys;
+}
+
+double StepOutput::limit_increment(double t, double dt) const {
+  for (const auto* timings : {&field_timing_, &print_timing_})
+    for (const OutputTiming& timing : *timings)
+      if (auto m = timing.next_mark(t); m && t + dt > *m) dt = *m - t;
+  return dt;
+}
+
+OutputDue StepOutput::due(int increment, double t, bool last) {
+  OutputDue d;
+  for (auto& timing : field_timing_) d.field.push_back(timing.due(increment, t, last));
+  for (auto& timing : print_timing_) d.print.push_back(timing.due(increment, t, last));
+  return d;
+}
+
+double von_mises(std::span<const double, 6> s) {
+  const double d1 = s[0] - s[1], d2 = s[1] - s[2], d3 = s[2] - s[0];
+  return std::sqrt(0.5 * (d1 * d1 + d2 * d2 + d3 * d3) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+// --- Values -----------------------------------------------------------------------------
+
+namespace {
+
+/// Element point results, computed on first use for the elements a due request covers.
+class PointCache {
+ public:
+  PointCache(const AnalysisModel& am, std::span<const double> u, bool nlgeom, std::span<const double> delta_t)
+      : am_(am), u_(u), delta_t_(delta_t), points_(am.model->mesh.elements.size()),
+        have_(am.model->mesh.elements.size(), 0) {
+    request_.stiffness = false;
+    request_.internal_force = false;
+    request_.point_output = true;
+    request_.nlgeom = nlgeom;
+  }
+
+  const std::vector<elements::PointResult>& of(std::size_t el) {
+    if (have_[el]) return points_[el];
+    const ElementSetup& setup = am_.elements[el];
+    std::vector<double> u_el, dt_el;
+    for (std::int32_t node : am_.model->mesh.elements.nodes_of(el)) {
+      for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(node) * am_.dim + c]);
+      if (!delta_t_.empty()) dt_el.push_back(delta_t_[node]);
+    }
+    auto sys = elements::compute_element(*setup.type, am_.coords(el), u_el, setup.material, setup.section,
+                                         request_, dt_el);
+    points_[el] = std::move(sys.points);
+    have_[el] = 1;
+    return points_[el];
+  }
+
+ private:
+  const AnalysisModel& am_;
+  std::span<const double> u_, delta_t_;
+  elements::ElementRequest request_;
+  std::vector<std::vector<elements::PointResult>> points_;
+  std::vector<char> have_;
+};
+
+/// Where a field key is written in this step: the union of the sets of every request that
+/// asks for it (not only the due ones), so that its locations are the same in every frame.
+struct KeyRegion {
+  bool whole = false;
+  std::vector<std::int32_t> rows;
+  std::string region;
+};
+
+KeyRegion key_region(const StepOutput& output, const std::string& key) {
+  KeyRegion k;
+  std::set<std::int32_t> rows;
+  std::vector<std::string> names;
+  for (const ActiveRequest& a : output.field_requests()) {
+    if (std::find(a.variables.begin(), a.variables.end(), key) == a.variables.end()) continue;
+    // A set of the other domain (an ELSET on a model-wide request) does not restrict.
+    const bool same_domain = nodal_key(key) ? domain_of(a.request.kind) == Domain::Node
+                                            : domain_of(a.request.kind) == Domain::Element;
+    if (a.whole_model || !same_domain) k.whole = true;
+    rows.insert(a.rows.begin(), a.rows.end());
+    if (!a.whole_model && same_domain) add_unique(names, a.request.set);
+  }
+  if (!k.whole) {
+    k.rows.assign(rows.begin(), rows.end());
+    for (const auto& n : names) k.region += (k.region.empty() ? "" : ",") + n;
+  }
+  return k;
+}
+
+bool key_due(const StepOutput& output, const OutputDue& due, const std::string& key) {
+  const auto& reqs = output.field_requests();
+  for (std::size_t i = 0; i < reqs.size(); ++i)
+    if (due.field[i] && std::find(reqs[i].variables.begin(), reqs[i].variables.end(), key) != reqs[i].variables.end())
+      return true;
+  return false;
+}
+
+/// A nodal value: U, RF or COORD (current coordinates under NLGEOM, original otherwise, as
+/// Abaqus's COORD), component c.
+double nodal_value(const AnalysisModel& am, const std::string& key, std::size_t row, int c,
+                   std::span<const double> u, std::span<const double> rf, bool nlgeom) {
+  const std::size_t dof = row * am.dim + c;
+  if (key == "U") return u[dof];
+  if (key == "RF") return rf[dof];
+  return am.model->mesh.nodes.coords[row][c] + (nlgeom ? u[dof] : 0.0);
+}
+
+FieldData nodal_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where,
+                      std::span<const double> u, std::span<const double> rf, bool nlgeom) {
+  FieldData f;
+  f.key = key;
+  f.position = Position::Nodal;
+  f.component_labels = vector_labels(key, am.dim);
+  f.region = where.region;
+  auto add = [&](std::size_t row) {
+    for (int c = 0; c < am.dim; ++c) f.values.push_back(nodal_value(am, key, row, c, u, rf, nlgeom));
+  };
+  if (where.whole) {
+    f.nodes.resize(am.n_nodes());
+    for (std::size_t i = 0; i < am.n_nodes(); ++i) {
+      f.nodes[i] = static_cast<std::int64_t>(i);
+      add(i);
+    }
+  } else {
+    for (std::int32_t row : where.rows) {
+      f.nodes.push_back(row);
+      add(static_cast<std::size_t>(row));
+    }
+  }
+  return f;
+}
+
+FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
+  const auto& elements = am.model->mesh.elements;
+  const bool with_instance = am.model->instances.size() > 1;
+  const std::size_t n_comp = am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
+  FieldData f;
+  f.key = key;
+  f.position = Position::IntegrationPoint;
+  f.component_labels = tensor_labels(key, am.dim);
+  f.region = where.region;
+  auto add = [&](std::size_t el) {
+    const auto& points = cache.of(el);
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      f.elements.push_back(elements.labels[el]);
+      f.ip.push_back(static_cast<std::int32_t>(p + 1));
+      if (with_instance) f.instance.push_back(elements.instance[el]);
+      const auto& v = key == "S" ? points[p].stress : points[p].strain;
+      f.values.insert(f.values.end(), v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n_comp));
+    }
+  };
+  if (where.whole)
+    for (std::size_t el = 0; el < elements.size(); ++el) add(el);
+  else
+    for (std::int32_t el : where.rows) add(static_cast<std::size_t>(el));
+  return f;
+}
+
+/// A printed column: its source and component (0-based).
+struct Column {
+  enum class Source : std::uint8_t { U, RF, Coord, S, E, Mises } source;
+  int component = 0;
+};
+
+Column parse_column(const std::string& name) {
+  using S = Column::Source;
+  if (name == "MISES") return {S::Mises, 0};
+  if (name.rfind("COORD", 0) == 0) return {S::Coord, name[5] - '1'};
+  if (name.rfind("RF", 0) == 0) return {S::RF, name[2] - '1'};
+  if (name[0] == 'U') return {S::U, name[1] - '1'};
+  // Tensor 11 22 33 12 13 23 → Abaqus-ordered slots 0..5.
+  static const std::map<std::string, int> slot = {{"11", 0}, {"22", 1}, {"33", 2}, {"12", 3}, {"13", 4}, {"23", 5}};
+  return {name[0] == 'S' ? S::S : S::E, slot.at(name.substr(1))};
+}
+
+PrintTable node_table(const AnalysisModel& am, const ActiveRequest& a, std::span<const double> u,
+                      std::span<const double> rf, bool nlgeom) {
+  PrintTable t;
+  t.domain = PrintTable::Domain::Node;
+  t.set = a.request.set;
+  t.columns = a.variables;
+  t.summary = a.request.summary;
+  t.totals = a.request.totals;
+  t.totals_only = a.request.totals_only;
+  std::vector<Column> cols;
+  for (const auto& c : t.columns) cols.push_back(parse_column(c));
+  auto add = [&](std::size_t row) {
+    t.labels.push_back(am.model->mesh.nodes.labels[row]);
+    for (const Column& c : cols) {
+      const char* key = c.source == Column::Source::U ? "U" : c.source == Column::Source::RF ? "RF" : "COORD";
+      t.values.push_back(nodal_value(am, key, row, c.component, u, rf, nlgeom));
+    }
+  };
+  if (a.whole_model)
+    for (std::size_t row = 0; row < am.n_nodes(); ++row) add(row);
+  else
+    for (std::int32_t row : a.rows) add(static_cast<std::size_t>(row));
+  return t;
+}
+
+double point_value(const elements::PointResult& p, const Column& c) {
+  switch (c.source) {
+    case Column::Source::S: return p.stress[c.component];
+    case Column::Source::E: return p.strain[c.component];
+    case Column::Source::Mises: return von_mises(p.stress);
+    case Column::Source::Coord: return p.coords[c.component];
+    default: return 0.0;
+  }
+}
+
+/// POSITION=CENTROIDAL: the volume-weighted average of the integration points (exact for
+/// one-point elements and for fields linear over the element).
+elements::PointResult centroid_of(const std::vector<elements::PointResult>& points) {
+  elements::PointResult c{};
+  double total = 0.0;
+  for (const auto& p : points) total += p.volume;
+  for (const auto& p : points) {
+    const double w = total > 0.0 ? p.volume / total : 1.0 / static_cast<double>(points.size());
+    for (int i = 0; i < 6; ++i) {
+      c.stress[i] += w * p.stress[i];
+      c.strain[i] += w * p.strain[i];
+    }
+    for (int i = 0; i < 3; ++i) c.coords[i] += w * p.coords[i];
+  }
+  c.volume = total;
+  return c;
+}
+
+/// One table per element type, in the order the types first appear in the set (Abaqus prints
+/// element output by element type).
+std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequest& a, PointCache& cache) {
+  const auto& elements = am.model->mesh.elements;
+  const bool centroid = a.request.position == OutputRequest::Position::Centroidal;
+  std::vector<Column> cols;
+  for (const auto& c : a.variables) cols.push_back(parse_column(c));
+  std::vector<PrintTable> tables;
+  std::map<std::uint8_t, std::size_t> table_of_type;
+  auto add = [&](std::size_t el) {
+    const std::uint8_t type = elements.type[el];
+    auto [it, inserted] = table_of_type.emplace(type, tables.size());
+    if (inserted) {
+      PrintTable t;
+      t.domain = PrintTable::Domain::Element;
+      t.set = a.request.set;
+      t.element_type = std::string(model::element_type(type).name);
+      t.centroid = centroid;
+      t.columns = a.variables;
+      t.summary = a.request.summary;
+      t.totals = a.request.totals;
+      t.totals_only = a.request.totals_only;
+      tables.push_back(std::move(t));
+    }
+    PrintTable& t = tables[it->second];
+    const auto& points = cache.of(el);
+    auto row = [&](const elements::PointResult& p, std::int32_t ip) {
+      t.labels.push_back(elements.labels[el]);
+      if (!centroid) t.ip.push_back(ip);
+      for (const Column& c : cols) t.values.push_back(point_value(p, c));
+    };
+    if (centroid) row(centroid_of(points), 0);
+    else
+      for (std::size_t p = 0; p < points.size(); ++p) row(points[p], static_cast<std::int32_t>(p + 1));
+  };
+  if (a.whole_model)
+    for (std::size_t el = 0; el < elements.size(); ++el) add(el);
+  else
+    for (std::int32_t el : a.rows) add(static_cast<std::size_t>(el));
+  return tables;
+}
+
+}  // namespace
+
+OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
+                            std::span<const double> u, std::span<const double> rf, bool nlgeom,
+                            std::span<const double> delta_t) {
+  OutputValues out;
+  PointCache cache(am, u, nlgeom, delta_t);
+  for (const std::string key : kFieldKeys) {
+    if (!key_due(output, due, key)) continue;
+    const KeyRegion where = key_region(output, key);
+    if (nodal_key(key)) out.fields.push_back(nodal_field(am, key, where, u, rf, nlgeom));
+    else out.fields.push_back(element_field(am, key, where, cache));
+  }
+  const auto& prints = output.print_requests();
+  for (std::size_t i = 0; i < prints.size(); ++i) {
+    const ActiveRequest& a = prints[i];
+    if (!due.print[i] || a.variables.empty()) continue;
+    const Domain d = domain_of(a.request.kind);
+    if (d == Domain::Node) {
+      out.tables.push_back(node_table(am, a, u, rf, nlgeom));
+    } else if (d == Domain::Element) {
+      for (auto& t : element_tables(am, a, cache)) out.tables.push_back(std::move(t));
+    }
+  }
   return out;
 }
 

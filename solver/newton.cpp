@@ -9,13 +9,15 @@ namespace inpact::solver {
 
 namespace {
 
-/// Largest |r| over the equations, and the DOF it sits on.
-std::pair<double, std::int64_t> largest_residual(const DofMap& dofs, std::span<const double> r_full) {
+/// Largest |r| over the equations, and the DOF it sits on. `r` is the reduced residual (one
+/// entry per equation): a free DOF that masters *EQUATION dependents carries their residual
+/// too, and only that sum vanishes at equilibrium.
+std::pair<double, std::int64_t> largest_residual(const DofMap& dofs, std::span<const double> r) {
   double worst = 0.0;
   std::int64_t at = -1;
   for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
     if (dofs.kind(d) != DofMap::Kind::Free) continue;
-    const double v = std::abs(r_full[d]);
+    const double v = std::abs(r[dofs.equation(d)]);
     if (!(v <= worst)) {  // also catches NaN
       worst = v;
       at = d;
@@ -69,7 +71,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     for (std::size_t d = 0; d < n; ++d) r_full[d] = state.f_ext[d] - state.f_int[d];
     ctx.assembler.reduce(r_full, r);
 
-    const auto [max_r, worst] = largest_residual(dofs, r_full);
+    const auto [max_r, worst] = largest_residual(dofs, r);
     const double q_now = average_force(asm_result, state.f_ext);
     out.max_residual = max_r;
     out.worst_dof = worst;

@@ -24,6 +24,8 @@ class AnalysisObserver {
   virtual void iteration(const IterationRecord& record) {}
   virtual void attempt_finished(const StatusRow& row) {}
   virtual void frame(const Frame& frame) {}
+  /// The *NODE PRINT / *EL PRINT tables due at a converged increment (the .dat file).
+  virtual void print_frame(const PrintFrame& frame) {}
   virtual void message(std::string_view text) {}
 };
 

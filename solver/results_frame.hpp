@@ -38,6 +38,34 @@ struct Frame {
   std::vector<FieldData> fields;
 };
 
+/// One printed table of a *NODE PRINT or *EL PRINT request at one increment: the values the
+/// .dat file shows (io::DatReport formats them). The solver fills it; it is plain data.
+struct PrintTable {
+  enum class Domain : std::uint8_t { Node, Element };
+  Domain domain = Domain::Node;
+  std::string set;           ///< NSET / ELSET as written in the deck; "" = the whole model
+  std::string element_type;  ///< element tables: one table per element type (C3D8, ...)
+  bool centroid = false;     ///< element tables: POSITION=CENTROIDAL (no integration point column)
+  std::vector<std::string> columns;  ///< U1 U2 U3, RF1.., COORD1.., S11.., E11.., MISES
+  std::vector<std::int64_t> labels;  ///< node or element label of each row
+  std::vector<std::int32_t> ip;      ///< element tables at integration points: 1-based point
+  std::vector<double> values;        ///< rows × columns, row-major
+  bool summary = true;      ///< SUMMARY=YES: MAXIMUM / MINIMUM lines under each column
+  bool totals = false;      ///< TOTALS=YES|ONLY: the column sums
+  bool totals_only = false; ///< TOTALS=ONLY (CalculiX): the sums without the rows
+};
+
+/// The printed output of one converged increment (only increments with a print request due).
+struct PrintFrame {
+  int step = 1;  ///< 1-based
+  int increment = 0;
+  double step_time = 0.0;
+  double total_time = 0.0;
+  double inc_of_time = 0.0;
+  double time_period = 1.0;  ///< of the step (the "fraction of step completed")
+  std::vector<PrintTable> tables;
+};
+
 /// One row of the status (.sta) table: one attempt of one increment.
 struct StatusRow {
   std::int32_t step = 1;       ///< 1-based step number

@@ -164,7 +164,8 @@ void StepConditions::apply_prescribed(double t, std::span<const double> u_start,
       u[d] = def.value * amplitude(def.amplitude, t);
     } else {
       // From wherever the DOF was at the step start (a new BC on a free DOF starts there).
-      u[d] = u_start[d] + (def.value - u_start[d]) * ramp(t);
+      const double start = step_start_value_.try_emplace(d, u_start[d]).first->second;
+      u[d] = start + (def.value - start) * ramp(t);
     }
   }
 }

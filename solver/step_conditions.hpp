@@ -62,7 +62,10 @@ class StepConditions {
 
   /// Per global DOF: 1 when a boundary condition prescribes it in this step.
   const std::vector<std::uint8_t>& prescribed() const { return prescribed_; }
-  /// Writes the prescribed DOFs' values at step time t into u; `u_start` is u at the step start.
+  /// Writes the prescribed DOFs' values at step time t into u. `u_start` is u at the start of
+  /// the increment; the first call of the step (increment 1: every attempt of it starts from
+  /// the step start) records where each ramped DOF starts, so that later increments ramp from
+  /// the step-start value and not from the increment's.
   void apply_prescribed(double t, std::span<const double> u_start, std::span<double> u) const;
   /// External force vector at step time t (size n_dof), overwritten.
   void external_force(double t, std::span<double> f) const;
@@ -87,6 +90,8 @@ class StepConditions {
   ConditionHistory target_;    ///< definitions in force in this step (values = targets)
   std::vector<std::uint8_t> prescribed_;
   std::map<std::int64_t, double> released_reaction_;  ///< BCs removed by OP=NEW: ramp to 0
+  /// u at the step start of the prescribed DOFs without amplitude (recorded on first use).
+  mutable std::map<std::int64_t, double> step_start_value_;
   std::vector<double> initial_temperature_;
   /// Global nodal forces of each distributed load at unit magnitude (reference geometry).
   std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int64_t, double>>> dload_shape_;

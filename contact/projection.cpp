@@ -1,0 +1,497 @@
+#include "projection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "vec3.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+/// x(ξ) and its first and second parametric derivatives.
+struct Local {
+  ShapeEval e;
+  Vec3 x{}, a0{}, a1{}, a00{}, a01{}, a11{};
+};
+
+struct FacetNodes {
+  FacetShape shape;
+  int n = 0;
+  std::array<Vec3, 8> X{};
+  double size = 0.0;  ///< largest corner distance from node 0
+
+  FacetNodes(const Facet& f, std::span<const Vec3> x) : shape(f.shape), n(f.n_nodes) {
+    for (int a = 0; a < n; ++a) X[a] = x[static_cast<std::size_t>(f.nodes[a])];
+    for (int a = 1; a < n; ++a) size = std::max(size, norm(sub(X[a], X[0])));
+  }
+
+  Local eval(double xi, double eta) const {
+    Local l;
+    l.e = eval_shape(shape, xi, eta);
+    for (int a = 0; a < n; ++a) {
+      l.x = axpy(l.e.N[a], X[a], l.x);
+      l.a0 = axpy(l.e.dN[a][0], X[a], l.a0);
+      l.a1 = axpy(l.e.dN[a][1], X[a], l.a1);
+      l.a00 = axpy(l.e.d2N[a][0], X[a], l.a00);
+      l.a01 = axpy(l.e.d2N[a][1], X[a], l.a01);
+      l.a11 = axpy(l.e.d2N[a][2], X[a], l.a11);
+    }
+    return l;
+  }
+
+  double phi(const Vec3& xs, double xi, double eta) const {
+    const ShapeEval e = eval_shape(shape, xi, eta);
+    Vec3 x{};
+    for (int a = 0; a < n; ++a) x = axpy(e.N[a], X[a], x);
+    const Vec3 r = sub(xs, x);
+    return 0.5 * dot(r, r);
+  }
+};
+
+bool is_tri(FacetShape s) { return s == FacetShape::Tri3 || s == FacetShape::Tri6; }
+
+constexpr double kInside = 1e-12;  // parametric tolerance of "inside the facet"
+
+bool inside(FacetShape s, const std::array<double, 2>& xi) {
+  if (facet_param_dim(s) == 1) return std::abs(xi[0]) <= 1 + kInside;
+  if (is_tri(s)) return xi[0] >= -kInside && xi[1] >= -kInside && xi[0] + xi[1] <= 1 + kInside;
+  return std::abs(xi[0]) <= 1 + kInside && std::abs(xi[1]) <= 1 + kInside;
+}
+
+std::array<double, 2> clamp_inside(FacetShape s, std::array<double, 2> xi) {
+  if (facet_param_dim(s) == 1) return {std::clamp(xi[0], -1.0, 1.0), 0.0};
+  if (is_tri(s)) {
+    xi[0] = std::max(xi[0], 0.0);
+    xi[1] = std::max(xi[1], 0.0);
+    const double sum = xi[0] + xi[1];
+    if (sum > 1) xi = {xi[0] / sum, xi[1] / sum};
+    return xi;
+  }
+  return {std::clamp(xi[0], -1.0, 1.0), std::clamp(xi[1], -1.0, 1.0)};
+}
+
+/// Corners of the parametric domain, in order (edges run corner i → i+1).
+int domain_corners(FacetShape s, std::array<std::array<double, 2>, 4>& c) {
+  if (facet_param_dim(s) == 1) {
+    c[0] = {-1, 0};
+    c[1] = {1, 0};
+    return 2;
+  }
+  if (is_tri(s)) {
+    c[0] = {0, 0};
+    c[1] = {1, 0};
+    c[2] = {0, 1};
+    return 3;
+  }
+  c = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+  return 4;
+}
+
+struct LineMin {
+  double t = 0, phi = std::numeric_limits<double>::infinity();
+};
+
+/// Minimum of φ(t) = ½|x_s − x(P0 + t (P1 − P0))|² over t ∈ [0, 1]: the end points and every
+/// local minimum bracketed by a sign change of φ' on `samples` intervals, each refined by
+/// Newton safeguarded with bisection.
+LineMin minimize_on_segment(const FacetNodes& fn, const Vec3& xs, const std::array<double, 2>& P0,
+                            const std::array<double, 2>& P1, int samples) {
+  const double e0 = P1[0] - P0[0], e1 = P1[1] - P0[1];
+  auto point = [&](double t) { return std::array<double, 2>{P0[0] + t * e0, P0[1] + t * e1}; };
+  auto derivs = [&](double t, double& d1, double& d2) {
+    const auto p = point(t);
+    const Local l = fn.eval(p[0], p[1]);
+    const Vec3 r = sub(xs, l.x);
+    const Vec3 at = axpy(e1, l.a1, scale(e0, l.a0));
+    const Vec3 att = axpy(e1 * e1, l.a11, axpy(2 * e0 * e1, l.a01, scale(e0 * e0, l.a00)));
+    d1 = -dot(r, at);
+    d2 = dot(at, at) - dot(r, att);
+  };
+  auto phi = [&](double t) {
+    const auto p = point(t);
+    return fn.phi(xs, p[0], p[1]);
+  };
+  LineMin best;
+  auto consider = [&](double t) {
+    const double v = phi(t);
+    if (v < best.phi) best = {t, v};
+  };
+  consider(0.0);
+  consider(1.0);
+  double t_prev = 0.0, d_prev, dd;
+  derivs(0.0, d_prev, dd);
+  for (int k = 1; k <= samples; ++k) {
+    const double t_k = static_cast<double>(k) / samples;
+    double d_k;
+    derivs(t_k, d_k, dd);
+    if (d_prev < 0 && d_k > 0) {
+      double lo = t_prev, hi = t_k, t = 0.5 * (lo + hi);
+      for (int it = 0; it < 100; ++it) {
+        double d1, d2;
+        derivs(t, d1, d2);
+        if (d1 < 0) lo = t;
+        else hi = t;
+        double next = d2 > 0 ? t - d1 / d2 : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const double step = std::abs(next - t);
+        t = next;
+        if (step < 1e-15 || hi - lo < 1e-15) break;
+      }
+      consider(t);
+    }
+    t_prev = t_k;
+    d_prev = d_k;
+  }
+  return best;
+}
+
+struct InteriorResult {
+  std::array<double, 2> xi{0, 0};
+  bool converged = false;
+};
+
+/// Newton on ∇φ(ξ) = 0 for a face, from the best sample of a small grid.
+InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
+  InteriorResult res;
+  if (fn.shape == FacetShape::Tri3) {  // x(ξ) is affine: one exact step from (0, 0)
+    const Vec3 a0 = sub(fn.X[1], fn.X[0]), a1 = sub(fn.X[2], fn.X[0]), r = sub(xs, fn.X[0]);
+    const double m00 = dot(a0, a0), m01 = dot(a0, a1), m11 = dot(a1, a1), det = m00 * m11 - m01 * m01;
+    if (det <= 0) return res;
+    const double b0 = dot(a0, r), b1 = dot(a1, r);
+    res.xi = {(m11 * b0 - m01 * b1) / det, (m00 * b1 - m01 * b0) / det};
+    res.converged = true;
+    return res;
+  }
+  // Start: the best point of a 5 × 5 grid (triangles: the grid points inside).
+  double best = std::numeric_limits<double>::infinity();
+  std::array<double, 2> xi{0, 0};
+  const bool tri = is_tri(fn.shape);
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      const std::array<double, 2> p = tri ? std::array<double, 2>{i / 4.0, j / 4.0}
+                                          : std::array<double, 2>{-1 + i / 2.0, -1 + j / 2.0};
+      if (tri && i + j > 4) continue;
+      const double v = fn.phi(xs, p[0], p[1]);
+      if (v < best) best = v, xi = p;
+    }
+  for (int it = 0; it < 60; ++it) {
+    const Local l = fn.eval(xi[0], xi[1]);
+    const Vec3 r = sub(xs, l.x);
+    const double g0 = -dot(l.a0, r), g1 = -dot(l.a1, r);  // ∇φ
+    const double m00 = dot(l.a0, l.a0), m01 = dot(l.a0, l.a1), m11 = dot(l.a1, l.a1);
+    double h00 = m00 - dot(r, l.a00), h01 = m01 - dot(r, l.a01), h11 = m11 - dot(r, l.a11);
+    double det = h00 * h11 - h01 * h01;
+    if (!(h00 > 0 && det > 0)) {  // not a descent direction: Gauss–Newton (metric) instead
+      h00 = m00, h01 = m01, h11 = m11;
+      det = h00 * h11 - h01 * h01;
+      if (!(det > 0)) return res;  // degenerate facet
+    }
+    const double d0 = -(h11 * g0 - h01 * g1) / det, d1 = -(h00 * g1 - h01 * g0) / det;
+    if (std::abs(d0) + std::abs(d1) < 1e-14) {
+      res.converged = true;
+      break;
+    }
+    const double phi0 = 0.5 * dot(r, r), slope = g0 * d0 + g1 * d1;
+    // Backtracking (Armijo) away from the solution; near it, φ cannot resolve the decrease any
+    // more, and the full Newton step converges quadratically.
+    double lambda = 1.0;
+    if (std::abs(d0) + std::abs(d1) > 1e-6)
+      while (lambda > 1e-6 && fn.phi(xs, xi[0] + lambda * d0, xi[1] + lambda * d1) > phi0 + 1e-4 * lambda * slope)
+        lambda *= 0.5;
+    xi = {xi[0] + lambda * d0, xi[1] + lambda * d1};
+    if (lambda * (std::abs(d0) + std::abs(d1)) < 1e-14) {
+      res.converged = true;
+      break;
+    }
+    if (std::abs(xi[0]) > 3 || std::abs(xi[1]) > 3) break;  // far outside: the boundary decides
+  }
+  res.xi = xi;
+  return res;
+}
+
+ProjectionRegion region_of(FacetShape s, const std::array<double, 2>& xi) {
+  constexpr double tol = 1e-10;
+  if (facet_param_dim(s) == 1) return std::abs(std::abs(xi[0]) - 1) <= tol ? ProjectionRegion::Vertex : ProjectionRegion::Interior;
+  int on = 0;
+  if (is_tri(s)) {
+    on = (xi[0] <= tol) + (xi[1] <= tol) + (xi[0] + xi[1] >= 1 - tol);
+  } else {
+    on = (std::abs(std::abs(xi[0]) - 1) <= tol) + (std::abs(std::abs(xi[1]) - 1) <= tol);
+  }
+  return on == 0 ? ProjectionRegion::Interior : on == 1 ? ProjectionRegion::Edge : ProjectionRegion::Vertex;
+}
+
+/// Distance below which a slave point counts as lying on the facet.
+// Points closer than this to a facet are on it (gap 0, shared-point normal averaged). Far below
+// any penetration tolerance (1e-3 of the interface length), far above the round-off of the
+// local Newton projection, which differs between optimisation levels near facet edges.
+double on_surface_tol(double size) { return 1e-8 * size; }
+
+}  // namespace
+
+void tangent_basis(const Vec3& n, int dim, Vec3& t1, Vec3& t2) {
+  if (dim == 2) {
+    t1 = {-n[1], n[0], 0.0};
+    t2 = {0, 0, 0};
+    return;
+  }
+  // Abaqus: t1 = projection of the global x axis onto the tangent plane, or of the global z axis
+  // when x is within 0.1° of the normal; t2 = n × t1.
+  const double limit = std::cos(0.1 * std::numbers::pi / 180.0);
+  const Vec3 axis = std::abs(n[0]) > limit ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  Vec3 t = axpy(-dot(axis, n), n, axis);
+  const double len = norm(t);
+  t1 = len > 0 ? scale(1.0 / len, t) : Vec3{0, 0, 0};
+  t2 = cross(n, t1);
+}
+
+Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index) {
+  const FacetNodes fn(f, x);
+  Projection p;
+  p.facet = facet_index;
+  const int pd = facet_param_dim(f.shape);
+  const int samples = facet_is_quadratic(f.shape) ? 8 : 1;
+
+  bool done = false;
+  if (pd == 2) {
+    const InteriorResult in = newton_interior(fn, xs);
+    if (in.converged && inside(f.shape, in.xi)) {
+      p.xi = clamp_inside(f.shape, in.xi);
+      done = true;
+    }
+    p.converged = in.converged;
+  }
+  if (!done) {  // the closest point of the domain's boundary (for edges: of the whole edge)
+    std::array<std::array<double, 2>, 4> c;
+    const int nc = domain_corners(f.shape, c);
+    LineMin best;
+    std::array<double, 2> best_xi{0, 0};
+    const int n_edges = pd == 1 ? 1 : nc;
+    for (int i = 0; i < n_edges; ++i) {
+      const auto& P0 = c[i];
+      const auto& P1 = c[(i + 1) % nc];
+      const LineMin m = minimize_on_segment(fn, xs, P0, P1, samples);
+      if (m.phi < best.phi) {
+        best = m;
+        best_xi = {P0[0] + m.t * (P1[0] - P0[0]), P0[1] + m.t * (P1[1] - P0[1])};
+      }
+    }
+    p.xi = clamp_inside(f.shape, best_xi);
+    if (pd == 1) p.converged = true;
+  }
+  p.region = region_of(f.shape, p.xi);
+
+  const FacetGeometry g = facet_geometry(f, x, p.xi[0], p.xi[1]);
+  p.x_master = g.x;
+  p.facet_normal = g.n;
+  const Vec3 r = sub(xs, g.x);
+  p.distance = norm(r);
+  if (p.region == ProjectionRegion::Interior || p.distance <= on_surface_tol(fn.size)) {
+    p.normal = g.n;
+    p.gap = p.region == ProjectionRegion::Interior ? dot(r, g.n) : 0.0;
+  } else {
+    const double s = dot(r, g.n) < 0 ? -1.0 : 1.0;
+    p.normal = scale(s / p.distance, r);
+    p.gap = s * p.distance;
+  }
+  tangent_basis(p.normal, pd == 1 ? 2 : 3, p.t1, p.t2);
+  return p;
+}
+
+Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
+                              std::span<const Vec3> x, const Vec3& xs) {
+  Projection best;
+  if (candidates.empty()) return best;
+  std::vector<Projection> all;
+  all.reserve(candidates.size());
+  double size = 0.0;
+  for (std::int32_t c : candidates) {
+    const Facet& f = facets[static_cast<std::size_t>(c)];
+    all.push_back(project_to_facet(f, x, xs, c));
+    size = std::max(size, FacetNodes(f, x).size);
+  }
+  const double tol = on_surface_tol(size);
+  // Closest facet; among ties at the same point: interior before edge before vertex, then the
+  // lowest facet index.
+  auto better = [&](const Projection& a, const Projection& b) {
+    if (a.distance < b.distance - tol) return true;
+    if (a.distance > b.distance + tol) return false;
+    if (a.region != b.region) return a.region < b.region;
+    return a.facet < b.facet;
+  };
+  std::size_t ib = 0;
+  for (std::size_t i = 1; i < all.size(); ++i)
+    if (better(all[i], all[ib])) ib = i;
+  best = all[ib];
+
+  // n̄: the facet normals of every candidate sharing the closest point.
+  Vec3 nbar{};
+  for (const Projection& q : all)
+    if (std::abs(q.distance - best.distance) <= tol && norm(sub(q.x_master, best.x_master)) <= tol)
+      nbar = add(nbar, q.facet_normal);
+  const double len = norm(nbar);
+  const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
+  const Vec3 r = sub(xs, best.x_master);
+  if (best.distance <= tol) {
+    if (len > 0) best.normal = scale(1.0 / len, nbar);
+    best.gap = 0.0;
+  } else if (best.region != ProjectionRegion::Interior) {
+    const double s = dot(r, nbar) < 0 ? -1.0 : 1.0;
+    best.normal = scale(s / best.distance, r);
+    best.gap = s * best.distance;
+  }
+  tangent_basis(best.normal, dim, best.t1, best.t2);
+  return best;
+}
+
+namespace {
+
+/// A p × p matrix (p = 1 or 2) and its inverse.
+struct Small {
+  double m[2][2] = {{0, 0}, {0, 0}};
+};
+Small inverse(const Small& a, int p) {
+  Small inv;
+  if (p == 1) {
+    inv.m[0][0] = 1.0 / a.m[0][0];
+    return inv;
+  }
+  const double det = a.m[0][0] * a.m[1][1] - a.m[0][1] * a.m[1][0];
+  inv.m[0][0] = a.m[1][1] / det;
+  inv.m[1][1] = a.m[0][0] / det;
+  inv.m[0][1] = -a.m[0][1] / det;
+  inv.m[1][0] = -a.m[1][0] / det;
+  return inv;
+}
+Small multiply(const Small& a, const Small& b, int p) {
+  Small c;
+  for (int i = 0; i < p; ++i)
+    for (int j = 0; j < p; ++j)
+      for (int k = 0; k < p; ++k) c.m[i][j] += a.m[i][k] * b.m[k][j];
+  return c;
+}
+
+}  // namespace
+
+GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Vec3& xs, const Projection& p, int dim,
+                               std::int32_t slave_row) {
+  const FacetNodes fn(f, x);
+  const int k = fn.n, pd = facet_param_dim(f.shape);
+  GapLinearization L;
+  L.dim = dim;
+  L.n_dof = dim * (k + 1);
+  const std::size_t nd = static_cast<std::size_t>(L.n_dof);
+  L.nodes.push_back(slave_row);
+  for (int a = 0; a < k; ++a) L.nodes.push_back(f.nodes[a]);
+  L.gradient.assign(nd, 0.0);
+  L.hessian.assign(nd * nd, 0.0);
+  for (int al = 0; al < pd; ++al) L.dxi[al].assign(nd, 0.0);
+
+  const Local l = fn.eval(p.xi[0], p.xi[1]);
+  const ShapeEval& e = l.e;
+  const Vec3& n = p.normal;
+  auto at = [&](int node, int comp) { return static_cast<std::size_t>(node * dim + comp); };  // node 0 = slave
+
+  // ∂g/∂u = [n; −N_a n]
+  for (int c = 0; c < dim; ++c) {
+    L.gradient[at(0, c)] = n[c];
+    for (int a = 0; a < k; ++a) L.gradient[at(a + 1, c)] = -e.N[a] * n[c];
+  }
+  auto H = [&](std::size_t i, std::size_t j) -> double& { return L.hessian[i * nd + j]; };
+  const Vec3 r = sub(xs, l.x);
+  const std::array<Vec3, 2> a_vec{l.a0, l.a1};
+  const double tol = on_surface_tol(fn.size);
+
+  if (p.region == ProjectionRegion::Interior) {
+    const Vec3& nf = p.facet_normal;
+    const double g = dot(r, nf);
+    // P_α, Q_α as vectors over u.
+    std::array<std::vector<double>, 2> P, Q;
+    for (int al = 0; al < pd; ++al) {
+      P[al].assign(nd, 0.0);
+      Q[al].assign(nd, 0.0);
+      for (int c = 0; c < dim; ++c) {
+        P[al][at(0, c)] = a_vec[al][c];
+        for (int a = 0; a < k; ++a) {
+          P[al][at(a + 1, c)] = -e.N[a] * a_vec[al][c];
+          Q[al][at(a + 1, c)] = e.dN[a][al] * nf[c];
+        }
+      }
+    }
+    Small m, b;
+    const std::array<std::array<Vec3, 2>, 2> a2{{{l.a00, l.a01}, {l.a01, l.a11}}};
+    for (int i = 0; i < pd; ++i)
+      for (int j = 0; j < pd; ++j) {
+        m.m[i][j] = dot(a_vec[i], a_vec[j]);
+        b.m[i][j] = dot(nf, a2[i][j]);
+      }
+    Small A;
+    for (int i = 0; i < pd; ++i)
+      for (int j = 0; j < pd; ++j) A.m[i][j] = m.m[i][j] - g * b.m[i][j];
+    const Small Ai = inverse(A, pd), mi = inverse(m, pd);
+    const Small mbA = multiply(multiply(mi, b, pd), Ai, pd);
+    for (std::size_t i = 0; i < nd; ++i)
+      for (std::size_t j = 0; j < nd; ++j) {
+        double h = 0.0;
+        for (int al = 0; al < pd; ++al)
+          for (int be = 0; be < pd; ++be)
+            h -= Ai.m[al][be] * (P[al][i] * Q[be][j] + Q[al][i] * P[be][j] + g * Q[al][i] * Q[be][j]) +
+                 mbA.m[al][be] * P[al][i] * P[be][j];
+        H(i, j) = h;
+      }
+    for (int al = 0; al < pd; ++al)
+      for (std::size_t i = 0; i < nd; ++i)
+        for (int be = 0; be < pd; ++be) L.dxi[al][i] += Ai.m[al][be] * (P[be][i] + g * Q[be][i]);
+    return L;
+  }
+
+  const double d = p.distance;
+  if (d <= tol) {
+    L.hessian_defined = false;
+    return L;
+  }
+  const double s = p.gap < 0 ? -1.0 : 1.0;
+  // B = [I, −N_1 I, …]; ∂²(½d²) = BᵀB − c cᵀ/φ_tt (edge); ∇d = Bᵀ r/d.
+  std::vector<double> Bcoef(static_cast<std::size_t>(k + 1));
+  Bcoef[0] = 1.0;
+  for (int a = 0; a < k; ++a) Bcoef[static_cast<std::size_t>(a) + 1] = -e.N[a];
+  for (int A = 0; A <= k; ++A)
+    for (int Bn = 0; Bn <= k; ++Bn)
+      for (int c = 0; c < dim; ++c) H(at(A, c), at(Bn, c)) = Bcoef[static_cast<std::size_t>(A)] * Bcoef[static_cast<std::size_t>(Bn)];
+  if (p.region == ProjectionRegion::Edge) {
+    // The edge direction in the parametric domain.
+    std::array<double, 2> dir{1, 0};
+    constexpr double tol_xi = 1e-10;
+    if (is_tri(f.shape)) {
+      if (p.xi[1] <= tol_xi) dir = {1, 0};
+      else if (p.xi[0] <= tol_xi) dir = {0, 1};
+      else dir = {-1, 1};
+    } else {
+      dir = std::abs(std::abs(p.xi[0]) - 1) <= tol_xi ? std::array<double, 2>{0, 1} : std::array<double, 2>{1, 0};
+    }
+    const Vec3 a_t = axpy(dir[1], l.a1, scale(dir[0], l.a0));
+    const Vec3 a_tt = axpy(dir[1] * dir[1], l.a11, axpy(2 * dir[0] * dir[1], l.a01, scale(dir[0] * dir[0], l.a00)));
+    const double phi_tt = dot(a_t, a_t) - dot(r, a_tt);
+    std::vector<double> cvec(nd, 0.0);
+    for (int c = 0; c < dim; ++c) {
+      cvec[at(0, c)] = -a_t[c];
+      for (int a = 0; a < k; ++a)
+        cvec[at(a + 1, c)] = e.N[a] * a_t[c] - (e.dN[a][0] * dir[0] + e.dN[a][1] * dir[1]) * r[c];
+    }
+    if (phi_tt > 0) {
+      for (std::size_t i = 0; i < nd; ++i)
+        for (std::size_t j = 0; j < nd; ++j) H(i, j) -= cvec[i] * cvec[j] / phi_tt;
+      for (int al = 0; al < pd; ++al)
+        for (std::size_t i = 0; i < nd; ++i) L.dxi[al][i] = -dir[al] * cvec[i] / phi_tt;
+    }
+  }
+  // ∂²g = s (∂²(½d²) − ∇d ∇dᵀ)/d, with ∇d = s ∇g.
+  for (std::size_t i = 0; i < nd; ++i)
+    for (std::size_t j = 0; j < nd; ++j) H(i, j) = s * (H(i, j) - L.gradient[i] * L.gradient[j]) / d;
+  return L;
+}
+
+}  // namespace inpact::contact

@@ -1,0 +1,98 @@
+#pragma once
+/// Closest-point projection of a slave point onto master facets, the normal gap and its
+/// linearisation for node-to-surface contact.
+///
+/// Conventions (Abaqus's, for COPEN and CSLIP):
+///   g = (x_s − x_m)·n, positive = open, negative = penetration; n is the outward normal of the
+///   master body at the contact point x_m; (t1, t2, n) is right-handed, t1 the projection of the
+///   global x axis onto the tangent plane (the global z axis when x is within 0.1° of n); in 2D,
+///   t1 = n rotated counter-clockwise (the edge direction) and t2 = 0.
+///
+/// Per facet (project_to_facet): x_m = x(ξ*) with ξ* the closest point of the facet, the
+/// parametric domain included (clamping). Linear triangles are solved exactly; other faces by
+/// Newton on ∇φ = 0, φ(ξ) = ½|x_s − x(ξ)|², started from the best of a grid of samples, with
+/// a Gauss–Newton step and backtracking whenever the Newton step is not a descent step. If
+/// Newton does not converge inside the domain, the minimum over the domain's edges and vertices
+/// is taken (each edge a 1D problem: φ' bracketed on 8 samples, then safeguarded Newton).
+///
+/// Among candidate facets (closest_projection): the facet with the smallest distance |x_s − x_m|
+/// wins. The contact normal is continuous across facets:
+///   - closest point inside a facet: the facet normal there (= ±(x_s − x_m)/|x_s − x_m|);
+///   - closest point on a facet's edge or vertex (a convex edge/corner seen from outside, or a
+///     free boundary): n = s (x_s − x_m)/|x_s − x_m|, the direction of the distance itself, which
+///     turns continuously from one facet's normal to the next one's; the sign s is that of
+///     (x_s − x_m)·n̄, n̄ the sum of the facet normals at x_m of every candidate facet sharing that
+///     closest point;
+///   - slave exactly on the surface at an edge or vertex (distance ≈ 0): n = n̄/|n̄|, g = 0, and
+///     the facet with the lowest index among those sharing the point is reported (no double
+///     count: one slave node, one projection).
+/// Inside a concave corner two facets can be equally close with different normals; the normal
+/// jumps there, as it does for any faceted surface without smoothing.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "contact/facet.hpp"
+
+namespace inpact::contact {
+
+enum class ProjectionRegion : std::uint8_t {
+  Interior,  ///< x_m inside the facet: an orthogonal projection
+  Edge,      ///< on an edge of the facet's parametric domain (faces only)
+  Vertex     ///< on a corner
+};
+
+struct Projection {
+  std::int32_t facet = -1;         ///< index into the facet list given (−1: none)
+  std::array<double, 2> xi{0, 0};  ///< parametric point of x_m
+  ProjectionRegion region = ProjectionRegion::Interior;
+  Vec3 x_master{};
+  double distance = 0.0;  ///< |x_s − x_m|
+  double gap = 0.0;       ///< signed normal gap (x_s − x_m)·n
+  Vec3 normal{};          ///< contact normal, outward from the master body
+  Vec3 facet_normal{};    ///< the facet's own normal at ξ*
+  Vec3 t1{}, t2{};        ///< tangent basis (CSLIP1/2 directions)
+  bool converged = true;  ///< false: Newton ran out of iterations (the boundary result is kept)
+};
+
+/// Closest point of `xs` on facet `f` on coordinates `x` (all node rows); `facet_index` is
+/// copied into the result.
+Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index = 0);
+
+/// The projection of `xs` onto the closest of the `candidates` (indices into `facets`), with the
+/// continuous normal described above. facet = −1 when there is no candidate.
+Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
+                              std::span<const Vec3> x, const Vec3& xs);
+
+/// The tangent basis for a unit normal `n` (dim 3: Abaqus's surface convention; dim 2: t1 = n
+/// rotated counter-clockwise, t2 = 0).
+void tangent_basis(const Vec3& n, int dim, Vec3& t1, Vec3& t2);
+
+/// Linearisation of the gap of one slave node against facet `f` at projection `p`.
+/// Unknowns u = [x_s; x_1; …; x_k] (slave, then the facet's nodes in facet order), `dim`
+/// components each, n_dof = dim (k + 1).
+///   gradient  ∂g/∂u = [n; −N_1 n; …; −N_k n]                         (every region)
+///   hessian   ∂²g/∂u² (n_dof × n_dof, row-major), the second variation for finite sliding:
+///     Interior: with P_α = [a_α; −N_b a_α], Q_α = [0; N_b,α n], metric m_αβ = a_α·a_β,
+///       curvature b_αβ = n·a_αβ and A = m − g b,
+///       ∂²g = −(Pᵀ A⁻¹ Q + Qᵀ A⁻¹ P) − Pᵀ m⁻¹ b A⁻¹ P − g Qᵀ A⁻¹ Q;
+///     Edge / Vertex with distance d > 0: g = s d with d² = 2φ minimised over the edge
+///       parameter t (vertex: none), ∂²(½d²) = BᵀB − c cᵀ/φ_tt, ∂²g = s (∂²(½d²) − ∇d ∇dᵀ)/d;
+///     Edge / Vertex with d = 0: not defined (the distance has a kink); hessian is zero and
+///       hessian_defined = false.
+///   dxi  ∂ξ*/∂u (param_dim rows of n_dof): A⁻¹(P + g Q) inside; along the edge on an edge;
+///     zero at a vertex. What CSLIP increments need.
+struct GapLinearization {
+  int dim = 3;
+  int n_dof = 0;
+  std::vector<std::int32_t> nodes;  ///< node rows in u order: slave row (or −1), facet nodes
+  std::vector<double> gradient;
+  std::vector<double> hessian;
+  bool hessian_defined = true;
+  std::array<std::vector<double>, 2> dxi;
+};
+GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Vec3& xs, const Projection& p, int dim,
+                               std::int32_t slave_row = -1);
+
+}  // namespace inpact::contact

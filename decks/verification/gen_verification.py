@@ -1,0 +1,734 @@
+#!/usr/bin/env python3
+"""Generator of the solid-mechanics verification decks (decks/verification/).
+
+Each deck states its analytic reference and tolerance in its header; the GoogleTests in
+tests/verification/ read the committed decks and, for the convergence studies, regenerate the
+finer meshes into the build tree at test time:
+
+    gen_verification.py --out DIR                  # every committed deck
+    gen_verification.py --out DIR --cantilever C3D20R 8 2 2   # one cantilever mesh level
+
+Pure standard-library Python (no numpy), so it runs wherever python3 does.
+"""
+import argparse
+import math
+import os
+
+# --------------------------------------------------------------------------- deck writing
+
+
+class Deck:
+    def __init__(self, heading, comments):
+        self.lines = ["*HEADING", " " + heading]
+        self.lines += ["** " + c for c in comments]
+
+    def add(self, *lines):
+        self.lines.extend(lines)
+
+    def nodes(self, coords, dim, nset="ALL"):
+        self.add(f"*NODE, NSET={nset}")
+        for label in sorted(coords):
+            x = coords[label]
+            self.add(f"{label}, " + ", ".join(f"{v:.15g}" for v in x[:dim]))
+
+    def elements(self, etype, elset, conn, first=1):
+        self.add(f"*ELEMENT, TYPE={etype}, ELSET={elset}")
+        for i, c in enumerate(conn):
+            vals = [str(first + i)] + [str(n) for n in c]
+            # at most 16 entries per line; continuation lines for C3D20
+            line = ", ".join(vals[:16])
+            if len(vals) > 16:
+                self.add(line + ",")
+                self.add(", ".join(vals[16:]))
+            else:
+                self.add(line)
+
+    def nset(self, name, labels):
+        labels = sorted(set(labels))
+        self.add(f"*NSET, NSET={name}")
+        for i in range(0, len(labels), 16):
+            self.add(", ".join(str(n) for n in labels[i:i + 16]))
+
+    def elset(self, name, labels):
+        labels = sorted(set(labels))
+        self.add(f"*ELSET, ELSET={name}")
+        for i in range(0, len(labels), 16):
+            self.add(", ".join(str(n) for n in labels[i:i + 16]))
+
+    def write(self, path):
+        with open(path, "w") as f:
+            f.write("\n".join(self.lines) + "\n")
+
+
+OUTPUT = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E"]
+
+# --------------------------------------------------------------------------- structured meshes
+
+
+def grid_hex(nx, ny, nz, x0, x1, quadratic):
+    """Structured brick mesh on the box x0..x1 (3-tuples). Returns coords {label: (x,y,z)},
+    connectivity (Abaqus C3D8 / C3D20 order) and the grid index -> label function."""
+    m = 2 if quadratic else 1
+    NX, NY, NZ = m * nx + 1, m * ny + 1, m * nz + 1
+
+    def lab(i, j, k):
+        return 1 + i + NX * (j + NY * k)
+
+    def xyz(i, j, k):
+        return tuple(x0[d] + (x1[d] - x0[d]) * (ijk / (m * n))
+                     for d, ijk, n in zip(range(3), (i, j, k), (nx, ny, nz)))
+
+    conn = []
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                I, J, K = m * i, m * j, m * k
+                c = [(I, J, K), (I + m, J, K), (I + m, J + m, K), (I, J + m, K),
+                     (I, J, K + m), (I + m, J, K + m), (I + m, J + m, K + m), (I, J + m, K + m)]
+                nodes = [lab(*p) for p in c]
+                if quadratic:
+                    def mid(a, b):
+                        return lab(*[(c[a][d] + c[b][d]) // 2 for d in range(3)])
+                    nodes += [mid(0, 1), mid(1, 2), mid(2, 3), mid(3, 0), mid(4, 5), mid(5, 6), mid(6, 7),
+                              mid(7, 4), mid(0, 4), mid(1, 5), mid(2, 6), mid(3, 7)]
+                conn.append(nodes)
+    used = {n for c in conn for n in c}
+    coords = {}
+    for k in range(NZ):
+        for j in range(NY):
+            for i in range(NX):
+                if lab(i, j, k) in used:
+                    coords[lab(i, j, k)] = xyz(i, j, k)
+    return coords, conn
+
+
+def grid_tet10(nx, ny, nz, x0, x1):
+    """Each brick of a structured grid split into 6 tetrahedra along its 0-7 diagonal (a
+    conforming Kuhn split), with midside nodes: C3D10 in Abaqus order."""
+    NX, NY, NZ = 2 * nx + 1, 2 * ny + 1, 2 * nz + 1
+
+    def lab(p):
+        return 1 + p[0] + NX * (p[1] + NY * p[2])
+
+    def xyz(p):
+        return tuple(x0[d] + (x1[d] - x0[d]) * p[d] / (2 * n) for d, n in zip(range(3), (nx, ny, nz)))
+
+    perms = [(0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)]
+    conn = []
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                base = (2 * i, 2 * j, 2 * k)
+                for perm in perms:
+                    path = [list(base)]
+                    cur = list(base)
+                    for axis in perm:
+                        cur = cur.copy()
+                        cur[axis] += 2
+                        path.append(cur)
+                    a, b, c, d = [tuple(p) for p in path]
+                    # orientation: (b-a)x(c-a).(d-a) > 0 (face 1-2-3 turns into the element)
+                    A, B, C, D = (xyz(p) for p in (a, b, c, d))
+                    u = [B[t] - A[t] for t in range(3)]
+                    v = [C[t] - A[t] for t in range(3)]
+                    w = [D[t] - A[t] for t in range(3)]
+                    det = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                           u[2] * (v[0] * w[1] - v[1] * w[0]))
+                    if det < 0:
+                        b, c = c, b
+
+                    def mid(p, q):
+                        return tuple((p[t] + q[t]) // 2 for t in range(3))
+                    pts = [a, b, c, d, mid(a, b), mid(b, c), mid(c, a), mid(a, d), mid(b, d), mid(c, d)]
+                    conn.append([lab(p) for p in pts])
+    used = {n for c in conn for n in c}
+    coords = {}
+    for k in range(NZ):
+        for j in range(NY):
+            for i in range(NX):
+                p = (i, j, k)
+                if lab(p) in used:
+                    coords[lab(p)] = xyz(p)
+    return coords, conn
+
+
+def grid_quad(n1, n2, mapping, quadratic):
+    """Structured quadrilateral mesh of the unit square mapped by mapping(s, t) -> (x, y).
+    Corner order (s0,t0), (s1,t0), (s1,t1), (s0,t1); edge S4 lies on s = 0."""
+    m = 2 if quadratic else 1
+    N1, N2 = m * n1 + 1, m * n2 + 1
+
+    def lab(i, j):
+        return 1 + i + N1 * j
+
+    conn = []
+    for j in range(n2):
+        for i in range(n1):
+            I, J = m * i, m * j
+            c = [(I, J), (I + m, J), (I + m, J + m), (I, J + m)]
+            nodes = [lab(*p) for p in c]
+            if quadratic:
+                nodes += [lab(I + 1, J), lab(I + 2, J + 1), lab(I + 1, J + 2), lab(I, J + 1)]
+            conn.append(nodes)
+    used = {n for c in conn for n in c}
+    coords = {}
+    for j in range(N2):
+        for i in range(N1):
+            if lab(i, j) in used:
+                x, y = mapping(i / (N1 - 1), j / (N2 - 1))
+                coords[lab(i, j)] = (x, y, 0.0)
+    return coords, conn
+
+
+def select(coords, pred):
+    return [n for n, x in coords.items() if pred(x)]
+
+
+# --------------------------------------------------------------------------- quadrature
+
+G4 = [(-0.8611363115940526, 0.3478548451374538), (-0.3399810435848563, 0.6521451548625461),
+      (0.3399810435848563, 0.6521451548625461), (0.8611363115940526, 0.3478548451374538)]
+
+
+def line_shape(n, xi):
+    if n == 2:
+        return [(1 - xi) / 2, (1 + xi) / 2]
+    return [xi * (xi - 1) / 2, xi * (xi + 1) / 2, 1 - xi * xi]  # ends, then middle
+
+
+def quad_shape(n, xi, eta):
+    c = [(-1, -1), (1, -1), (1, 1), (-1, 1)]
+    if n == 4:
+        return [(1 + a * xi) * (1 + b * eta) / 4 for a, b in c]
+    N = [(1 + a * xi) * (1 + b * eta) * (a * xi + b * eta - 1) / 4 for a, b in c]
+    N += [(1 - xi * xi) * (1 - eta) / 2, (1 + xi) * (1 - eta * eta) / 2, (1 - xi * xi) * (1 + eta) / 2,
+          (1 - xi) * (1 - eta * eta) / 2]
+    return N
+
+
+def tri_shape(n, L2, L3):
+    L1 = 1 - L2 - L3
+    L = [L1, L2, L3]
+    if n == 3:
+        return L
+    return [L[0] * (2 * L[0] - 1), L[1] * (2 * L[1] - 1), L[2] * (2 * L[2] - 1), 4 * L[0] * L[1], 4 * L[1] * L[2],
+            4 * L[2] * L[0]]
+
+
+def consistent_face_loads(face_nodes, coords, traction, kind):
+    """Consistent nodal forces ∫ N_i t(x) dA of a traction t(x) (scalar) on one planar face.
+    kind: 'line' (2D edge, end nodes first then middle), 'quad', 'tri'. Face nodes: corners
+    first, then midside nodes, in the usual order. Returns {node: force}."""
+    out = {n: 0.0 for n in face_nodes}
+    X = [coords[n] for n in face_nodes]
+    if kind == "line":
+        a, b = X[0], X[1]
+        half = math.dist(a, b) / 2
+        for xi, w in G4:
+            N = line_shape(len(face_nodes), xi)
+            p = [(a[d] * (1 - xi) + b[d] * (1 + xi)) / 2 for d in range(3)]
+            for n, Ni in zip(face_nodes, N):
+                out[n] += Ni * traction(p) * w * half
+    elif kind == "quad":
+        for xi, wx in G4:
+            for eta, we in G4:
+                N1 = quad_shape(4, xi, eta)
+                p = [sum(N1[i] * X[i][d] for i in range(4)) for d in range(3)]
+                # rectangle: |J| = area / 4
+                dx = [(X[1][d] - X[0][d]) / 2 for d in range(3)]
+                dy = [(X[3][d] - X[0][d]) / 2 for d in range(3)]
+                cr = [dx[1] * dy[2] - dx[2] * dy[1], dx[2] * dy[0] - dx[0] * dy[2], dx[0] * dy[1] - dx[1] * dy[0]]
+                J = math.sqrt(sum(v * v for v in cr))
+                N = quad_shape(len(face_nodes), xi, eta)
+                for n, Ni in zip(face_nodes, N):
+                    out[n] += Ni * traction(p) * wx * we * J
+    else:  # triangle, collapsed Gauss rule
+        e1 = [X[1][d] - X[0][d] for d in range(3)]
+        e2 = [X[2][d] - X[0][d] for d in range(3)]
+        cr = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]]
+        twice_area = math.sqrt(sum(v * v for v in cr))
+        for gu, wu in G4:
+            u = (gu + 1) / 2
+            for gs, ws in G4:
+                s = (gs + 1) / 2
+                L2, L3 = u, (1 - u) * s
+                w = wu * ws / 4 * (1 - u)
+                p = [X[0][d] + L2 * e1[d] + L3 * e2[d] for d in range(3)]
+                N = tri_shape(len(face_nodes), L2, L3)
+                for n, Ni in zip(face_nodes, N):
+                    out[n] += Ni * traction(p) * w * twice_area
+    return out
+
+
+# --------------------------------------------------------------------------- 1. cantilever
+
+CANT = dict(L=8.0, c=0.5, b=1.0, E=1.0e5, P=10.0)
+
+
+def cantilever_exact(x, y, nu, L=CANT["L"], c=CANT["c"], b=CANT["b"], E=CANT["E"], P=CANT["P"]):
+    """Timoshenko & Goodier (Theory of Elasticity, 3rd ed., §21) plane-stress cantilever: load
+    P (parabolic shear, +y) at x = 0, built in at x = L with u = v = 0 and ∂u/∂y = 0 at (L, 0)
+    (the vertical element of the section fixed). v(0, 0) = PL³/(3EI) + PLc²/(2IG): Euler–
+    Bernoulli plus the shear deflection 3PL/(2GA) of the centre line."""
+    I = 2 * b * c ** 3 / 3
+    G = E / (2 * (1 + nu))
+    u = (-P * x * x * y / (2 * E * I) + P * L * L * y / (2 * E * I) - nu * P * y ** 3 / (6 * E * I) +
+         P * y ** 3 / (6 * I * G))
+    v = (nu * P * x * y * y / (2 * E * I) + P * x ** 3 / (6 * E * I) - (P * L * L / (2 * E * I) + P * c * c / (2 * I * G)) * x
+         + P * L ** 3 / (3 * E * I) + P * L * c * c / (2 * I * G))
+    return u, v
+
+
+def cantilever_tip_deflection(nu):
+    return cantilever_exact(0.0, 0.0, nu)[1]
+
+
+def cantilever(etype, nx, ny, nz):
+    L, c, b, E, P = CANT["L"], CANT["c"], CANT["b"], CANT["E"], CANT["P"]
+    three_d = etype.startswith("C3D")
+    nu = 0.0 if three_d else 0.3  # ν = 0 makes the plane-stress solution exact in 3D (w = 0)
+    I = 2 * b * c ** 3 / 3
+
+    def traction(p):
+        return P * (c * c - p[1] ** 2) / (2 * I)
+
+    eps = 1e-9
+    if etype == "C3D10":
+        coords, conn = grid_tet10(nx, ny, nz, (0, -c, 0), (L, c, b))
+    elif three_d:
+        coords, conn = grid_hex(nx, ny, nz, (0, -c, 0), (L, c, b), etype == "C3D20R" or etype == "C3D20")
+    else:
+        quadratic = etype[-2] == "8" or etype[-1] == "8"
+        coords, conn = grid_quad(nx, ny, lambda s, t: (L * s, -c + 2 * c * t), quadratic)
+    loads = {}
+    # faces on x = 0
+    if etype == "C3D10":
+        for el in conn:
+            for f in ((0, 1, 2, 4, 5, 6), (0, 1, 3, 4, 8, 7), (1, 2, 3, 5, 9, 8), (2, 0, 3, 6, 7, 9)):
+                fn = [el[i] for i in f]
+                if all(abs(coords[n][0]) < eps for n in fn):
+                    for n, v in consistent_face_loads(fn, coords, traction, "tri").items():
+                        loads[n] = loads.get(n, 0.0) + v
+    elif three_d:
+        for el in conn:
+            # face x = x_min: corners 1, 4, 8, 5; midsides 12 (1-4), 20 (4-8), 16 (8-5), 17 (5-1)
+            fn = [el[0], el[3], el[7], el[4]]
+            if len(el) == 20:
+                fn += [el[11], el[19], el[15], el[16]]
+            if all(abs(coords[n][0]) < eps for n in fn):
+                for n, v in consistent_face_loads(fn, coords, traction, "quad").items():
+                    loads[n] = loads.get(n, 0.0) + v
+    else:
+        for el in conn:
+            fn = [el[3], el[0]] + ([el[7]] if len(el) == 8 else [])
+            if all(abs(coords[n][0]) < eps for n in fn):
+                for n, v in consistent_face_loads(fn, coords, traction, "line").items():
+                    loads[n] = loads.get(n, 0.0) + v * b
+    total = sum(loads.values())
+    assert abs(total - P) < 1e-12 * P, total
+    tip = ("tip deflection v(0,0) = PL^3/(3EI) + PLc^2/(2IG) = "
+           f"{cantilever_tip_deflection(nu):.12g}")
+    d = Deck(f"Cantilever {etype} {nx}x{ny}x{nz}: Timoshenko-Goodier plane-stress solution",
+             [f"L = {L}, depth 2c = {2 * c}, width b = {b}, E = {E}, nu = {nu}, P = {P} (parabolic shear at x = 0)",
+              "Built-in end x = L: the exact displacements of Timoshenko & Goodier §21 prescribed on every node.",
+              tip,
+              "Tolerance: observed log-log rate of |error| over three meshes (tests/verification)."])
+    d.nodes(coords, 3 if three_d else 2)
+    d.elements(etype, "BEAM", conn)
+    clamp = select(coords, lambda x: abs(x[0] - L) < eps)
+    tipline = select(coords, lambda x: abs(x[0]) < eps and abs(x[1]) < eps)
+    d.nset("CLAMP", clamp)
+    d.nset("TIPLINE", tipline)
+    d.add("*SOLID SECTION, ELSET=BEAM, MATERIAL=MAT")
+    d.add(f"{b}" if not three_d else "")
+    if three_d:
+        d.lines.pop()
+    d.add("*MATERIAL, NAME=MAT", "*ELASTIC", f"{E}, {nu}")
+    d.add("*BOUNDARY")
+    for n in sorted(clamp):
+        x = coords[n]
+        u, v = cantilever_exact(x[0], x[1], nu)
+        d.add(f"{n}, 1, 1, {u:.17g}", f"{n}, 2, 2, {v:.17g}")
+        if three_d:
+            d.add(f"{n}, 3, 3, 0.")
+    d.add("*STEP, NAME=LOAD", "*STATIC", "*CLOAD")
+    for n in sorted(loads):
+        if loads[n] != 0.0:
+            d.add(f"{n}, 2, {loads[n]:.17g}")
+    d.add(*OUTPUT, "*END STEP")
+    return d
+
+
+# --------------------------------------------------------------------------- 2. Lamé cylinder
+
+LAME = dict(ri=10.0, ro=20.0, p=100.0, E=210000.0, nu=0.3)
+
+
+def lame(etype, nr, nt):
+    ri, ro, p, E, nu = LAME["ri"], LAME["ro"], LAME["p"], LAME["E"], LAME["nu"]
+    quadratic = "8" in etype
+    k = p * ri * ri / (ro * ro - ri * ri)
+    if etype.startswith("CPS"):
+        ur = k / E * ((1 - nu) * ri + (1 + nu) * ro * ro / ri)
+        kind = "plane stress"
+    else:
+        ur = (1 + nu) * k / E * ((1 - 2 * nu) * ri + ro * ro / ri)
+        kind = "plane strain" if etype.startswith("CPE") else \
+            "axisymmetric, axial displacement held at both ends (= plane strain)"
+    s_hoop = p * (ro * ro + ri * ri) / (ro * ro - ri * ri)
+    eps = 1e-9
+    if etype.startswith("CAX"):
+        H = 2.0
+        coords, conn = grid_quad(nr, nt, lambda s, t: (ri + (ro - ri) * s, H * t), quadratic)
+        ends = select(coords, lambda x: abs(x[1]) < eps or abs(x[1] - H) < eps)
+    else:
+        coords, conn = grid_quad(nr, nt, lambda s, t: ((ri + (ro - ri) * s) * math.cos(math.pi / 2 * t),
+                                                      (ri + (ro - ri) * s) * math.sin(math.pi / 2 * t)), quadratic)
+    bore_el = [i + 1 for i, el in enumerate(conn) if all(abs(math.hypot(*coords[el[j]][:2]) - ri) < 1e-6 if not
+                                                        etype.startswith("CAX") else abs(coords[el[j]][0] - ri) < eps
+                                                        for j in (0, 3))]
+    d = Deck(f"Lame thick cylinder under internal pressure, {kind}, {etype} {nr}x{nt}",
+             [f"ri = {ri}, ro = {ro}, p = {p}, E = {E}, nu = {nu}",
+              f"u_r(ri) = {ur:.12g}; sigma_theta(ri) = p (ro^2 + ri^2)/(ro^2 - ri^2) = {s_hoop:.12g}",
+              "Tolerances in tests/verification/test_lame_cylinder.cpp."])
+    d.nodes(coords, 2)
+    d.elements(etype, "WALL", conn)
+    d.elset("BORE_EL", bore_el)
+    d.add("*SURFACE, NAME=BORE", "BORE_EL, S4")
+    d.add("*SOLID SECTION, ELSET=WALL, MATERIAL=STEEL", "1.")
+    d.add("*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}")
+    if etype.startswith("CAX"):
+        d.nset("ENDS", ends)
+        d.add("*BOUNDARY", "ENDS, 2, 2")
+    else:
+        d.nset("ON_X", select(coords, lambda x: abs(x[1]) < eps))
+        d.nset("ON_Y", select(coords, lambda x: abs(x[0]) < eps))
+        d.add("*BOUNDARY", "ON_X, YSYMM", "ON_Y, XSYMM")
+    d.add("*STEP, NAME=PRESSURIZE", "*STATIC", "*DSLOAD", f"BORE, P, {p}", *OUTPUT, "*END STEP")
+    return d
+
+
+# --------------------------------------------------------------------------- 3. thermal
+
+THERM = dict(E=200000.0, nu=0.3, alpha=1.2e-5, T0=20.0, T1=120.0)
+
+
+def thermal_ring(etype, nr, nt):
+    ri, ro = 10.0, 20.0
+    E, nu, alpha, T0, T1 = (THERM[k] for k in ("E", "nu", "alpha", "T0", "T1"))
+    quadratic = "8" in etype
+    eps = 1e-9
+    if etype.startswith("CAX"):
+        H = 2.0
+        coords, conn = grid_quad(nr, nt, lambda s, t: (ri + (ro - ri) * s, H * t), quadratic)
+    else:
+        coords, conn = grid_quad(nr, nt, lambda s, t: ((ri + (ro - ri) * s) * math.cos(math.pi / 2 * t),
+                                                      (ri + (ro - ri) * s) * math.sin(math.pi / 2 * t)), quadratic)
+    d = Deck(f"Free thermal expansion of a ring, {etype}",
+             [f"ri = {ri}, ro = {ro}, E = {E}, nu = {nu}, alpha = {alpha}, T: {T0} -> {T1}",
+              "Stress free, u_r = alpha dT r (and u_z = alpha dT z for the axisymmetric ring)."])
+    d.nodes(coords, 2)
+    d.elements(etype, "RING", conn)
+    d.add("*SOLID SECTION, ELSET=RING, MATERIAL=MAT", "1.")
+    d.add("*MATERIAL, NAME=MAT", "*ELASTIC", f"{E}, {nu}", "*EXPANSION", f"{alpha}")
+    if etype.startswith("CAX"):
+        d.nset("BOTTOM", select(coords, lambda x: abs(x[1]) < eps))
+        d.add("*BOUNDARY", "BOTTOM, 2, 2")
+    else:
+        d.nset("ON_X", select(coords, lambda x: abs(x[1]) < eps))
+        d.nset("ON_Y", select(coords, lambda x: abs(x[0]) < eps))
+        d.add("*BOUNDARY", "ON_X, YSYMM", "ON_Y, XSYMM")
+    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0}")
+    d.add("*STEP, NAME=HEAT", "*STATIC", "*TEMPERATURE", f"ALL, {T1}", *OUTPUT, "*END STEP")
+    return d
+
+
+def thermal_bar():
+    E, nu, alpha, T0, T1 = (THERM[k] for k in ("E", "nu", "alpha", "T0", "T1"))
+    L, a = 4.0, 1.0
+    coords, conn = grid_hex(4, 2, 2, (0, 0, 0), (L, a, a), False)
+    eps = 1e-9
+    d = Deck("Bar held at both ends, heated: sigma_11 = -E alpha dT",
+             [f"E = {E}, nu = {nu}, alpha = {alpha}, T: {T0} -> {T1}; quarter of a 2a x 2a bar (a = {a}),"
+              " symmetry on y = 0 and z = 0, faces y = a and z = a free.",
+              f"sigma_11 = -E alpha dT = {-E * alpha * (T1 - T0):.12g}, sigma_22 = sigma_33 = 0,"
+              " u_2 = (1 + nu) alpha dT y; RF_1 on x = L: E alpha dT a^2."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BAR", conn)
+    d.nset("END0", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("END1", select(coords, lambda x: abs(x[0] - L) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT", "*MATERIAL, NAME=MAT", "*ELASTIC", f"{E}, {nu}",
+          "*EXPANSION", f"{alpha}")
+    d.add("*BOUNDARY", "END0, 1, 1", "END1, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0}")
+    d.add("*STEP, NAME=HEAT", "*STATIC", "*TEMPERATURE", f"ALL, {T1}", *OUTPUT, "*END STEP")
+    return d
+
+
+# --------------------------------------------------------------------------- 4. NLGEOM
+
+
+def rigid_rotation(etype="C3D8", n=2, increments=10):
+    """A cube rotated rigidly by 90° about z through boundary conditions on three nodes, with
+    tabular amplitudes sampled exactly at the increment times (DIRECT incrementation)."""
+    eps = 1e-9
+    coords, conn = grid_hex(n, n, n, (0, 0, 0), (1, 1, 1), etype in ("C3D20", "C3D20R"))
+    origin = select(coords, lambda x: max(abs(v) for v in x) < eps)
+    xnode = select(coords, lambda x: abs(x[0] - 1) < eps and abs(x[1]) < eps and abs(x[2]) < eps)
+    znode = select(coords, lambda x: abs(x[0]) < eps and abs(x[1]) < eps and abs(x[2] - 1) < eps)
+    d = Deck(f"Rigid rotation of a cube by 90 degrees about z, NLGEOM, {etype}",
+             ["Node (0,0,0) pinned; node (0,0,1) on the axis: u1 = u2 = 0; node (1,0,0): u1 = cos(a) - 1,",
+              "u2 = sin(a), u3 = 0 with a = 90 deg * t. Every frame: U = (R - I) X and S = 0."])
+    d.nodes(coords, 3)
+    d.elements(etype, "CUBE", conn)
+    d.nset("ORIGIN", origin)
+    d.nset("XNODE", xnode)
+    d.nset("ZNODE", znode)
+    d.add("*SOLID SECTION, ELSET=CUBE, MATERIAL=MAT", "*MATERIAL, NAME=MAT", "*ELASTIC", "1000., 0.3")
+    ts = [i / increments for i in range(increments + 1)]
+    for name, f in (("COSM1", lambda a: math.cos(a) - 1), ("SIN", math.sin)):
+        d.add(f"*AMPLITUDE, NAME={name}")
+        for t in ts:
+            d.add(f"{t:.17g}, {f(math.pi / 2 * t):.17g}")
+    d.add("*BOUNDARY", "ORIGIN, 1, 3", "ZNODE, 1, 2", "XNODE, 3, 3")
+    # Tight Newton tolerances (R_n = C_n = 1e-10 instead of Abaqus's 5e-3 and 1e-2): the check
+    # is that the converged state is stress free to round-off, not to the default tolerance.
+    d.add("*STEP, NAME=ROTATE, NLGEOM=YES, INC=50", "*CONTROLS, PARAMETERS=FIELD", "1e-10, 1e-10",
+          "*STATIC, DIRECT", f"{1 / increments:.17g}, 1.")
+    d.add("*BOUNDARY, AMPLITUDE=COSM1", "XNODE, 1, 1, 1.", "*BOUNDARY, AMPLITUDE=SIN", "XNODE, 2, 2, 1.")
+    d.add(*OUTPUT, "*END STEP")
+    return d
+
+
+ELASTICA = dict(L=10.0, h=0.2, b=1.0, E=1.0e6)
+
+
+def elastica(etype="CPE8R", nx=40, ny=2, alpha_max=3.0, inc=0.25):
+    """Cantilever under a vertical dead tip load with NLGEOM: the Bisshopp–Drucker elastica.
+    Step time t = PL²/(EI)."""
+    L, h, b, E = (ELASTICA[k] for k in ("L", "h", "b", "E"))
+    I = b * h ** 3 / 12
+    eps = 1e-9
+    coords, conn = grid_quad(nx, ny, lambda s, t: (L * s, -h / 2 + h * t), "8" in etype)
+    P = E * I / L ** 2  # load at t = 1: PL²/EI = 1
+    tip = select(coords, lambda x: abs(x[0] - L) < eps)
+    # consistent loads of a uniform shear traction on the tip edge (sum = P)
+    loads = {}
+    for el in conn:
+        fn = [el[1], el[2]] + ([el[5]] if len(el) == 8 else [])
+        if all(abs(coords[n][0] - L) < eps for n in fn):
+            for n, v in consistent_face_loads(fn, coords, lambda p: P / (h * b), "line").items():
+                loads[n] = loads.get(n, 0.0) + v * b
+    d = Deck(f"Large-deflection cantilever (elastica), NLGEOM, {etype} {nx}x{ny}",
+             [f"L = {L}, h = {h}, b = {b}, E = {E}, nu = 0; vertical dead load at the tip, PL^2/EI = step time.",
+              "Reference: Bisshopp & Drucker, Q. Appl. Math. 3 (1945) 272-275; values as tabulated by",
+              "Mattiasson, IJNME 17 (1981) 145-153: PL^2/EI = 1: v/L = 0.30172, (L-x)/L = 0.05643;",
+              "2: 0.49346, 0.16064; 3: 0.60325, 0.25442."])
+    d.nodes(coords, 2)
+    d.elements(etype, "BEAM", conn)
+    d.nset("ROOT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("TIP", tip)
+    d.nset("TIPMID", select(coords, lambda x: abs(x[0] - L) < eps and abs(x[1]) < eps))
+    d.add("*SOLID SECTION, ELSET=BEAM, MATERIAL=MAT", f"{b}", "*MATERIAL, NAME=MAT", "*ELASTIC", f"{E}, 0.")
+    d.add("*BOUNDARY", "ROOT, 1, 2")
+    d.add("*STEP, NAME=BEND, NLGEOM=YES, INC=100", "*STATIC, DIRECT", f"{inc}, {alpha_max}", "*CLOAD")
+    # the load ramps over the step: magnitude alpha_max * P, so PL²/EI = t at step time t
+    for n in sorted(loads):
+        d.add(f"{n}, 2, {loads[n] * alpha_max:.17g}")
+    d.add(*OUTPUT, "*END STEP")
+    return d
+
+
+def elastica_reference(alpha, n=2000):
+    """Tip of the inextensible elastica under a vertical dead load, by shooting on
+    θ'' = −α cos θ, θ(0) = 0, θ'(1) = 0 (s = arc length / L), RK4. Returns (v/L, (L − x)/L, θ_tip)."""
+    def integrate(k0):
+        th, k, v, x = 0.0, k0, 0.0, 0.0
+        ds = 1.0 / n
+
+        def f(state):
+            th, k, v, x = state
+            return (k, -alpha * math.cos(th), math.sin(th), math.cos(th))
+        s = (th, k, v, x)
+        for _ in range(n):
+            k1 = f(s)
+            k2 = f(tuple(a + ds / 2 * b for a, b in zip(s, k1)))
+            k3 = f(tuple(a + ds / 2 * b for a, b in zip(s, k2)))
+            k4 = f(tuple(a + ds * b for a, b in zip(s, k3)))
+            s = tuple(a + ds / 6 * (b1 + 2 * b2 + 2 * b3 + b4) for a, b1, b2, b3, b4 in zip(s, k1, k2, k3, k4))
+        return s
+    lo, hi = 0.0, alpha  # θ'(0) = M(0)/EI ∈ (0, α]
+    for _ in range(80):
+        mid = (lo + hi) / 2
+        if integrate(mid)[1] > 0:
+            hi = mid
+        else:
+            lo = mid
+    th, k, v, x = integrate((lo + hi) / 2)
+    return v, 1 - x, th
+
+
+# --------------------------------------------------------------------------- 6. multi-step
+
+
+def bar_mesh(x0, x1, nx, first_node=1):
+    coords, conn = grid_hex(nx, 1, 1, (x0, 0, 0), (x1, 1, 1), False)
+    if first_node != 1:
+        coords = {k + first_node - 1: v for k, v in coords.items()}
+        conn = [[n + first_node - 1 for n in c] for c in conn]
+    return coords, conn
+
+
+def multistep():
+    eps = 1e-9
+    coords, conn = bar_mesh(0.0, 4.0, 4)
+    face = lambda xv: select(coords, lambda x: abs(x[0] - xv) < eps)
+    d = Deck("Multi-step bar: OP=NEW on *CLOAD and *BOUNDARY, an amplitude-driven load, a new BC",
+             ["Bar 4 x 1 x 1, E = 1000, nu = 0 (uniaxial), x = 0 held. Hand values in",
+              "tests/verification/test_multistep.cpp. Step 1: MID (x = 2) held, 100 at x = 4.",
+              "Step 2 (OP=NEW): MID released (its reaction ramps to zero), the x = 4 load removed",
+              "(ramps to zero), 60 * a(t) at x = 3 with a = (0,0) (0.5,1) (1,0.5).",
+              "Step 3: x = 4 driven to u1 = 0.4 (ramped from where it is), 30 held at x = 3."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BAR", conn)
+    for name, xv in (("LEFT", 0.0), ("MID", 2.0), ("Q", 3.0), ("RIGHT", 4.0)):
+        d.nset(name, face(xv))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT", "*MATERIAL, NAME=MAT", "*ELASTIC", "1000., 0.")
+    d.add("*AMPLITUDE, NAME=A2", "0., 0., 0.5, 1., 1., 0.5")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    d.add("*STEP, NAME=LOAD", "*STATIC, DIRECT", "0.5, 1.", "*BOUNDARY", "MID, 1, 1", "*CLOAD", "RIGHT, 1, 25.",
+          *OUTPUT, "*END STEP")
+    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.25, 1.", "*BOUNDARY, OP=NEW", "LEFT, 1, 1", "Y0, 2, 2",
+          "Z0, 3, 3", "*CLOAD, OP=NEW, AMPLITUDE=A2", "Q, 1, 15.", "*END STEP")
+    d.add("*STEP, NAME=DRIVE", "*STATIC, DIRECT", "0.25, 1.", "*BOUNDARY", "RIGHT, 1, 1, 0.4", "*CLOAD, OP=NEW",
+          "Q, 1, 7.5", "*END STEP")
+    return d
+
+
+# --------------------------------------------------------------------------- 7. *EQUATION
+
+
+def equation_tie():
+    eps = 1e-9
+    ca, ea = bar_mesh(0.0, 1.0, 1, 1)       # block A, nodes 1..8
+    cb, eb = bar_mesh(1.5, 2.5, 1, 101)     # block B, nodes 101..108
+    cc, ec = bar_mesh(-1.5, -0.5, 1, 201)   # block C, nodes 201..208
+    coords = {**ca, **cb, **cc}
+    d = Deck("Equation ties: block B tied to block A, block C tied to the held nodes of A",
+             ["Unit cubes, nu = 0. A (E = 1000): x = 0 face held. B (E = 2000) at x = 1.5..2.5: its x = 1.5",
+              "nodes tied in u1 to A's x = 1 nodes; 100 at B's far face: u1(A, x=1) = 0.1, u1(B, x=2.5) = 0.15.",
+              "C (E = 1000) at x = -1.5..-0.5: its x = -0.5 nodes tied in u1 to A's held x = 0 nodes;",
+              "-50 at its x = -1.5 face: u1 = -0.05 there; RF1 on A's x = 0 face = -100 + 50 = -50."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "A", ea, 1)
+    d.elements("C3D8", "B", eb, 101)
+    d.elements("C3D8", "C", ec, 201)
+    face = lambda xv: sorted(select(coords, lambda x: abs(x[0] - xv) < eps), key=lambda n: (coords[n][1], coords[n][2]))
+    d.nset("LEFT", face(0.0))
+    d.nset("BLOAD", face(2.5))
+    d.nset("CLOAD", face(-1.5))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    d.add("*SOLID SECTION, ELSET=A, MATERIAL=SOFT", "*SOLID SECTION, ELSET=B, MATERIAL=STIFF",
+          "*SOLID SECTION, ELSET=C, MATERIAL=SOFT")
+    d.add("*MATERIAL, NAME=SOFT", "*ELASTIC", "1000., 0.", "*MATERIAL, NAME=STIFF", "*ELASTIC", "2000., 0.")
+    d.add("*EQUATION")
+    for nb, na in zip(face(1.5), face(1.0)):
+        d.add("2", f"{nb}, 1, 1., {na}, 1, -1.")
+    for nc, na in zip(face(-0.5), face(0.0)):
+        d.add("2", f"{nc}, 1, 1., {na}, 1, -1.")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    d.add("*STEP, NAME=PULL", "*STATIC", "*CLOAD", "BLOAD, 1, 25.", "CLOAD, 1, -12.5", *OUTPUT, "*END STEP")
+    return d
+
+
+# --------------------------------------------------------------------------- 8. no convergence
+
+
+def rigid_mode():
+    coords, conn = bar_mesh(0.0, 2.0, 2)
+    eps = 1e-9
+    d = Deck("A deck that cannot converge: step 2 removes every support of a loaded bar",
+             ["Step 1 converges (held at x = 0, 10 at x = 2). Step 2: *BOUNDARY, OP=NEW with no data",
+              "line removes the supports while the load stays: a rigid-body mode, singular stiffness.",
+              "Expected: AnalysisOutcome.completed == false naming step 2 increment 1; exit code 4,",
+              "step 1's frames readable in the .h5 with status ABORTED."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BAR", conn)
+    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - 2) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT", "*MATERIAL, NAME=MAT", "*ELASTIC", "1000., 0.3")
+    d.add("*STEP, NAME=HOLD", "*STATIC", "*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3", "*CLOAD", "RIGHT, 1, 2.5",
+          *OUTPUT, "*END STEP")
+    d.add("*STEP, NAME=LETGO", "*STATIC", "*BOUNDARY, OP=NEW", "*END STEP")
+    return d
+
+
+# --------------------------------------------------------------------------- main
+
+CANTILEVER_LEVELS = {
+    "CPS8R": [(8, 2, 1), (16, 4, 1), (32, 8, 1)],
+    "CPE4I": [(8, 2, 1), (16, 4, 1), (32, 8, 1)],
+    "C3D8I": [(8, 2, 1), (16, 4, 2), (32, 8, 4)],
+    "C3D20R": [(4, 2, 1), (8, 4, 2), (16, 8, 4)],
+    "C3D10": [(4, 2, 2), (8, 4, 4), (16, 8, 8)],
+}
+
+
+def committed(out):
+    decks = {
+        "cantilever_cps8r_l1.inp": cantilever("CPS8R", 8, 2, 1),
+        "cantilever_c3d8i_l1.inp": cantilever("C3D8I", 8, 2, 1),
+        "cantilever_c3d10_l1.inp": cantilever("C3D10", 4, 2, 2),
+        "lame_cpe8r.inp": lame("CPE8R", 6, 8),
+        "lame_cpe4.inp": lame("CPE4", 16, 24),
+        "lame_cps8.inp": lame("CPS8", 6, 8),
+        "lame_cps4.inp": lame("CPS4", 16, 24),
+        "lame_cax8r.inp": lame("CAX8R", 6, 1),
+        "lame_cax4.inp": lame("CAX4", 16, 1),
+        "thermal_ring_cps8.inp": thermal_ring("CPS8", 3, 6),
+        "thermal_ring_cax4.inp": thermal_ring("CAX4", 4, 2),
+        "thermal_bar_c3d8.inp": thermal_bar(),
+        "nlgeom_rigid_rotation_c3d8.inp": rigid_rotation("C3D8", 2, 10),
+        "nlgeom_rigid_rotation_c3d8i.inp": rigid_rotation("C3D8I", 2, 10),
+        "nlgeom_elastica_cpe8r.inp": elastica("CPE8R", 40, 2),
+        "multistep_bar.inp": multistep(),
+        "equation_tie.inp": equation_tie(),
+        "rigid_mode_abort.inp": rigid_mode(),
+    }
+    for name, d in decks.items():
+        d.write(os.path.join(out, name))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--cantilever", nargs=4, metavar=("TYPE", "NX", "NY", "NZ"))
+    ap.add_argument("--cantilever-levels", metavar="TYPE", help="write the three levels of TYPE")
+    ap.add_argument("--elastica-reference", action="store_true")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    if a.elastica_reference:
+        for alpha in (1, 2, 3):
+            print(alpha, *(f"{v:.5f}" for v in elastica_reference(alpha)))
+        return
+    if a.cantilever:
+        t, nx, ny, nz = a.cantilever[0], *map(int, a.cantilever[1:])
+        cantilever(t, nx, ny, nz).write(os.path.join(a.out, f"cantilever_{t.lower()}_{nx}x{ny}x{nz}.inp"))
+        return
+    if a.cantilever_levels:
+        t = a.cantilever_levels
+        for nx, ny, nz in CANTILEVER_LEVELS[t]:
+            cantilever(t, nx, ny, nz).write(os.path.join(a.out, f"cantilever_{t.lower()}_{nx}x{ny}x{nz}.inp"))
+        return
+    committed(a.out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,90 @@
+// Case 6: multi-step history on a bar (4 × 1 × 1, E = 1000, A = 1, ν = 0: uniaxial, EA = 1000),
+// x = 0 held. Load groups act on the faces x = 2 (MID), 3 (Q) and 4 (RIGHT).
+//  Step 1 (DIRECT 0.5): MID held, 100 (4 × 25) at RIGHT, ramped.
+//    t = 1: segment 2–4 carries 100 → u(3) = 0.1, u(4) = 0.2; RF1(MID) = −100, RF1(LEFT) = 0.
+//  Step 2 (DIRECT 0.25): *BOUNDARY, OP=NEW keeps LEFT and the symmetry planes only: MID is
+//    released and its reaction −100 is left as a load that ramps to zero; *CLOAD, OP=NEW
+//    removes the RIGHT load (ramps from 100 to 0) and puts 60·a(t) at Q, a = (0,0) (0.5,1) (1,0.5).
+//    With F_R = 100(1−t), F_M = −100(1−t), F_Q = 60 a(t):
+//    u(2) = 2 F_Q/EA, u(3) = u(2) + (F_R + F_Q)/EA, u(4) = u(3) + F_R/EA, RF1(LEFT) = −F_Q.
+//  Step 3 (DIRECT 0.25): RIGHT driven to u1 = 0.4 from where it is (0.09 → 0.4, ramped), 30 at Q
+//    (the step-2 end value, constant): N34 = (1000 u4 − 90)/4, RF1(RIGHT) = N34,
+//    RF1(LEFT) = −(N34 + 30).
+#include "verification_fixture.hpp"
+
+namespace inpact::verification {
+namespace {
+
+double face_u1(const Run& r, const solver::Frame& f, const char* set) {
+  double s = 0;
+  const auto rows = nset(r.model(), set);
+  for (std::int32_t n : rows) s += nodal(f, "U", static_cast<std::size_t>(n), 0);
+  return s / static_cast<double>(rows.size());
+}
+
+double face_rf1(const Run& r, const solver::Frame& f, const char* set) {
+  double s = 0;
+  for (std::int32_t n : nset(r.model(), set)) s += nodal(f, "RF", static_cast<std::size_t>(n), 0);
+  return s;
+}
+
+double amplitude_a2(double t) { return t <= 0.5 ? 2 * t : 1.0 - (t - 0.5); }
+
+TEST(MultiStep, OpNewLoadsAndReleasedSupportsRampToZeroAndAmplitudesDriveLoads) {
+  const auto r = run_deck(deck_path("multistep_bar.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const double EA = 1000.0, tol = 1e-10;  // linear problem: exact to round-off
+  double worst = 0;
+  auto expect = [&](double got, double want, const std::string& what) {
+    worst = std::max(worst, std::abs(got - want));
+    EXPECT_NEAR(got, want, tol * std::max(1.0, std::abs(want))) << what;
+  };
+
+  // Step 1.
+  const auto s1 = r->capture.of_step(1);
+  ASSERT_EQ(s1.size(), 2u);
+  for (const auto* f : s1) {
+    const double t = f->step_time, F = 100 * t;
+    expect(face_u1(*r, *f, "MID"), 0.0, "step 1 u(2)");
+    expect(face_u1(*r, *f, "Q"), F / EA, "step 1 u(3)");
+    expect(face_u1(*r, *f, "RIGHT"), 2 * F / EA, "step 1 u(4)");
+    expect(face_rf1(*r, *f, "MID"), -F, "step 1 RF(MID)");
+    expect(face_rf1(*r, *f, "LEFT"), 0.0, "step 1 RF(LEFT)");
+    expect_balance(*r, *f, {F, 0, 0}, 1e-12, "multistep step 1 t=" + std::to_string(t));
+  }
+
+  // Step 2.
+  const auto s2 = r->capture.of_step(2);
+  ASSERT_EQ(s2.size(), 4u);
+  for (const auto* f : s2) {
+    const double t = f->step_time;
+    const double FR = 100 * (1 - t), FM = -100 * (1 - t), FQ = 60 * amplitude_a2(t);
+    const double u2 = 2 * FQ / EA, u3 = u2 + (FR + FQ) / EA, u4 = u3 + FR / EA;
+    const std::string at = " at step 2 t = " + std::to_string(t);
+    expect(face_u1(*r, *f, "MID"), u2, "u(2)" + at);
+    expect(face_u1(*r, *f, "Q"), u3, "u(3)" + at);
+    expect(face_u1(*r, *f, "RIGHT"), u4, "u(4)" + at);
+    expect(face_rf1(*r, *f, "LEFT"), -FQ, "RF(LEFT)" + at);
+    expect(face_rf1(*r, *f, "MID"), 0.0, "RF(MID) (released)" + at);
+    expect_balance(*r, *f, {FR + FM + FQ, 0, 0}, 1e-12, "multistep step 2 t=" + std::to_string(t));
+  }
+
+  // Step 3.
+  const auto s3 = r->capture.of_step(3);
+  ASSERT_EQ(s3.size(), 4u);
+  for (const auto* f : s3) {
+    const double t = f->step_time;
+    const double u4 = 0.09 + (0.4 - 0.09) * t, N34 = (EA * u4 - 90) / 4;
+    const std::string at = " at step 3 t = " + std::to_string(t);
+    expect(face_u1(*r, *f, "RIGHT"), u4, "u(4)" + at);
+    expect(face_u1(*r, *f, "Q"), 3 * (N34 + 30) / EA, "u(3)" + at);
+    expect(face_rf1(*r, *f, "RIGHT"), N34, "RF(RIGHT)" + at);
+    expect(face_rf1(*r, *f, "LEFT"), -(N34 + 30), "RF(LEFT)" + at);
+    expect_balance(*r, *f, {30, 0, 0}, 1e-12, "multistep step 3 t=" + std::to_string(t));
+  }
+  report("multistep: worst |value - hand value|", worst);
+  report("multistep: Newton iterations (10 increments)", r->capture.iterations);
+}
+
+}  // namespace
+}  // namespace inpact::verification
