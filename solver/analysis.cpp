@@ -9,6 +9,7 @@
 #include "analysis_model.hpp"
 #include "assembler.hpp"
 #include "blas_info.hpp"
+#include "contact_problem.hpp"
 #include "dof_map.hpp"
 #include "field_output.hpp"
 #include "linear/linear_solver.hpp"
@@ -31,7 +32,10 @@ struct StepRun {
         dofs(DofMap::build(am, conditions.prescribed())),
         assembler(am, dofs, threads),
         controls(solution_controls(step)),
-        output(am, index) {}
+        output(am, index),
+        contact(std::make_unique<ContactProblem>(am, index)) {
+    if (contact->empty()) contact.reset();
+  }
   StepRun(const StepRun&) = delete;
 
   const model::Step& step;
@@ -42,6 +46,7 @@ struct StepRun {
   Assembler assembler;
   SolutionControls controls;
   StepOutput output;
+  std::unique_ptr<ContactProblem> contact;  ///< null when no contact pair is in force
 };
 
 /// Reactions at the prescribed DOFs: RF = f_int − f_ext (zero elsewhere). A DOF that an
@@ -68,8 +73,10 @@ std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
 void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
                   double dt, const OutputDue& due, AnalysisObserver& observer) {
   if (!due.any_field() && !due.any_print()) return;
+  ContactResults contact;
+  if (run.contact && due.any_field()) contact = run.contact->results(s.u, s.contact);
   OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom,
-                                       run.conditions.temperature_change(t));
+                                       run.conditions.temperature_change(t), run.contact ? &contact : nullptr);
   if (due.any_field()) {
     Frame frame;
     frame.increment = increment;
@@ -88,6 +95,33 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
     print.time_period = run.step.static_procedure->time_period;
     print.tables = std::move(values.tables);
     observer.print_frame(print);
+  }
+}
+
+/// The augmentation level of one increment attempt: Newton to convergence, then, for
+/// augmented-Lagrange pairs, while a penetration exceeds its tolerance,
+///   λ ← ⟨λ + k (h + c0)⟩  and Newton again from the converged state,
+/// at most I_A^c times (*CONTROLS, PARAMETERS=TIME INCREMENTATION, field 13; default 50).
+NewtonOutcome solve_with_augmentations(NewtonContext& ctx, double t, IncrementState& state, int& augmentations) {
+  NewtonOutcome total;
+  for (augmentations = 0;; ++augmentations) {
+    NewtonOutcome outcome = solve_increment(ctx, t, state);
+    outcome.iterations += total.iterations;
+    outcome.severe_iterations += total.severe_iterations;
+    outcome.average_force = std::max(outcome.average_force, total.average_force);
+    total = outcome;
+    if (!total.converged || !ctx.contact || !ctx.contact->has_augmented_lagrange()) return total;
+    const AugmentationCheck check = ctx.contact->check_augmentation(state.contact);
+    if (check.converged) return total;
+    if (augmentations >= ctx.controls.max_augmentations) {
+      total.converged = false;
+      total.failure = fmt::format("augmented Lagrange: penetration {:.4g} at slave node {} still exceeds the tolerance "
+                                  "{:.4g} after {} augmentations (the most *CONTROLS allows)",
+                                  check.max_penetration, ctx.am.model->mesh.nodes.labels[check.node], check.tolerance,
+                                  augmentations);
+      return total;
+    }
+    ctx.contact->augment(state.contact);
   }
 }
 
@@ -118,14 +152,18 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
     for (int attempt = 1;; ++attempt) {
       trial = state;
       NewtonContext ctx{am, run.conditions, run.assembler, *cholmod, *umfpack, c, observer, run.step.nlgeom,
-                        force_sum, force_count, run.number, increment, attempt};
-      outcome = solve_increment(ctx, t + dt, trial);
+                        force_sum, force_count, run.number, increment, attempt, run.contact.get()};
+      int augmentations = 0;
+      outcome = solve_with_augmentations(ctx, t + dt, trial, augmentations);
       StatusRow row;
       row.step = run.number;
       row.increment = increment;
       row.attempt = attempt;
       row.cut_back = !outcome.converged;
-      row.equil_iters = row.total_iters = outcome.iterations;
+      row.severe_discon_iters = outcome.severe_iterations;
+      row.equil_iters = outcome.iterations - outcome.severe_iterations;
+      row.total_iters = outcome.iterations;
+      row.augmentations = augmentations;
       // A cut-back attempt shows the time at the start of the increment, as Abaqus does.
       row.step_time = t + (outcome.converged ? dt : 0.0);
       row.total_time = run.start_time + row.step_time;
@@ -152,7 +190,8 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
     // After an increment cut short by a time mark, go on with the size the controller chose.
     if (dt < dt_unmarked && !cut_back_this_increment) dt = dt_unmarked;
     // Grow the increment after two easy ones in a row (never right after a cutback).
-    easy_in_a_row = (!cut_back_this_increment && outcome.iterations <= c.easy_iterations) ? easy_in_a_row + 1 : 0;
+    const int equilibrium_iterations = outcome.iterations - outcome.severe_iterations;
+    easy_in_a_row = (!cut_back_this_increment && equilibrium_iterations <= c.easy_iterations) ? easy_in_a_row + 1 : 0;
     if (!proc.direct && easy_in_a_row >= 2) dt = std::min(dt * c.growth_factor, dt_max);
   }
   return {true, ""};
@@ -173,6 +212,8 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
     StepRun run(am, s, history, total_time, options.threads);
+    if (run.contact)
+      for (const auto& line : run.contact->describe()) observer.message(fmt::format("step {} ({}): {}", s + 1, step.name, line));
     for (const auto& v : run.output.not_computed())
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));

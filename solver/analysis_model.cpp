@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "contact_problem.hpp"
 
 namespace inpact::solver {
 
@@ -34,17 +35,10 @@ AnalysisModel build_analysis_model(const model::Model& m) {
     am.elements[e].type = &t;
   }
 
-  // Contact is enforced by contact/, which the analysis does not drive yet: a deck with contact
-  // must not run as if its bodies could pass through each other.
-  const model::ContactPair* pair = !m.contact_pairs.empty() ? &m.contact_pairs.front() : nullptr;
-  for (const auto& step : m.steps)
-    if (!pair && !step.contact_pairs.empty()) pair = &step.contact_pairs.front();
-  if (pair)
-    throw AnalysisError(fmt::format("{}: error: *CONTACT PAIR: contact is not analysed by this version of inpact yet",
-                                    m.sources.describe(pair->loc)));
-  if (m.general_contact.defined)
-    throw AnalysisError(fmt::format("{}: error: *CONTACT: contact is not analysed by this version of inpact yet",
-                                    m.sources.describe(m.general_contact.loc)));
+  // Contact: node-to-surface pairs are analysed (solver/contact_problem.hpp); what is not yet
+  // (general contact, surface-to-surface, friction, ...) stops here with the deck line, rather
+  // than run as if the bodies could pass through each other or slide without friction.
+  check_contact_supported(m);
 
   for (const auto& sec : m.mesh.sections) {
     const model::Material& mat = m.materials.at(sec.material);

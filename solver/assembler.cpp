@@ -1,6 +1,7 @@
 #include "assembler.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <thread>
 
@@ -15,27 +16,81 @@ void Assembler::element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) con
 }
 
 Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads) : am_(am), dofs_(dofs), threads_(threads) {
-  const std::size_t n_el = am.model->mesh.elements.size();
-  // Pattern: every pair of equations reached from one element's DOFs through their masters.
-  PatternBuilder pattern(dofs.n_equations());
-  std::vector<std::int64_t> el_dofs, eqs;
-  for (std::size_t e = 0; e < n_el; ++e) {
-    element_dofs(e, el_dofs);
-    eqs.clear();
-    for (std::int64_t d : el_dofs)
-      for (const auto& m : dofs.masters(d))
-        if (dofs.equation(m.dof) >= 0) eqs.push_back(dofs.equation(m.dof));
-    pattern.add_block(eqs);
-  }
-  tangent_ = pattern.build(true);
-
+  build_pattern(nullptr);
 }
 
-// Positions are found by binary search in each column rather than cached: a cache of every
-// element entry's position costs ~14 kB per hexahedron (14 GB at a million elements), while the
-// search is cheap next to computing the element matrix.
+void Assembler::set_extra_couplings(const ExtraCouplings& extra) { build_pattern(&extra); }
+
+void Assembler::build_pattern(const ExtraCouplings* extra) {
+  const DofMap& dofs = dofs_;
+  const std::size_t n_el = am_.model->mesh.elements.size();
+  const std::int64_t n_mult = extra ? static_cast<std::int64_t>(extra->multiplier_dofs.size()) : 0;
+  // Pattern: every pair of equations reached from one element's DOFs through their masters.
+  PatternBuilder pattern(dofs.n_equations() + n_mult);
+  std::vector<std::int64_t> el_dofs, eqs;
+  auto add = [&](std::span<const std::int64_t> block, std::int64_t multiplier_eq) {
+    eqs.clear();
+    for (std::int64_t d : block)
+      for (const auto& m : dofs.masters(d))
+        if (dofs.equation(m.dof) >= 0) eqs.push_back(dofs.equation(m.dof));
+    if (multiplier_eq < 0) pattern.add_block(eqs);
+    else {
+      pattern.add_pair(multiplier_eq, multiplier_eq);
+      for (std::int64_t e : eqs) pattern.add_pair(e, multiplier_eq);
+    }
+  };
+  for (std::size_t e = 0; e < n_el; ++e) {
+    element_dofs(e, el_dofs);
+    add(el_dofs, -1);
+  }
+  if (extra) {
+    for (const auto& block : extra->dof_blocks) add(block, -1);
+    for (std::int64_t m = 0; m < n_mult; ++m) add(extra->multiplier_dofs[m], dofs.n_equations() + m);
+  }
+  tangent_ = pattern.build(true);
+}
+
+// Positions are found in each column rather than cached: a cache of every element entry's
+// position costs ~14 kB per hexahedron (14 GB at a million elements). When no element DOF is
+// tied by an *EQUATION (the usual case), the element's equations are sorted once and each
+// column is walked once from the first of them (one binary search per column instead of one
+// per entry); every entry receives the same addition as before, so the sum is bit-identical.
 void Assembler::scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k) {
   const std::size_t n = el_dofs.size();
+  constexpr std::size_t kMaxLocal = 64;
+  bool plain = n <= kMaxLocal;
+  for (std::size_t a = 0; plain && a < n; ++a) plain = dofs_.kind(el_dofs[a]) != DofMap::Kind::Dependent;
+  std::array<std::int64_t, kMaxLocal> eq;
+  std::array<std::uint8_t, kMaxLocal> order;  // local DOFs with an equation, ascending
+  std::size_t n_free = 0;
+  if (plain) {
+    for (std::size_t a = 0; a < n; ++a) {
+      eq[a] = dofs_.equation(el_dofs[a]);
+      if (eq[a] < 0) continue;
+      std::size_t i = n_free++;
+      for (; i > 0 && eq[order[i - 1]] > eq[a]; --i) order[i] = order[i - 1];
+      order[i] = static_cast<std::uint8_t>(a);
+    }
+    for (std::size_t i = 1; plain && i < n_free; ++i) plain = eq[order[i - 1]] != eq[order[i]];
+  }
+  if (plain) {  // (a node listed twice, as in a collapsed brick, takes the general path below)
+    if (n_free == 0) return;
+    const std::int64_t* rows = tangent_.row_idx.data();
+    double* values = tangent_.values.data();
+    for (std::size_t j = 0; j < n_free; ++j) {  // column eb, rows ea <= eb: the first j + 1 in order
+      const std::size_t b = order[j];
+      const std::int64_t eb = eq[b];
+      const std::int64_t* p = std::lower_bound(rows + tangent_.col_ptr[eb], rows + tangent_.col_ptr[eb + 1],
+                                               eq[order[0]]);
+      for (std::size_t i = 0; i <= j; ++i) {
+        const std::size_t a = order[i];
+        while (*p < eq[a]) ++p;  // the pattern holds every (ea, eb) of the element
+        const double kab = k[a * n + b];
+        if (kab != 0.0) values[p - rows] += kab;
+      }
+    }
+    return;
+  }
   for (std::size_t a = 0; a < n; ++a)
     for (const auto& ma : dofs_.masters(el_dofs[a])) {
       const std::int64_t ea = dofs_.equation(ma.dof);
@@ -52,7 +107,8 @@ void Assembler::scatter(std::span<const std::int64_t> el_dofs, std::span<const d
     }
 }
 
-elements::ElementSystem Assembler::compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request) const {
+void Assembler::compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request,
+                        elements::ElementSystem& out) const {
   const auto& mesh = am_.model->mesh;
   const ElementSetup& setup = am_.elements[e];
   elements::ElementRequest er;
@@ -60,13 +116,28 @@ elements::ElementSystem Assembler::compute(std::size_t e, std::span<const double
   er.internal_force = true;
   er.nlgeom = request.nlgeom;
   const auto nodes = mesh.elements.nodes_of(e);
-  std::vector<double> u_el, dt_el;
-  u_el.reserve(nodes.size() * am_.dim);
-  for (std::int32_t node : nodes) {
-    for (int c = 0; c < am_.dim; ++c) u_el.push_back(u[static_cast<std::size_t>(node) * am_.dim + c]);
-    if (!request.delta_t.empty()) dt_el.push_back(request.delta_t[node]);
+  // Gathered on the stack: no allocation per element (at most 20 nodes × 3 DOFs).
+  constexpr std::size_t kMaxNodes = 32;
+  if (nodes.size() > kMaxNodes) {
+    out = elements::compute_element(*setup.type, am_.coords(e), std::vector<double>(), setup.material,
+                                     setup.section, er);  // throws: no element type has this many nodes
+    return;
   }
-  return elements::compute_element(*setup.type, am_.coords(e), u_el, setup.material, setup.section, er, dt_el);
+  std::array<elements::Vec3, kMaxNodes> x;
+  std::array<double, kMaxNodes * 3> u_el;
+  std::array<double, kMaxNodes> dt_el;
+  const std::size_t dim = static_cast<std::size_t>(am_.dim);
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    const std::size_t node = static_cast<std::size_t>(nodes[a]);
+    x[a] = mesh.nodes.coords[node];
+    for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[node * dim + c];
+    if (!request.delta_t.empty()) dt_el[a] = request.delta_t[node];
+  }
+  const std::size_t n = nodes.size();
+  elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n * dim), setup.material,
+                            setup.section, er,
+                            request.delta_t.empty() ? std::span<const double>() : std::span<const double>(dt_el).first(n),
+                            out);
 }
 
 AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int) {
@@ -86,7 +157,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   for (std::size_t begin = 0; begin < n_el; begin += chunk) {
     const std::size_t end = std::min(begin + chunk, n_el);
     auto work = [&](std::size_t t) {
-      for (std::size_t e = begin + t; e < end; e += n_threads) systems[e - begin] = compute(e, u, request);
+      for (std::size_t e = begin + t; e < end; e += n_threads) compute(e, u, request, systems[e - begin]);
     };
     if (n_threads == 1) {
       work(0);
@@ -102,6 +173,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
         result.min_jacobian_element = static_cast<std::int64_t>(e);
       }
       element_dofs(e, el_dofs);
+      if (sys.internal_force.size() != el_dofs.size()) continue;  // inverted: reported by min_jacobian
       for (std::size_t i = 0; i < el_dofs.size(); ++i) {
         f_int[el_dofs[i]] += sys.internal_force[i];
         force_sum += std::abs(sys.internal_force[i]);

@@ -17,6 +17,14 @@ struct AssemblyRequest {
   std::span<const double> delta_t;  ///< nodal temperature change, or empty
 };
 
+/// Couplings beyond the elements' (contact): blocks of global DOFs that couple with each other
+/// (a slave node and its master facet's nodes), and Lagrange multipliers, each an equation
+/// appended after the DOF map's that couples with a block of global DOFs.
+struct ExtraCouplings {
+  std::vector<std::vector<std::int64_t>> dof_blocks;
+  std::vector<std::vector<std::int64_t>> multiplier_dofs;  ///< multiplier m: equation n_eq + m
+};
+
 struct AssemblyResult {
   /// Spatial average of the magnitudes of the element nodal forces, Abaqus's q^α "typical
   /// flux" that residuals are measured against.
@@ -35,6 +43,11 @@ class Assembler {
   /// The reduced tangent's pattern (upper triangle); assemble() fills its values.
   SparseMatrix& tangent() { return tangent_; }
   const DofMap& dofs() const { return dofs_; }
+  /// Size of the system: the DOF map's equations plus the multipliers of set_extra_couplings().
+  std::int64_t n_equations() const { return tangent_.n; }
+  /// Rebuilds the pattern with the elements' couplings and `extra` (contact, whenever its
+  /// couplings or multipliers change; the linear solvers redo their analysis then).
+  void set_extra_couplings(const ExtraCouplings& extra);
 
   /// Internal forces at u (full, overwritten) and, when asked, the reduced tangent.
   AssemblyResult assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int);
@@ -45,8 +58,11 @@ class Assembler {
  private:
   /// Global DOFs of element e, node-major.
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
+  void build_pattern(const ExtraCouplings* extra);
 
-  elements::ElementSystem compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request) const;
+  /// Element e's system into `out` (its buffers are reused from element to element).
+  void compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request,
+               elements::ElementSystem& out) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
 

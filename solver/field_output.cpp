@@ -71,6 +71,13 @@ std::string field_key(std::string_view v, Domain d) {
     for (std::string_view k : {"U", "RF", "COORD"})
       if (is_variable(v, k, 1)) return std::string(k);
   }
+  if (d == Domain::Contact || d == Domain::Model) {
+    if (v == "CSTRESS") return "CPRESS";
+    if (v == "CDISP") return "COPEN";
+    if (v == "CFN1" || v == "CFN2" || v == "CFN3") return "CFN";
+    for (std::string_view k : {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN"})
+      if (v == k) return std::string(k);
+  }
   if (element) {
     if (v == "MISES") return "S";
     for (std::string_view k : {"S", "E"})
@@ -123,6 +130,13 @@ void add_unique(std::vector<std::string>& list, const std::string& v) {
 constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E"};
 
 bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
+
+constexpr const char* kContactKeys[] = {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN"};
+
+bool model_has_contact(const model::Model& m) {
+  if (!m.contact_pairs.empty()) return true;
+  return std::any_of(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return !s.contact_pairs.empty(); });
+}
 
 }  // namespace
 
@@ -204,6 +218,10 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (d == Domain::Node || d == Domain::Model) a.variables.insert(a.variables.end(), {"U", "RF"});
         if (r.all && (d == Domain::Node || d == Domain::Model)) a.variables.push_back("COORD");
         if (d == Domain::Element || d == Domain::Model) a.variables.insert(a.variables.end(), {"S", "E"});
+        // Abaqus's preselection holds CSTRESS and CDISP: inpact's CPRESS and COPEN.
+        if (d == Domain::Contact || (d == Domain::Model && model_has_contact(model)))
+          a.variables.insert(a.variables.end(), {"CPRESS", "COPEN"});
+        if (r.all && d == Domain::Contact) a.variables.insert(a.variables.end(), {"CSTATUS", "CNAREA", "CFN"});
       }
       for (const std::string& v : r.variables) {
         const std::string key = field_key(v, d);
@@ -499,10 +517,60 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
 
 }  // namespace
 
+namespace {
+
+/// Rows of the contact pair table (model pairs, then each step's) a contact request covers.
+std::set<std::int32_t> request_pairs(const model::Model& m, const OutputRequest& r) {
+  std::set<std::int32_t> rows;
+  std::int32_t row = 0;
+  auto visit = [&](const model::ContactPair& p) {
+    const bool slave_ok = r.surface.empty() || domain_of(r.kind) != Domain::Contact || r.surface == p.slave;
+    const bool master_ok = r.master.empty() || domain_of(r.kind) != Domain::Contact || r.master == p.master;
+    if (slave_ok && master_ok) rows.insert(row);
+    ++row;
+  };
+  for (const auto& p : m.contact_pairs) visit(p);
+  for (const auto& s : m.steps)
+    for (const auto& p : s.contact_pairs) visit(p);
+  return rows;
+}
+
+/// A contact field: one location per slave node per pair of the requests asking for `key`
+/// (the same locations in every frame of the step).
+FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const std::string& key,
+                        const ContactResults& contact) {
+  std::set<std::int32_t> pairs;
+  for (const ActiveRequest& a : output.field_requests())
+    if (std::find(a.variables.begin(), a.variables.end(), key) != a.variables.end()) {
+      const auto rows = request_pairs(*am.model, a.request);
+      pairs.insert(rows.begin(), rows.end());
+    }
+  FieldData f;
+  f.key = key;
+  f.position = Position::Nodal;
+  f.component_labels = key == "CFN" ? std::vector<std::string>{"CFN1", "CFN2", "CFN3"} : std::vector<std::string>{key};
+  for (const ContactNodeResult& c : contact) {
+    if (!pairs.count(c.pair)) continue;
+    f.nodes.push_back(c.node);
+    f.pair.push_back(c.pair);
+    if (key == "CPRESS") f.values.push_back(c.cpress);
+    else if (key == "COPEN") f.values.push_back(c.copen);
+    else if (key == "CSTATUS") f.values.push_back(static_cast<double>(c.cstatus));
+    else if (key == "CNAREA") f.values.push_back(c.cnarea);
+    else f.values.insert(f.values.end(), c.cfn.begin(), c.cfn.end());
+  }
+  return f;
+}
+
+}  // namespace
+
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
-                            std::span<const double> delta_t) {
+                            std::span<const double> delta_t, const ContactResults* contact) {
   OutputValues out;
+  if (contact)
+    for (const std::string key : kContactKeys)
+      if (key_due(output, due, key)) out.fields.push_back(contact_field(am, output, key, *contact));
   PointCache cache(am, u, nlgeom, delta_t);
   for (const std::string key : kFieldKeys) {
     if (!key_due(output, due, key)) continue;

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "analysis_model.hpp"
+#include "contact_results.hpp"
 #include "results_frame.hpp"
 
 namespace inpact::solver {
@@ -120,9 +121,13 @@ struct OutputValues {
 /// Computes the fields and print tables `due` asks for at displacement u with reactions `rf`
 /// (full DOF vectors); `delta_t` the nodal temperature change, as for the assembly. Element
 /// point values are computed only for the elements a due request covers.
+/// `contact`: the contact values of the increment (null without contact), written as the
+/// NODAL contact fields CPRESS, COPEN, CSTATUS, CNAREA and CFN (one location per slave node per
+/// pair, `pair` and `nodes` filled) for *CONTACT OUTPUT requests (SLAVE/MASTER restrict the
+/// pairs; CSTRESS asks for CPRESS, CDISP for COPEN; PRESELECT gives CPRESS and COPEN, ALL all five).
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
-                            std::span<const double> delta_t);
+                            std::span<const double> delta_t, const ContactResults* contact = nullptr);
 
 /// Von Mises equivalent stress of Abaqus-ordered components 11 22 33 12 13 23:
 /// q = sqrt(½[(s11−s22)² + (s22−s33)² + (s33−s11)²] + 3(s12² + s13² + s23²)).

@@ -62,14 +62,28 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
   LinearSolver* solver = &ctx.cholmod;
   double increment_force = 0.0;
 
+  if (ctx.contact) ctx.contact->begin_attempt(state.contact);
   for (int k = 0;; ++k) {
+    // Contact search, projection and status at u_k (may resize the system: multipliers).
+    ContactIteration contact;
+    if (ctx.contact) {
+      contact = ctx.contact->update(state.u, state.contact, ctx.assembler);
+      if (contact.status_changes > 0) ++out.severe_iterations;
+    }
+    const std::size_t n_sys = static_cast<std::size_t>(ctx.assembler.n_equations());
+    r.assign(n_sys, 0.0);
+    du.resize(n_sys, 0.0);
     AssemblyRequest request;
-    request.tangent = true;
+    // From the second pass on the residual alone decides convergence (a linear step converges
+    // there); the tangent is assembled below only when another solve follows.
+    request.tangent = k == 0 || ctx.contact != nullptr;
     request.nlgeom = ctx.nlgeom;
     request.delta_t = delta_t;
     const AssemblyResult asm_result = ctx.assembler.assemble(state.u, request, state.f_int);
+    if (ctx.contact) ctx.contact->assemble(state.contact, state.f_int, ctx.assembler);
     for (std::size_t d = 0; d < n; ++d) r_full[d] = state.f_ext[d] - state.f_int[d];
-    ctx.assembler.reduce(r_full, r);
+    ctx.assembler.reduce(r_full, std::span(r).first(n_eq));
+    if (ctx.contact) ctx.contact->constraint_residual(std::span(r).subspan(n_eq));
 
     const auto [max_r, worst] = largest_residual(dofs, r);
     const double q_now = average_force(asm_result, state.f_ext);
@@ -85,7 +99,9 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     out.average_force = increment_force;
     const double q = (ctx.force_sum + increment_force) / (ctx.force_count + 1);
     double max_correction = 0.0;
-    if (k > 0) max_correction = *std::max_element(du.begin(), du.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    if (k > 0 && n_eq > 0)
+      max_correction = *std::max_element(du.begin(), du.begin() + static_cast<std::ptrdiff_t>(n_eq),
+                                         [](double a, double b) { return std::abs(a) < std::abs(b); });
     ctx.observer.iteration({ctx.step_number, ctx.increment, ctx.attempt, k, max_r, q > 0 ? max_r / q : 0.0,
                             std::abs(max_correction), worst});
 
@@ -99,22 +115,31 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
                                 asm_result.min_jacobian);
       return out;
     }
+    if (!contact.failure.empty()) {
+      out.failure = contact.failure;
+      return out;
+    }
     // Convergence (from the second pass on, a correction exists to judge).
     double max_du_inc = 0.0;
     for (std::size_t d = 0; d < n; ++d) max_du_inc = std::max(max_du_inc, std::abs(state.u[d] - u_start[d]));
+    // Contact: no status change in this iteration, and the closed direct nodes on the surface
+    // (|g| ≤ C_ε max|Δu|, C_ε = 1e-3: Abaqus's contact compatibility tolerance, *CONTROLS FIELD).
+    const bool contact_ok = !contact.blocks_convergence && contact.max_gap_error <= 1e-3 * max_du_inc + 1e-14;
     const bool no_force = q <= 0.0;  // nothing loads the model: equilibrium is exact or nothing
-    if (no_force || max_r <= ctx.controls.linear_tolerance * q) {
+    if (contact_ok && (no_force || max_r <= ctx.controls.linear_tolerance * q)) {
       out.converged = true;  // Abaqus accepts a residual this small without the correction test
       return out;
     }
-    if (k > 0 && max_r <= ctx.controls.residual_tolerance * q &&
+    if (contact_ok && k > 0 && max_r <= ctx.controls.residual_tolerance * q &&
         std::abs(max_correction) <= ctx.controls.correction_tolerance * max_du_inc) {
       out.converged = true;
       return out;
     }
-    history.push_back(max_r);
-    if (k >= ctx.controls.max_iterations) {
-      out.failure = fmt::format("no convergence in {} iterations", k);
+    // Severe discontinuity iterations count apart (Abaqus: I_S = 50 of them, I_C equilibrium
+    // ones) and stay out of the divergence check.
+    if (contact.status_changes == 0) history.push_back(max_r);
+    if (k - out.severe_iterations >= ctx.controls.max_iterations || out.severe_iterations > kMaxSevereIterations) {
+      out.failure = fmt::format("no convergence in {} iterations ({} with contact status changes)", k, out.severe_iterations);
       return out;
     }
     const std::size_t h = history.size();
@@ -124,7 +149,13 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
       return out;
     }
 
-    // Solve K Δu = r; a tangent that is not positive definite goes to UMFPACK.
+    // Solve K Δu = r; a tangent that is not positive definite (or a saddle-point system with
+    // contact multipliers) goes to UMFPACK.
+    if (!request.tangent) {  // same u: f_int comes out the same, now with K(u_k)
+      request.tangent = true;
+      ctx.assembler.assemble(state.u, request, state.f_int);
+    }
+    if (n_sys > n_eq) solver = &ctx.umfpack;
     FactorStatus status = solver->factorize(ctx.assembler.tangent());
     if (status == FactorStatus::NotPositiveDefinite) {
       solver = &ctx.umfpack;
@@ -145,6 +176,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
       if (eq >= 0) state.u[d] += du[eq];
     }
     dofs.update_dependent(state.u);
+    if (ctx.contact) ctx.contact->apply_correction(std::span<const double>(du).subspan(n_eq), state.contact);
   }
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "assembler.hpp"
+#include "contact_problem.hpp"
 #include "linear/linear_solver.hpp"
 #include "observer.hpp"
 #include "solution_controls.hpp"
@@ -21,11 +22,13 @@ struct IncrementState {
   std::vector<double> u;          ///< full DOF vector
   std::vector<double> f_int;      ///< internal forces at u
   std::vector<double> f_ext;      ///< external forces at the increment's time
+  ContactState contact;           ///< multipliers and contact status (empty without contact)
 };
 
 struct NewtonOutcome {
   bool converged = false;
-  int iterations = 0;
+  int iterations = 0;          ///< all iterations, severe discontinuity ones included
+  int severe_iterations = 0;   ///< iterations in which a contact status changed
   double average_force = 0.0;  ///< q of the increment (largest over its iterations), for the time average
   double max_residual = 0.0;
   std::int64_t worst_dof = -1;
@@ -46,6 +49,7 @@ struct NewtonContext {
   double force_sum;
   int force_count;
   int step_number, increment, attempt;
+  ContactProblem* contact = nullptr;  ///< the step's contact pairs, or null
 };
 
 /// Runs the iterations from `state.u` (the converged state at the increment start) to step

@@ -76,7 +76,141 @@ Assembled assemble(ElementFamily family, int dim, const Mat6& D, bool nlgeom, co
   return r;
 }
 
+// C3D8 with full 2×2×2 integration on fixed-size matrices: the formulas of
+// continuum_kinematics.hpp (small strain and total Lagrangian) without a heap allocation per
+// element — the structured-cube benchmark spends most of its assembly here.
+using Mat83 = Eigen::Matrix<double, 8, 3>;
+using Vec24 = Eigen::Matrix<double, 24, 1>;
+using Mat24 = Eigen::Matrix<double, 24, 24>;
+using Mat6x24 = Eigen::Matrix<double, 6, 24>;
+
+constexpr int kVi[6] = {0, 1, 2, 0, 0, 1};
+constexpr int kVj[6] = {0, 1, 2, 1, 2, 2};
+
+struct Hex8Rule {
+  std::array<Mat83, 8> dN;  ///< ∂N_a/∂ξ_j at each point
+  std::array<std::array<double, 8>, 8> N;
+  std::array<double, 8> weight{};
+};
+
+bool is_full_hex8(const model::ElementTypeInfo& type) {
+  return type.family == ElementFamily::Solid3D && type.dim == 3 && type.n_nodes == 8 &&
+         type.integration == Integration::Full;  // 2×2×2 Gauss points (quadrature.hpp)
+}
+
+const Hex8Rule& hex8_rule(const model::ElementTypeInfo& type) {
+  static const Hex8Rule rule = [&type] {
+    Hex8Rule r;
+    const std::vector<QuadraturePoint> q = element_rule(type);
+    if (q.size() != 8) throw std::logic_error("hex8_rule: C3D8 needs the 2x2x2 rule");
+    for (std::size_t p = 0; p < 8; ++p) {
+      const ShapeValues sv = evaluate_shape(Shape::Hex8, q[p].xi);
+      for (int a = 0; a < 8; ++a) {
+        r.N[p][a] = sv.N[a];
+        for (int j = 0; j < 3; ++j) r.dN[p](a, j) = sv.dN[a][j];
+      }
+      r.weight[p] = q[p].weight;
+    }
+    return r;
+  }();
+  return rule;
+}
+
+void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                  const ElasticConstants& material, const ElementRequest& request, std::span<const double> delta_t,
+                  ElementSystem& sys) {
+  const Hex8Rule& rule = hex8_rule(type);
+  const Mat6 D = elasticity_matrix(ElementFamily::Solid3D, material);
+  Mat83 X;
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i) X(a, i) = coords[a][i];
+  sys.n_dof = 24;
+  sys.local_iterations = 0;
+  sys.points.clear();
+
+  std::array<Mat83, 8> grad;
+  std::array<double, 8> dv{};
+  sys.min_jacobian = std::numeric_limits<double>::infinity();
+  for (int p = 0; p < 8; ++p) {
+    const Eigen::Matrix3d J = X.transpose() * rule.dN[p];
+    const double det = J.determinant();
+    sys.min_jacobian = std::min(sys.min_jacobian, det);
+    grad[p] = det != 0.0 ? Mat83(rule.dN[p] * J.inverse()) : Mat83::Zero();
+    dv[p] = rule.weight[p] * det;
+  }
+  if (sys.min_jacobian <= 0.0) {  // the caller reports the distorted element
+    sys.internal_force.clear();
+    sys.stiffness.clear();
+    return;
+  }
+
+  Vec24 f = Vec24::Zero();
+  Mat24 K;
+  if (request.stiffness) K.setZero();
+  for (int p = 0; p < 8; ++p) {
+    const Mat83& g = grad[p];
+    // State: F = I + ∇₀u, strain, σ = D(ε − ε_th).
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) H.row(i) += u[a * 3 + i] * g.row(a);
+    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
+    Vec6 strain;
+    if (request.nlgeom) {
+      const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+      strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
+    } else {
+      strain << H(0, 0), H(1, 1), H(2, 2), H(0, 1) + H(1, 0), H(0, 2) + H(2, 0), H(1, 2) + H(2, 1);
+    }
+    Vec6 eth = Vec6::Zero();
+    if (!delta_t.empty()) {
+      double dt = 0.0;
+      for (int a = 0; a < 8; ++a) dt += rule.N[p][a] * delta_t[a];
+      eth.head<3>().setConstant(material.expansion * dt);
+    }
+    const Vec6 stress = D * (strain - eth);
+    // B(k, a·3 + i) = ∂E_k/∂u_ai (F = I for small strain).
+    const Eigen::Matrix3d Fb = request.nlgeom ? F : Eigen::Matrix3d::Identity();
+    Mat6x24 B;
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) {
+        auto col = B.col(a * 3 + i);
+        for (int k = 0; k < 3; ++k) col(k) = Fb(i, k) * g(a, k);
+        for (int k = 3; k < 6; ++k) col(k) = Fb(i, kVi[k]) * g(a, kVj[k]) + Fb(i, kVj[k]) * g(a, kVi[k]);
+      }
+    f.noalias() += (B.transpose() * stress) * dv[p];
+    if (!request.stiffness) continue;
+    const Mat6x24 DB = (D * dv[p]) * B;
+    K.noalias() += B.transpose() * DB;
+    if (!request.nlgeom) continue;
+    Eigen::Matrix3d S;  // geometric (initial-stress) stiffness
+    S << stress(0), stress(3), stress(4), stress(3), stress(1), stress(5), stress(4), stress(5), stress(2);
+    const Eigen::Matrix<double, 8, 8> G = g * S * g.transpose() * dv[p];
+    for (int a = 0; a < 8; ++a)
+      for (int b = 0; b < 8; ++b)
+        for (int i = 0; i < 3; ++i) K(a * 3 + i, b * 3 + i) += G(a, b);
+  }
+  if (request.internal_force) sys.internal_force.assign(f.data(), f.data() + 24);
+  else sys.internal_force.clear();
+  if (request.stiffness) {
+    sys.stiffness.resize(24 * 24);
+    Eigen::Map<Eigen::Matrix<double, 24, 24, Eigen::RowMajor>>(sys.stiffness.data()) = K;
+  } else {
+    sys.stiffness.clear();
+  }
+}
+
 }  // namespace
+
+void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                     const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
+                     std::span<const double> delta_t, ElementSystem& out) {
+  if (!request.point_output && is_full_hex8(type) && coords.size() == 8 && u.size() == 24 &&
+      (delta_t.empty() || delta_t.size() == 8)) {
+    compute_hex8(type, coords, u, material, request, delta_t, out);
+    return;
+  }
+  out = compute_element(type, coords, u, material, section, request, delta_t);
+}
 
 ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
                               std::span<const double> u, const ElasticConstants& material,
@@ -88,6 +222,12 @@ ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<cons
   if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n_dof ||
       (!delta_t.empty() && static_cast<int>(delta_t.size()) != n))
     throw std::invalid_argument("compute_element: coordinate, displacement or temperature count mismatch");
+
+  if (!request.point_output && is_full_hex8(type)) {
+    ElementSystem fast;
+    compute_hex8(type, coords, u, material, request, delta_t, fast);
+    return fast;
+  }
 
   const ElementFamily family = type.family;
   const Shape shape = element_shape(type);

@@ -84,4 +84,10 @@ ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<cons
                               const SectionData& section, const ElementRequest& request,
                               std::span<const double> delta_t = {});
 
+/// The same, written into `out`, whose vectors keep their capacity from one call to the next (the
+/// assembler's per-element path: no allocation per element once the buffers have grown).
+void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                     const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
+                     std::span<const double> delta_t, ElementSystem& out);
+
 }  // namespace inpact::solver::elements

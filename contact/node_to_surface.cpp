@@ -1,0 +1,72 @@
+#include "node_to_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace inpact::contact {
+
+namespace {
+
+/// Median facet size of a surface on coordinates x (edge length in 2D, √area in 3D).
+double typical_facet_size(const ContactSurface& s, std::span<const Vec3> x) {
+  std::vector<double> sizes;
+  for (std::size_t f = 0; f < s.facets().size(); ++f) {
+    const double a = s.facet_area(f, x);
+    // 2D facet areas carry the thickness or 2πr: divide it back out at the facet's first node.
+    const double factor = s.dim() == 2 ? s.area_factor(x[s.facets()[f].nodes[0]]) : 1.0;
+    sizes.push_back(s.dim() == 2 ? (factor > 0 ? a / factor : 0.0) : std::sqrt(a));
+  }
+  if (sizes.empty()) return 0.0;
+  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+  return sizes[sizes.size() / 2];
+}
+
+}  // namespace
+
+NodeToSurfacePair::NodeToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim,
+                                     double out_of_plane_thickness)
+    : dim_(dim) {
+  SurfaceOptions options;
+  options.out_of_plane_thickness = out_of_plane_thickness;
+  slave_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.slave), options);
+  master_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.master), options);
+  const auto x = reference_coordinates(model.mesh.nodes);
+  // A facet size: slave nodes farther than this from the master are open without doubt.
+  radius_ = std::max(typical_facet_size(master_, x), typical_facet_size(slave_, x));
+  if (!(radius_ > 0.0)) radius_ = 1.0;
+}
+
+void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) {
+  if (!built_ || search_.needs_rebuild(master_.facets(), x)) {
+    SearchOptions o;
+    o.radius = radius_;
+    o.margin = 0.5 * radius_;
+    search_.build(master_.facets(), x, o);
+    built_ = true;
+  }
+  const auto areas = slave_.nodal_areas(x);
+  const auto nodes = slave_.nodes();
+  out.resize(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    SlaveKinematics& k = out[i];
+    k.node = nodes[i];
+    k.area = areas[i];
+    candidates_.clear();
+    search_.query(x[nodes[i]], candidates_);
+    k.projection = closest_projection(master_.facets(), candidates_, x, x[nodes[i]]);
+    k.found = k.projection.facet >= 0;
+  }
+}
+
+void NodeToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {
+  const Facet& f = master_.facets()[static_cast<std::size_t>(k.projection.facet)];
+  k.lin = linearize_gap(f, x, x[k.node], k.projection, dim_, k.node);
+  // At a facet edge or vertex the gap is a distance to a point, whose curvature 1/d blows up
+  // as the slave node reaches the surface (a closed node sits there): within 1e-3 of a facet
+  // size of it, the corner is taken as flat (no curvature term), as away from corners.
+  const bool corner_contact = k.projection.region != ProjectionRegion::Interior && k.projection.distance < 1e-3 * radius_;
+  if (!finite_sliding || corner_contact) std::fill(k.lin.hessian.begin(), k.lin.hessian.end(), 0.0);
+}
+
+}  // namespace inpact::contact

@@ -1,0 +1,430 @@
+#include "contact_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "analysis_error.hpp"
+#include "contact/node_to_surface.hpp"
+#include "contact/normal_behavior.hpp"
+#include "contact/pressure_overclosure.hpp"
+
+namespace inpact::solver {
+
+namespace {
+
+using model::EnforcementMethod;
+using model::PressureOverclosure;
+
+/// A node changing status more often than this within one increment attempt is chattering:
+/// the attempt is cut back (inpact's choice; Abaqus does not publish its rule).
+constexpr int kMaxStatusChanges = 5;
+
+/// Every contact pair of the model in pair-table order (model pairs, then each step's), with
+/// the step it enters (0 for model pairs).
+struct PairEntry {
+  const model::ContactPair* pair;
+  std::size_t first_step;
+};
+
+std::vector<PairEntry> pair_table(const model::Model& m) {
+  std::vector<PairEntry> out;
+  for (const auto& p : m.contact_pairs) out.push_back({&p, 0});
+  for (std::size_t s = 0; s < m.steps.size(); ++s)
+    for (const auto& p : m.steps[s].contact_pairs) out.push_back({&p, s});
+  return out;
+}
+
+/// The *CONTACT CONTROLS in force for `pair` in step `step`: the pair's own over the global
+/// ones, carried over from earlier steps until RESET.
+const model::ContactControls* controls_for(const model::Model& m, std::size_t step, const model::ContactPair& pair) {
+  const model::ContactControls *global = nullptr, *specific = nullptr;
+  for (std::size_t s = 0; s <= step && s < m.steps.size(); ++s)
+    for (const auto& c : m.steps[s].contact_controls) {
+      const bool all = c.master.empty() && c.slave.empty();
+      const bool mine = c.master == pair.master && c.slave == pair.slave;
+      if (c.reset) {
+        if (all) global = specific = nullptr;
+        if (mine) specific = nullptr;
+      }
+      if (all) global = &c;
+      else if (mine) specific = &c;
+    }
+  return specific ? specific : global;
+}
+
+const model::SurfaceInteraction* interaction_of(const model::Model& m, const model::ContactPair& p) {
+  auto it = m.interactions.find(p.interaction);
+  return it == m.interactions.end() ? nullptr : &it->second;
+}
+
+[[noreturn]] void refuse(const model::Model& m, const model::SourceLoc& loc, const std::string& keyword,
+                         const std::string& what) {
+  throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(loc), keyword, what));
+}
+
+/// Adds k (n × n, row-major, on global DOFs `dofs`) into the reduced tangent's upper triangle.
+void add_matrix(Assembler& assembler, std::span<const std::int64_t> dofs, std::span<const double> k) {
+  const DofMap& map = assembler.dofs();
+  SparseMatrix& t = assembler.tangent();
+  const std::size_t n = dofs.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (const auto& ma : map.masters(dofs[a])) {
+      const std::int64_t ea = map.equation(ma.dof);
+      if (ea < 0) continue;
+      for (std::size_t b = 0; b < n; ++b) {
+        const double kab = k[a * n + b];
+        if (kab == 0.0) continue;
+        for (const auto& mb : map.masters(dofs[b])) {
+          const std::int64_t eb = map.equation(mb.dof);
+          if (eb < ea) continue;
+          const std::int64_t pos = t.find(ea, eb);
+          if (pos >= 0) t.values[pos] += ma.weight * mb.weight * kab;
+        }
+      }
+    }
+}
+
+}  // namespace
+
+/// One contact pair in force: its geometry, enforcement and the last kinematics.
+struct ContactProblem::Pair {
+  std::int32_t row = 0;
+  const model::ContactPair* deck = nullptr;
+  std::unique_ptr<contact::NodeToSurfacePair> geometry;
+  contact::ResolvedNormalBehavior behavior;
+  std::optional<contact::PressureOverclosure> law;  ///< unset: direct hard contact
+  bool direct = false, augmented = false, softened = false, finite_sliding = true;
+  double ke = 0.0, l_char = 0.0, tolerance = 0.0, hcrit = 0.0;
+  std::vector<contact::SlaveKinematics> kin;
+  std::vector<char> contributes;           ///< per slave node, at the last update
+  std::vector<std::int64_t> multiplier;    ///< per slave node: multiplier index or −1
+
+  double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
+  /// Penalty-type pressure of slave i (λ: its augmented-Lagrange multiplier).
+  contact::PressureValue pressure(std::size_t i, double lambda) const {
+    if (!kin[i].found) return {};
+    return law->eval(-kin[i].projection.gap, augmented ? lambda : 0.0);
+  }
+};
+
+// --- Setup -------------------------------------------------------------------------------
+
+
+ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) : am_(am) {
+  const model::Model& m = *am.model;
+  const auto table = pair_table(m);
+  n_pairs_total_ = table.size();
+  for (std::size_t row = 0; row < table.size(); ++row) {
+    if (table[row].first_step > step_index) continue;
+    const model::ContactPair& deck = *table[row].pair;
+    const std::string keyword = "*CONTACT PAIR";
+    auto p = std::make_unique<Pair>();
+    p->row = static_cast<std::int32_t>(row);
+    p->deck = &deck;
+    const model::SurfaceInteraction* inter = interaction_of(m, deck);
+    contact::NormalBehaviorOptions options;
+    options.controls = controls_for(m, step_index, deck);
+    p->behavior = contact::resolve_normal_behavior(inter, deck.type, deck.small_sliding, false, options);
+    p->finite_sliding = !deck.small_sliding;
+    p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, deck, am.dim,
+                                                               inter ? inter->out_of_plane_thickness : 1.0);
+
+    // k_e and the characteristic length from the slave surface (the master when the slave is
+    // node based), contact/normal_behavior.cpp.
+    auto scales = contact::surface_scales(m, m.mesh.surfaces.at(deck.slave));
+    if (!scales) scales = contact::surface_scales(m, m.mesh.surfaces.at(deck.master));
+    p->ke = scales ? scales->element_stiffness : 0.0;
+    p->l_char = scales ? scales->characteristic_length : p->geometry->search_radius();
+
+    const auto& b = p->behavior;
+    p->softened = b.law != PressureOverclosure::Hard;
+    p->direct = b.method == EnforcementMethod::Direct && !p->softened;
+    p->augmented = b.method == EnforcementMethod::AugmentedLagrange;
+    const std::string pair_name = deck.slave + "/" + deck.master;
+    if (!p->direct) {
+      if (!p->softened && !b.given_stiffness && !scales)
+        refuse(m, deck.loc, keyword, fmt::format("pair {}: the default penalty stiffness needs an element-based surface "
+                                                 "with an elastic material; give the stiffness on *SURFACE BEHAVIOR", pair_name));
+      p->law = contact::PressureOverclosure::from(b, p->ke, p->l_char);
+      // Table 38.1.21: Lagrange multipliers above 1000 k_e — not implemented for these methods.
+      const double slope = p->law->max_slope(0.0);
+      if (scales && slope > 1000.0 * p->ke)
+        refuse(m, b.deck.loc.line ? b.deck.loc : deck.loc, "*SURFACE BEHAVIOR",
+               fmt::format("pair {}: the contact stiffness {:.4g} exceeds 1000 k_e = {:.4g}, where Abaqus enforces the "
+                           "constraint with Lagrange multipliers (table 38.1.21); inpact does not do that for {} contact "
+                           "yet — lower the stiffness or use hard contact with the direct method", pair_name, slope,
+                           1000.0 * p->ke, p->softened ? "softened" : "penalty"));
+    }
+    if (p->augmented) p->tolerance = *contact::penetration_tolerance(b, p->l_char);
+    p->hcrit = p->softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * p->l_char);
+    pairs_.push_back(std::move(p));
+  }
+}
+
+ContactProblem::~ContactProblem() = default;
+
+bool ContactProblem::empty() const { return pairs_.empty(); }
+
+bool ContactProblem::has_augmented_lagrange() const {
+  return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->augmented; });
+}
+
+std::vector<std::string> ContactProblem::describe() const {
+  std::vector<std::string> out;
+  for (const auto& p : pairs_) {
+    std::string s = fmt::format("contact pair {}/{}: node to surface, {}", p->deck->slave, p->deck->master,
+                                p->law ? p->law->describe() : std::string("direct hard contact (Lagrange multipliers)"));
+    s += fmt::format("; k_e = {:.4g}, characteristic length {:.4g}", p->ke, p->l_char);
+    if (p->augmented) s += fmt::format(", augmented Lagrange, penetration tolerance {:.4g}", p->tolerance);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void check_contact_supported(const model::Model& m) {
+  if (m.general_contact.defined)
+    refuse(m, m.general_contact.loc, "*CONTACT", "general contact is not analysed by this version of inpact yet; "
+                                                "define the interactions with *CONTACT PAIR, TYPE=NODE TO SURFACE");
+  if (!m.clearances.empty())
+    refuse(m, m.clearances.front().loc, "*CLEARANCE", "initial clearances are not analysed by this version of inpact yet");
+  for (const PairEntry& e : pair_table(m)) {
+    const model::ContactPair& p = *e.pair;
+    const std::string kw = "*CONTACT PAIR";
+    if (p.type == model::ContactDiscretization::SurfaceToSurface)
+      refuse(m, p.loc, kw, "TYPE=SURFACE TO SURFACE is not analysed by this version of inpact yet; use TYPE=NODE TO SURFACE");
+    if (p.slave == p.master) refuse(m, p.loc, kw, fmt::format("self-contact of {} is not analysed by this version of inpact yet", p.slave));
+    if (p.tied) refuse(m, p.loc, kw, "TIED contact is not analysed by this version of inpact yet");
+    if (p.adjust_distance || !p.adjust_nset.empty()) refuse(m, p.loc, kw, "ADJUST is not analysed by this version of inpact yet");
+    if (m.mesh.surfaces.at(p.master).kind != model::Surface::Kind::Element)
+      refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
+    const model::SurfaceInteraction* inter = interaction_of(m, p);
+    if (!inter) continue;
+    if (inter->friction && (inter->friction->mu > 0.0 || inter->friction->rough))
+      refuse(m, inter->friction->loc, "*FRICTION",
+             fmt::format("friction is not analysed by this version of inpact yet (interaction {}: {}); the contact would "
+                         "not be frictionless, so the deck is refused rather than run without friction",
+                         inter->name, inter->friction->rough ? "ROUGH" : fmt::format("μ = {:g}", inter->friction->mu)));
+    if (inter->behavior) {
+      const auto& b = *inter->behavior;
+      if (b.no_separation) refuse(m, b.loc, "*SURFACE BEHAVIOR", "NO SEPARATION is not analysed by this version of inpact yet");
+      if (b.pressure_overclosure == PressureOverclosure::Tied)
+        refuse(m, b.loc, "*SURFACE BEHAVIOR", "PRESSURE-OVERCLOSURE=TIED is not analysed by this version of inpact yet");
+    }
+  }
+}
+
+// --- Iterations --------------------------------------------------------------------------
+
+void ContactProblem::begin_attempt(ContactState& state) const {
+  state.pairs.resize(n_pairs_total_);
+  for (const auto& p : pairs_) {
+    auto& s = state.pairs[p->row];
+    s.resize(p->geometry->slave().nodes().size());
+    for (SlaveState& n : s) n.flips = 0;
+  }
+}
+
+void ContactProblem::evaluate(std::span<const double> u) {
+  const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
+  for (auto& p : pairs_) p->geometry->update(x, p->kin);
+}
+
+ContactIteration ContactProblem::update(std::span<const double> u, ContactState& state, Assembler& assembler) {
+  evaluate(u);
+  const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
+  const auto& labels = am_.model->mesh.nodes.labels;
+  ContactIteration it;
+  std::vector<std::int64_t> signature;
+  multipliers_.clear();
+  for (std::size_t pi = 0; pi < pairs_.size(); ++pi) {
+    Pair& p = *pairs_[pi];
+    auto& slaves = state.pairs[p.row];
+    const std::size_t n = p.kin.size();
+    p.contributes.assign(n, 0);
+    p.multiplier.assign(n, -1);
+    // Direct: a closed node opens when its pressure −λ turns tensile (beyond round-off of the
+    // pair's pressures); an open one closes when it penetrates (or touches within round-off).
+    double p_scale = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (slaves[i].closed) p_scale = std::max(p_scale, std::abs(slaves[i].lambda));
+    const double open_below = -1e-8 * p_scale, close_below = 1e-9 * p.l_char;
+    for (std::size_t i = 0; i < n; ++i) {
+      SlaveState& s = slaves[i];
+      const double g = p.gap(i);
+      bool closed = false;
+      if (p.direct) {
+        closed = p.kin[i].found && (s.closed ? -s.lambda >= open_below : g < close_below);
+        if (!closed) s.lambda = 0.0;
+        p.contributes[i] = closed;
+        if (closed) it.max_gap_error = std::max(it.max_gap_error, std::abs(g));
+      } else {
+        const auto pv = p.pressure(i, s.lambda);
+        closed = pv.p > 0.0;
+        p.contributes[i] = pv.active;
+      }
+      if (closed != s.closed) {
+        ++it.status_changes;
+        if (p.direct) it.blocks_convergence = true;
+        if (++s.flips > kMaxStatusChanges && it.failure.empty())
+          it.failure = fmt::format("contact chattering: slave node {} of pair {}/{} changed status {} times in this "
+                                   "increment", labels[p.kin[i].node], p.deck->slave, p.deck->master, s.flips);
+      }
+      s.closed = closed;
+      if (p.kin[i].found && -g > p.hcrit && it.failure.empty())
+        it.failure = fmt::format("slave node {} of pair {}/{} penetrates {:.4g}, more than HCRIT = {:.4g}",
+                                 labels[p.kin[i].node], p.deck->slave, p.deck->master, -g, p.hcrit);
+      if (!p.contributes[i]) continue;
+      p.geometry->linearize(x, p.kin[i], p.finite_sliding);
+      signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i),
+                                         p.kin[i].projection.facet, p.direct ? 1 : 0});
+      if (p.direct) {
+        p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
+        multipliers_.push_back({pi, i});
+      }
+    }
+  }
+  if (signature != signature_) {
+    ExtraCouplings extra;
+    for (const auto& p : pairs_)
+      for (std::size_t i = 0; i < p->kin.size(); ++i) {
+        if (!p->contributes[i]) continue;
+        std::vector<std::int64_t> dofs;
+        for (std::int32_t node : p->kin[i].lin.nodes)
+          for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * am_.dim + c);
+        if (p->multiplier[i] >= 0) extra.multiplier_dofs.push_back(dofs);
+        extra.dof_blocks.push_back(std::move(dofs));
+      }
+    assembler.set_extra_couplings(extra);
+    signature_ = std::move(signature);
+  }
+  return it;
+}
+
+void ContactProblem::assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler) {
+  const std::int64_t n_eq = assembler.dofs().n_equations();
+  std::vector<std::int64_t> dofs;
+  std::vector<double> k;
+  for (const auto& p : pairs_) {
+    const auto& slaves = state.pairs[p->row];
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      if (!p->contributes[i]) continue;
+      const contact::GapLinearization& lin = p->kin[i].lin;
+      const double area = p->kin[i].area;
+      const std::size_t n = static_cast<std::size_t>(lin.n_dof);
+      dofs.clear();
+      for (std::int32_t node : lin.nodes)
+        for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * am_.dim + c);
+      k.assign(n * n, 0.0);
+      // Force f_c = s ∇g with s = λA (direct) or −pA (penalty-type); tangent s ∇²g (+ A p' ∇g∇gᵀ).
+      double s = 0.0, stiff = 0.0;
+      if (p->direct) {
+        s = slaves[i].lambda * area;
+      } else {
+        const auto pv = p->pressure(i, slaves[i].lambda);
+        s = -pv.p * area;
+        stiff = pv.dp * area;
+      }
+      for (std::size_t a = 0; a < n; ++a) {
+        f_int[dofs[a]] += s * lin.gradient[a];
+        for (std::size_t b = 0; b < n; ++b)
+          k[a * n + b] = stiff * lin.gradient[a] * lin.gradient[b] + s * lin.hessian[a * n + b];
+      }
+      add_matrix(assembler, dofs, k);
+      if (p->multiplier[i] < 0) continue;
+      // Constraint column A ∇g at the multiplier's equation (upper triangle: DOF rows < it).
+      const DofMap& map = assembler.dofs();
+      SparseMatrix& t = assembler.tangent();
+      const std::int64_t em = n_eq + p->multiplier[i];
+      for (std::size_t a = 0; a < n; ++a)
+        for (const auto& ma : map.masters(dofs[a])) {
+          const std::int64_t ea = map.equation(ma.dof);
+          if (ea < 0) continue;
+          const std::int64_t pos = t.find(ea, em);
+          if (pos >= 0) t.values[pos] += ma.weight * area * lin.gradient[a];
+        }
+    }
+  }
+}
+
+void ContactProblem::constraint_residual(std::span<double> rows) const {
+  for (std::size_t m = 0; m < multipliers_.size(); ++m) {
+    const auto [pi, i] = multipliers_[m];
+    rows[m] = -pairs_[pi]->kin[i].area * pairs_[pi]->gap(i);
+  }
+}
+
+void ContactProblem::apply_correction(std::span<const double> rows, ContactState& state) const {
+  for (std::size_t m = 0; m < multipliers_.size(); ++m) {
+    const auto [pi, i] = multipliers_[m];
+    state.pairs[pairs_[pi]->row][i].lambda += rows[m];
+  }
+}
+
+// --- Augmentations -----------------------------------------------------------------------
+
+AugmentationCheck ContactProblem::check_augmentation(const ContactState& state) const {
+  AugmentationCheck c;
+  double worst_ratio = 0.0;
+  for (const auto& p : pairs_) {
+    if (!p->augmented) continue;
+    const auto& slaves = state.pairs[p->row];
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      if (p->pressure(i, slaves[i].lambda).p <= 0.0) continue;
+      // Penetration past the zero-pressure clearance: h − h_0 = c0 − g.
+      const double pen = -p->gap(i) - p->law->h_zero();
+      if (pen > p->tolerance) c.converged = false;
+      if (pen / p->tolerance > worst_ratio) {
+        worst_ratio = pen / p->tolerance;
+        c.max_penetration = pen;
+        c.tolerance = p->tolerance;
+        c.node = p->kin[i].node;
+      }
+    }
+  }
+  return c;
+}
+
+void ContactProblem::augment(ContactState& state) const {
+  for (const auto& p : pairs_) {
+    if (!p->augmented) continue;
+    auto& slaves = state.pairs[p->row];
+    for (std::size_t i = 0; i < p->kin.size(); ++i) slaves[i].lambda = p->pressure(i, slaves[i].lambda).p;
+  }
+}
+
+// --- Output ------------------------------------------------------------------------------
+
+ContactResults ContactProblem::results(std::span<const double> u, const ContactState& state) {
+  evaluate(u);
+  ContactResults out;
+  for (const auto& p : pairs_) {
+    const auto& slaves = state.pairs[p->row];
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      const auto& k = p->kin[i];
+      ContactNodeResult r;
+      r.pair = p->row;
+      r.node = k.node;
+      r.copen = k.found ? k.projection.gap : std::numeric_limits<double>::quiet_NaN();
+      bool closed = false;
+      if (p->direct) {
+        closed = slaves[i].closed && k.found;
+        r.cpress = closed ? -slaves[i].lambda : 0.0;
+      } else {
+        r.cpress = p->pressure(i, slaves[i].lambda).p;
+        closed = r.cpress > 0.0;
+      }
+      r.cstatus = closed ? ContactStatus::Slipping : ContactStatus::Open;  // frictionless: closed = slipping
+      r.cnarea = closed ? k.area : 0.0;
+      if (k.found)
+        for (int c = 0; c < 3; ++c) r.cfn[c] = r.cpress * k.area * k.projection.normal[c];
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+}  // namespace inpact::solver

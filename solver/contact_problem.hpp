@@ -1,0 +1,114 @@
+#pragma once
+/// Contact in the analysis: node-to-surface contact pairs and the enforcement of their normal
+/// constraint, as resolve_normal_behavior() decides per pair (contact/normal_behavior.hpp):
+///
+///   penalty-type (linear or nonlinear penalty, softened laws), h = −g the overclosure:
+///     f_c = −A p(h) ∇g,                K_c = A p'(h) ∇g ∇gᵀ − A p ∇²g
+///   augmented Lagrange: the linear penalty law with a multiplier per slave node,
+///     p = ⟨λ + k (h + c0)⟩, and λ ← p after Newton converges while a penetration exceeds the
+///     tolerance (the augmentation loop, solver/analysis.cpp)
+///   direct (hard, Lagrange multipliers): one multiplier λ per closed slave node, pressure −λ,
+///     f_c = λ A ∇g, constraint A g = 0:
+///       [K + λ A ∇²g   A ∇g] [Δu]   [f_ext − f_int − λ A ∇g]
+///       [A ∇gᵀ           0 ] [Δλ] = [−A g                 ]
+///     a node closes when it penetrates and opens when its pressure turns tensile; each
+///     iteration in which a status changes is a severe discontinuity iteration.
+///
+/// ∇g = [n; −N_a n] over the slave node and its master facet's nodes; ∇²g only for finite
+/// sliding; A the slave node's area, held fixed in the linearisation. Multipliers take the
+/// equations after the DOF map's (Assembler::set_extra_couplings).
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis_model.hpp"
+#include "assembler.hpp"
+#include "contact_results.hpp"
+
+namespace inpact::solver {
+
+/// Severe discontinuity iterations allowed in one increment attempt (Abaqus's I_S default, 50:
+/// parser/KEYWORDS.md *CONTROLS; *CONTROLS does not change it in inpact yet).
+inline constexpr int kMaxSevereIterations = 50;
+
+/// What a slave node carries across iterations, increments and steps.
+struct SlaveState {
+  double lambda = 0.0;  ///< augmented Lagrange: λ (a pressure); direct: the multiplier (pressure −λ)
+  bool closed = false;  ///< contact status at the last update
+  int flips = 0;        ///< status changes in the current increment attempt
+};
+
+/// The contact part of the solution state, copied with it when an increment is retried.
+struct ContactState {
+  std::vector<std::vector<SlaveState>> pairs;  ///< by pair row; empty while the pair is not in force
+};
+
+/// What one update of the contact geometry and status found.
+struct ContactIteration {
+  int status_changes = 0;          ///< nodes that opened or closed
+  bool blocks_convergence = false; ///< a direct (multiplier) node changed status: a severe discontinuity
+  double max_gap_error = 0.0;      ///< largest |g| of a closed direct node (zero penetration is the goal)
+  std::string failure;             ///< chattering or HCRIT exceeded: the attempt must be cut back
+};
+
+/// The augmented-Lagrange check after Newton converged.
+struct AugmentationCheck {
+  bool converged = true;       ///< every penetration within its tolerance
+  double max_penetration = 0.0;
+  double tolerance = 0.0;      ///< of the pair holding the worst penetration
+  std::int64_t node = -1;      ///< its slave node row
+};
+
+/// Throws AnalysisError (citing the deck) for contact this version does not analyse: general
+/// contact, surface-to-surface pairs, friction, clearances, ADJUST, tied or no-separation
+/// contact, self-contact, node-based masters, and multipliers that softened laws or large
+/// penalty stiffnesses would need (table 38.1.21).
+void check_contact_supported(const model::Model& model);
+
+class ContactProblem {
+ public:
+  /// The pairs in force in step `step_index` (model pairs and those of steps up to it).
+  ContactProblem(const AnalysisModel& am, std::size_t step_index);
+  ~ContactProblem();
+  ContactProblem(const ContactProblem&) = delete;
+
+  bool empty() const;
+  bool has_augmented_lagrange() const;
+  /// One line per pair: surfaces, method, law and stiffness (for the step's messages).
+  std::vector<std::string> describe() const;
+
+  /// Sizes `state` for the pairs in force and resets the status-change counters.
+  void begin_attempt(ContactState& state) const;
+  /// Search, projection and contact status at displacement u; rebuilds the assembler's pattern
+  /// when the contact couplings or the multipliers changed.
+  ContactIteration update(std::span<const double> u, ContactState& state, Assembler& assembler);
+  /// Adds the contact forces to f_int (full DOF vector) and their tangent to the assembler's
+  /// matrix (after the elements), for the geometry of the last update.
+  void assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler);
+  /// The multiplier rows of the residual, r_m = −A g (`rows`: the equations after the DOF map's).
+  void constraint_residual(std::span<double> rows) const;
+  /// λ += Δλ from the solution's multiplier rows.
+  void apply_correction(std::span<const double> rows, ContactState& state) const;
+
+  /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
+  AugmentationCheck check_augmentation(const ContactState& state) const;
+  /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
+  void augment(ContactState& state) const;
+
+  /// Output values at displacement u (a converged state).
+  ContactResults results(std::span<const double> u, const ContactState& state);
+
+ private:
+  struct Pair;
+  void evaluate(std::span<const double> u);
+  const AnalysisModel& am_;
+  std::size_t n_pairs_total_ = 0;
+  std::vector<std::unique_ptr<Pair>> pairs_;
+  std::vector<std::int64_t> signature_;  ///< couplings the assembler's pattern holds
+  /// Multiplier m (equation n_eq + m): pair index into pairs_, slave index.
+  std::vector<std::pair<std::size_t, std::size_t>> multipliers_;
+};
+
+}  // namespace inpact::solver

@@ -1,0 +1,271 @@
+// End-to-end contact analyses: the decks of decks/contact/ run through solver::run_analysis and
+// checked against their hand references, each with its tolerance stated at the assertion.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "solver/analysis_error.hpp"
+#include "verification/verification_fixture.hpp"
+
+namespace inpact::test {
+namespace {
+
+using verification::Run;
+
+std::string contact_deck(const std::string& name) { return std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + name; }
+
+const solver::FieldData& contact_field(const solver::Frame& f, const std::string& key) {
+  const auto* fd = verification::field(f, key);
+  if (!fd) throw std::runtime_error("frame has no field " + key);
+  return *fd;
+}
+
+/// The patch-test reference: p = 10 on a 2 × 1 (unit thickness) top, uniaxial strain.
+constexpr double kP = 10.0, kWidth = 2.0;
+constexpr double kE = 1000.0, kNu = 0.3;
+constexpr double kM = kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu));  // constrained modulus
+constexpr double kSlaveElementHeight = 0.5, kSlaveFacet = 0.5;
+
+struct PatchFigures {
+  double max_cpress_error = 0.0;   ///< max |CPRESS − p| / p
+  double max_penetration = 0.0;    ///< max −COPEN over closed nodes
+  double min_penetration = 1e300;
+  int augmentations = 0, severe = 0, iterations = 0;
+};
+
+PatchFigures check_patch(const Run& r, const std::string& label) {
+  EXPECT_TRUE(r.outcome.completed) << r.outcome.message;
+  PatchFigures fig;
+  if (r.capture.frames.empty()) return fig;
+  const solver::Frame& f = r.capture.last();
+  const auto& cpress = contact_field(f, "CPRESS");
+  const auto& copen = contact_field(f, "COPEN");
+  const auto& cstatus = contact_field(f, "CSTATUS");
+  const auto& cfn = contact_field(f, "CFN");
+  EXPECT_EQ(cpress.nodes.size(), 5u);  // slave nodes of the 4-element edge
+  EXPECT_EQ(cpress.pair.size(), cpress.nodes.size());
+  double sum_cfn_y = 0.0;
+  for (std::size_t i = 0; i < cpress.nodes.size(); ++i) {
+    fig.max_cpress_error = std::max(fig.max_cpress_error, std::abs(cpress.values[i] - kP) / kP);
+    fig.max_penetration = std::max(fig.max_penetration, -copen.values[i]);
+    fig.min_penetration = std::min(fig.min_penetration, -copen.values[i]);
+    EXPECT_EQ(cstatus.values[i], 2.0) << "closed, frictionless: slipping";
+    sum_cfn_y += cfn.values[i * 3 + 1];
+  }
+  // Reactions balance the applied load to round-off: Σ RF_y = p · width; Σ RF_x = 0.
+  const auto rf = verification::sum_rf(r, f);
+  EXPECT_NEAR(rf[1], kP * kWidth, 1e-8 * kP * kWidth) << label;
+  EXPECT_NEAR(rf[0], 0.0, 1e-8 * kP * kWidth) << label;
+  // The normal contact forces on the slave carry the whole load.
+  EXPECT_NEAR(sum_cfn_y, kP * kWidth, 1e-6 * kP * kWidth) << label;
+  for (const auto& row : r.capture.rows) {
+    fig.augmentations += row.augmentations;
+    fig.severe += row.severe_discon_iters;
+    fig.iterations += row.total_iters;
+  }
+  std::printf("[contact] %s: max |CPRESS - p|/p = %.3e, penetration %.3e .. %.3e, iterations %d (severe %d), "
+              "augmentations %d\n", label.c_str(), fig.max_cpress_error, fig.min_penetration, fig.max_penetration,
+              fig.iterations, fig.severe, fig.augmentations);
+  return fig;
+}
+
+TEST(ContactPatchTest2D, DirectGivesUniformPressureAndNoPenetration) {
+  auto r = verification::run_deck(contact_deck("patch_2d_direct.inp"));
+  const auto fig = check_patch(*r, "direct");
+  EXPECT_LE(fig.max_cpress_error, 0.01);  // CPRESS = p within 1 %
+  EXPECT_LE(std::abs(fig.max_penetration), 1e-12);  // exact zero penetration, to round-off
+  EXPECT_LE(std::abs(fig.min_penetration), 1e-12);
+}
+
+TEST(ContactPatchTest2D, PenaltyPenetrationIsPressureOverStiffness) {
+  auto r = verification::run_deck(contact_deck("patch_2d_penalty.inp"));
+  const auto fig = check_patch(*r, "penalty");
+  EXPECT_LE(fig.max_cpress_error, 0.01);
+  // k = 10 k_e, k_e = M / h (h: the slave element's thickness normal to the facet).
+  const double k = 10.0 * kM / kSlaveElementHeight;
+  const auto& f = r->capture.last();
+  const auto& cpress = contact_field(f, "CPRESS");
+  const auto& copen = contact_field(f, "COPEN");
+  for (std::size_t i = 0; i < cpress.nodes.size(); ++i) {
+    EXPECT_NEAR(-copen.values[i], cpress.values[i] / k, 1e-9 * kP / k);  // the law itself
+    EXPECT_NEAR(-copen.values[i], kP / k, 0.01 * kP / k);                // hand value p / k within 1 %
+  }
+}
+
+TEST(ContactPatchTest2D, AugmentedLagrangeKeepsPenetrationUnderTolerance) {
+  auto r = verification::run_deck(contact_deck("patch_2d_augmented.inp"));
+  const auto fig = check_patch(*r, "augmented Lagrange");
+  EXPECT_LE(fig.max_cpress_error, 0.01);
+  // Default tolerance 0.1 % of the characteristic length (the slave facet, 0.5) [AX p.782].
+  EXPECT_LE(fig.max_penetration, 0.001 * kSlaveFacet);
+  // k = 1000 on the data line: the penalty solve alone penetrates p/k = 0.01 > 5e-4, so the
+  // augmentation loop must have run.
+  EXPECT_GE(fig.augmentations, 1);
+}
+
+TEST(ContactPatchTest2D, NonlinearPenaltyGivesUniformPressure) {
+  auto r = verification::run_deck(contact_deck("patch_2d_nonlinear_penalty.inp"));
+  const auto fig = check_patch(*r, "nonlinear penalty");
+  EXPECT_LE(fig.max_cpress_error, 0.01);
+}
+
+// Offset meshes (3 and 4 elements across): no master node lies under a slave node, and
+// node-to-surface contact does not pass the patch test there — the master nodes receive
+// Σ_i N_j(x_i) A_i p, the slave-grid trapezoid rule of N_j, not ∫ N_j dA. This documents the
+// size of that known error (the reason surface-to-surface contact exists), measured 8.0 %
+// (direct) and 7.8 % (penalty) on this deck; the load is still carried exactly.
+TEST(ContactPatchTest2D, OffsetMeshesShowTheNodeToSurfaceError) {
+  for (const char* m : {"direct", "penalty"}) {
+    auto r = verification::run_deck(contact_deck(std::string("patch_2d_offset_") + m + ".inp"));
+    const auto fig = check_patch(*r, std::string("offset meshes, ") + m);
+    EXPECT_LE(fig.max_cpress_error, 0.10) << m;
+    EXPECT_GE(fig.max_cpress_error, 0.01) << m << ": if this passes the patch test now, tighten the 1 % tests";
+  }
+}
+
+TEST(ContactPatchTest2D, EveryMethodGivesTheSamePressure) {
+  std::vector<std::vector<double>> pressures;
+  for (const char* m : {"direct", "penalty", "augmented", "nonlinear_penalty"}) {
+    auto r = verification::run_deck(contact_deck(std::string("patch_2d_") + m + ".inp"));
+    ASSERT_TRUE(r->outcome.completed) << m << ": " << r->outcome.message;
+    pressures.push_back(contact_field(r->capture.last(), "CPRESS").values);
+  }
+  for (std::size_t k = 1; k < pressures.size(); ++k)
+    for (std::size_t i = 0; i < pressures[0].size(); ++i)
+      EXPECT_NEAR(pressures[k][i], pressures[0][i], 0.01 * kP) << "method " << k << " node " << i;
+}
+
+TEST(ContactLiftOff2D, ContactOpensWhenTheBlockIsLifted) {
+  for (const char* m : {"direct", "penalty", "augmented"}) {
+    auto r = verification::run_deck(contact_deck(std::string("lift_off_2d_") + m + ".inp"));
+    ASSERT_TRUE(r->outcome.completed) << m << ": " << r->outcome.message;
+    const auto step1 = r->capture.of_step(1);
+    const auto step2 = r->capture.of_step(2);
+    ASSERT_FALSE(step1.empty());
+    ASSERT_FALSE(step2.empty());
+    // Step 1: pushed down 0.005, every slave node closed and pressed.
+    const auto& p1 = contact_field(*step1.back(), "CPRESS");
+    const auto& s1 = contact_field(*step1.back(), "CSTATUS");
+    for (std::size_t i = 0; i < p1.values.size(); ++i) {
+      EXPECT_GT(p1.values[i], 0.0) << m;
+      EXPECT_EQ(s1.values[i], 2.0) << m;
+    }
+    // Step 2: lifted 0.01 above the start: open, no pressure, no area, gap ≈ 0.01.
+    const auto& f = *step2.back();
+    const auto& p2 = contact_field(f, "CPRESS");
+    const auto& s2 = contact_field(f, "CSTATUS");
+    const auto& g2 = contact_field(f, "COPEN");
+    const auto& a2 = contact_field(f, "CNAREA");
+    for (std::size_t i = 0; i < p2.values.size(); ++i) {
+      EXPECT_EQ(p2.values[i], 0.0) << m;
+      EXPECT_EQ(s2.values[i], 0.0) << m;
+      EXPECT_EQ(a2.values[i], 0.0) << m;
+      EXPECT_NEAR(g2.values[i], 0.01, 1e-3) << m;  // the lower block springs back to its start
+    }
+  }
+}
+
+TEST(ContactPatchTest3D, EveryMethodGivesUniformPressure) {
+  for (const char* m : {"direct", "penalty", "augmented"}) {
+    auto r = verification::run_deck(contact_deck(std::string("patch_3d_") + m + ".inp"));
+    ASSERT_TRUE(r->outcome.completed) << m << ": " << r->outcome.message;
+    const solver::Frame& f = r->capture.last();
+    const auto& cpress = contact_field(f, "CPRESS");
+    const auto& copen = contact_field(f, "COPEN");
+    EXPECT_EQ(cpress.nodes.size(), 25u);  // 5 × 5 slave nodes
+    double worst = 0.0, max_pen = 0.0;
+    for (std::size_t i = 0; i < cpress.values.size(); ++i) {
+      worst = std::max(worst, std::abs(cpress.values[i] - kP) / kP);
+      max_pen = std::max(max_pen, std::abs(copen.values[i]));
+    }
+    EXPECT_LE(worst, 0.01) << m;  // CPRESS = p within 1 %
+    const auto rf = verification::sum_rf(*r, f);
+    EXPECT_NEAR(rf[2], kP * 4.0, 1e-8 * kP * 4.0) << m;  // reactions balance p × 2 × 2
+    if (std::string(m) == "direct") {
+      EXPECT_LE(max_pen, 1e-12);
+    } else if (std::string(m) == "penalty") {
+      EXPECT_NEAR(max_pen, kP / (10.0 * kM / kSlaveElementHeight), 0.01 * max_pen);
+    } else {
+      EXPECT_LE(max_pen, 0.001 * 0.5);  // 0.1 % of √(slave facet area)
+    }
+    int iterations = 0, augmentations = 0;
+    for (const auto& row : r->capture.rows) {
+      iterations += row.total_iters;
+      augmentations += row.augmentations;
+    }
+    std::printf("[contact] 3D %s: max |CPRESS - p|/p = %.3e, max |COPEN| = %.3e, iterations %d, augmentations %d\n", m,
+                worst, max_pen, iterations, augmentations);
+  }
+}
+
+/// The softened laws as the Abaqus manuals state them (KEYWORDS.md, *SURFACE BEHAVIOR).
+double law(const std::string& name, double h) {
+  if (name == "linear") return h > 0 ? 500.0 * h : 0.0;
+  if (name == "exponential") {
+    const double c0 = 0.01, p0 = 10.0;
+    if (h <= -c0) return 0.0;
+    const double s = h / c0 + 1.0;
+    return p0 / (std::numbers::e - 1.0) * s * (std::exp(s) - 1.0);
+  }
+  // tabular: (p, h) = (0, −0.005), (2, 0), (12, 0.01), last slope beyond
+  if (h <= -0.005) return 0.0;
+  if (h <= 0.0) return 2.0 * (h + 0.005) / 0.005;
+  return 2.0 + 10.0 * h / 0.01;
+}
+
+TEST(ContactSoftened, PressureFollowsThePressureOverclosureLaw) {
+  for (const char* name : {"linear", "exponential", "tabular"}) {
+    auto r = verification::run_deck(contact_deck(std::string("softened_") + name + ".inp"));
+    ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
+    int pressed = 0, open = 0;
+    double worst = 0.0;
+    for (const auto& sf : r->capture.frames) {
+      const auto& cp = contact_field(sf.frame, "CPRESS");
+      const auto& co = contact_field(sf.frame, "COPEN");
+      for (std::size_t i = 0; i < cp.values.size(); ++i) {
+        const double expected = law(name, -co.values[i]);
+        worst = std::max(worst, std::abs(cp.values[i] - expected));
+        EXPECT_NEAR(cp.values[i], expected, 1e-9 * (1.0 + expected)) << name << " h = " << -co.values[i];
+        (cp.values[i] > 0 ? pressed : open)++;
+      }
+    }
+    // The trace crosses the curve: open increments first, then at least three pressed ones.
+    EXPECT_GE(pressed, 3 * 2) << name;
+    EXPECT_GE(open, 1) << name;
+    std::printf("[contact] softened %s: %zu frames, max |CPRESS - p(h)| = %.3e\n", name, r->capture.frames.size(), worst);
+  }
+}
+
+/// A deck text with `insert` placed after the first line starting with `after`.
+std::string deck_with(const std::string& base, const std::string& after, const std::string& insert) {
+  std::ifstream in(contact_deck(base));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string s = ss.str();
+  const auto at = s.find('\n', s.find(after));
+  return s.substr(0, at + 1) + insert + s.substr(at + 1);
+}
+
+TEST(ContactRefusals, FrictionIsRefusedRatherThanRunFrictionless) {
+  const auto dir = std::filesystem::current_path() / "contact_decks";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "friction.inp";
+  std::ofstream(path) << deck_with("patch_2d_penalty.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3\n");
+  auto deck = parser::read_deck(path.string());
+  ASSERT_TRUE(deck.ok()) << deck.report();
+  verification::Capture capture;
+  try {
+    solver::run_analysis(deck.model, capture);
+    FAIL() << "a deck with friction ran";
+  } catch (const solver::AnalysisError& e) {
+    EXPECT_NE(std::string(e.what()).find("friction is not analysed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("friction.inp:"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace inpact::test
