@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "deck_loading.hpp"
 #include "exit_codes.hpp"
 #include "io/dat_report.hpp"
 #include "io/io_error.hpp"
@@ -17,7 +18,6 @@
 #include "parser/read_deck.hpp"
 #include "solver/analysis.hpp"
 #include "solver/analysis_error.hpp"
-#include "solver/analysis_model.hpp"
 
 namespace inpact::app {
 
@@ -85,24 +85,11 @@ std::string deck_digest(const model::Model& m) {
 }  // namespace
 
 int run_analysis(const RunOptions& options) {
-  parser::ReadOptions read_options;
-  read_options.parameters = options.parameters;
-  const parser::ReadResult result = parser::read_deck(options.deck, read_options);
-  std::fputs(result.report().c_str(), stderr);
-  if (!result.ok()) {
-    std::fprintf(stderr, "%s: %zu error(s); the deck cannot be analysed\n", options.deck.c_str(),
-                 result.diagnostics.error_count());
-    return kDeckError;
-  }
+  const auto loaded = load_analysable_deck(options.deck, options.parameters);
+  if (!loaded) return kDeckError;
+  const parser::ReadResult& result = *loaded;
   const std::string job = options.job.empty() ? std::filesystem::path(options.deck).stem().string() : options.job;
   const std::filesystem::path dir = options.output_dir;
-  // A model the analysis cannot take is a deck error: found before any file is created.
-  try {
-    solver::build_analysis_model(result.model);
-  } catch (const solver::AnalysisError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return kDeckError;
-  }
   try {
     std::filesystem::create_directories(dir);
     io::ResultsWriter results =

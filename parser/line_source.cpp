@@ -120,26 +120,12 @@ std::vector<Line> LineSource::read_data_file(std::string_view path, SourceLoc fr
   auto id = load(resolve_relative(path, from), true, from, keyword);
   if (!id) return lines;
   OpenFile f{*id, storage_.back()};
-  while (f.pos < f.text.size()) {
-    std::size_t end = f.text.find('\n', f.pos);
-    if (end == std::string_view::npos) end = f.text.size();
-    std::string_view raw = f.text.substr(f.pos, end - f.pos);
-    f.pos = end + 1;
-    ++f.line;
-    if (is_comment_or_blank(raw)) continue;
-    SourceLoc loc{f.id, f.line, 0};
-    lines.push_back({substitute(raw, loc), loc});
-  }
+  while (auto line = next_significant(f)) lines.push_back(*line);
   return lines;
 }
 
-std::optional<Line> LineSource::next() {
-  while (!stack_.empty()) {
-    OpenFile& f = stack_.back();
-    if (f.pos >= f.text.size()) {
-      stack_.pop_back();
-      continue;
-    }
+std::optional<Line> LineSource::next_significant(OpenFile& f) {
+  while (f.pos < f.text.size()) {
     std::size_t end = f.text.find('\n', f.pos);
     if (end == std::string_view::npos) end = f.text.size();
     std::string_view raw = f.text.substr(f.pos, end - f.pos);
@@ -149,6 +135,14 @@ std::optional<Line> LineSource::next() {
     if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
     SourceLoc loc{f.id, f.line, 0};
     return Line{substitute(raw, loc), loc};
+  }
+  return std::nullopt;
+}
+
+std::optional<Line> LineSource::next() {
+  while (!stack_.empty()) {
+    if (auto line = next_significant(stack_.back())) return line;
+    stack_.pop_back();  // this file is done: back to the one that included it
   }
   return std::nullopt;
 }

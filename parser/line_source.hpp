@@ -39,6 +39,8 @@ class LineSource {
                                     const std::string& keyword);
   std::string resolve_relative(std::string_view path, SourceLoc from) const;
   std::string_view substitute(std::string_view text, SourceLoc loc);
+  /// The next line of `f` that is not a comment or blank, substituted; nullopt at its end.
+  std::optional<Line> next_significant(OpenFile& f);
 
   SourceTable& sources_;
   Diagnostics& diags_;
