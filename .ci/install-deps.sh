@@ -11,6 +11,7 @@ packages=(
   libfmt-dev libcli11-dev                    # formatting, command line
   libgtest-dev                               # tests
   python3-h5py python3-meshio python3-paraview xvfb xauth  # results-file reader tests (tests/io)
+  parallel                                   # GNU parallel running study shards (tests/decks)
 )
 
 missing=()

@@ -67,6 +67,37 @@ int main(int argc, char** argv) {
   check_cmd->add_option("deck", check.deck, "Input deck (.inp)")->required()->check(CLI::ExistingFile);
   check_cmd->add_option("-P", check_params, "Override a *PARAMETER: -P name=value");
 
+  CompareOptions compare;
+  CLI::App* compare_cmd = app.add_subcommand("compare", "Compare two results files: exit 0 same, 1 different, 5 I/O");
+  compare_cmd->add_option("a", compare.a, "Results file A (JOB.h5)")->required();
+  compare_cmd->add_option("b", compare.b, "Results file B (JOB.h5)")->required();
+  compare_cmd->add_option("--tolerances", compare.tolerances, "Per-field tolerances (.toml or .yaml)");
+  compare_cmd->add_option("--report", compare.report, "Write a JSON report here");
+  compare_cmd->add_flag("--allow-incomplete", compare.allow_incomplete, "Accept files whose status is RUNNING or ABORTED");
+  compare_cmd->add_flag("-q,--quiet", compare.quiet, "Print nothing but errors (the exit code tells)");
+
+  StudyOptions study;
+  CLI::App* study_cmd = app.add_subcommand("study", "Run a deck over a grid or samples of *PARAMETER values");
+  study_cmd->add_option("deck", study.deck, "Input deck (.inp) with *PARAMETER definitions")->check(CLI::ExistingFile);
+  study_cmd->add_option("--grid", study.grids, "name=v1,v2,... (repeat: the cases are the product)");
+  study_cmd->add_option("--samples", study.samples, "CSV file: header of parameter names, one case per row")
+      ->check(CLI::ExistingFile);
+  study_cmd->add_option("--collect", study.collect,
+                        "OP:VAR[@NSET] per case, OP max|min|maxabs|sum (max:CPRESS, max:-COPEN, sum:RF2@TOP)");
+  study_cmd->add_option("-j,--jobs", study.jobs, "Worker processes")->check(CLI::PositiveNumber);
+  study_cmd->add_option("--threads", study.threads, "Threads of each case")->check(CLI::PositiveNumber);
+  study_cmd->add_option("--shard", study.shard, "Run shard i of n: cases k with k mod n = i-1");
+  study_cmd->add_option("-o,--output-dir", study.dir, "Study folder (default: DECK-stem.study)");
+  study_cmd->add_option("--inpact", study.executable, "inpact executable for the cases (default: this one)");
+  study_cmd->add_flag("--manifest-only", study.manifest_only, "Write DIR/manifest.csv and run nothing (Slurm arrays)");
+  study_cmd->add_flag("-q,--quiet", study.quiet, "No progress lines");
+  CLI::App* run_case_cmd = study_cmd->add_subcommand("run-case", "Run one case of the manifest in -o DIR (default .)");
+  run_case_cmd->add_option("id", study.run_case, "Case id (c0001, ...)")->required();
+  run_case_cmd->add_option("-o,--output-dir", study.dir, "Study folder");
+  run_case_cmd->add_option("--threads", study.threads, "Threads of the case")->check(CLI::PositiveNumber);
+  CLI::App* collect_cmd = study_cmd->add_subcommand("collect", "Write results.csv of the study in -o DIR (default .)");
+  collect_cmd->add_option("-o,--output-dir", study.dir, "Study folder");
+
   try {
     std::reverse(args.begin(), args.end());  // CLI11 takes a vector of arguments last-first
     app.parse(args);
@@ -80,6 +111,11 @@ int main(int argc, char** argv) {
   try {
     if (*check_cmd) return run_check(check);
     if (*run_cmd) return run_analysis(run);
+    if (*compare_cmd) return run_compare(compare);
+    if (*study_cmd) {
+      study.collect_only = static_cast<bool>(*collect_cmd);
+      return run_study(study);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "inpact: internal error: %s\n", e.what());
     return kAnalysisFailed;

@@ -1,0 +1,351 @@
+#include "study_runner.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "io/io_error.hpp"
+#include "io/results_reader.hpp"
+
+namespace inpact::app::study {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+fs::path case_dir(const fs::path& dir, const std::string& id) { return dir / "cases" / id; }
+fs::path outcome_path(const fs::path& dir, const std::string& id) { return case_dir(dir, id) / "case.result"; }
+
+/// The arguments of one case's `inpact run`.
+std::vector<std::string> case_command(const Manifest& m, const Case& c, const RunnerOptions& o) {
+  std::vector<std::string> args{o.executable, "run", m.deck, "-j", c.id, "-o", case_dir(o.dir, c.id).string(),
+                                "--threads", std::to_string(o.threads), "-q"};
+  for (const auto& [name, value] : c.parameters) {
+    args.push_back("-P");
+    args.push_back(name + "=" + value);
+  }
+  return args;
+}
+
+/// fork + exec with stdout and stderr into `log`; returns the child's pid (or -1, errno set).
+pid_t spawn(const std::vector<std::string>& args, const fs::path& log, const std::string& threads) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  // A case's BLAS uses the case's threads, not a pool per core on top of the other workers
+  // (the user's own setting wins).
+  setenv("OPENBLAS_NUM_THREADS", threads.c_str(), 0);
+  setenv("OMP_NUM_THREADS", threads.c_str(), 0);
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+  }
+  execv(argv[0], argv.data());
+  std::fprintf(stderr, "inpact study: cannot run %s: %s\n", argv[0], std::strerror(errno));
+  _exit(127);
+}
+
+/// The line of a case's log that says why it stopped: the first "error:" line (a deck error
+/// cites file:line there), else the last non-empty line.
+std::string failure_line(const fs::path& log) {
+  std::string text;
+  try {
+    text = read_text(log);
+  } catch (const std::exception&) {
+    return "";
+  }
+  std::istringstream in(text);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (line.find("error:") != std::string::npos) return line;
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  }
+  return last;
+}
+
+/// Completes an outcome from the process's wait status and its results file, and writes it.
+CaseOutcome finish_case(const Manifest& m, const Case& c, const RunnerOptions& o, int wait_status, double wall) {
+  CaseOutcome out;
+  out.id = c.id;
+  out.wall_time = wall;
+  const fs::path log = case_dir(o.dir, c.id) / "log.txt";
+  if (WIFEXITED(wait_status)) {
+    out.exit_code = WEXITSTATUS(wait_status);
+  } else if (WIFSIGNALED(wait_status)) {
+    out.exit_code = 128 + WTERMSIG(wait_status);
+    out.message = fmt::format("killed by signal {} ({})", WTERMSIG(wait_status), strsignal(WTERMSIG(wait_status)));
+  }
+  const fs::path h5 = o.dir / Manifest::results_path(c.id);
+  if (out.exit_code == 0 && io::results_status(h5) == "COMPLETED") {
+    out.status = "completed";
+    try {
+      out.values = collect_values(h5, m.collect);
+    } catch (const std::exception& e) {
+      out.message = std::string("collect: ") + e.what();
+    }
+  } else {
+    out.status = "failed";
+    if (out.exit_code == 0) out.message = "exit 0 but no COMPLETED results file";
+    if (out.message.empty()) out.message = failure_line(log);
+  }
+  write_atomically(outcome_path(o.dir, c.id), format_outcome(out));
+  return out;
+}
+
+/// A case already done: its outcome file says completed and its results are COMPLETED; or its
+/// results are COMPLETED but the outcome was lost (the study was killed): collect it again.
+bool already_completed(const Manifest& m, const Case& c, const RunnerOptions& o) {
+  const fs::path h5 = o.dir / Manifest::results_path(c.id);
+  if (io::results_status(h5) != "COMPLETED") return false;
+  std::error_code ec;
+  if (fs::exists(outcome_path(o.dir, c.id), ec)) {
+    try {
+      if (parse_outcome(read_text(outcome_path(o.dir, c.id))).status == "completed") return true;
+    } catch (const std::exception&) {
+    }
+  }
+  finish_case(m, c, o, 0, -1.0);
+  return true;
+}
+
+std::string format_value(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
+
+/// One spec on the last frame of the last step that has frames.
+std::string evaluate(const io::ResultsFile& r, const CollectSpec& spec) {
+  const io::ResultsStep* step = nullptr;
+  for (const auto& s : r.steps)
+    if (s.n_frames() > 0) step = &s;
+  if (!step) return "";
+  const io::ResultsField* field = nullptr;
+  int component = -1;
+  for (const auto& f : step->fields) {
+    if (f.key == spec.var) {
+      field = &f;
+      break;
+    }
+    for (std::size_t c = 0; c < f.components.size(); ++c)
+      if (f.components[c] == spec.var && !field) {
+        field = &f;
+        component = static_cast<int>(c);
+      }
+  }
+  if (!field || field->n_frames == 0 || field->data.empty()) return "";
+  std::set<std::int64_t> rows;
+  if (!spec.nset.empty()) {
+    std::string upper = spec.nset;
+    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    auto it = r.nsets.find(upper);
+    if (it == r.nsets.end()) return "";
+    rows.insert(it->second.begin(), it->second.end());
+  }
+  const std::size_t k = field->n_frames - 1;
+  double acc = spec.op == "sum" ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+  bool any = false;
+  for (std::size_t i = 0; i < field->n_loc; ++i) {
+    if (!rows.empty() && !rows.count(field->node_rows[i])) continue;
+    for (std::size_t c = 0; c < field->n_comp; ++c) {
+      if (component >= 0 && static_cast<int>(c) != component) continue;
+      double v = field->value(k, i, c);
+      if (std::isnan(v)) continue;
+      if (spec.negate) v = -v;
+      if (spec.op == "maxabs") v = std::abs(v);
+      if (spec.op == "sum") acc += v;
+      else if (!any) acc = v;
+      else if (spec.op == "min") acc = std::min(acc, v);
+      else acc = std::max(acc, v);
+      any = true;
+    }
+  }
+  return any ? format_value(acc) : "";
+}
+
+const std::vector<std::string> kBuiltinColumns = {"increments", "iterations", "cutbacks"};
+
+}  // namespace
+
+std::string self_executable() {
+  std::error_code ec;
+  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("inpact") : p.string();
+}
+
+std::map<std::string, std::string> collect_values(const fs::path& h5, const std::vector<std::string>& specs) {
+  io::ReadResultsOptions read;
+  for (const auto& s : specs) read.data_for.insert(parse_collect(s).var);  // only these fields' values
+  read.with_data = !read.data_for.empty();
+  const io::ResultsFile r = io::read_results(h5, read);
+  std::map<std::string, std::string> v;
+  v["increments"] = std::to_string(r.totals.increments);
+  v["iterations"] = std::to_string(r.totals.iterations);
+  v["cutbacks"] = std::to_string(r.totals.cut_backs);
+  for (const auto& s : specs) v[s] = evaluate(r, parse_collect(s));
+  return v;
+}
+
+std::string format_outcome(const CaseOutcome& o) {
+  auto one_line = [](std::string s) {
+    for (char& c : s)
+      if (c == '\n' || c == '\r') c = ' ';
+    return s;
+  };
+  std::string s = fmt::format("id={}\nstatus={}\nexit_code={}\nwall_time={}\nmessage={}\n", o.id, o.status, o.exit_code,
+                              o.wall_time < 0 ? "" : fmt::format("{:.4f}", o.wall_time), one_line(o.message));
+  for (const auto& [k, v] : o.values) s += "value." + k + "=" + one_line(v) + "\n";
+  return s;
+}
+
+CaseOutcome parse_outcome(const std::string& text) {
+  CaseOutcome o;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    const std::string k = line.substr(0, eq), v = line.substr(eq + 1);
+    if (k == "id") o.id = v;
+    else if (k == "status") o.status = v;
+    else if (k == "exit_code") o.exit_code = std::stoi(v);
+    else if (k == "wall_time") o.wall_time = v.empty() ? -1.0 : std::stod(v);
+    else if (k == "message") o.message = v;
+    else if (k.rfind("value.", 0) == 0) o.values[k.substr(6)] = v;
+  }
+  return o;
+}
+
+std::string format_table(const Manifest& m, const std::vector<CaseOutcome>& outcomes) {
+  std::string s = "id";
+  for (const auto& n : m.parameter_names) s += "," + csv_field(n);
+  s += ",status,exit_code,wall_time_s";
+  for (const auto& c : kBuiltinColumns) s += "," + c;
+  for (const auto& c : m.collect) s += "," + csv_field(c);
+  s += ",message\n";
+  for (std::size_t i = 0; i < m.cases.size(); ++i) {
+    const Case& c = m.cases[i];
+    const CaseOutcome& o = outcomes[i];
+    s += c.id;
+    for (const auto& [name, value] : c.parameters) s += "," + csv_field(value);
+    s += "," + o.status + "," + (o.exit_code >= 0 ? std::to_string(o.exit_code) : "") + "," +
+         (o.wall_time >= 0 ? fmt::format("{:.3f}", o.wall_time) : "");
+    auto value = [&](const std::string& k) {
+      auto it = o.values.find(k);
+      return it == o.values.end() ? std::string() : it->second;
+    };
+    for (const auto& col : kBuiltinColumns) s += "," + value(col);
+    for (const auto& col : m.collect) s += "," + csv_field(value(col));
+    s += "," + csv_field(o.message) + "\n";
+  }
+  return s;
+}
+
+std::vector<CaseOutcome> write_table(const Manifest& m, const fs::path& dir) {
+  std::vector<CaseOutcome> outcomes;
+  for (const Case& c : m.cases) {
+    CaseOutcome o;
+    o.id = c.id;
+    std::error_code ec;
+    if (fs::exists(outcome_path(dir, c.id), ec)) {
+      try {
+        o = parse_outcome(read_text(outcome_path(dir, c.id)));
+      } catch (const std::exception&) {
+        o.status = "pending";
+      }
+    }
+    outcomes.push_back(std::move(o));
+  }
+  write_atomically(dir / "results.csv", format_table(m, outcomes));
+  return outcomes;
+}
+
+int run_one_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
+  fs::create_directories(case_dir(o.dir, c.id));
+  if (already_completed(m, c, o)) return 0;
+  const auto t0 = Clock::now();
+  const pid_t pid = spawn(case_command(m, c, o), case_dir(o.dir, c.id) / "log.txt", std::to_string(o.threads));
+  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const CaseOutcome out = finish_case(m, c, o, status, std::chrono::duration<double>(Clock::now() - t0).count());
+  return out.exit_code;
+}
+
+int run_cases(const Manifest& m, const RunnerOptions& o) {
+  std::deque<const Case*> pending;
+  std::size_t n_skipped = 0, n_shard = 0;
+  for (std::size_t k = 0; k < m.cases.size(); ++k) {
+    if (!o.shard.contains(k)) continue;
+    ++n_shard;
+    const Case& c = m.cases[k];
+    fs::create_directories(case_dir(o.dir, c.id));
+    if (already_completed(m, c, o)) ++n_skipped;
+    else pending.push_back(&c);
+  }
+  if (!o.quiet)
+    std::printf("study: %zu case(s)%s, %zu already completed, %zu to run on %d worker(s)\n", n_shard,
+                o.shard.count > 1 ? fmt::format(" in shard {}/{}", o.shard.index, o.shard.count).c_str() : "", n_skipped,
+                pending.size(), o.jobs);
+  std::fflush(stdout);
+
+  struct Running {
+    const Case* c;
+    Clock::time_point start;
+  };
+  std::map<pid_t, Running> running;
+  std::size_t n_done = 0, n_failed = 0;
+  const std::size_t n_to_run = pending.size();
+  // Fills the free worker slots; called before a finished case is collected, so the workers
+  // never wait for the collection.
+  auto fill = [&] {
+    while (!pending.empty() && static_cast<int>(running.size()) < o.jobs) {
+      const Case* c = pending.front();
+      pending.pop_front();
+      const pid_t pid = spawn(case_command(m, *c, o), case_dir(o.dir, c->id) / "log.txt", std::to_string(o.threads));
+      if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+      running[pid] = {c, Clock::now()};
+    }
+  };
+  while (!pending.empty() || !running.empty()) {
+    fill();
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
+    }
+    auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const Running r = it->second;
+    running.erase(it);
+    const double wall = std::chrono::duration<double>(Clock::now() - r.start).count();
+    fill();
+    const CaseOutcome out = finish_case(m, *r.c, o, status, wall);
+    ++n_done;
+    if (out.status != "completed") ++n_failed;
+    if (!o.quiet) {
+      std::printf("[%zu/%zu] %s %s (exit %d) %.2f s  running %zu, failed %zu%s%s\n", n_done, n_to_run, r.c->id.c_str(),
+                  out.status.c_str(), out.exit_code, wall, running.size(), n_failed, out.message.empty() ? "" : ": ",
+                  out.message.c_str());
+      std::fflush(stdout);
+    }
+  }
+  write_table(m, o.dir);
+  return static_cast<int>(n_failed);
+}
+
+}  // namespace inpact::app::study

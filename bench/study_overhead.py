@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""Overhead per case of `inpact study` against the solve time of a case (goal: < 5%).
+
+A study of 64 cases of a contact deck of a few thousand elements (study_overhead_deck.py) runs
+with -j 2, both cores busy. Each case's overhead beyond the analysis is measured separately,
+as medians of repeated runs:
+  start      `inpact --version`: exec, dynamic libraries, CLI set-up
+  read       `inpact check DECK` minus start: deck read + validation (+ the model summary)
+  write      `inpact run DECK` minus the same run with no *OUTPUT requests (results write)
+  dispatch   the study's wall time per case over what the cases take (fork/exec, waitpid,
+             case.result, the table): 2 × study wall / 64 − mean case wall
+solve = run − start − read − write. Writes bench/results/study_overhead.md.
+
+Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)]
+"""
+import csv
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build-study")
+n_cases = int(sys.argv[2]) if len(sys.argv) > 2 else 64
+inpact = os.path.join(build, "apps", "inpact")
+work = os.path.join(build, "bench-study")
+os.makedirs(work, exist_ok=True)
+
+deck = os.path.join(work, "contact.inp")
+subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck], check=True)
+text = open(deck).read()
+noout = os.path.join(work, "contact_noout.inp")
+open(noout, "w").write(text[:text.index("*OUTPUT, FIELD")] + "*END STEP\n")
+
+
+def timed(args, repeat):
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        subprocess.run(args, cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+# The study first: both cores busy, as the cases of a real study.
+study_dir = os.path.join(work, "S")
+subprocess.run(["rm", "-rf", study_dir], check=True)
+loads = ",".join(f"{5 + 0.25 * i:g}" for i in range(n_cases))
+t0 = time.perf_counter()
+subprocess.run([inpact, "study", deck, "--grid", f"load={loads}", "-j", "2", "-o", study_dir, "-q",
+                "--collect", "max:CPRESS", "--collect", "max:-COPEN", "--collect", "sum:RF2@BOTTOM"], check=True)
+study_wall = time.perf_counter() - t0
+rows = list(csv.DictReader(open(os.path.join(study_dir, "results.csv"))))
+walls = [float(r["wall_time_s"]) for r in rows if r["status"] == "completed"]
+mean_case = statistics.mean(walls)
+dispatch = max(0.0, 2 * study_wall / n_cases - mean_case)
+
+# The parts of one case, on one otherwise idle core each (medians).
+start = timed([inpact, "--version"], 15)
+check = timed([inpact, "check", deck], 7)
+run = timed([inpact, "run", deck, "-q", "-j", "full"], 5)
+run_noout = timed([inpact, "run", noout, "-q", "-j", "noout"], 5)
+read = max(0.0, check - start)
+write = max(0.0, run - run_noout)
+solve = run - start - read - write
+overhead = start + read + write + dispatch
+h5_size = os.path.getsize(os.path.join(work, "full.h5"))
+
+n_elem = sum(1 for line in text.splitlines() if line[:1].isdigit() and line.count(",") == 4)
+lines = [
+    "# `inpact study` overhead per case",
+    "",
+    f"Deck: bench/study_overhead_deck.py ({n_elem} CPE4 elements, penalty contact, one step in 4 increments);",
+    f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
+    "Medians of repeated runs; `bench/study_overhead.py` writes this file.",
+    "",
+    "| part | seconds per case | % of solve |",
+    "|---|---|---|",
+]
+for name, t in [("process start (`inpact --version`)", start), ("deck read + validation (`check` − start)", read),
+                ("results write (run − run without *OUTPUT)", write), ("study dispatch (2·wall/N − mean case)", dispatch)]:
+    lines.append(f"| {name} | {t:.4f} | {100 * t / solve:.1f} |")
+lines += [
+    f"| **overhead** | **{overhead:.4f}** | **{100 * overhead / solve:.1f}** |",
+    f"| solve (run − start − read − write) | {solve:.4f} | 100 |",
+    "",
+    f"Study: {len(walls)}/{n_cases} completed in {study_wall:.2f} s wall; mean case wall {mean_case:.3f} s "
+    f"(both cores busy) against {run:.3f} s for one run alone.",
+    f"Load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (other jobs make every part noisy).",
+]
+os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
+out = os.path.join(ROOT, "bench", "results", "study_overhead.md")
+open(out, "w").write("\n".join(lines) + "\n")
+print("\n".join(lines))
