@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Contact speed/accuracy trade: the Hertz and interference-fit decks of decks/contact_verification/
+# at three mesh levels, for direct, penalty (stiffness scale factors 0.01 … 100), nonlinear
+# penalty and augmented Lagrange (relative penetration tolerances 1e-2 … 1e-5). Writes
+# bench/results/contact_trade.md (printed) and contact_trade.png; see trade.py.
+#
+#   bash bench/contact_trade/run.sh            env: BUILD (default build-cver), RUNS (3), LEVELS ("1 2 3")
+#
+# The machine is shared: other work adds noise to the wall times (medians of RUNS runs).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${BUILD:-$root/build-cver}
+if [ ! -x "$build/apps/inpact" ]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DINPACT_WARNINGS_AS_ERRORS=ON >/dev/null
+  cmake --build "$build" --target inpact -j 2
+fi
+# Debian's matplotlib, h5py and numpy for /usr/bin/python3, installed when missing.
+need=()
+/usr/bin/python3 -c 'import matplotlib' 2>/dev/null || need+=(python3-matplotlib)
+/usr/bin/python3 -c 'import h5py' 2>/dev/null || need+=(python3-h5py)
+/usr/bin/python3 -c 'import numpy' 2>/dev/null || need+=(python3-numpy)
+if [ ${#need[@]} -gt 0 ]; then
+  sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get install -y "${need[@]}" >/dev/null
+fi
+# shellcheck disable=SC2086
+exec /usr/bin/python3 "$root/bench/contact_trade/trade.py" --inpact "$build/apps/inpact" --runs "${RUNS:-3}" \
+  --levels ${LEVELS:-1 2 3} --work "$build/contact_trade"
