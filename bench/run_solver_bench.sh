@@ -9,7 +9,8 @@
 # same problem must give the same answer). Writes bench/results/solver.md and solver.png.
 #
 #   bash bench/run_solver_bench.sh [N ...]
-#   env: BUILD (default build-bench2), RUNS, RUNS_LARGE, LARGE_FROM, SKIP_CCX=1, CCX_MAX_N (default 70)
+#   env: BUILD (default build-bench2), RUNS, RUNS_LARGE, LARGE_FROM, SKIP_CCX=1, CCX_MAX_N (default 70),
+#        KEEP_RAW=1 (add to the last run's measurements instead of starting afresh)
 #
 # The machine is shared: other work adds noise. Medians and spreads are reported, never limits.
 set -euo pipefail
@@ -40,7 +41,9 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 
 raw=$work/raw.txt
-: >"$raw"
+# KEEP_RAW=1 adds to the previous measurements (e.g. a large size run on its own later); the
+# tables cover every size in raw.txt.
+[ "${KEEP_RAW:-0}" = 1 ] || : >"$raw"
 # timed NAME CMD...: runs CMD under /usr/bin/time -v, appends "NAME wall_s peak_mb" to $raw.
 timed() {
   local name=$1; shift
@@ -76,9 +79,9 @@ for n in "${sizes[@]}"; do
   fi
 done
 
-/usr/bin/python3 - "$raw" "$results" "${sizes[@]}" <<'EOF'
+/usr/bin/python3 - "$raw" "$results" <<'EOF'
 import statistics, sys, platform, subprocess
-raw, out_dir, sizes = sys.argv[1], sys.argv[2], [int(s) for s in sys.argv[3:]]
+raw, out_dir = sys.argv[1], sys.argv[2]
 whole, floor, tip = {}, {}, {}
 for line in open(raw):
     f = line.split()
@@ -91,6 +94,7 @@ for line in open(raw):
         name, n = f[0].rsplit("-", 1)
         whole.setdefault((name, int(n)), []).append((float(f[1]), float(f[2])))
 
+sizes = sorted({n for n, _ in floor})
 def med(v): return statistics.median(v)
 def spread(v): return "%.3g–%.3g" % (min(v), max(v)) if len(v) > 1 else "1 run"
 def fmt(x): return "–" if x is None else ("%.3g" % x if x < 100 else "%.0f" % x)
@@ -133,19 +137,21 @@ for r in rows:
         fmt(r["sol"]), r["gflop"], r["fpeak"], fmt(r["ipeak"]), fmt(r["cpeak"])))
 L.append("")
 L.append("| N³ | inpact 1 thr s (spread) | inpact 2 thr s (spread) | floor 1 thr s (spread) | floor 2 thr s |"
-         " ratio whole/floor 1 thr | ratio 2 thr | ccx s (runs, spread) | inpact/ccx | tip U3 inpact | tip U3 ccx |")
-L.append("|---|---|---|---|---|---|---|---|---|---|---|")
+         " ratio whole/floor 1 thr | ratio 2 thr | ccx s (runs, spread) | inpact/ccx | tip U3 inpact | tip U3 ccx | rel. diff |")
+L.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
 for r in rows:
     ratio = lambda a, b: "%.2f" % (a / b) if a and b else "–"
-    L.append("| %d³ | %s (%s) | %s (%s) | %s (%s) | %s | %s | %s | %s (%d, %s) | %s | %s | %s |" % (
+    rel = "%.1e" % (abs(r["ti"] - r["tc"]) / abs(r["tc"])) if r["ti"] is not None and r["tc"] else "–"
+    L.append("| %d³ | %s (%s) | %s (%s) | %s (%s) | %s | %s | %s | %s (%d, %s) | %s | %s | %s | %s |" % (
         r["n"], fmt(r["w1"]), r["s1"], fmt(r["w2"]), r["s2"], fmt(r["fl1"]), r["sf"], fmt(r["fl2"]),
         ratio(r["w1"], r["fl1"]), ratio(r["w2"], r["fl2"]), fmt(r["wc"]), r["ccx_runs"], r["sc"],
         ratio(r["w1"], r["wc"]), "%.6e" % r["ti"] if r["ti"] is not None else "–",
-        "%.6e" % r["tc"] if r["tc"] is not None else "–"))
+        "%.6e" % r["tc"] if r["tc"] is not None else "–", rel))
 L.append("")
 L.append("floor = one assembly + CHOLMOD analyse + factor + solve of the same matrix (bench/solver_floor). "
          "ccx: CalculiX %s, its default solver for this deck, OMP_NUM_THREADS=1. "
-         "Whole runs include reading the deck and writing results (.h5, .frd)." %
+         "Whole runs include reading the deck and writing results (.h5, .frd). inpact prints the tip "
+         "displacement with 5 digits (.dat), so a relative difference below ~1e-4 is agreement." %
          subprocess.run(["sh", "-c", "dpkg-query -W -f='${Version}' calculix-ccx 2>/dev/null"],
                         capture_output=True, text=True).stdout.strip())
 text = "\n".join(L) + "\n"

@@ -18,6 +18,9 @@ using model::PressureOverclosure;
 
 /// [AX p.784]: Lagrange multipliers switch on above this multiple of k_e.
 constexpr double kLagrangeLimit = 1000.0;
+/// A stiffness that is 1000 k_e by construction (100 × 10 k_e) must not cross the limit by
+/// round-off.
+constexpr double kRoundOff = 1e-12;
 
 bool penalty_type(EnforcementMethod m) {
   return m == EnforcementMethod::PenaltyLinear || m == EnforcementMethod::PenaltyNonlinear ||
@@ -102,9 +105,9 @@ double penalty_stiffness(const ResolvedNormalBehavior& r, double ke) {
 }
 
 bool uses_lagrange_multipliers(const ResolvedNormalBehavior& r, double ke, double slope) {
-  if (penalty_type(r.method)) return penalty_stiffness(r, ke) > kLagrangeLimit * ke;
+  if (penalty_type(r.method)) return penalty_stiffness(r, ke) > kLagrangeLimit * ke * (1.0 + kRoundOff);
   if (r.law == PressureOverclosure::Hard) return true;  // direct hard contact: always
-  return slope > kLagrangeLimit * ke;
+  return slope > kLagrangeLimit * ke * (1.0 + kRoundOff);
 }
 
 std::optional<double> penetration_tolerance(const ResolvedNormalBehavior& r, double l_char) {

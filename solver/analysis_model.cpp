@@ -35,9 +35,10 @@ AnalysisModel build_analysis_model(const model::Model& m) {
     am.elements[e].type = &t;
   }
 
-  // Contact: node-to-surface pairs are analysed (solver/contact_problem.hpp); what is not yet
-  // (general contact, surface-to-surface, friction, ...) stops here with the deck line, rather
-  // than run as if the bodies could pass through each other or slide without friction.
+  // Contact: node-to-surface pairs are analysed, with Coulomb friction enforced by stiffness
+  // (solver/contact_problem.hpp); what is not yet (general contact, surface-to-surface,
+  // LAGRANGE friction, ...) stops here with the deck line, rather than run as if the bodies
+  // could pass through each other or stick where they should not.
   check_contact_supported(m);
 
   for (const auto& sec : m.mesh.sections) {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "contact/friction.hpp"
 #include "contact/node_to_surface.hpp"
 #include "contact/normal_behavior.hpp"
 #include "contact/pressure_overclosure.hpp"
@@ -88,6 +89,38 @@ void add_matrix(Assembler& assembler, std::span<const std::int64_t> dofs, std::s
     }
 }
 
+/// The equations a local unknown feeds, with their weights (the DOF map's masters of a DOF, or
+/// a multiplier's own equation).
+using LocalEquations = std::vector<std::vector<std::pair<std::int64_t, double>>>;
+
+/// Adds a local matrix k (n × n, row-major, n = eqs.size()) that need not be symmetric: its
+/// symmetric part ½(k + kᵀ) into the upper triangle `t`, its skew part ½(k − kᵀ) (when not
+/// zero) to `skew`.
+template <class Skew>
+void add_unsymmetric(SparseMatrix& t, const LocalEquations& eqs, std::span<const double> k, std::vector<Skew>& skew) {
+  const std::size_t n = eqs.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a; b < n; ++b) {
+      const double sym = a == b ? k[a * n + a] : 0.5 * (k[a * n + b] + k[b * n + a]);
+      const double skw = a == b ? 0.0 : 0.5 * (k[a * n + b] - k[b * n + a]);
+      if (sym == 0.0 && skw == 0.0) continue;
+      for (const auto& [ea, wa] : eqs[a])
+        for (const auto& [eb, wb] : eqs[b]) {
+          // Entry (ea, eb) gets w (sym + skw), entry (eb, ea) w (sym − skw); when a ≠ b both land
+          // in the upper triangle's one position for the symmetric part.
+          const double w = wa * wb;
+          if (sym != 0.0) {
+            const std::int64_t pos = t.find(std::min(ea, eb), std::max(ea, eb));
+            if (pos >= 0) t.values[pos] += (ea == eb && a != b ? 2.0 : 1.0) * w * sym;
+          }
+          if (skw != 0.0 && ea != eb) {
+            skew.push_back({ea, eb, w * skw});
+            skew.push_back({eb, ea, -w * skw});
+          }
+        }
+    }
+}
+
 }  // namespace
 
 /// One contact pair in force: its geometry, enforcement and the last kinematics.
@@ -97,17 +130,56 @@ struct ContactProblem::Pair {
   std::unique_ptr<contact::NodeToSurfacePair> geometry;
   contact::ResolvedNormalBehavior behavior;
   std::optional<contact::PressureOverclosure> law;  ///< unset: direct hard contact
+  std::optional<contact::FrictionLaw> friction;     ///< unset: frictionless
   bool direct = false, augmented = false, softened = false, finite_sliding = true;
   double ke = 0.0, l_char = 0.0, tolerance = 0.0, hcrit = 0.0;
   std::vector<contact::SlaveKinematics> kin;
   std::vector<char> contributes;           ///< per slave node, at the last update
   std::vector<std::int64_t> multiplier;    ///< per slave node: multiplier index or −1
+  std::vector<contact::FrictionPoint> fric;  ///< frictional pairs: per slave node, at the last update
 
   double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
   /// Penalty-type pressure of slave i (λ: its augmented-Lagrange multiplier).
   contact::PressureValue pressure(std::size_t i, double lambda) const {
     if (!kin[i].found) return {};
     return law->eval(-kin[i].projection.gap, augmented ? lambda : 0.0);
+  }
+  /// The contact pressure friction sees (direct: −λ, never tensile).
+  double friction_pressure(std::size_t i, const SlaveState& s) const {
+    return direct ? std::max(-s.lambda, 0.0) : pressure(i, s.lambda).p;
+  }
+
+  /// Friction of slave i off (open, or not yet evaluated): the trial state keeps its slip.
+  void clear_friction(std::size_t i, FrictionNodeState& f) {
+    f.active = f.slipping = false;
+    f.facet = -1;
+    f.e = f.tau = {0, 0, 0};
+    f.slip = f.slip0;
+    fric[i] = {};
+  }
+
+  /// The return mapping of closed slave i (kin[i].lin filled) into `f` and fric[i].
+  void update_friction(std::size_t i, const SlaveState& s, FrictionNodeState& f, std::span<const contact::Vec3> x) {
+    const contact::Projection& pr = kin[i].projection;
+    const auto facets = geometry->master().facets();
+    if (f.anchor_facet < 0) {  // first touch in this increment: the zero-shear point is here
+      f.anchor_facet = pr.facet;
+      f.anchor_xi = pr.xi;
+    }
+    contact::FrictionAnchor anchor{f.anchor_facet, f.anchor_xi};
+    fric[i] = contact::friction_point(*friction, facets[static_cast<std::size_t>(pr.facet)], pr, kin[i].lin,
+                                      facets[static_cast<std::size_t>(f.anchor_facet)], anchor, f.e0,
+                                      friction_pressure(i, s), x);
+    const contact::FrictionPoint& fp = fric[i];
+    f.active = true;
+    f.slipping = fp.slipping;
+    f.facet = pr.facet;
+    f.xi = pr.xi;
+    f.e = fp.elastic_slip;
+    f.tau = fp.traction;
+    const auto& ds = fp.slip_increment;
+    f.slip[0] = f.slip0[0] + pr.t1[0] * ds[0] + pr.t1[1] * ds[1] + pr.t1[2] * ds[2];
+    f.slip[1] = f.slip0[1] + pr.t2[0] * ds[0] + pr.t2[1] * ds[1] + pr.t2[2] * ds[2];
   }
 };
 
@@ -152,7 +224,8 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
       p->law = contact::PressureOverclosure::from(b, p->ke, p->l_char);
       // Table 38.1.21: Lagrange multipliers above 1000 k_e — not implemented for these methods.
       const double slope = p->law->max_slope(0.0);
-      if (scales && slope > 1000.0 * p->ke)
+      // (a relative margin: 100 × 10 k_e must not exceed 1000 k_e by round-off)
+      if (scales && slope > 1000.0 * p->ke * (1.0 + 1e-12))
         refuse(m, b.deck.loc.line ? b.deck.loc : deck.loc, "*SURFACE BEHAVIOR",
                fmt::format("pair {}: the contact stiffness {:.4g} exceeds 1000 k_e = {:.4g}, where Abaqus enforces the "
                            "constraint with Lagrange multipliers (table 38.1.21); inpact does not do that for {} contact "
@@ -161,6 +234,11 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     }
     if (p->augmented) p->tolerance = *contact::penetration_tolerance(b, p->l_char);
     p->hcrit = p->softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * p->l_char);
+    // Friction: γ_crit from the same characteristic length (KEYWORDS.md Part C c).
+    p->friction = contact::resolve_friction(inter && inter->friction ? &*inter->friction : nullptr, p->l_char, p->ke);
+    if (p->friction && p->friction->rough && !(p->ke > 0.0))
+      refuse(m, inter->friction->loc, "*FRICTION", fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of "
+                                                               "an element-based surface with an elastic material", pair_name));
     pairs_.push_back(std::move(p));
   }
 }
@@ -168,6 +246,10 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
 ContactProblem::~ContactProblem() = default;
 
 bool ContactProblem::empty() const { return pairs_.empty(); }
+
+bool ContactProblem::has_friction() const {
+  return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->friction.has_value(); });
+}
 
 bool ContactProblem::has_augmented_lagrange() const {
   return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->augmented; });
@@ -180,6 +262,7 @@ std::vector<std::string> ContactProblem::describe() const {
                                 p->law ? p->law->describe() : std::string("direct hard contact (Lagrange multipliers)"));
     s += fmt::format("; k_e = {:.4g}, characteristic length {:.4g}", p->ke, p->l_char);
     if (p->augmented) s += fmt::format(", augmented Lagrange, penetration tolerance {:.4g}", p->tolerance);
+    s += p->friction ? "; " + contact::describe(*p->friction) : std::string("; frictionless");
     out.push_back(std::move(s));
   }
   return out;
@@ -203,11 +286,12 @@ void check_contact_supported(const model::Model& m) {
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
     const model::SurfaceInteraction* inter = interaction_of(m, p);
     if (!inter) continue;
-    if (inter->friction && (inter->friction->mu > 0.0 || inter->friction->rough))
+    // Friction is enforced by stiffness (elastic slip); sticking by Lagrange multipliers is not.
+    if (inter->friction && inter->friction->lagrange && inter->friction->mu > 0.0)
       refuse(m, inter->friction->loc, "*FRICTION",
-             fmt::format("friction is not analysed by this version of inpact yet (interaction {}: {}); the contact would "
-                         "not be frictionless, so the deck is refused rather than run without friction",
-                         inter->name, inter->friction->rough ? "ROUGH" : fmt::format("μ = {:g}", inter->friction->mu)));
+             fmt::format("LAGRANGE (sticking enforced by Lagrange multipliers) is not analysed by this version of inpact "
+                         "yet (interaction {}); leave LAGRANGE out to enforce sticking by stiffness, with the allowable "
+                         "elastic slip of SLIP TOLERANCE or ELASTIC SLIP, Abaqus/Standard's default", inter->name));
     if (inter->behavior) {
       const auto& b = *inter->behavior;
       if (b.no_separation) refuse(m, b.loc, "*SURFACE BEHAVIOR", "NO SEPARATION is not analysed by this version of inpact yet");
@@ -219,12 +303,26 @@ void check_contact_supported(const model::Model& m) {
 
 // --- Iterations --------------------------------------------------------------------------
 
-void ContactProblem::begin_attempt(ContactState& state) const {
+void ContactProblem::begin_attempt(ContactState& state, int step, int increment) const {
   state.pairs.resize(n_pairs_total_);
+  const bool new_increment = state.friction_increment != std::array<int, 2>{step, increment};
+  state.friction_increment = {step, increment};
   for (const auto& p : pairs_) {
     auto& s = state.pairs[p->row];
     s.resize(p->geometry->slave().nodes().size());
     for (SlaveState& n : s) n.flips = 0;
+    if (!p->friction) continue;
+    if (state.friction.size() < n_pairs_total_) state.friction.resize(n_pairs_total_);
+    auto& fs = state.friction[p->row];
+    fs.resize(s.size());
+    if (!new_increment) continue;
+    // Commit the converged trial state as the start of the new increment.
+    for (FrictionNodeState& f : fs) {
+      f.anchor_facet = f.active ? f.facet : -1;
+      f.anchor_xi = f.xi;
+      f.e0 = f.active ? f.e : std::array<double, 3>{0, 0, 0};
+      f.slip0 = f.slip;
+    }
   }
 }
 
@@ -246,6 +344,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     const std::size_t n = p.kin.size();
     p.contributes.assign(n, 0);
     p.multiplier.assign(n, -1);
+    if (p.friction) p.fric.resize(n);
     // Direct: a closed node opens when its pressure −λ turns tensile (beyond round-off of the
     // pair's pressures); an open one closes when it penetrates (or touches within round-off).
     double p_scale = 0.0;
@@ -277,8 +376,14 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       if (p.kin[i].found && -g > p.hcrit && it.failure.empty())
         it.failure = fmt::format("slave node {} of pair {}/{} penetrates {:.4g}, more than HCRIT = {:.4g}",
                                  labels[p.kin[i].node], p.deck->slave, p.deck->master, -g, p.hcrit);
+      FrictionNodeState* fs = p.friction ? &state.friction[p.row][i] : nullptr;
+      if (fs) p.clear_friction(i, *fs);
       if (!p.contributes[i]) continue;
       p.geometry->linearize(x, p.kin[i], p.finite_sliding);
+      if (fs && closed) {
+        p.update_friction(i, s, *fs, x);
+        ++friction_evaluations_;
+      }
       signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i),
                                          p.kin[i].projection.facet, p.direct ? 1 : 0});
       if (p.direct) {
@@ -306,8 +411,11 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
 
 void ContactProblem::assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler) {
   const std::int64_t n_eq = assembler.dofs().n_equations();
+  const DofMap& map = assembler.dofs();
   std::vector<std::int64_t> dofs;
-  std::vector<double> k;
+  std::vector<double> k, kf;
+  LocalEquations eqs;
+  skew_.clear();
   for (const auto& p : pairs_) {
     const auto& slaves = state.pairs[p->row];
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
@@ -334,9 +442,29 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
           k[a * n + b] = stiff * lin.gradient[a] * lin.gradient[b] + s * lin.hessian[a * n + b];
       }
       add_matrix(assembler, dofs, k);
+      if (p->friction && !p->fric[i].force.empty()) {
+        // Friction: f = A Bᵀ τ; tangent A Bᵀ ∂τ/∂u + A Bᵀ ∂τ/∂p ⊗ ∂p/∂u, with ∂p/∂u = −p' ∇g
+        // (penalty-type) or, direct, ∂p/∂λ = −1 in the multiplier's column.
+        const contact::FrictionPoint& fp = p->fric[i];
+        const bool with_multiplier = p->multiplier[i] >= 0;
+        const std::size_t nl = n + (with_multiplier ? 1 : 0);
+        eqs.assign(nl, {});
+        for (std::size_t a = 0; a < n; ++a)
+          for (const auto& ma : map.masters(dofs[a]))
+            if (const std::int64_t e = map.equation(ma.dof); e >= 0) eqs[a].push_back({e, ma.weight});
+        if (with_multiplier) eqs[n].push_back({n_eq + p->multiplier[i], 1.0});
+        const double dp_dh = p->direct ? 0.0 : p->pressure(i, slaves[i].lambda).dp;
+        kf.assign(nl * nl, 0.0);
+        for (std::size_t a = 0; a < n; ++a) {
+          f_int[dofs[a]] += area * fp.force[a];
+          for (std::size_t b = 0; b < n; ++b)
+            kf[a * nl + b] = area * (fp.tangent[a * n + b] - fp.coupling[a] * dp_dh * lin.gradient[b]);
+          if (with_multiplier) kf[a * nl + n] = -area * fp.coupling[a];
+        }
+        add_unsymmetric(assembler.tangent(), eqs, kf, skew_);
+      }
       if (p->multiplier[i] < 0) continue;
       // Constraint column A ∇g at the multiplier's equation (upper triangle: DOF rows < it).
-      const DofMap& map = assembler.dofs();
       SparseMatrix& t = assembler.tangent();
       const std::int64_t em = n_eq + p->multiplier[i];
       for (std::size_t a = 0; a < n; ++a)
@@ -362,6 +490,37 @@ void ContactProblem::apply_correction(std::span<const double> rows, ContactState
     const auto [pi, i] = multipliers_[m];
     state.pairs[pairs_[pi]->row][i].lambda += rows[m];
   }
+}
+
+const SparseMatrix& ContactProblem::unsymmetric_tangent(const SparseMatrix& a) {
+  // Mirror the upper triangle (each column comes out sorted: its own rows ≤ j first, then the
+  // mirrored rows c > j in increasing c), then add the skew entries.
+  std::vector<std::int64_t> count(static_cast<std::size_t>(a.n) + 1, 0);
+  for (std::int64_t c = 0; c < a.n; ++c)
+    for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
+      ++count[c + 1];
+      if (a.row_idx[k] != c) ++count[a.row_idx[k] + 1];
+    }
+  full_.n = a.n;
+  full_.upper_only = false;
+  full_.col_ptr.assign(static_cast<std::size_t>(a.n) + 1, 0);
+  for (std::int64_t c = 0; c < a.n; ++c) full_.col_ptr[c + 1] = full_.col_ptr[c] + count[c + 1];
+  full_.row_idx.assign(static_cast<std::size_t>(full_.col_ptr[a.n]), 0);
+  full_.values.assign(static_cast<std::size_t>(full_.col_ptr[a.n]), 0.0);
+  std::vector<std::int64_t> next(full_.col_ptr.begin(), full_.col_ptr.end() - 1);
+  for (std::int64_t c = 0; c < a.n; ++c)
+    for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
+      const std::int64_t r = a.row_idx[k];
+      full_.row_idx[next[c]] = r;
+      full_.values[next[c]++] = a.values[k];
+      if (r != c) {
+        full_.row_idx[next[r]] = c;
+        full_.values[next[r]++] = a.values[k];
+      }
+    }
+  for (const SkewEntry& e : skew_)
+    if (const std::int64_t pos = full_.find(e.row, e.col); pos >= 0) full_.values[pos] += e.value;
+  return full_;
 }
 
 // --- Augmentations -----------------------------------------------------------------------
@@ -421,6 +580,20 @@ ContactResults ContactProblem::results(std::span<const double> u, const ContactS
       r.cnarea = closed ? k.area : 0.0;
       if (k.found)
         for (int c = 0; c < 3; ++c) r.cfn[c] = r.cpress * k.area * k.projection.normal[c];
+      if (p->friction) {
+        // The trial state of the last update is the converged one (no correction followed it).
+        const FrictionNodeState& f = state.friction[p->row][i];
+        r.cslip = f.slip;
+        if (closed && f.active) {
+          r.cstatus = f.slipping ? ContactStatus::Slipping : ContactStatus::Sticking;
+          const auto& t1 = k.projection.t1;
+          const auto& t2 = k.projection.t2;
+          // On the slave: −τ.
+          r.cshear[0] = -(t1[0] * f.tau[0] + t1[1] * f.tau[1] + t1[2] * f.tau[2]);
+          r.cshear[1] = -(t2[0] * f.tau[0] + t2[1] * f.tau[1] + t2[2] * f.tau[2]);
+          for (int c = 0; c < 3; ++c) r.cfs[c] = -k.area * f.tau[c];
+        }
+      }
       out.push_back(r);
     }
   }

@@ -17,6 +17,17 @@
 /// ∇g = [n; −N_a n] over the slave node and its master facet's nodes; ∇²g only for finite
 /// sliding; A the slave node's area, held fixed in the linearisation. Multipliers take the
 /// equations after the DOF map's (Assembler::set_extra_couplings).
+///
+/// Friction (*FRICTION, pairs with μ > 0 or ROUGH only; contact/friction.hpp): every closed
+/// slave node of such a pair adds f = A Bᵀ τ from the elastic-slip return mapping, with the
+/// tangent A Bᵀ ∂τ/∂u and the pressure coupling A Bᵀ ∂τ/∂p ⊗ ∂p/∂u, where ∂p/∂u = −p'(h) ∇g
+/// (penalty-type) or ∂p/∂λ = −1 (direct: a column at the node's multiplier). The symmetric
+/// part goes into the assembler's upper triangle, the skew part is kept apart; Newton then
+/// solves with unsymmetric_tangent() and UMFPACK. The slip history lives in ContactState: the
+/// anchor (facet, ξ₀), elastic slip e₀ and accumulated slip of the converged state at the start
+/// of the increment, committed by begin_attempt() when a new increment starts and left alone
+/// by retries and augmentations. A frictionless pair has no friction state and costs nothing.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -40,9 +51,30 @@ struct SlaveState {
   int flips = 0;        ///< status changes in the current increment attempt
 };
 
+/// The friction history and trial state of a slave node of a frictional pair.
+struct FrictionNodeState {
+  // At the start of the increment (the converged state; committed by begin_attempt).
+  std::int32_t anchor_facet = -1;    ///< zero-shear point: master facet (−1: not in contact) ...
+  std::array<double, 2> anchor_xi{};  ///< ... and parametric point; set on first touch if −1
+  std::array<double, 3> e0{};         ///< elastic slip (global components)
+  std::array<double, 2> slip0{};      ///< accumulated slip in t1/t2 (CSLIP1/2)
+  // At the last update (the trial state).
+  bool active = false;                ///< closed, friction acting
+  bool slipping = false;
+  std::int32_t facet = -1;
+  std::array<double, 2> xi{};
+  std::array<double, 3> e{};          ///< elastic slip after the return mapping
+  std::array<double, 3> tau{};        ///< frictional stress on the master (slave carries −τ)
+  std::array<double, 2> slip{};       ///< accumulated slip including this increment
+};
+
 /// The contact part of the solution state, copied with it when an increment is retried.
 struct ContactState {
   std::vector<std::vector<SlaveState>> pairs;  ///< by pair row; empty while the pair is not in force
+  /// By pair row; empty for frictionless pairs (and pairs not in force).
+  std::vector<std::vector<FrictionNodeState>> friction;
+  /// (step, increment) whose start the friction history holds.
+  std::array<int, 2> friction_increment{-1, -1};
 };
 
 /// What one update of the contact geometry and status found.
@@ -62,7 +94,7 @@ struct AugmentationCheck {
 };
 
 /// Throws AnalysisError (citing the deck) for contact this version does not analyse: general
-/// contact, surface-to-surface pairs, friction, clearances, ADJUST, tied or no-separation
+/// contact, surface-to-surface pairs, LAGRANGE friction, clearances, ADJUST, tied or no-separation
 /// contact, self-contact, node-based masters, and multipliers that softened laws or large
 /// penalty stiffnesses would need (table 38.1.21).
 void check_contact_supported(const model::Model& model);
@@ -79,8 +111,11 @@ class ContactProblem {
   /// One line per pair: surfaces, method, law and stiffness (for the step's messages).
   std::vector<std::string> describe() const;
 
-  /// Sizes `state` for the pairs in force and resets the status-change counters.
-  void begin_attempt(ContactState& state) const;
+  bool has_friction() const;
+  /// Sizes `state` for the pairs in force and resets the status-change counters. When
+  /// (step, increment) differs from the one `state` was last begun for, a new increment starts
+  /// from the converged state: the friction history is committed from its trial values.
+  void begin_attempt(ContactState& state, int step, int increment) const;
   /// Search, projection and contact status at displacement u; rebuilds the assembler's pattern
   /// when the contact couplings or the multipliers changed.
   ContactIteration update(std::span<const double> u, ContactState& state, Assembler& assembler);
@@ -91,6 +126,13 @@ class ContactProblem {
   void constraint_residual(std::span<double> rows) const;
   /// λ += Δλ from the solution's multiplier rows.
   void apply_correction(std::span<const double> rows, ContactState& state) const;
+  /// Did the last assemble() leave an unsymmetric part (friction with a pressure coupling)?
+  bool unsymmetric() const { return !skew_.empty(); }
+  /// The full (both triangles) tangent: the assembler's symmetric upper triangle `upper`
+  /// mirrored, plus the skew part of the last assemble(). For UMFPACK.
+  const SparseMatrix& unsymmetric_tangent(const SparseMatrix& upper);
+  /// Friction return mappings evaluated so far (0 for a frictionless model: tests).
+  std::int64_t friction_evaluations() const { return friction_evaluations_; }
 
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
@@ -109,6 +151,14 @@ class ContactProblem {
   std::vector<std::int64_t> signature_;  ///< couplings the assembler's pattern holds
   /// Multiplier m (equation n_eq + m): pair index into pairs_, slave index.
   std::vector<std::pair<std::size_t, std::size_t>> multipliers_;
+  /// Skew part of the contact tangent, ½(K − Kᵀ) entries (row, column equation, value).
+  struct SkewEntry {
+    std::int64_t row, col;
+    double value;
+  };
+  std::vector<SkewEntry> skew_;
+  SparseMatrix full_;
+  std::int64_t friction_evaluations_ = 0;
 };
 
 }  // namespace inpact::solver

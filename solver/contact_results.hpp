@@ -1,6 +1,7 @@
 #pragma once
 /// Contact output values of one converged increment: one record per slave node per contact
-/// pair, what field_output.* turns into CPRESS, COPEN, CSTATUS, CNAREA and CFN frames. Plain data.
+/// pair, what field_output.* turns into CPRESS, COPEN, CSTATUS, CNAREA, CFN, CSHEAR1/2, CSLIP1/2
+/// and CFS frames. Plain data.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -20,6 +21,14 @@ struct ContactNodeResult {
   ContactStatus cstatus = ContactStatus::Open;
   double cnarea = 0.0;    ///< the node's contact area when closed, else 0
   std::array<double, 3> cfn{0, 0, 0};  ///< normal contact force on the slave node, p A n
+  /// Frictional stress on the slave in the t1/t2 directions (contact/projection.hpp's basis): it
+  /// opposes the slave's slip relative to the master, |CSHEAR| = μ CPRESS while slipping.
+  /// Zero for frictionless pairs and open nodes.
+  std::array<double, 2> cshear{0, 0};
+  /// Accumulated relative tangential motion of the slave on the master in t1/t2 (elastic slip
+  /// included), summed over increments while closed. Zero for frictionless pairs (not tracked).
+  std::array<double, 2> cslip{0, 0};
+  std::array<double, 3> cfs{0, 0, 0};  ///< frictional force on the slave node, A × (the stress above)
 };
 
 using ContactResults = std::vector<ContactNodeResult>;

@@ -1,5 +1,6 @@
 #include "field_output.hpp"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -75,7 +76,8 @@ std::string field_key(std::string_view v, Domain d) {
     if (v == "CSTRESS") return "CPRESS";
     if (v == "CDISP") return "COPEN";
     if (v == "CFN1" || v == "CFN2" || v == "CFN3") return "CFN";
-    for (std::string_view k : {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN"})
+    if (v == "CFS1" || v == "CFS2" || v == "CFS3") return "CFS";
+    for (std::string_view k : {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN", "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFS"})
       if (v == k) return std::string(k);
   }
   if (element) {
@@ -131,11 +133,22 @@ constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E"};
 
 bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
 
-constexpr const char* kContactKeys[] = {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN"};
+constexpr const char* kContactKeys[] = {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN",
+                                        "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFS"};
 
 bool model_has_contact(const model::Model& m) {
   if (!m.contact_pairs.empty()) return true;
   return std::any_of(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return !s.contact_pairs.empty(); });
+}
+
+/// Does some interaction carry friction (μ > 0 or ROUGH)? Only then do CSTRESS and CDISP (and
+/// the preselection) bring the tangential fields CSHEAR1/2 and CSLIP1/2 along: a frictionless
+/// model's results stay as they were (they would be zeros).
+bool model_has_friction(const model::Model& m) {
+  return std::any_of(m.interactions.begin(), m.interactions.end(), [](const auto& kv) {
+    const auto& f = kv.second.friction;
+    return f && (f->mu > 0.0 || f->rough);
+  });
 }
 
 }  // namespace
@@ -219,14 +232,21 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (r.all && (d == Domain::Node || d == Domain::Model)) a.variables.push_back("COORD");
         if (d == Domain::Element || d == Domain::Model) a.variables.insert(a.variables.end(), {"S", "E"});
         // Abaqus's preselection holds CSTRESS and CDISP: inpact's CPRESS and COPEN.
-        if (d == Domain::Contact || (d == Domain::Model && model_has_contact(model)))
+        if (d == Domain::Contact || (d == Domain::Model && model_has_contact(model))) {
           a.variables.insert(a.variables.end(), {"CPRESS", "COPEN"});
+          if (model_has_friction(model)) a.variables.insert(a.variables.end(), {"CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2"});
+        }
         if (r.all && d == Domain::Contact) a.variables.insert(a.variables.end(), {"CSTATUS", "CNAREA", "CFN"});
+        if (r.all && d == Domain::Contact && model_has_friction(model)) a.variables.push_back("CFS");
       }
       for (const std::string& v : r.variables) {
         const std::string key = field_key(v, d);
         if (key.empty()) add_unique(not_computed_, v);
         else add_unique(a.variables, key);
+        // CSTRESS = CPRESS + CSHEAR1/2, CDISP = COPEN + CSLIP1/2 (with friction).
+        if ((v == "CSTRESS" || v == "CDISP") && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
+          for (const char* t : v == "CSTRESS" ? std::array{"CSHEAR1", "CSHEAR2"} : std::array{"CSLIP1", "CSLIP2"})
+            add_unique(a.variables, t);
       }
       field_timing_.emplace_back(r, period);
       field_.push_back(std::move(a));
@@ -548,7 +568,9 @@ FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const
   FieldData f;
   f.key = key;
   f.position = Position::Nodal;
-  f.component_labels = key == "CFN" ? std::vector<std::string>{"CFN1", "CFN2", "CFN3"} : std::vector<std::string>{key};
+  f.component_labels = key == "CFN"   ? std::vector<std::string>{"CFN1", "CFN2", "CFN3"}
+                       : key == "CFS" ? std::vector<std::string>{"CFS1", "CFS2", "CFS3"}
+                                      : std::vector<std::string>{key};
   for (const ContactNodeResult& c : contact) {
     if (!pairs.count(c.pair)) continue;
     f.nodes.push_back(c.node);
@@ -557,6 +579,11 @@ FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const
     else if (key == "COPEN") f.values.push_back(c.copen);
     else if (key == "CSTATUS") f.values.push_back(static_cast<double>(c.cstatus));
     else if (key == "CNAREA") f.values.push_back(c.cnarea);
+    else if (key == "CSHEAR1") f.values.push_back(c.cshear[0]);
+    else if (key == "CSHEAR2") f.values.push_back(c.cshear[1]);
+    else if (key == "CSLIP1") f.values.push_back(c.cslip[0]);
+    else if (key == "CSLIP2") f.values.push_back(c.cslip[1]);
+    else if (key == "CFS") f.values.insert(f.values.end(), c.cfs.begin(), c.cfs.end());
     else f.values.insert(f.values.end(), c.cfn.begin(), c.cfn.end());
   }
   return f;

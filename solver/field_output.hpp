@@ -122,9 +122,11 @@ struct OutputValues {
 /// (full DOF vectors); `delta_t` the nodal temperature change, as for the assembly. Element
 /// point values are computed only for the elements a due request covers.
 /// `contact`: the contact values of the increment (null without contact), written as the
-/// NODAL contact fields CPRESS, COPEN, CSTATUS, CNAREA and CFN (one location per slave node per
-/// pair, `pair` and `nodes` filled) for *CONTACT OUTPUT requests (SLAVE/MASTER restrict the
-/// pairs; CSTRESS asks for CPRESS, CDISP for COPEN; PRESELECT gives CPRESS and COPEN, ALL all five).
+/// NODAL contact fields CPRESS, COPEN, CSTATUS, CNAREA, CFN and, for friction, CSHEAR1/2,
+/// CSLIP1/2 and CFS (one location per slave node per pair, `pair` and `nodes` filled) for
+/// *CONTACT OUTPUT requests (SLAVE/MASTER restrict the pairs; CSTRESS asks for CPRESS, CDISP for
+/// COPEN, each with CSHEAR1/2 resp. CSLIP1/2 when the model has friction; PRESELECT gives
+/// CPRESS and COPEN (+ CSHEAR, CSLIP with friction), ALL also CSTATUS, CNAREA, CFN (+ CFS)).
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
                             std::span<const double> delta_t, const ContactResults* contact = nullptr);

@@ -29,9 +29,12 @@ std::pair<double, std::int64_t> largest_residual(const DofMap& dofs, std::span<c
 /// Abaqus's q: the spatial average of the force magnitudes over the model, element nodal forces
 /// and applied loads together (without the applied loads the first iteration of a load-driven
 /// increment would see no force at all).
-double average_force(const AssemblyResult& assembly, std::span<const double> f_ext) {
-  double sum = assembly.average_force * static_cast<double>(assembly.n_force_entries);
-  std::size_t count = assembly.n_force_entries;
+/// Contact forces count too: an interference fit with no applied load has nothing else at its
+/// first iteration, and measured against zero it would "converge" with the overclosure in place.
+double average_force(const AssemblyResult& assembly, std::span<const double> f_ext, double contact_sum,
+                     std::size_t contact_count) {
+  double sum = assembly.average_force * static_cast<double>(assembly.n_force_entries) + contact_sum;
+  std::size_t count = assembly.n_force_entries + contact_count;
   for (double f : f_ext)
     if (f != 0.0) {
       sum += std::abs(f);
@@ -57,12 +60,14 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
   state.f_int.assign(n, 0.0);
 
   std::vector<double> r_full(n), r(n_eq), du(n_eq);
+  std::vector<double> f_int_elements;  // f_int before the contact forces are added (for q)
   NewtonOutcome out;
   std::vector<double> history;  // largest residual per iteration
   LinearSolver* solver = &ctx.cholmod;
   double increment_force = 0.0;
 
-  if (ctx.contact) ctx.contact->begin_attempt(state.contact);
+  // A new increment commits the friction history of the converged state it starts from.
+  if (ctx.contact) ctx.contact->begin_attempt(state.contact, ctx.step_number, ctx.increment);
   for (int k = 0;; ++k) {
     // Contact search, projection and status at u_k (may resize the system: multipliers).
     ContactIteration contact;
@@ -80,17 +85,26 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     request.nlgeom = ctx.nlgeom;
     request.delta_t = delta_t;
     const AssemblyResult asm_result = ctx.assembler.assemble(state.u, request, state.f_int);
-    if (ctx.contact) ctx.contact->assemble(state.contact, state.f_int, ctx.assembler);
+    double contact_force_sum = 0.0;
+    std::size_t contact_force_count = 0;
+    if (ctx.contact) {
+      f_int_elements.assign(state.f_int.begin(), state.f_int.end());
+      ctx.contact->assemble(state.contact, state.f_int, ctx.assembler);
+      for (std::size_t d = 0; d < n; ++d)
+        if (const double fc = state.f_int[d] - f_int_elements[d]; fc != 0.0) {
+          contact_force_sum += std::abs(fc);
+          ++contact_force_count;
+        }
+    }
     for (std::size_t d = 0; d < n; ++d) r_full[d] = state.f_ext[d] - state.f_int[d];
     ctx.assembler.reduce(r_full, std::span(r).first(n_eq));
     if (ctx.contact) ctx.contact->constraint_residual(std::span(r).subspan(n_eq));
 
     const auto [max_r, worst] = largest_residual(dofs, r);
-    const double q_now = average_force(asm_result, state.f_ext);
+    const double q_now = average_force(asm_result, state.f_ext, contact_force_sum, contact_force_count);
     out.max_residual = max_r;
     out.worst_dof = worst;
     out.iterations = k;
-    // q̃: the force magnitude averaged over the step's converged increments and this one.
     // q̃: the force magnitude averaged over the step's converged increments and this one, where
     // this one counts with the largest q of its iterations. A rigid-body move ends with nearly
     // no force at all; measured against its own round-off it would never converge, measured
@@ -150,16 +164,19 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     }
 
     // Solve K Δu = r; a tangent that is not positive definite (or a saddle-point system with
-    // contact multipliers) goes to UMFPACK.
+    // contact multipliers) goes to UMFPACK, and so does an unsymmetric one (friction), given
+    // in full.
     if (!request.tangent) {  // same u: f_int comes out the same, now with K(u_k)
       request.tangent = true;
       ctx.assembler.assemble(state.u, request, state.f_int);
     }
-    if (n_sys > n_eq) solver = &ctx.umfpack;
-    FactorStatus status = solver->factorize(ctx.assembler.tangent());
+    const SparseMatrix* tangent = &ctx.assembler.tangent();
+    if (ctx.contact && ctx.contact->unsymmetric()) tangent = &ctx.contact->unsymmetric_tangent(*tangent);
+    if (n_sys > n_eq || !tangent->upper_only) solver = &ctx.umfpack;
+    FactorStatus status = solver->factorize(*tangent);
     if (status == FactorStatus::NotPositiveDefinite) {
       solver = &ctx.umfpack;
-      status = solver->factorize(ctx.assembler.tangent());
+      status = solver->factorize(*tangent);
     }
     if (status == FactorStatus::Singular || status == FactorStatus::NotPositiveDefinite) {
       out.failure = "the stiffness matrix is singular: a part of the model is free to move as a rigid body "

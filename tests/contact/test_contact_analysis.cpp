@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "fixtures/deck_fixture.hpp"
 #include "solver/analysis_error.hpp"
 #include "verification/verification_fixture.hpp"
 
@@ -250,19 +251,20 @@ std::string deck_with(const std::string& base, const std::string& after, const s
   return s.substr(0, at + 1) + insert + s.substr(at + 1);
 }
 
-TEST(ContactRefusals, FrictionIsRefusedRatherThanRunFrictionless) {
-  const auto dir = std::filesystem::current_path() / "contact_decks";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "friction.inp";
-  std::ofstream(path) << deck_with("patch_2d_penalty.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3\n");
-  auto deck = parser::read_deck(path.string());
+// Friction by stiffness is analysed (tests/contact/test_friction.cpp); sticking enforced by
+// Lagrange multipliers is not, and is refused rather than run by stiffness.
+TEST(ContactRefusals, LagrangeFrictionIsRefusedRatherThanRunByStiffness) {
+  const DeckDir dir;
+  auto deck = parser::read_deck(
+      dir.write("friction.inp", deck_with("patch_2d_penalty.inp", "*SURFACE BEHAVIOR", "*FRICTION, LAGRANGE\n0.3\n")));
   ASSERT_TRUE(deck.ok()) << deck.report();
   verification::Capture capture;
   try {
     solver::run_analysis(deck.model, capture);
-    FAIL() << "a deck with friction ran";
+    FAIL() << "a deck with LAGRANGE friction ran";
   } catch (const solver::AnalysisError& e) {
-    EXPECT_NE(std::string(e.what()).find("friction is not analysed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("LAGRANGE (sticking enforced by Lagrange multipliers) is not analysed"),
+              std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("friction.inp:"), std::string::npos) << e.what();
   }
 }

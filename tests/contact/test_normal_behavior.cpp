@@ -132,8 +132,14 @@ TEST(NormalBehavior, LagrangeMultipliersSwitchOnAbove1000Ke) {
   at.penalty_stiffness = 1000.0 * ke;  // exactly 1000 k_e: still no (k ≤ 1000 k_e)
   const auto i_at = with_behavior(at);
   EXPECT_FALSE(uses_lagrange_multipliers(resolve_normal_behavior(&i_at, kSts, false, false), ke));
+  // Round-off above 1000 k_e (100 × 10 k_e computed in floating point) does not switch; a
+  // real excess of one part in a billion does.
+  auto rounding = at;
+  rounding.penalty_stiffness = std::nextafter(1000.0 * ke, 2e6);
+  const auto i_rounding = with_behavior(rounding);
+  EXPECT_FALSE(uses_lagrange_multipliers(resolve_normal_behavior(&i_rounding, kSts, false, false), ke));
   auto above = at;
-  above.penalty_stiffness = std::nextafter(1000.0 * ke, 2e6);
+  above.penalty_stiffness = 1000.0 * ke * (1.0 + 1e-9);
   const auto i_above = with_behavior(above);
   EXPECT_TRUE(uses_lagrange_multipliers(resolve_normal_behavior(&i_above, kSts, false, false), ke));
 

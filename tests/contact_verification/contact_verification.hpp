@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "verification/verification_fixture.hpp"
 
 namespace inpact::contact_verification {
@@ -43,10 +45,11 @@ inline std::string deck_path(const std::string& name) {
 }
 
 /// The deck `name` at mesh `level`: the committed one for level 1, else generated into the
-/// test's working directory by gen_contact_verification.py.
+/// temporary folder (one per test process) by gen_contact_verification.py.
 inline std::string deck_at_level(const std::string& name, int level) {
   if (level == 1) return deck_path(name);
-  const auto dir = std::filesystem::current_path() / "contact_verification_decks";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("inpact-contact-verification-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string cmd = "python3 " + std::string(INPACT_SOURCE_DIR) +
                           "/decks/contact_verification/gen_contact_verification.py --out " + dir.string() +

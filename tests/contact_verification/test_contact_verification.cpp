@@ -185,21 +185,30 @@ TEST(InterferenceFit, DirectMeanPressureMatchesLame) {
 // `no_force = q <= 0` accepts the increment with the whole overclosure left in: penalty writes
 // CPRESS = k δ (×300 the Lamé pressure at the default stiffness), augmented Lagrange augments 50
 // times without moving and gives up. Enable once q includes the contact forces.
-TEST(InterferenceFit, DISABLED_PenaltyTypeMethodsGiveTheLamePressure) {
-  std::map<std::string, double> mean;
-  for (const auto& [name, params] : kMethods) {
-    auto r = run(deck_path("interference_2d"), params);
-    ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
-    const FitFigures fit = fit_figures(*r, r->capture.last());
-    report("interference_2d " + name + ": mean CPRESS / Lame - 1", fit.p_mean / fit.p_ref - 1.0);
-    report("interference_2d " + name + ": max penetration", fit.max_penetration);
-    mean[name] = fit.p_mean;
-    EXPECT_NEAR(fit.p_mean, fit.p_ref, 0.06 * fit.p_ref) << name;
-    if (name == "augmented Lagrange") {
-      EXPECT_LE(fit.max_penetration, 1e-3 * slave_length(*r, "OUTER_S"));
-    }
-  }
-  for (const auto& [name, p] : mean) EXPECT_NEAR(p, mean.at("direct"), 0.05 * mean.at("direct")) << name;
+/// Runs the interference fit with `params` and checks the mean pressure against Lamé.
+double interference_mean_pressure(const std::string& name, const Params& params) {
+  auto r = run(deck_path("interference_2d"), params);
+  EXPECT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
+  if (!r->outcome.completed) return 0.0;
+  const FitFigures fit = fit_figures(*r, r->capture.last());
+  report("interference_2d " + name + ": mean CPRESS / Lame - 1", fit.p_mean / fit.p_ref - 1.0);
+  report("interference_2d " + name + ": max penetration", fit.max_penetration);
+  EXPECT_NEAR(fit.p_mean, fit.p_ref, 0.06 * fit.p_ref) << name;
+  if (name == "augmented Lagrange") EXPECT_LE(fit.max_penetration, 1e-3 * slave_length(*r, "OUTER_S"));
+  return fit.p_mean;
+}
+
+TEST(InterferenceFit, PenaltyMethodsGiveTheLamePressureAndAgreeWithDirect) {
+  const double direct = interference_mean_pressure("direct", kMethods.at("direct"));
+  for (const char* name : {"penalty", "nonlinear penalty"})
+    EXPECT_NEAR(interference_mean_pressure(name, kMethods.at(name)), direct, 0.05 * direct) << name;
+}
+
+// Known defect: augmented Lagrange chatters on this deck. A slave node whose direct-method
+// pressure is 4.5 % of Lamé (faceting noise) flips status six times in the first increment,
+// and cutting back cannot help an overclosure set by the geometry. Enable when fixed.
+TEST(InterferenceFit, DISABLED_AugmentedLagrangeGivesTheLamePressure) {
+  interference_mean_pressure("augmented Lagrange", kMethods.at("augmented Lagrange"));
 }
 
 }  // namespace

@@ -1,0 +1,128 @@
+#include "friction.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace inpact::contact {
+
+namespace {
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+}  // namespace
+
+std::optional<FrictionLaw> resolve_friction(const model::Friction* friction, double l_char, double ke) {
+  if (!friction || (!friction->rough && !(friction->mu > 0.0))) return std::nullopt;
+  FrictionLaw law;
+  law.rough = friction->rough;
+  law.mu = friction->mu;
+  if (friction->elastic_slip) {  // ELASTIC SLIP overrides SLIP TOLERANCE [K16 *FRICTION]
+    law.gamma_crit = *friction->elastic_slip;
+    law.gamma_is_absolute = true;
+  } else {
+    law.gamma_crit = friction->slip_tolerance.value_or(0.005) * l_char;
+  }
+  if (law.rough) law.fixed_stiffness = kRoughStiffnessFactor * ke;
+  // CalculiX's stick slope λ (its *FRICTION's second field) is a fixed stick stiffness; an
+  // Abaqus SLIP TOLERANCE or ELASTIC SLIP given with it wins.
+  else if (friction->stick_slope && !friction->elastic_slip && !friction->slip_tolerance)
+    law.fixed_stiffness = *friction->stick_slope;
+  return law;
+}
+
+std::string describe(const FrictionLaw& law) {
+  if (law.rough) return fmt::format("ROUGH friction (no slip), stick stiffness {:.4g} = {:g} k_e", law.fixed_stiffness,
+                                    kRoughStiffnessFactor);
+  if (law.fixed_stiffness > 0.0)
+    return fmt::format("Coulomb friction mu = {:g}, stick slope {:.4g} (CalculiX)", law.mu, law.fixed_stiffness);
+  return fmt::format("Coulomb friction mu = {:g}, penalty (elastic slip), allowable elastic slip {:.4g}{}", law.mu,
+                     law.gamma_crit, law.gamma_is_absolute ? " (ELASTIC SLIP)" : "");
+}
+
+FrictionPoint friction_point(const FrictionLaw& law, const Facet& facet, const Projection& p,
+                             const GapLinearization& lin, const Facet& anchor_facet, const FrictionAnchor& anchor,
+                             const Vec3& e0, double pressure, std::span<const Vec3> x) {
+  const int dim = lin.dim;
+  const int nd = lin.n_dof;
+  const std::size_t n = static_cast<std::size_t>(nd);
+  FrictionPoint out;
+  out.n_dof = nd;
+
+  // Δx = x_s − x_anchor(ξ₀) on the current coordinates (its tangential part equals the motion
+  // of the projected point, x_s − x_m(ξ) being normal), and D = ∂Δx/∂u with the anchor taken as
+  // the material point at the current ξ of the current facet: slave block I, facet node a
+  // block −N_a(ξ) I. The same D distributes the force: the master's share acts at the contact
+  // point, whichever facet the anchor lies on.
+  const FacetGeometry g0 = facet_geometry(anchor_facet, x, anchor.xi[0], anchor.xi[1]);
+  const ShapeEval s = eval_shape(facet.shape, p.xi[0], p.xi[1]);
+  const Vec3& xs = x[static_cast<std::size_t>(lin.nodes[0])];
+  Vec3 dx{};
+  for (int c = 0; c < 3; ++c) dx[c] = xs[c] - g0.x[c];
+  std::vector<double> D(3 * n, 0.0);
+  for (int c = 0; c < dim; ++c) D[c * n + static_cast<std::size_t>(c)] = 1.0;
+  for (int a = 0; a < s.n; ++a)
+    for (int c = 0; c < dim; ++c) D[c * n + static_cast<std::size_t>((a + 1) * dim + c)] = -s.N[a];
+
+  // P_T, Δs = P_T Δx, B = P_T D.
+  double PT[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) PT[r][c] = p.t1[r] * p.t1[c] + p.t2[r] * p.t2[c];
+  std::vector<double> B(3 * n, 0.0);
+  Vec3 e_tr{};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      out.slip_increment[r] += PT[r][c] * dx[c];
+      e_tr[r] += PT[r][c] * e0[c];
+      for (std::size_t j = 0; j < n; ++j) B[r * n + j] += PT[r][c] * D[c * n + j];
+    }
+  }
+  for (int r = 0; r < 3; ++r) e_tr[r] += out.slip_increment[r];
+
+  // Return mapping.
+  const double k = law.stiffness(pressure);
+  const double e_norm = std::sqrt(dot(e_tr, e_tr));
+  const double limit = law.mu * pressure;
+  double M[3][3] = {};  // ∂τ/∂Δs at fixed pressure
+  Vec3 dtau_dp{};
+  out.slipping = !law.rough && k * e_norm > limit * (1.0 + 1e-12) && e_norm > 0.0;
+  if (!out.slipping) {
+    out.elastic_slip = e_tr;
+    for (int r = 0; r < 3; ++r) {
+      out.traction[r] = k * e_tr[r];
+      dtau_dp[r] = law.dstiffness_dp() * e_tr[r];
+      for (int c = 0; c < 3; ++c) M[r][c] = k * PT[r][c];
+    }
+  } else {
+    Vec3 m{};
+    for (int r = 0; r < 3; ++r) m[r] = e_tr[r] / e_norm;
+    for (int r = 0; r < 3; ++r) {
+      out.traction[r] = limit * m[r];
+      out.elastic_slip[r] = (k > 0.0 ? limit / k : 0.0) * m[r];
+      dtau_dp[r] = law.mu * m[r];
+      for (int c = 0; c < 3; ++c) M[r][c] = limit / e_norm * (PT[r][c] - m[r] * m[c]);
+    }
+  }
+
+  // force = Bᵀ τ, coupling = Bᵀ ∂τ/∂p, tangent = Bᵀ M B.
+  out.force.assign(n, 0.0);
+  out.coupling.assign(n, 0.0);
+  std::vector<double> MB(3 * n, 0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      if (M[r][c] != 0.0)
+        for (std::size_t j = 0; j < n; ++j) MB[r * n + j] += M[r][c] * B[c * n + j];
+  out.tangent.assign(n * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int r = 0; r < 3; ++r) {
+      const double bri = B[r * n + i];
+      if (bri == 0.0) continue;
+      out.force[i] += bri * out.traction[r];
+      out.coupling[i] += bri * dtau_dp[r];
+      for (std::size_t j = 0; j < n; ++j) out.tangent[i * n + j] += bri * MB[r * n + j];
+    }
+  }
+  return out;
+}
+
+}  // namespace inpact::contact
