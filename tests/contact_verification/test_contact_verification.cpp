@@ -194,7 +194,9 @@ double interference_mean_pressure(const std::string& name, const Params& params)
   report("interference_2d " + name + ": mean CPRESS / Lame - 1", fit.p_mean / fit.p_ref - 1.0);
   report("interference_2d " + name + ": max penetration", fit.max_penetration);
   EXPECT_NEAR(fit.p_mean, fit.p_ref, 0.06 * fit.p_ref) << name;
-  if (name == "augmented Lagrange") EXPECT_LE(fit.max_penetration, 1e-3 * slave_length(*r, "OUTER_S"));
+  if (name == "augmented Lagrange") {
+    EXPECT_LE(fit.max_penetration, 1e-3 * slave_length(*r, "OUTER_S"));
+  }
   return fit.p_mean;
 }
 
