@@ -10,6 +10,8 @@ explicit *NSET, element-based *SURFACEs by set and face, *SOLID SECTION, *MATERI
 """
 import sys
 
+import cube_mesh
+
 
 def write_labels(out, labels, per_line=16):
     for i in range(0, len(labels), per_line):
@@ -25,10 +27,10 @@ def main():
     h = 1.0 / n
 
     def node(i, j, k):
-        return 1 + i + m * j + m * m * k
+        return cube_mesh.node_label(n, i, j, k)
 
     def elem(i, j, k):
-        return 1 + i + n * j + n * n * k
+        return cube_mesh.element_label(n, i, j, k)
 
     with open(path, "w", buffering=1 << 22) as out:
         out.write("*HEADING\nStructured C3D8 cube, %d x %d x %d elements (inpact reading benchmark)\n" % (n, n, n))
@@ -45,15 +47,8 @@ def main():
                 base = node(0, j, k)
                 out.write("".join("%7d, %s%s" % (base + i, coord[i], tail) for i in range(m)))
         out.write("*ELEMENT, TYPE=C3D8, ELSET=CUBE\n")
-        for k in range(n):
-            for j in range(n):
-                rows = []
-                for i in range(n):
-                    a = node(i, j, k)
-                    b = a + m * m
-                    rows.append("%d, %d, %d, %d, %d, %d, %d, %d, %d\n" % (
-                        elem(i, j, k), a, a + 1, a + 1 + m, a + m, b, b + 1, b + 1 + m, b + m))
-                out.write("".join(rows))
+        for block in cube_mesh.element_rows(n):
+            out.write(block)
         # Sets by GENERATE: the bottom and top node layers, the bottom and top element layers.
         out.write("*NSET, NSET=BOTTOM, GENERATE\n1, %d, 1\n" % (m * m))
         out.write("*NSET, NSET=TOP, GENERATE\n%d, %d, 1\n" % (node(0, 0, n), node(n, n, n)))

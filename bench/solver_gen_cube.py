@@ -14,6 +14,8 @@ The CalculiX deck differs only where the dialects do: *NODE PRINT writes ccx's .
 """
 import sys
 
+import cube_mesh
+
 
 def main():
     if len(sys.argv) != 4:
@@ -23,10 +25,10 @@ def main():
     h = 1.0 / n
 
     def node(i, j, k):
-        return 1 + i + m * j + m * m * k
+        return cube_mesh.node_label(n, i, j, k)
 
     def elem(i, j, k):
-        return 1 + i + n * j + n * n * k
+        return cube_mesh.element_label(n, i, j, k)
 
     mesh = []
     mesh.append("*NODE, NSET=ALLN\n")
@@ -35,15 +37,8 @@ def main():
             base = node(0, j, k)
             mesh.append("".join("%d, %.12g, %.12g, %.12g\n" % (base + i, i * h, j * h, k * h) for i in range(m)))
     mesh.append("*ELEMENT, TYPE=C3D8, ELSET=CUBE\n")
-    for k in range(n):
-        for j in range(n):
-            rows = []
-            for i in range(n):
-                a = node(i, j, k)
-                b = a + m * m
-                rows.append("%d, %d, %d, %d, %d, %d, %d, %d, %d\n" % (
-                    elem(i, j, k), a, a + 1, a + 1 + m, a + m, b, b + 1, b + 1 + m, b + m))
-            mesh.append("".join(rows))
+    for block in cube_mesh.element_rows(n):
+        mesh.append(block)
     mesh.append("*NSET, NSET=BOTTOM, GENERATE\n1, %d, 1\n" % (m * m))
     mesh.append("*NSET, NSET=TIP\n%d\n" % node(n, n, n))
     mesh.append("*ELSET, ELSET=TOP_EL, GENERATE\n%d, %d, 1\n" % (elem(0, 0, n - 1), elem(n - 1, n - 1, n - 1)))
