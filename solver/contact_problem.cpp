@@ -303,14 +303,18 @@ void check_contact_supported(const model::Model& m) {
 
 // --- Iterations --------------------------------------------------------------------------
 
-void ContactProblem::begin_attempt(ContactState& state, int step, int increment) const {
+void ContactProblem::begin_attempt(ContactState& state, int step, int increment, std::span<const double> u_start) {
   state.pairs.resize(n_pairs_total_);
+  evaluate(u_start);
   const bool new_increment = state.friction_increment != std::array<int, 2>{step, increment};
   state.friction_increment = {step, increment};
   for (const auto& p : pairs_) {
     auto& s = state.pairs[p->row];
     s.resize(p->geometry->slave().nodes().size());
-    for (SlaveState& n : s) n.flips = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      s[i].flips = 0;
+      s[i].start_penetration = p->kin[i].found ? std::max(0.0, -p->gap(i)) : 0.0;
+    }
     if (!p->friction) continue;
     if (state.friction.size() < n_pairs_total_) state.friction.resize(n_pairs_total_);
     auto& fs = state.friction[p->row];
@@ -373,9 +377,10 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
                                    "increment", labels[p.kin[i].node], p.deck->slave, p.deck->master, s.flips);
       }
       s.closed = closed;
-      if (p.kin[i].found && -g > p.hcrit && it.failure.empty())
-        it.failure = fmt::format("slave node {} of pair {}/{} penetrates {:.4g}, more than HCRIT = {:.4g}",
-                                 labels[p.kin[i].node], p.deck->slave, p.deck->master, -g, p.hcrit);
+      if (p.kin[i].found && -g - s.start_penetration > p.hcrit && it.failure.empty())
+        it.failure = fmt::format("slave node {} of pair {}/{} penetrates {:.4g} (from {:.4g} at the start of the "
+                                 "increment), more than HCRIT = {:.4g}",
+                                 labels[p.kin[i].node], p.deck->slave, p.deck->master, -g, s.start_penetration, p.hcrit);
       FrictionNodeState* fs = p.friction ? &state.friction[p.row][i] : nullptr;
       if (fs) p.clear_friction(i, *fs);
       if (!p.contributes[i]) continue;

@@ -49,6 +49,10 @@ struct SlaveState {
   double lambda = 0.0;  ///< augmented Lagrange: λ (a pressure); direct: the multiplier (pressure −λ)
   bool closed = false;  ///< contact status at the last update
   int flips = 0;        ///< status changes in the current increment attempt
+  /// Penetration at the start of the attempt (from the converged state). HCRIT limits what an
+  /// attempt adds to it: an initial overclosure (an interference fit) is resolved in the first
+  /// increment, and no cutback could reduce it.
+  double start_penetration = 0.0;
 };
 
 /// The friction history and trial state of a slave node of a frictional pair.
@@ -115,7 +119,9 @@ class ContactProblem {
   /// Sizes `state` for the pairs in force and resets the status-change counters. When
   /// (step, increment) differs from the one `state` was last begun for, a new increment starts
   /// from the converged state: the friction history is committed from its trial values.
-  void begin_attempt(ContactState& state, int step, int increment) const;
+  /// `u_start`: the converged displacements the attempt starts from (penetrations there are
+  /// the baseline of the HCRIT check).
+  void begin_attempt(ContactState& state, int step, int increment, std::span<const double> u_start);
   /// Search, projection and contact status at displacement u; rebuilds the assembler's pattern
   /// when the contact couplings or the multipliers changed.
   ContactIteration update(std::span<const double> u, ContactState& state, Assembler& assembler);

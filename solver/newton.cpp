@@ -67,7 +67,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
   double increment_force = 0.0;
 
   // A new increment commits the friction history of the converged state it starts from.
-  if (ctx.contact) ctx.contact->begin_attempt(state.contact, ctx.step_number, ctx.increment);
+  if (ctx.contact) ctx.contact->begin_attempt(state.contact, ctx.step_number, ctx.increment, u_start);
   for (int k = 0;; ++k) {
     // Contact search, projection and status at u_k (may resize the system: multipliers).
     ContactIteration contact;

@@ -140,7 +140,7 @@ TEST(FrictionCost, FrictionlessPathBuildsNoTangentialTerms) {
   solver::ContactProblem problem(am, 0);
   EXPECT_FALSE(problem.has_friction());
   solver::ContactState state;
-  problem.begin_attempt(state, 1, 1);
+  problem.begin_attempt(state, 1, 1, std::vector<double>(am.n_dof(), 0.0));
   for (const auto& f : state.friction) EXPECT_TRUE(f.empty());
   EXPECT_EQ(problem.friction_evaluations(), 0);
   EXPECT_FALSE(problem.unsymmetric());
@@ -150,7 +150,7 @@ TEST(FrictionCost, FrictionlessPathBuildsNoTangentialTerms) {
   solver::ContactProblem with_friction(am_f, 0);
   EXPECT_TRUE(with_friction.has_friction());
   solver::ContactState fs;
-  with_friction.begin_attempt(fs, 1, 1);
+  with_friction.begin_attempt(fs, 1, 1, std::vector<double>(am_f.n_dof(), 0.0));
   ASSERT_FALSE(fs.friction.empty());
   EXPECT_EQ(fs.friction[0].size(), 3u);
 }
