@@ -1,5 +1,9 @@
 #include "analysis_model.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
@@ -52,6 +56,11 @@ AnalysisModel build_analysis_model(const model::Model& m) {
       s.density = mat.density.value_or(0.0);
     }
   }
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const auto& x : m.mesh.nodes.coords)
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);
+  for (int c = 0; c < 3; ++c) am.size += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  am.size = std::sqrt(am.size);
   return am;
 }
 

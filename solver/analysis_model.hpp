@@ -20,6 +20,7 @@ struct AnalysisModel {
   int dim = 3;  ///< DOFs per node: 3 for solids, 2 for plane and axisymmetric models
   bool axisymmetric = false;
   std::vector<ElementSetup> elements;  ///< per element row
+  double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
 
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }

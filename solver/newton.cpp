@@ -181,6 +181,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     if (status == FactorStatus::Singular || status == FactorStatus::NotPositiveDefinite) {
       out.failure = "the stiffness matrix is singular: a part of the model is free to move as a rigid body "
                     "(check its boundary conditions)";
+      out.singular = true;
       return out;
     }
     if (status == FactorStatus::OutOfMemory) {
@@ -188,6 +189,21 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
       return out;
     }
     solver->solve(r, du);
+    // A rigid-body mode often factorises with round-off pivots instead of failing: its
+    // correction is then absurdly large. Say what it is rather than iterate on it.
+    double largest_du = 0.0;  // over the displacement equations (not the contact multipliers)
+    bool finite = true;
+    for (std::size_t i = 0; i < n_eq; ++i) {
+      finite = finite && std::isfinite(du[i]);
+      largest_du = std::max(largest_du, std::abs(du[i]));
+    }
+    if (!finite || largest_du > 1e8 * ctx.am.size) {
+      out.failure = fmt::format("the stiffness matrix is singular: a part of the model is free to move as a rigid "
+                                "body (check its boundary conditions); the correction was {:.3g}, {:.3g} times the "
+                                "model size", largest_du, largest_du / ctx.am.size);
+      out.singular = true;
+      return out;
+    }
     for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
       const std::int64_t eq = dofs.equation(d);
       if (eq >= 0) state.u[d] += du[eq];

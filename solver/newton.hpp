@@ -33,6 +33,7 @@ struct NewtonOutcome {
   double max_residual = 0.0;
   std::int64_t worst_dof = -1;
   std::string failure;  ///< why it did not converge
+  bool singular = false;  ///< a rigid-body mode: a smaller increment cannot help
 };
 
 /// Everything one increment attempt needs.
