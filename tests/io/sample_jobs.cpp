@@ -23,6 +23,9 @@ io::FieldData field(std::string key, io::Position position, std::vector<std::str
   return f;
 }
 
+
+}  // namespace
+
 io::StatusRow status_row(int inc, int att, bool cut, int severe, int equil, double time, double dt, int aug) {
   io::StatusRow r;
   r.step = 1;
@@ -37,8 +40,6 @@ io::StatusRow status_row(int inc, int att, bool cut, int severe, int equil, doub
   r.augmentations = aug;
   return r;
 }
-
-}  // namespace
 
 double u_value(int k, std::size_t n, int c) { return 0.001 * (k + 1) * static_cast<double>(n + 1) + 0.1 * c; }
 double rf_value(int k, std::size_t n, int c) { return -(k + 1.0) * static_cast<double>(n + 1) - 10.0 * c; }

@@ -11,6 +11,9 @@
 namespace inpact::test {
 
 /// U_c of node row n in global frame k: 0.001 (k+1)(n+1) + 0.1 c.
+/// One .sta row of step 1 whose total and step time are both `time`.
+io::StatusRow status_row(int inc, int att, bool cut, int severe, int equil, double time, double dt, int aug);
+
 double u_value(int k, std::size_t node_row, int c);
 /// RF_c of node row n in frame k: -(k+1)(n+1) - 10 c (only node rows 0..3, not in frame 3).
 double rf_value(int k, std::size_t node_row, int c);

@@ -6,38 +6,20 @@
 
 #include "io/status_log.hpp"
 #include "io_fixture.hpp"
+#include "sample_jobs.hpp"
 
 using namespace inpact;
 
-namespace {
-
-io::StatusRow row(int inc, int att, bool cut, int severe, int equil, double total, double step, double dt, int aug) {
-  io::StatusRow r;
-  r.step = 1;
-  r.increment = inc;
-  r.attempt = att;
-  r.cut_back = cut;
-  r.severe_discon_iters = severe;
-  r.equil_iters = equil;
-  r.total_iters = severe + equil;
-  r.total_time = total;
-  r.step_time = step;
-  r.inc_of_time = dt;
-  r.augmentations = aug;
-  return r;
-}
-
-}  // namespace
 
 TEST(StatusLog, RowsHaveAbaqusColumnWidthsAndSignificantDigits) {
   // Abaqus:  "   1     1   1     3     3     6  0.500      0.500      0.5000    "
-  EXPECT_EQ(io::format_status_row(row(1, 1, false, 3, 3, 0.5, 0.5, 0.5, 0)),
+  EXPECT_EQ(io::format_status_row(test::status_row(1, 1, false, 3, 3, 0.5, 0.5, 0)),
             "   1     1   1     3     3     6  0.500      0.500      0.5000          0");
-  EXPECT_EQ(io::format_status_row(row(12, 2, false, 0, 4, 1.0, 1.0, 0.025, 3)),
+  EXPECT_EQ(io::format_status_row(test::status_row(12, 2, false, 0, 4, 1.0, 0.025, 3)),
             "   1    12   2     0     4     4  1.00       1.00       0.02500         3");
-  EXPECT_EQ(io::format_status_row(row(1, 1, true, 16, 0, 0.0, 0.0, 1.0, 0)),
+  EXPECT_EQ(io::format_status_row(test::status_row(1, 1, true, 16, 0, 0.0, 1.0, 0)),
             "   1     1   1U   16     0    16  0.00       0.00       1.000           0");  // zero as Abaqus prints it
-  EXPECT_EQ(io::format_status_row(row(3, 1, false, 1, 1, 2.5e-6, 2.5e-6, 1e-6, 0)),
+  EXPECT_EQ(io::format_status_row(test::status_row(3, 1, false, 1, 1, 2.5e-6, 1e-6, 0)),
             "   1     3   1     1     1     2  2.50e-06   2.50e-06   1.000e-06       0");
 }
 
@@ -46,13 +28,13 @@ TEST(StatusLog, FileHasTheHeaderEveryRowAndTheClosingLine) {
   const auto path = dir / "job.sta";
   {
     io::StatusLog log(path, "0.1.0");
-    log.write(row(1, 1, true, 12, 0, 0.0, 0.0, 1.0, 0));
+    log.write(test::status_row(1, 1, true, 12, 0, 0.0, 1.0, 0));
     // Flushed per row: readable while the log is still open.
     std::ifstream in(path);
     std::stringstream ss;
     ss << in.rdbuf();
     EXPECT_NE(ss.str().find("   1     1   1U   12"), std::string::npos) << ss.str();
-    log.write(row(1, 2, false, 2, 3, 0.25, 0.25, 0.25, 1));
+    log.write(test::status_row(1, 2, false, 2, 3, 0.25, 0.25, 1));
     log.finish(true);
   }
   std::ifstream in(path);
