@@ -70,6 +70,10 @@ class ContactSurface {
   std::vector<std::int32_t> node_facet_ptr_, node_facet_;
 };
 
+/// Median facet size of a surface on coordinates x (edge length in 2D, √area in 3D); 0 for a
+/// node-based surface.
+double typical_facet_size(const ContactSurface& s, std::span<const Vec3> x);
+
 /// Current coordinates x = X + u of every node, from the solver's displacement vector laid out
 /// as u[row · dim + component] (dim = 2: the third coordinate is copied from the reference).
 std::vector<Vec3> current_coordinates(const model::Nodes& nodes, std::span<const double> u, int dim);

@@ -6,24 +6,6 @@
 
 namespace inpact::contact {
 
-namespace {
-
-/// Median facet size of a surface on coordinates x (edge length in 2D, √area in 3D).
-double typical_facet_size(const ContactSurface& s, std::span<const Vec3> x) {
-  std::vector<double> sizes;
-  for (std::size_t f = 0; f < s.facets().size(); ++f) {
-    const double a = s.facet_area(f, x);
-    // 2D facet areas carry the thickness or 2πr: divide it back out at the facet's first node.
-    const double factor = s.dim() == 2 ? s.area_factor(x[s.facets()[f].nodes[0]]) : 1.0;
-    sizes.push_back(s.dim() == 2 ? (factor > 0 ? a / factor : 0.0) : std::sqrt(a));
-  }
-  if (sizes.empty()) return 0.0;
-  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
-  return sizes[sizes.size() / 2];
-}
-
-}  // namespace
-
 NodeToSurfacePair::NodeToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim,
                                      double out_of_plane_thickness)
     : dim_(dim) {

@@ -11,38 +11,30 @@
 #include <vector>
 
 #include "contact/contact_surface.hpp"
+#include "contact/pair_kinematics.hpp"
 #include "contact/projection.hpp"
 #include "contact/search.hpp"
 #include "model/model.hpp"
 
 namespace inpact::contact {
 
-/// One slave node against the master surface.
-struct SlaveKinematics {
-  std::int32_t node = -1;    ///< slave node row
-  bool found = false;        ///< a master facet lies within the search radius
-  Projection projection;     ///< valid when found
-  double area = 0.0;         ///< the slave node's share of the slave surface area
-  GapLinearization lin;      ///< filled by linearize() only
-};
-
-class NodeToSurfacePair {
+class NodeToSurfacePair final : public PairKinematics {
  public:
   /// The pair's surfaces from `model` (their names must exist; the master must be element
   /// based). `dim`: 2 or 3, the model's DOFs per node.
   NodeToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim, double out_of_plane_thickness);
 
-  const ContactSurface& slave() const { return slave_; }
-  const ContactSurface& master() const { return master_; }
+  const ContactSurface& slave() const override { return slave_; }
+  const ContactSurface& master() const override { return master_; }
   /// Largest distance at which a master facet is guaranteed to be found (a facet size).
-  double search_radius() const { return radius_; }
+  double search_radius() const override { return radius_; }
 
   /// Searches and projects every slave node on coordinates `x` (all node rows); `out` has one
   /// entry per slave node, in slave().nodes() order. Rebuilds the search tree when the master
   /// moved more than its margin since the last build.
-  void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out);
+  void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
   /// Fills k.lin (gradient, and the Hessian when `finite_sliding`) on coordinates `x`.
-  void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const;
+  void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
 
  private:
   int dim_;

@@ -11,6 +11,7 @@
 #include "contact/friction.hpp"
 #include "contact/node_to_surface.hpp"
 #include "contact/normal_behavior.hpp"
+#include "contact/surface_to_surface.hpp"
 #include "contact/pressure_overclosure.hpp"
 
 namespace inpact::solver {
@@ -127,11 +128,11 @@ void add_unsymmetric(SparseMatrix& t, const LocalEquations& eqs, std::span<const
 struct ContactProblem::Pair {
   std::int32_t row = 0;
   const model::ContactPair* deck = nullptr;
-  std::unique_ptr<contact::NodeToSurfacePair> geometry;
+  std::unique_ptr<contact::PairKinematics> geometry;
   contact::ResolvedNormalBehavior behavior;
   std::optional<contact::PressureOverclosure> law;  ///< unset: direct hard contact
   std::optional<contact::FrictionLaw> friction;     ///< unset: frictionless
-  bool direct = false, augmented = false, softened = false, finite_sliding = true;
+  bool direct = false, augmented = false, softened = false, finite_sliding = true, surface_to_surface = false;
   double ke = 0.0, l_char = 0.0, tolerance = 0.0, hcrit = 0.0;
   std::vector<contact::SlaveKinematics> kin;
   std::vector<char> contributes;           ///< per slave node, at the last update
@@ -158,6 +159,27 @@ struct ContactProblem::Pair {
     fric[i] = {};
   }
 
+  /// The kinematics friction acts with: the node's own projection (surface to surface: not the
+  /// weighted gap's).
+  const contact::GapLinearization& friction_lin(std::size_t i) const {
+    return surface_to_surface ? kin[i].friction_lin : kin[i].lin;
+  }
+  bool friction_found(std::size_t i) const { return surface_to_surface ? kin[i].friction_found : kin[i].found; }
+  bool friction_acts(std::size_t i) const { return friction && !fric[i].force.empty(); }
+
+  /// The DOFs slave i couples (for the assembler's pattern): the gap's unknowns, then those of
+  /// the friction kinematics not among them (surface to surface only; node to surface: the same).
+  std::vector<std::int64_t> local_dofs(std::size_t i, int dim) const {
+    std::vector<std::int32_t> nodes = kin[i].lin.nodes;
+    if (surface_to_surface && friction_acts(i))
+      for (std::int32_t r : kin[i].friction_lin.nodes)
+        if (std::find(nodes.begin(), nodes.end(), r) == nodes.end()) nodes.push_back(r);
+    std::vector<std::int64_t> dofs;
+    for (std::int32_t node : nodes)
+      for (int c = 0; c < dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * dim + c);
+    return dofs;
+  }
+
   /// The return mapping of closed slave i (kin[i].lin filled) into `f` and fric[i].
   void update_friction(std::size_t i, const SlaveState& s, FrictionNodeState& f, std::span<const contact::Vec3> x) {
     const contact::Projection& pr = kin[i].projection;
@@ -167,7 +189,7 @@ struct ContactProblem::Pair {
       f.anchor_xi = pr.xi;
     }
     contact::FrictionAnchor anchor{f.anchor_facet, f.anchor_xi};
-    fric[i] = contact::friction_point(*friction, facets[static_cast<std::size_t>(pr.facet)], pr, kin[i].lin,
+    fric[i] = contact::friction_point(*friction, facets[static_cast<std::size_t>(pr.facet)], pr, friction_lin(i),
                                       facets[static_cast<std::size_t>(f.anchor_facet)], anchor, f.e0,
                                       friction_pressure(i, s), x);
     const contact::FrictionPoint& fp = fric[i];
@@ -202,8 +224,10 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     options.controls = controls_for(m, step_index, deck);
     p->behavior = contact::resolve_normal_behavior(inter, deck.type, deck.small_sliding, false, options);
     p->finite_sliding = !deck.small_sliding;
-    p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, deck, am.dim,
-                                                               inter ? inter->out_of_plane_thickness : 1.0);
+    p->surface_to_surface = deck.type == model::ContactDiscretization::SurfaceToSurface;
+    const double thickness = inter ? inter->out_of_plane_thickness : 1.0;
+    if (p->surface_to_surface) p->geometry = std::make_unique<contact::SurfaceToSurfacePair>(m, deck, am.dim, thickness);
+    else p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, deck, am.dim, thickness);
 
     // k_e and the characteristic length from the slave surface (the master when the slave is
     // node based), contact/normal_behavior.cpp.
@@ -258,7 +282,8 @@ bool ContactProblem::has_augmented_lagrange() const {
 std::vector<std::string> ContactProblem::describe() const {
   std::vector<std::string> out;
   for (const auto& p : pairs_) {
-    std::string s = fmt::format("contact pair {}/{}: node to surface, {}", p->deck->slave, p->deck->master,
+    std::string s = fmt::format("contact pair {}/{}: {}, {}", p->deck->slave, p->deck->master,
+                                p->surface_to_surface ? "surface to surface" : "node to surface",
                                 p->law ? p->law->describe() : std::string("direct hard contact (Lagrange multipliers)"));
     s += fmt::format("; k_e = {:.4g}, characteristic length {:.4g}", p->ke, p->l_char);
     if (p->augmented) s += fmt::format(", augmented Lagrange, penetration tolerance {:.4g}", p->tolerance);
@@ -277,8 +302,9 @@ void check_contact_supported(const model::Model& m) {
   for (const PairEntry& e : pair_table(m)) {
     const model::ContactPair& p = *e.pair;
     const std::string kw = "*CONTACT PAIR";
-    if (p.type == model::ContactDiscretization::SurfaceToSurface)
-      refuse(m, p.loc, kw, "TYPE=SURFACE TO SURFACE is not analysed by this version of inpact yet; use TYPE=NODE TO SURFACE");
+    if (p.type == model::ContactDiscretization::SurfaceToSurface && m.mesh.surfaces.at(p.slave).kind != model::Surface::Kind::Element)
+      refuse(m, p.loc, kw, fmt::format("TYPE=SURFACE TO SURFACE needs an element-based slave surface; {} is node based "
+                                       "(use TYPE=NODE TO SURFACE)", p.slave));
     if (p.slave == p.master) refuse(m, p.loc, kw, fmt::format("self-contact of {} is not analysed by this version of inpact yet", p.slave));
     if (p.tied) refuse(m, p.loc, kw, "TIED contact is not analysed by this version of inpact yet");
     if (p.adjust_distance || !p.adjust_nset.empty()) refuse(m, p.loc, kw, "ADJUST is not analysed by this version of inpact yet");
@@ -385,12 +411,16 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       if (fs) p.clear_friction(i, *fs);
       if (!p.contributes[i]) continue;
       p.geometry->linearize(x, p.kin[i], p.finite_sliding);
-      if (fs && closed) {
+      if (fs && closed && p.friction_found(i)) {
         p.update_friction(i, s, *fs, x);
         ++friction_evaluations_;
       }
-      signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i),
-                                         p.kin[i].projection.facet, p.direct ? 1 : 0});
+      // The couplings this node adds: its unknowns (and whether a multiplier joins them).
+      signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i), p.direct ? 1 : 0,
+                                         static_cast<std::int64_t>(p.kin[i].lin.nodes.size())});
+      signature.insert(signature.end(), p.kin[i].lin.nodes.begin(), p.kin[i].lin.nodes.end());
+      if (fs && p.surface_to_surface && !p.fric[i].force.empty())
+        signature.insert(signature.end(), p.kin[i].friction_lin.nodes.begin(), p.kin[i].friction_lin.nodes.end());
       if (p.direct) {
         p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
         multipliers_.push_back({pi, i});
@@ -402,9 +432,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     for (const auto& p : pairs_)
       for (std::size_t i = 0; i < p->kin.size(); ++i) {
         if (!p->contributes[i]) continue;
-        std::vector<std::int64_t> dofs;
-        for (std::int32_t node : p->kin[i].lin.nodes)
-          for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * am_.dim + c);
+        std::vector<std::int64_t> dofs = p->local_dofs(i, am_.dim);
         if (p->multiplier[i] >= 0) extra.multiplier_dofs.push_back(dofs);
         extra.dof_blocks.push_back(std::move(dofs));
       }
@@ -447,24 +475,34 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
           k[a * n + b] = stiff * lin.gradient[a] * lin.gradient[b] + s * lin.hessian[a * n + b];
       }
       add_matrix(assembler, dofs, k);
-      if (p->friction && !p->fric[i].force.empty()) {
+      if (p->friction_acts(i)) {
         // Friction: f = A Bᵀ τ; tangent A Bᵀ ∂τ/∂u + A Bᵀ ∂τ/∂p ⊗ ∂p/∂u, with ∂p/∂u = −p' ∇g
-        // (penalty-type) or, direct, ∂p/∂λ = −1 in the multiplier's column.
+        // (penalty-type) or, direct, ∂p/∂λ = −1 in the multiplier's column. Local unknowns: the
+        // union of the gap's and the friction kinematics' DOFs (the same list for node to
+        // surface), then the multiplier.
         const contact::FrictionPoint& fp = p->fric[i];
+        const contact::GapLinearization& flin = p->friction_lin(i);
+        const std::vector<std::int64_t> all = p->local_dofs(i, am_.dim);
+        auto position = [&](std::int64_t dof) {
+          return static_cast<std::size_t>(std::find(all.begin(), all.end(), dof) - all.begin());
+        };
+        std::vector<std::size_t> fpos;  // friction unknown → union position
+        for (std::int32_t node : flin.nodes)
+          for (int c = 0; c < am_.dim; ++c) fpos.push_back(position(static_cast<std::int64_t>(node) * am_.dim + c));
         const bool with_multiplier = p->multiplier[i] >= 0;
-        const std::size_t nl = n + (with_multiplier ? 1 : 0);
+        const std::size_t nu = all.size(), nl = nu + (with_multiplier ? 1 : 0), nf = fpos.size();
         eqs.assign(nl, {});
-        for (std::size_t a = 0; a < n; ++a)
-          for (const auto& ma : map.masters(dofs[a]))
+        for (std::size_t a = 0; a < nu; ++a)
+          for (const auto& ma : map.masters(all[a]))
             if (const std::int64_t e = map.equation(ma.dof); e >= 0) eqs[a].push_back({e, ma.weight});
-        if (with_multiplier) eqs[n].push_back({n_eq + p->multiplier[i], 1.0});
+        if (with_multiplier) eqs[nu].push_back({n_eq + p->multiplier[i], 1.0});
         const double dp_dh = p->direct ? 0.0 : p->pressure(i, slaves[i].lambda).dp;
         kf.assign(nl * nl, 0.0);
-        for (std::size_t a = 0; a < n; ++a) {
-          f_int[dofs[a]] += area * fp.force[a];
-          for (std::size_t b = 0; b < n; ++b)
-            kf[a * nl + b] = area * (fp.tangent[a * n + b] - fp.coupling[a] * dp_dh * lin.gradient[b]);
-          if (with_multiplier) kf[a * nl + n] = -area * fp.coupling[a];
+        for (std::size_t a = 0; a < nf; ++a) {
+          f_int[all[fpos[a]]] += area * fp.force[a];
+          for (std::size_t b = 0; b < nf; ++b) kf[fpos[a] * nl + fpos[b]] += area * fp.tangent[a * nf + b];
+          for (std::size_t b = 0; b < n; ++b) kf[fpos[a] * nl + b] -= area * fp.coupling[a] * dp_dh * lin.gradient[b];
+          if (with_multiplier) kf[fpos[a] * nl + nu] = -area * fp.coupling[a];
         }
         add_unsymmetric(assembler.tangent(), eqs, kf, skew_);
       }

@@ -1,6 +1,8 @@
 #pragma once
-/// Contact in the analysis: node-to-surface contact pairs and the enforcement of their normal
-/// constraint, as resolve_normal_behavior() decides per pair (contact/normal_behavior.hpp):
+/// Contact in the analysis: contact pairs, node to surface or surface to surface
+/// (contact/pair_kinematics.hpp: a gap, area and gap linearisation per slave node either way),
+/// and the enforcement of their normal constraint, as resolve_normal_behavior() decides per
+/// pair (contact/normal_behavior.hpp):
 ///
 ///   penalty-type (linear or nonlinear penalty, softened laws), h = −g the overclosure:
 ///     f_c = −A p(h) ∇g,                K_c = A p'(h) ∇g ∇gᵀ − A p ∇²g
@@ -98,7 +100,7 @@ struct AugmentationCheck {
 };
 
 /// Throws AnalysisError (citing the deck) for contact this version does not analyse: general
-/// contact, surface-to-surface pairs, LAGRANGE friction, clearances, ADJUST, tied or no-separation
+/// contact, surface-to-surface pairs with a node-based slave, LAGRANGE friction, clearances, ADJUST, tied or no-separation
 /// contact, self-contact, node-based masters, and multipliers that softened laws or large
 /// penalty stiffnesses would need (table 38.1.21).
 void check_contact_supported(const model::Model& model);

@@ -1,0 +1,50 @@
+#pragma once
+/// What a contact discretisation gives the enforcement, per slave node of a contact pair: a
+/// gap, the area it stands for, a contact normal and the gap's linearisation over the nodes it
+/// depends on. The enforcement (penalty force −A p(−g) ∇g, a multiplier row A ∇g, friction) is
+/// the solver's (solver/contact_problem.hpp) and does not care how the gap was measured:
+///   node to surface     (node_to_surface.hpp)    g is the slave node's own closest-point gap;
+///   surface to surface  (surface_to_surface.hpp) g is the slave faces' gap averaged with the
+///                                                node's weighting function around it.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "contact/contact_surface.hpp"
+#include "contact/projection.hpp"
+
+namespace inpact::contact {
+
+/// One slave node against the master surface.
+struct SlaveKinematics {
+  std::int32_t node = -1;    ///< slave node row
+  bool found = false;        ///< the node faces the master within the search radius
+  /// The contact geometry at the node. Node to surface: the node's own projection. Surface to
+  /// surface: gap = the weighted gap, normal = the weighted normal (with its tangent basis);
+  /// facet and ξ are those of the node's own projection (what friction anchors to).
+  Projection projection;
+  double area = 0.0;         ///< the slave node's share of the contact area
+  GapLinearization lin;      ///< of `projection.gap`; filled by linearize() only
+  /// Surface to surface only: the node's own closest-point projection and its linearisation
+  /// (friction acts there); `friction_found` false when the node itself does not project.
+  bool friction_found = false;
+  GapLinearization friction_lin;
+};
+
+/// A contact pair's discretisation.
+class PairKinematics {
+ public:
+  virtual ~PairKinematics() = default;
+  virtual const ContactSurface& slave() const = 0;
+  virtual const ContactSurface& master() const = 0;
+  /// Largest distance at which a master facet is guaranteed to be found (a facet size).
+  virtual double search_radius() const = 0;
+  /// Searches and measures every slave node on coordinates `x` (all node rows); `out` gets one
+  /// entry per slave node, in slave().nodes() order.
+  virtual void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) = 0;
+  /// Fills k.lin (the gradient; the Hessian too when `finite_sliding`) on coordinates `x`, for
+  /// the state of the last update(); surface to surface also k.friction_lin.
+  virtual void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const = 0;
+};
+
+}  // namespace inpact::contact

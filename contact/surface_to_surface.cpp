@@ -1,0 +1,200 @@
+#include "surface_to_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "vec3.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+/// Popp et al.'s α for the transformed quadratic basis.
+constexpr double kAlpha = 0.2;
+
+/// A point overlaps the master when the distance direction is within 45° of the master facet's
+/// normal (cos 45°): beyond a free edge of the master it turns tangential.
+constexpr double kOverlapCosine = 0.7071;
+
+/// Position of node row `row` in `nodes`, appended when absent.
+std::size_t slot(std::vector<std::int32_t>& nodes, std::int32_t row) {
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i] == row) return i;
+  nodes.push_back(row);
+  return nodes.size() - 1;
+}
+
+}  // namespace
+
+std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N) {
+  if (shape != FacetShape::Tri6 && shape != FacetShape::Quad8) return N;
+  const int nc = facet_n_corners(shape);
+  std::array<double, 8> W{};
+  for (int m = 0; m < nc; ++m) {
+    const double nm = N[static_cast<std::size_t>(nc + m)];  // midside m lies between corners m and m+1
+    W[static_cast<std::size_t>(nc + m)] = (1 - 2 * kAlpha) * nm;
+    W[static_cast<std::size_t>(m)] += kAlpha * nm;
+    W[static_cast<std::size_t>((m + 1) % nc)] += kAlpha * nm;
+  }
+  for (int c = 0; c < nc; ++c) W[static_cast<std::size_t>(c)] += N[static_cast<std::size_t>(c)];
+  return W;
+}
+
+SurfaceToSurfacePair::SurfaceToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim,
+                                           double out_of_plane_thickness)
+    : dim_(dim) {
+  SurfaceOptions options;
+  options.out_of_plane_thickness = out_of_plane_thickness;
+  slave_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.slave), options);
+  master_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.master), options);
+  if (slave_.node_based())
+    throw std::invalid_argument("surface-to-surface contact needs an element-based slave surface; '" + slave_.name() +
+                                "' is node based (use TYPE=NODE TO SURFACE)");
+  const auto x = reference_coordinates(model.mesh.nodes);
+  radius_ = std::max(typical_facet_size(master_, x), typical_facet_size(slave_, x));
+  if (!(radius_ > 0.0)) radius_ = 1.0;
+  points_.resize(slave_.facets().size());
+}
+
+void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) {
+  if (!built_ || search_.needs_rebuild(master_.facets(), x)) {
+    SearchOptions o;
+    o.radius = radius_;
+    o.margin = 0.5 * radius_;
+    search_.build(master_.facets(), x, o);
+    built_ = true;
+  }
+  const auto facets = slave_.facets();
+  const auto nodes = slave_.nodes();
+  out.assign(nodes.size(), {});
+  std::vector<double> weighted_gap(nodes.size(), 0.0);
+  std::vector<Vec3> weighted_normal(nodes.size(), Vec3{});
+  for (std::size_t fi = 0; fi < facets.size(); ++fi) {
+    const Facet& f = facets[fi];
+    const auto rule = facet_rule(f.shape, kRulePoints);
+    auto& pts = points_[fi];
+    pts.resize(rule.size());
+    for (std::size_t q = 0; q < rule.size(); ++q) {
+      Point& pt = pts[q];
+      const FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
+      const ShapeEval e = eval_shape(f.shape, rule[q].xi, rule[q].eta);
+      pt.x = g.x;
+      pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
+      pt.N = e.N;
+      pt.W = weighting_functions(f.shape, e.N);
+      candidates_.clear();
+      search_.query(g.x, candidates_);
+      pt.projection = closest_projection(master_.facets(), candidates_, x, g.x);
+      const Projection& pr = pt.projection;
+      pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) < 0.0 &&
+                    (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
+                     std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+      if (!pt.overlaps) continue;
+      for (int a = 0; a < f.n_nodes; ++a) {
+        const auto i = static_cast<std::size_t>(slave_.local_index(f.nodes[a]));
+        const double w = pt.W[static_cast<std::size_t>(a)] * pt.da;
+        out[i].area += w;
+        weighted_gap[i] += w * pr.gap;
+        weighted_normal[i] = axpy(w, pr.normal, weighted_normal[i]);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    SlaveKinematics& k = out[i];
+    k.node = nodes[i];
+    project_node(x, k);
+    const double len = norm(weighted_normal[i]);
+    k.found = k.area > 0.0 && len > 0.0;
+    if (!k.found) {
+      k.area = 0.0;
+      continue;
+    }
+    k.projection.gap = weighted_gap[i] / k.area;
+    k.projection.normal = scale(1.0 / len, weighted_normal[i]);
+    tangent_basis(k.projection.normal, dim_, k.projection.t1, k.projection.t2);
+  }
+}
+
+/// The slave node's own closest-point projection (for friction), kept in k.projection's facet,
+/// ξ and master point; the gap and normal are overwritten with the weighted ones by update().
+void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics& k) {
+  candidates_.clear();
+  search_.query(x[static_cast<std::size_t>(k.node)], candidates_);
+  k.projection = closest_projection(master_.facets(), candidates_, x, x[static_cast<std::size_t>(k.node)]);
+  k.friction_found = k.projection.facet >= 0;
+}
+
+void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {
+  GapLinearization& L = k.lin;
+  L = {};
+  L.dim = dim_;
+  if (k.friction_found) {
+    // Friction's kinematics: the node against the facet it projects onto (node to surface).
+    // (k.projection holds the node's own facet and ξ with the weighted normal: friction's tangent plane.)
+    const Facet& f = master_.facets()[static_cast<std::size_t>(k.projection.facet)];
+    k.friction_lin = linearize_gap(f, x, x[static_cast<std::size_t>(k.node)], k.projection, dim_, k.node);
+  }
+  if (!k.found) return;
+  const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
+  const auto facets = slave_.facets();
+  const std::size_t d = static_cast<std::size_t>(dim_);
+  // First pass: the nodes involved (the slave facets around the node, their points' master facets).
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
+      if (pt.overlaps)
+        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
+  }
+  L.n_dof = static_cast<int>(L.nodes.size() * d);
+  const std::size_t nd = static_cast<std::size_t>(L.n_dof);
+  L.gradient.assign(nd, 0.0);
+  L.hessian.assign(nd * nd, 0.0);
+  std::vector<std::size_t> map;  // point-local node (0: the point x_q, then master facet nodes) → union slot
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    int a_local = 0;
+    while (sf.nodes[static_cast<std::size_t>(a_local)] != k.node) ++a_local;
+    std::array<std::size_t, 8> slave_slot{};
+    for (int b = 0; b < sf.n_nodes; ++b) slave_slot[static_cast<std::size_t>(b)] = slot(L.nodes, sf.nodes[static_cast<std::size_t>(b)]);
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)]) {
+      if (!pt.overlaps) continue;
+      const double c = pt.W[static_cast<std::size_t>(a_local)] * pt.da / k.area;
+      if (c == 0.0) continue;
+      const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
+      const GapLinearization q = linearize_gap(mf, x, pt.x, pt.projection, dim_, -1);
+      // The point's unknowns: x_q (slot 0, = Σ_b N_b x_b over the slave facet), then mf's nodes.
+      const std::size_t nq = static_cast<std::size_t>(mf.n_nodes) + 1;
+      map.assign(nq, 0);
+      for (std::size_t m = 1; m < nq; ++m) map[m] = slot(L.nodes, mf.nodes[m - 1]);
+      // Expanded: each point-local unknown as a list of (union slot, factor).
+      auto expand = [&](std::size_t m, auto&& fn) {
+        if (m == 0) {
+          for (int b = 0; b < sf.n_nodes; ++b)
+            if (const double nb = pt.N[static_cast<std::size_t>(b)]; nb != 0.0) fn(slave_slot[static_cast<std::size_t>(b)], nb);
+        } else {
+          fn(map[m], 1.0);
+        }
+      };
+      for (std::size_t m = 0; m < nq; ++m)
+        expand(m, [&](std::size_t s, double f) {
+          for (std::size_t i = 0; i < d; ++i) L.gradient[s * d + i] += c * f * q.gradient[m * d + i];
+        });
+      const bool corner = pt.projection.region != ProjectionRegion::Interior && pt.projection.distance < 1e-3 * radius_;
+      if (!finite_sliding || corner || !q.hessian_defined) continue;
+      const std::size_t qn = q.gradient.size();
+      for (std::size_t m1 = 0; m1 < nq; ++m1)
+        expand(m1, [&](std::size_t s1, double f1) {
+          for (std::size_t m2 = 0; m2 < nq; ++m2)
+            expand(m2, [&](std::size_t s2, double f2) {
+              for (std::size_t i = 0; i < d; ++i)
+                for (std::size_t j = 0; j < d; ++j)
+                  L.hessian[(s1 * d + i) * nd + s2 * d + j] += c * f1 * f2 * q.hessian[(m1 * d + i) * qn + m2 * d + j];
+            });
+        });
+    }
+  }
+}
+
+}  // namespace inpact::contact

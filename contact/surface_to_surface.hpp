@@ -1,0 +1,84 @@
+#pragma once
+/// Surface-to-surface contact kinematics of one contact pair (*CONTACT PAIR, TYPE=SURFACE TO
+/// SURFACE): the contact condition of each slave node is enforced "in an average sense over
+/// regions nearby slave nodes rather than only at individual slave nodes" (Abaqus §38.1.1).
+///
+/// inpact's discretisation (a mortar-type weighted gap, integrated on the slave faces):
+///   every slave facet carries a fine Gauss rule (kRulePoints per direction); each point x_q is
+///   projected onto the master (closest point, projection.hpp) giving g_q, n_q. A point
+///   overlaps the master when it projects orthogonally (or nearly: the distance direction within
+///   45° of the master facet's normal, so that points beyond the master's free edge drop out)
+///   and the slave face there faces the master (n_slave · n_q < 0).
+///   Per slave node a, over the overlapping points of the facets around it, with the weighting
+///   function W_a and dA the current area element (× thickness or 2π r in 2D):
+///     A_a = Σ_q W_a(q) dA_q                     the area the node stands for (CNAREA)
+///     g_a = Σ_q W_a(q) g_q dA_q / A_a           the weighted gap (COPEN)
+///     n_a = Σ_q W_a(q) n_q dA_q, normalised     the node's contact normal
+///   and, since A_a is held fixed in the linearisation, with x_q = Σ_b N_b(q) x_b,
+///     ∂g_a/∂x_b (slave) = Σ_q W_a N_b n_q dA_q / A_a,   ∂g_a/∂x_m (master) = −Σ_q W_a N_m n_q dA_q / A_a.
+///   A pressure p_a then gives the forces −Σ_a p_a A_a ∂g_a/∂u = −∫ p_h N n dA with
+///   p_h = Σ_a W_a p_a: consistent nodal forces on both sides, so a uniform pressure passes
+///   between non-matching meshes (the contact patch test), which node-to-surface contact does not.
+///   W_a = N_a on first-order faces and edges and on Line3. On Tri6 and Quad8 faces ∫N_a dA is
+///   zero or negative at the corners, so W is the transformed basis of Popp et al. (2012,
+///   "Dual quadratic mortar finite element methods for 3D finite deformation contact"):
+///     W_corner = N_corner + α Σ_{adjacent midside} N_mid,  W_mid = (1 − 2α) N_mid,  α = 1/5,
+///   a partition of unity with every ∫W_a dA > 0 (flat Quad8: corners 1/20, midsides 1/5 of A).
+///   The Hessian (finite sliding) is Σ_q W_a dA_q/A_a × the point's ∂²g_q mapped to the nodes.
+///   The contact direction is the master's normal at each point (Abaqus uses the slave normal;
+///   the two agree where the surfaces touch and the difference is of the order of the gap).
+///
+/// Friction acts at the slave node's own closest-point projection (node to surface) with the
+/// pressure of its weighted gap: SlaveKinematics::friction_lin.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "contact/contact_surface.hpp"
+#include "contact/pair_kinematics.hpp"
+#include "contact/projection.hpp"
+#include "contact/search.hpp"
+#include "model/model.hpp"
+
+namespace inpact::contact {
+
+/// Gauss points per parametric direction on each slave facet: enough that a master facet edge
+/// crossing a slave facet (a kink of the master's shape functions under it) costs under 0.1%
+/// of a node's force in the patch tests (tests/contact/test_surface_to_surface.cpp).
+inline constexpr int kRulePoints = 6;
+
+/// The weighting function values W_a at a point of a facet of `shape`, from its shape
+/// functions N (see the header comment: W = N except on Tri6 and Quad8).
+std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N);
+
+class SurfaceToSurfacePair final : public PairKinematics {
+ public:
+  /// The pair's surfaces from `model`; both must be element based (std::invalid_argument otherwise).
+  SurfaceToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim, double out_of_plane_thickness);
+
+  const ContactSurface& slave() const override { return slave_; }
+  const ContactSurface& master() const override { return master_; }
+  double search_radius() const override { return radius_; }
+  void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
+  void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
+
+ private:
+  /// One integration point of a slave facet at the last update.
+  struct Point {
+    double da = 0.0;                 ///< weight × area element
+    std::array<double, 8> N{}, W{};  ///< shape and weighting functions of the slave facet
+    Vec3 x{};
+    Projection projection;
+    bool overlaps = false;
+  };
+  void project_node(std::span<const Vec3> x, SlaveKinematics& k);
+  int dim_;
+  ContactSurface slave_, master_;
+  FacetSearch search_;
+  double radius_ = 0.0;
+  bool built_ = false;
+  std::vector<std::vector<Point>> points_;  ///< per slave facet
+  std::vector<std::int32_t> candidates_;
+};
+
+}  // namespace inpact::contact
