@@ -54,8 +54,11 @@ class RunObserver final : public solver::AnalysisObserver {
   }
   void frame(const solver::Frame& frame) override { results_.write_frame(frame); }
   void print_frame(const solver::PrintFrame& frame) override { dat_.write(frame); }
+  /// Notes and warnings of the analysis (contact set-up, cutbacks): on stderr unless quiet. A
+  /// failure is not a message: run_analysis returns it and it is printed whatever the options.
   void message(std::string_view text) override {
-    if (tty_ && !options_.quiet) std::printf("\n");
+    if (options_.quiet) return;
+    if (tty_) std::printf("\n");
     std::fprintf(stderr, "%.*s\n", static_cast<int>(text.size()), text.data());
   }
   void end_line() {

@@ -6,13 +6,13 @@
 
 namespace inpact::contact {
 
-NodeToSurfacePair::NodeToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim,
+NodeToSurfacePair::NodeToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
                                      double out_of_plane_thickness)
     : dim_(dim) {
   SurfaceOptions options;
   options.out_of_plane_thickness = out_of_plane_thickness;
-  slave_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.slave), options);
-  master_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.master), options);
+  slave_ = ContactSurface::build(model, slave, options);
+  master_ = ContactSurface::build(model, master, options);
   const auto x = reference_coordinates(model.mesh.nodes);
   // A facet size: slave nodes farther than this from the master are open without doubt.
   radius_ = std::max(typical_facet_size(master_, x), typical_facet_size(slave_, x));
@@ -33,7 +33,7 @@ void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinemat
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     SlaveKinematics& k = out[i];
     k.node = nodes[i];
-    k.area = areas[i];
+    k.area = area_weight_ * areas[i];
     candidates_.clear();
     search_.query(x[nodes[i]], candidates_);
     k.projection = closest_projection(master_.facets(), candidates_, x, x[nodes[i]]);

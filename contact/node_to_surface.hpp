@@ -22,7 +22,7 @@ class NodeToSurfacePair final : public PairKinematics {
  public:
   /// The pair's surfaces from `model` (their names must exist; the master must be element
   /// based). `dim`: 2 or 3, the model's DOFs per node.
-  NodeToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim, double out_of_plane_thickness);
+  NodeToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim, double out_of_plane_thickness);
 
   const ContactSurface& slave() const override { return slave_; }
   const ContactSurface& master() const override { return master_; }

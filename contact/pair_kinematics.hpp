@@ -45,6 +45,14 @@ class PairKinematics {
   /// Fills k.lin (the gradient; the Hessian too when `finite_sliding`) on coordinates `x`, for
   /// the state of the last update(); surface to surface also k.friction_lin.
   virtual void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const = 0;
+
+  /// Scales every slave area update() reports (not the gaps or their gradients): ½ for each of
+  /// the two rows of a balanced master-slave interaction (interaction_table.hpp).
+  void set_area_weight(double w) { area_weight_ = w; }
+  double area_weight() const { return area_weight_; }
+
+ protected:
+  double area_weight_ = 1.0;
 };
 
 }  // namespace inpact::contact

@@ -14,7 +14,8 @@ namespace {
 constexpr double kAlpha = 0.2;
 
 /// A point overlaps the master when the distance direction is within 45° of the master facet's
-/// normal (cos 45°): beyond a free edge of the master it turns tangential.
+/// normal (cos 45°): beyond a free edge of the master it turns tangential; and when the slave
+/// face there is within 45° of facing it (a side face meeting the interface at a corner does not).
 constexpr double kOverlapCosine = 0.7071;
 
 /// Position of node row `row` in `nodes`, appended when absent.
@@ -41,13 +42,13 @@ std::array<double, 8> weighting_functions(FacetShape shape, const std::array<dou
   return W;
 }
 
-SurfaceToSurfacePair::SurfaceToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim,
+SurfaceToSurfacePair::SurfaceToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
                                            double out_of_plane_thickness)
     : dim_(dim) {
   SurfaceOptions options;
   options.out_of_plane_thickness = out_of_plane_thickness;
-  slave_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.slave), options);
-  master_ = ContactSurface::build(model, model.mesh.surfaces.at(pair.master), options);
+  slave_ = ContactSurface::build(model, slave, options);
+  master_ = ContactSurface::build(model, master, options);
   if (slave_.node_based())
     throw std::invalid_argument("surface-to-surface contact needs an element-based slave surface; '" + slave_.name() +
                                 "' is node based (use TYPE=NODE TO SURFACE)");
@@ -87,7 +88,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
       search_.query(g.x, candidates_);
       pt.projection = closest_projection(master_.facets(), candidates_, x, g.x);
       const Projection& pr = pt.projection;
-      pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) < 0.0 &&
+      pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
                     (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
                      std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
       if (!pt.overlaps) continue;
@@ -111,6 +112,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
       continue;
     }
     k.projection.gap = weighted_gap[i] / k.area;
+    k.area *= area_weight_;
     k.projection.normal = scale(1.0 / len, weighted_normal[i]);
     tangent_basis(k.projection.normal, dim_, k.projection.t1, k.projection.t2);
   }
@@ -160,7 +162,7 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
     for (int b = 0; b < sf.n_nodes; ++b) slave_slot[static_cast<std::size_t>(b)] = slot(L.nodes, sf.nodes[static_cast<std::size_t>(b)]);
     for (const Point& pt : points_[static_cast<std::size_t>(fi)]) {
       if (!pt.overlaps) continue;
-      const double c = pt.W[static_cast<std::size_t>(a_local)] * pt.da / k.area;
+      const double c = pt.W[static_cast<std::size_t>(a_local)] * pt.da * area_weight_ / k.area;
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
       const GapLinearization q = linearize_gap(mf, x, pt.x, pt.projection, dim_, -1);

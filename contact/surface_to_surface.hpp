@@ -8,7 +8,7 @@
 ///   projected onto the master (closest point, projection.hpp) giving g_q, n_q. A point
 ///   overlaps the master when it projects orthogonally (or nearly: the distance direction within
 ///   45° of the master facet's normal, so that points beyond the master's free edge drop out)
-///   and the slave face there faces the master (n_slave · n_q < 0).
+///   and the slave face there faces the master (n_slave · n_q ≤ −cos 45°).
 ///   Per slave node a, over the overlapping points of the facets around it, with the weighting
 ///   function W_a and dA the current area element (× thickness or 2π r in 2D):
 ///     A_a = Σ_q W_a(q) dA_q                     the area the node stands for (CNAREA)
@@ -54,7 +54,7 @@ std::array<double, 8> weighting_functions(FacetShape shape, const std::array<dou
 class SurfaceToSurfacePair final : public PairKinematics {
  public:
   /// The pair's surfaces from `model`; both must be element based (std::invalid_argument otherwise).
-  SurfaceToSurfacePair(const model::Model& model, const model::ContactPair& pair, int dim, double out_of_plane_thickness);
+  SurfaceToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim, double out_of_plane_thickness);
 
   const ContactSurface& slave() const override { return slave_; }
   const ContactSurface& master() const override { return master_; }

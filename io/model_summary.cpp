@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "contact/interaction_table.hpp"
 #include "contact/normal_behavior.hpp"
 
 namespace inpact::io {
@@ -128,6 +129,21 @@ void write_contact(std::ostream& out, const model::Model& m) {
                                                              model::ContactDiscretization::SurfaceToSurface, false, true);
       print(out, "    {}\n", contact::describe(resolved));
     }
+    // What the inclusions expand to (contact/interaction_table.hpp).
+    const auto table = contact::interaction_table(m);
+    for (const auto& row : table->rows) {
+      if (!row.general) continue;
+      const model::SurfaceInteraction* inter = interaction_named(m, row.pair.interaction);
+      const auto resolved = contact::resolve_normal_behavior(inter, row.pair.type, false, true);
+      auto scales = contact::surface_scales(m, *row.slave);
+      if (!scales) scales = contact::surface_scales(m, *row.master);
+      print(out, "  {} ({} faces) / {} ({} faces): surface to surface, interaction {}{}\n", row.pair.slave,
+            row.slave->faces.size(), row.pair.master, row.master->faces.size(),
+            row.pair.interaction.empty() ? std::string("(none: hard, frictionless)") : row.pair.interaction,
+            row.weight != 1.0 ? fmt::format(", weight {:g} (balanced master-slave)", row.weight) : std::string());
+      print(out, "    {}\n", contact::describe(resolved, scales));
+    }
+    for (const auto& note : table->notes) print(out, "  note: {}\n", note);
     if (!gc.geometric_corrections.empty()) print(out, "  smoothing assignments:\n");
     for (const auto& c : gc.geometric_corrections) write_correction(out, c);
   }

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "contact/interaction_table.hpp"
 #include "hdf5_util.hpp"
 #include "results_view.hpp"
 #include "xdmf_writer.hpp"
@@ -75,13 +76,8 @@ const char* position_name(Position p) {
 
 std::vector<std::string> contact_pair_names(const model::Model& model) {
   std::vector<std::string> names;
-  auto add = [&](const std::string& slave, const std::string& master) {
-    names.push_back((slave.empty() ? "ALL_EXTERIOR" : slave) + "/" + (master.empty() ? "ALL_EXTERIOR" : master));
-  };
-  for (const auto& p : model.contact_pairs) add(p.slave, p.master);
-  for (const auto& s : model.steps)
-    for (const auto& p : s.contact_pairs) add(p.slave, p.master);
-  for (const auto& inc : model.general_contact.inclusions) add(inc.first, inc.second.empty() ? inc.first : inc.second);
+  const auto table = contact::interaction_table(model);  // (kept alive: the loop reads its rows)
+  for (const auto& row : table->rows) names.push_back(row.name());
   return names;
 }
 

@@ -43,7 +43,8 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   // (solver/contact_problem.hpp); what is not yet (general contact, surface-to-surface,
   // LAGRANGE friction, ...) stops here with the deck line, rather than run as if the bodies
   // could pass through each other or stick where they should not.
-  check_contact_supported(m);
+  am.contact = contact::interaction_table(m);
+  check_contact_supported(m, *am.contact);
 
   for (const auto& sec : m.mesh.sections) {
     const model::Material& mat = m.materials.at(sec.material);

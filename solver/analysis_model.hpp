@@ -1,7 +1,10 @@
 #pragma once
 /// What the analysis needs per element, resolved once from the model database: its type,
 /// material constants and section data, and the model's number of DOFs per node.
+#include <memory>
 #include <vector>
+
+#include "contact/interaction_table.hpp"
 
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
@@ -21,6 +24,8 @@ struct AnalysisModel {
   bool axisymmetric = false;
   std::vector<ElementSetup> elements;  ///< per element row
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
+  /// The contact interactions: pairs and what general contact expands to (pair rows).
+  std::shared_ptr<const contact::InteractionTable> contact;
 
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }

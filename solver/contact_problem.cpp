@@ -25,21 +25,6 @@ using model::PressureOverclosure;
 /// the attempt is cut back (inpact's choice; Abaqus does not publish its rule).
 constexpr int kMaxStatusChanges = 5;
 
-/// Every contact pair of the model in pair-table order (model pairs, then each step's), with
-/// the step it enters (0 for model pairs).
-struct PairEntry {
-  const model::ContactPair* pair;
-  std::size_t first_step;
-};
-
-std::vector<PairEntry> pair_table(const model::Model& m) {
-  std::vector<PairEntry> out;
-  for (const auto& p : m.contact_pairs) out.push_back({&p, 0});
-  for (std::size_t s = 0; s < m.steps.size(); ++s)
-    for (const auto& p : m.steps[s].contact_pairs) out.push_back({&p, s});
-  return out;
-}
-
 /// The *CONTACT CONTROLS in force for `pair` in step `step`: the pair's own over the global
 /// ones, carried over from earlier steps until RESET.
 const model::ContactControls* controls_for(const model::Model& m, std::size_t step, const model::ContactPair& pair) {
@@ -133,6 +118,8 @@ struct ContactProblem::Pair {
   std::optional<contact::PressureOverclosure> law;  ///< unset: direct hard contact
   std::optional<contact::FrictionLaw> friction;     ///< unset: frictionless
   bool direct = false, augmented = false, softened = false, finite_sliding = true, surface_to_surface = false;
+  bool general = false;  ///< a row general contact made
+  double weight = 1.0;   ///< balanced master-slave: ½ (the slave areas are scaled by it)
   double ke = 0.0, l_char = 0.0, tolerance = 0.0, hcrit = 0.0;
   std::vector<contact::SlaveKinematics> kin;
   std::vector<char> contributes;           ///< per slave node, at the last update
@@ -210,29 +197,35 @@ struct ContactProblem::Pair {
 
 ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) : am_(am) {
   const model::Model& m = *am.model;
-  const auto table = pair_table(m);
+  const auto& table = am.contact->rows;
   n_pairs_total_ = table.size();
   for (std::size_t row = 0; row < table.size(); ++row) {
-    if (table[row].first_step > step_index) continue;
-    const model::ContactPair& deck = *table[row].pair;
-    const std::string keyword = "*CONTACT PAIR";
+    const contact::ContactInteraction& entry = table[row];
+    if (entry.first_step > step_index) continue;
+    const model::ContactPair& deck = entry.pair;
+    const std::string keyword = entry.general ? "*CONTACT" : "*CONTACT PAIR";
     auto p = std::make_unique<Pair>();
     p->row = static_cast<std::int32_t>(row);
     p->deck = &deck;
     const model::SurfaceInteraction* inter = interaction_of(m, deck);
     contact::NormalBehaviorOptions options;
     options.controls = controls_for(m, step_index, deck);
-    p->behavior = contact::resolve_normal_behavior(inter, deck.type, deck.small_sliding, false, options);
+    p->behavior = contact::resolve_normal_behavior(inter, deck.type, deck.small_sliding, entry.general, options);
+    p->weight = entry.weight;
+    p->general = entry.general;
     p->finite_sliding = !deck.small_sliding;
     p->surface_to_surface = deck.type == model::ContactDiscretization::SurfaceToSurface;
     const double thickness = inter ? inter->out_of_plane_thickness : 1.0;
-    if (p->surface_to_surface) p->geometry = std::make_unique<contact::SurfaceToSurfacePair>(m, deck, am.dim, thickness);
-    else p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, deck, am.dim, thickness);
+    if (p->surface_to_surface)
+      p->geometry = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, thickness);
+    else
+      p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, thickness);
+    p->geometry->set_area_weight(entry.weight);
 
     // k_e and the characteristic length from the slave surface (the master when the slave is
     // node based), contact/normal_behavior.cpp.
-    auto scales = contact::surface_scales(m, m.mesh.surfaces.at(deck.slave));
-    if (!scales) scales = contact::surface_scales(m, m.mesh.surfaces.at(deck.master));
+    auto scales = contact::surface_scales(m, *entry.slave);
+    if (!scales) scales = contact::surface_scales(m, *entry.master);
     p->ke = scales ? scales->element_stiffness : 0.0;
     p->l_char = scales ? scales->characteristic_length : p->geometry->search_radius();
 
@@ -282,33 +275,32 @@ bool ContactProblem::has_augmented_lagrange() const {
 std::vector<std::string> ContactProblem::describe() const {
   std::vector<std::string> out;
   for (const auto& p : pairs_) {
-    std::string s = fmt::format("contact pair {}/{}: {}, {}", p->deck->slave, p->deck->master,
+    std::string s = fmt::format("{} {}/{}: {}, {}", p->general ? "general contact" : "contact pair", p->deck->slave,
+                                p->deck->master,
                                 p->surface_to_surface ? "surface to surface" : "node to surface",
                                 p->law ? p->law->describe() : std::string("direct hard contact (Lagrange multipliers)"));
     s += fmt::format("; k_e = {:.4g}, characteristic length {:.4g}", p->ke, p->l_char);
     if (p->augmented) s += fmt::format(", augmented Lagrange, penetration tolerance {:.4g}", p->tolerance);
+    if (p->weight != 1.0) s += fmt::format("; weight {:g} (balanced master-slave)", p->weight);
     s += p->friction ? "; " + contact::describe(*p->friction) : std::string("; frictionless");
     out.push_back(std::move(s));
   }
   return out;
 }
 
-void check_contact_supported(const model::Model& m) {
-  if (m.general_contact.defined)
-    refuse(m, m.general_contact.loc, "*CONTACT", "general contact is not analysed by this version of inpact yet; "
-                                                "define the interactions with *CONTACT PAIR, TYPE=NODE TO SURFACE");
+void check_contact_supported(const model::Model& m, const contact::InteractionTable& table) {
   if (!m.clearances.empty())
     refuse(m, m.clearances.front().loc, "*CLEARANCE", "initial clearances are not analysed by this version of inpact yet");
-  for (const PairEntry& e : pair_table(m)) {
-    const model::ContactPair& p = *e.pair;
-    const std::string kw = "*CONTACT PAIR";
-    if (p.type == model::ContactDiscretization::SurfaceToSurface && m.mesh.surfaces.at(p.slave).kind != model::Surface::Kind::Element)
+  for (const contact::ContactInteraction& e : table.rows) {
+    const model::ContactPair& p = e.pair;
+    const std::string kw = e.general ? "*CONTACT" : "*CONTACT PAIR";
+    if (p.type == model::ContactDiscretization::SurfaceToSurface && e.slave->kind != model::Surface::Kind::Element)
       refuse(m, p.loc, kw, fmt::format("TYPE=SURFACE TO SURFACE needs an element-based slave surface; {} is node based "
                                        "(use TYPE=NODE TO SURFACE)", p.slave));
     if (p.slave == p.master) refuse(m, p.loc, kw, fmt::format("self-contact of {} is not analysed by this version of inpact yet", p.slave));
     if (p.tied) refuse(m, p.loc, kw, "TIED contact is not analysed by this version of inpact yet");
     if (p.adjust_distance || !p.adjust_nset.empty()) refuse(m, p.loc, kw, "ADJUST is not analysed by this version of inpact yet");
-    if (m.mesh.surfaces.at(p.master).kind != model::Surface::Kind::Element)
+    if (e.master->kind != model::Surface::Kind::Element)
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
     const model::SurfaceInteraction* inter = interaction_of(m, p);
     if (!inter) continue;

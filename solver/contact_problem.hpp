@@ -103,7 +103,7 @@ struct AugmentationCheck {
 /// contact, surface-to-surface pairs with a node-based slave, LAGRANGE friction, clearances, ADJUST, tied or no-separation
 /// contact, self-contact, node-based masters, and multipliers that softened laws or large
 /// penalty stiffnesses would need (table 38.1.21).
-void check_contact_supported(const model::Model& model);
+void check_contact_supported(const model::Model& model, const contact::InteractionTable& table);
 
 class ContactProblem {
  public:

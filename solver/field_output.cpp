@@ -540,18 +540,16 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
 namespace {
 
 /// Rows of the contact pair table (model pairs, then each step's) a contact request covers.
-std::set<std::int32_t> request_pairs(const model::Model& m, const OutputRequest& r) {
+std::set<std::int32_t> request_pairs(const AnalysisModel& am, const OutputRequest& r) {
   std::set<std::int32_t> rows;
   std::int32_t row = 0;
-  auto visit = [&](const model::ContactPair& p) {
+  for (const contact::ContactInteraction& ci : am.contact->rows) {
+    const model::ContactPair& p = ci.pair;
     const bool slave_ok = r.surface.empty() || domain_of(r.kind) != Domain::Contact || r.surface == p.slave;
     const bool master_ok = r.master.empty() || domain_of(r.kind) != Domain::Contact || r.master == p.master;
     if (slave_ok && master_ok) rows.insert(row);
     ++row;
-  };
-  for (const auto& p : m.contact_pairs) visit(p);
-  for (const auto& s : m.steps)
-    for (const auto& p : s.contact_pairs) visit(p);
+  }
   return rows;
 }
 
@@ -562,7 +560,7 @@ FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const
   std::set<std::int32_t> pairs;
   for (const ActiveRequest& a : output.field_requests())
     if (std::find(a.variables.begin(), a.variables.end(), key) != a.variables.end()) {
-      const auto rows = request_pairs(*am.model, a.request);
+      const auto rows = request_pairs(am, a.request);
       pairs.insert(rows.begin(), rows.end());
     }
   FieldData f;

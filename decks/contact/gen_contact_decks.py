@@ -79,6 +79,17 @@ def patch_2d(method, lift_off=False, n_lower=2, disc="n2s"):
     return s
 
 
+def patch_2d_general(friction=False):
+    """The offset-mesh 2D patch test with general contact: ALL EXTERIOR and a global property
+    assignment (penalty, Abaqus's default for general contact) instead of a contact pair."""
+    s = patch_2d("penalty", n_lower=3, disc="s2s")
+    s = s.replace("*SURFACE BEHAVIOR, PENALTY\n", "*FRICTION\n0.2\n" if friction else "")
+    s = s.replace("*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=SURFACE TO SURFACE\nSLAVE_S, MASTER_S\n",
+                  "*CONTACT\n*CONTACT INCLUSIONS, ALL EXTERIOR\n*CONTACT PROPERTY ASSIGNMENT\n, , SMOOTH\n")
+    s = s.replace("(penalty, surface to surface)", "(general contact, ALL EXTERIOR" + (", friction 0.2)" if friction else ")"))
+    return s
+
+
 def softened(law):
     """One CPE4 element (slave bottom edge) 0.02 above a fixed element (master top edge), its top
     pushed down 0.05 in 10 increments: CPRESS against −COPEN traces the pressure-overclosure law."""
@@ -240,6 +251,10 @@ def main():
             f.write(patch_2d(method, n_lower=3, disc="s2s"))
         with open(os.path.join(HERE, f"patch_3d_s2s_{method}.inp"), "w") as f:
             f.write(patch_3d(method, n_lower=3, disc="s2s"))
+    with open(os.path.join(HERE, "patch_2d_general.inp"), "w") as f:
+        f.write(patch_2d_general())
+    with open(os.path.join(HERE, "patch_2d_general_friction.inp"), "w") as f:
+        f.write(patch_2d_general(friction=True))
     for law in ("linear", "exponential", "tabular"):
         with open(os.path.join(HERE, f"softened_{law}.inp"), "w") as f:
             f.write(softened(law))

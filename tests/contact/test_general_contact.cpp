@@ -1,0 +1,124 @@
+// General contact (*CONTACT): what the inclusions expand to (contact/interaction_table.hpp), and
+// the offset-mesh patch test run through ALL EXTERIOR with balanced master-slave penalty rows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "contact/interaction_table.hpp"
+#include "contact/patch_test.hpp"
+#include "fixtures/deck_fixture.hpp"
+
+namespace inpact::test {
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// The general-contact patch deck with `from` replaced by `to`.
+std::string general_deck(const std::string& from = "", const std::string& to = "") {
+  std::string s = read_text(contact_deck("patch_2d_general.inp"));
+  if (!from.empty()) s.replace(s.find(from), from.size(), to);
+  return s;
+}
+
+TEST(GeneralContactTable, AllExteriorPairsTheTwoBodiesBothWaysWithHalfWeight) {
+  const DeckDir dir;
+  const auto r = dir.read(general_deck());
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto t = contact::interaction_table(r.model);
+  ASSERT_EQ(t->rows.size(), 2u);
+  EXPECT_EQ(t->rows[0].name(), "BODY-1/BODY-2");
+  EXPECT_EQ(t->rows[1].name(), "BODY-2/BODY-1");
+  for (const auto& row : t->rows) {
+    EXPECT_TRUE(row.general);
+    EXPECT_EQ(row.weight, 0.5);
+    EXPECT_EQ(row.pair.interaction, "SMOOTH");
+    EXPECT_EQ(row.pair.type, model::ContactDiscretization::SurfaceToSurface);
+  }
+  // Exterior faces: the lower block (3 × 2 CPE4) has 2·3 + 2·2 = 10 edges, the upper (4 × 2) 12.
+  EXPECT_EQ(t->rows[0].slave->faces.size(), 10u);
+  EXPECT_EQ(t->rows[0].master->faces.size(), 12u);
+  ASSERT_EQ(t->notes.size(), 1u);
+  EXPECT_NE(t->notes[0].find("self-contact within a body is not searched"), std::string::npos);
+}
+
+TEST(GeneralContactTable, DirectEnforcementMakesOneRowWithTheFinerSurfaceAsSlave) {
+  const DeckDir dir;
+  const auto r = dir.read(general_deck("*SURFACE INTERACTION, NAME=SMOOTH\n",
+                                       "*SURFACE INTERACTION, NAME=SMOOTH\n*SURFACE BEHAVIOR, DIRECT\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto t = contact::interaction_table(r.model);
+  ASSERT_EQ(t->rows.size(), 1u);
+  EXPECT_EQ(t->rows[0].name(), "BODY-2/BODY-1");  // the upper block has the smaller facets (0.5 < 2/3)
+  EXPECT_EQ(t->rows[0].weight, 1.0);
+}
+
+TEST(GeneralContactTable, NamedInclusionsExclusionsAndAssignments) {
+  const DeckDir dir;
+  const std::string named = "*CONTACT INCLUSIONS\nSLAVE_S, MASTER_S\nTOP_S, MASTER_S\nSLAVE_S,\n"
+                            "*CONTACT EXCLUSIONS\nMASTER_S, TOP_S\n*CONTACT PROPERTY ASSIGNMENT\n, , SMOOTH\n"
+                            "MASTER_S, SLAVE_S, ROUGHER\n*SURFACE INTERACTION, NAME=ROUGHER\n*FRICTION\n0.5\n";
+  const auto r = dir.read(general_deck("*CONTACT INCLUSIONS, ALL EXTERIOR\n*CONTACT PROPERTY ASSIGNMENT\n, , SMOOTH\n",
+                                       named));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto t = contact::interaction_table(r.model);
+  ASSERT_EQ(t->rows.size(), 2u);  // SLAVE_S/MASTER_S both ways; TOP_S excluded; self-contact noted
+  EXPECT_EQ(t->rows[0].name(), "SLAVE_S/MASTER_S");
+  EXPECT_EQ(t->rows[1].name(), "MASTER_S/SLAVE_S");
+  EXPECT_EQ(t->rows[0].pair.interaction, "ROUGHER");  // the specific assignment, in either order
+  ASSERT_EQ(t->notes.size(), 1u);
+  EXPECT_NE(t->notes[0].find("self-contact of SLAVE_S"), std::string::npos);
+}
+
+/// CPRESS over the closed nodes of every row, and the sum of CNAREA.
+struct ClosedFigures {
+  std::size_t n = 0;
+  double worst = 0.0, area = 0.0, max_pen = 0.0, min_pen = 1e300;
+};
+
+ClosedFigures closed_figures(const Run& r) {
+  const solver::Frame& f = r.capture.last();
+  const auto& cpress = contact_field(f, "CPRESS");
+  const auto& copen = contact_field(f, "COPEN");
+  const auto& cnarea = contact_field(f, "CNAREA");
+  ClosedFigures c;
+  for (std::size_t i = 0; i < cpress.values.size(); ++i) {
+    if (cpress.values[i] <= 0.0) continue;
+    ++c.n;
+    c.worst = std::max(c.worst, std::abs(cpress.values[i] - kP) / kP);
+    c.area += cnarea.values[i];
+    c.max_pen = std::max(c.max_pen, -copen.values[i]);
+    c.min_pen = std::min(c.min_pen, -copen.values[i]);
+  }
+  return c;
+}
+
+// Two rows of weight ½: the 4 + 5 interface nodes of both blocks carry p, each row's CNAREA sums
+// to half the interface (2 × ½ × 2 = 2 in all), penetration p/k as for one penalty pair.
+// Measured: max |CPRESS − p|/p = 3.1e-3.
+TEST(GeneralContactPatchTest, AllExteriorCarriesTheUniformPressureOnBothSurfaces) {
+  for (const char* deck : {"patch_2d_general.inp", "patch_2d_general_friction.inp"}) {
+    auto r = verification::run_deck(contact_deck(deck));
+    ASSERT_TRUE(r->outcome.completed) << deck << ": " << r->outcome.message;
+    const auto c = closed_figures(*r);
+    EXPECT_EQ(c.n, 9u) << deck;  // 4 nodes of the lower block's top, 5 of the upper's bottom
+    EXPECT_LE(c.worst, 0.01) << deck;
+    EXPECT_NEAR(c.area, kWidth, 1e-6 * kWidth) << deck;
+    const double k = 10.0 * kM / kSlaveElementHeight;  // both blocks: k_e = M / 0.5
+    EXPECT_NEAR(c.max_pen, kP / k, 0.01 * kP / k) << deck;
+    EXPECT_NEAR(c.min_pen, kP / k, 0.01 * kP / k) << deck;
+    const auto rf = verification::sum_rf(*r, r->capture.last());
+    EXPECT_NEAR(rf[1], kP * kWidth, 1e-8 * kP * kWidth) << deck;  // reactions balance the load
+    std::printf("[contact] general contact (%s): max |CPRESS - p|/p = %.3e over %zu nodes, penetration %.4e .. %.4e\n",
+                deck, c.worst, c.n, c.min_pen, c.max_pen);
+  }
+}
+
+}  // namespace
+}  // namespace inpact::test
