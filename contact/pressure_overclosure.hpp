@@ -44,6 +44,11 @@ class PressureOverclosure {
   double max_slope(double h_max) const;
   /// Overclosure at which the law starts giving pressure (−c0; tabular: h_0; LINEAR: 0).
   double h_zero() const;
+  /// The inverse law: the overclosure h at which p(h; λ) = `p` (> 0) and the slope dp/dh there,
+  /// for enforcement with Lagrange multipliers (table 38.1.21), where the pressure is the
+  /// unknown and h(p) the constraint. Exact for the piecewise-linear laws, Newton with bisection
+  /// safeguard (to 1e-14 relative) for the curved ones.
+  PressureValue inverse(double p, double lambda = 0.0, double* h = nullptr) const;
 
   Kind kind() const { return kind_; }
   double stiffness() const { return k_; }  ///< linear penalty k, nonlinear K_f, LINEAR slope

@@ -119,6 +119,9 @@ struct ContactProblem::Pair {
   std::optional<contact::FrictionLaw> friction;     ///< unset: frictionless
   bool direct = false, augmented = false, softened = false, finite_sliding = true, surface_to_surface = false;
   bool general = false;  ///< a row general contact made
+  /// A penalty-type law with slope > 1000 k_e, enforced with multipliers (table 38.1.21).
+  bool stiff = false;
+  bool uses_multipliers() const { return direct || stiff; }
   double weight = 1.0;   ///< balanced master-slave: ½ (the slave areas are scaled by it)
   double ke = 0.0, l_char = 0.0, tolerance = 0.0, hcrit = 0.0;
   std::vector<contact::SlaveKinematics> kin;
@@ -132,10 +135,34 @@ struct ContactProblem::Pair {
     if (!kin[i].found) return {};
     return law->eval(-kin[i].projection.gap, augmented ? lambda : 0.0);
   }
-  /// The contact pressure friction sees (direct: −λ, never tensile).
-  double friction_pressure(std::size_t i, const SlaveState& s) const {
-    return direct ? std::max(-s.lambda, 0.0) : pressure(i, s.lambda).p;
+  /// The contact pressure of slave i as the enforcement gives it: direct −λ, a stiff law's −multiplier
+  /// (closed nodes; never tensile), else the law at the gap.
+  double node_pressure(std::size_t i, const SlaveState& s) const {
+    if (direct) return s.closed && kin[i].found ? std::max(-s.lambda, 0.0) : 0.0;
+    if (stiff) return s.closed && kin[i].found ? std::max(-s.multiplier, 0.0) : 0.0;
+    return pressure(i, s.lambda).p;
   }
+  /// A stiff law's node: the overclosure h at which the law gives the pressure p = −multiplier,
+  /// and the slope p'(h) there. A tensile p (possible within the iterations) continues the law
+  /// linearly below its first pressure, so the constraint stays smooth.
+  struct LawPoint {
+    double h = 0.0, dp = 0.0;
+  };
+  LawPoint law_overclosure(const SlaveState& s) const {
+    const double p = -s.multiplier;
+    const double p_small = 1e-12 * std::max(ke * l_char, std::abs(s.lambda));
+    LawPoint out;
+    if (p > p_small) {
+      out.dp = law->inverse(p, s.lambda, &out.h).dp;
+      return out;
+    }
+    out.dp = law->inverse(p_small, s.lambda, &out.h).dp;
+    if (out.dp > 0.0) out.h += (p - p_small) / out.dp;
+    return out;
+  }
+
+  /// The contact pressure friction sees.
+  double friction_pressure(std::size_t i, const SlaveState& s) const { return node_pressure(i, s); }
 
   /// Friction of slave i off (open, or not yet evaluated): the trial state keeps its slip.
   void clear_friction(std::size_t i, FrictionNodeState& f) {
@@ -239,15 +266,11 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
         refuse(m, deck.loc, keyword, fmt::format("pair {}: the default penalty stiffness needs an element-based surface "
                                                  "with an elastic material; give the stiffness on *SURFACE BEHAVIOR", pair_name));
       p->law = contact::PressureOverclosure::from(b, p->ke, p->l_char);
-      // Table 38.1.21: Lagrange multipliers above 1000 k_e — not implemented for these methods.
+      // Table 38.1.21: Lagrange multipliers above 1000 k_e (the law's slope at zero clearance;
+      // exponential: at h = 0; a relative margin: 100 × 10 k_e must not exceed 1000 k_e by
+      // round-off). Without k_e (node-based slave and master) there is nothing to compare with.
       const double slope = p->law->max_slope(0.0);
-      // (a relative margin: 100 × 10 k_e must not exceed 1000 k_e by round-off)
-      if (scales && slope > 1000.0 * p->ke * (1.0 + 1e-12))
-        refuse(m, b.deck.loc.line ? b.deck.loc : deck.loc, "*SURFACE BEHAVIOR",
-               fmt::format("pair {}: the contact stiffness {:.4g} exceeds 1000 k_e = {:.4g}, where Abaqus enforces the "
-                           "constraint with Lagrange multipliers (table 38.1.21); inpact does not do that for {} contact "
-                           "yet — lower the stiffness or use hard contact with the direct method", pair_name, slope,
-                           1000.0 * p->ke, p->softened ? "softened" : "penalty"));
+      p->stiff = scales && slope > 1000.0 * p->ke * (1.0 + 1e-12);
     }
     if (p->augmented) p->tolerance = *contact::penetration_tolerance(b, p->l_char);
     p->hcrit = p->softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * p->l_char);
@@ -281,6 +304,7 @@ std::vector<std::string> ContactProblem::describe() const {
                                 p->law ? p->law->describe() : std::string("direct hard contact (Lagrange multipliers)"));
     s += fmt::format("; k_e = {:.4g}, characteristic length {:.4g}", p->ke, p->l_char);
     if (p->augmented) s += fmt::format(", augmented Lagrange, penetration tolerance {:.4g}", p->tolerance);
+    if (p->stiff) s += ", Lagrange multipliers (slope > 1000 k_e)";
     if (p->weight != 1.0) s += fmt::format("; weight {:g} (balanced master-slave)", p->weight);
     s += p->friction ? "; " + contact::describe(*p->friction) : std::string("; frictionless");
     out.push_back(std::move(s));
@@ -371,7 +395,10 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     // pair's pressures); an open one closes when it penetrates (or touches within round-off).
     double p_scale = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-      if (slaves[i].closed) p_scale = std::max(p_scale, std::abs(slaves[i].lambda));
+      if (slaves[i].closed) p_scale = std::max(p_scale, std::abs(p.stiff ? slaves[i].multiplier : slaves[i].lambda));
+    // A stiff law's node touching at zero pressure carries round-off of its slope × length:
+    // not a reason to open (it would close again at once: chattering).
+    if (p.stiff) p_scale = std::max(p_scale, 1e-4 * p.law->max_slope(0.0) * p.l_char);
     const double open_below = -1e-8 * p_scale, close_below = 1e-9 * p.l_char;
     for (std::size_t i = 0; i < n; ++i) {
       SlaveState& s = slaves[i];
@@ -382,6 +409,14 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
         if (!closed) s.lambda = 0.0;
         p.contributes[i] = closed;
         if (closed) it.max_gap_error = std::max(it.max_gap_error, std::abs(g));
+      } else if (p.stiff) {
+        // As direct, with the law deciding closure: closed while the multiplier's pressure is
+        // compressive, closing where the law acts (touching included), from the law's pressure.
+        const auto law = p.pressure(i, s.lambda);
+        closed = p.kin[i].found && (s.closed ? -s.multiplier >= open_below : law.active);
+        if (closed && !s.closed) s.multiplier = -law.p;
+        if (!closed) s.multiplier = 0.0;
+        p.contributes[i] = closed;
       } else {
         const auto pv = p.pressure(i, s.lambda);
         closed = pv.p > 0.0;
@@ -389,7 +424,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       }
       if (closed != s.closed) {
         ++it.status_changes;
-        if (p.direct) it.blocks_convergence = true;
+        if (p.uses_multipliers()) it.blocks_convergence = true;
         if (++s.flips > kMaxStatusChanges && it.failure.empty())
           it.failure = fmt::format("contact chattering: slave node {} of pair {}/{} changed status {} times in this "
                                    "increment", labels[p.kin[i].node], p.deck->slave, p.deck->master, s.flips);
@@ -408,12 +443,12 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
         ++friction_evaluations_;
       }
       // The couplings this node adds: its unknowns (and whether a multiplier joins them).
-      signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i), p.direct ? 1 : 0,
+      signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i), p.uses_multipliers() ? 1 : 0,
                                          static_cast<std::int64_t>(p.kin[i].lin.nodes.size())});
       signature.insert(signature.end(), p.kin[i].lin.nodes.begin(), p.kin[i].lin.nodes.end());
       if (fs && p.surface_to_surface && !p.fric[i].force.empty())
         signature.insert(signature.end(), p.kin[i].friction_lin.nodes.begin(), p.kin[i].friction_lin.nodes.end());
-      if (p.direct) {
+      if (p.uses_multipliers()) {
         p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
         multipliers_.push_back({pi, i});
       }
@@ -456,6 +491,8 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
       double s = 0.0, stiff = 0.0;
       if (p->direct) {
         s = slaves[i].lambda * area;
+      } else if (p->stiff) {
+        s = slaves[i].multiplier * area;  // the law's stiffness is in the multiplier row's diagonal
       } else {
         const auto pv = p->pressure(i, slaves[i].lambda);
         s = -pv.p * area;
@@ -488,7 +525,7 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
           for (const auto& ma : map.masters(all[a]))
             if (const std::int64_t e = map.equation(ma.dof); e >= 0) eqs[a].push_back({e, ma.weight});
         if (with_multiplier) eqs[nu].push_back({n_eq + p->multiplier[i], 1.0});
-        const double dp_dh = p->direct ? 0.0 : p->pressure(i, slaves[i].lambda).dp;
+        const double dp_dh = p->uses_multipliers() ? 0.0 : p->pressure(i, slaves[i].lambda).dp;
         kf.assign(nl * nl, 0.0);
         for (std::size_t a = 0; a < nf; ++a) {
           f_int[all[fpos[a]]] += area * fp.force[a];
@@ -502,6 +539,12 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
       // Constraint column A ∇g at the multiplier's equation (upper triangle: DOF rows < it).
       SparseMatrix& t = assembler.tangent();
       const std::int64_t em = n_eq + p->multiplier[i];
+      if (p->stiff) {
+        // The law's compliance: ∂(A (g + h(p)))/∂λ = −A h'(p) = −A / p'(h), p = −λ.
+        const double dp = p->law_overclosure(slaves[i]).dp;
+        const std::int64_t pos = t.find(em, em);
+        if (pos >= 0 && dp > 0.0) t.values[pos] -= area / dp;
+      }
       for (std::size_t a = 0; a < n; ++a)
         for (const auto& ma : map.masters(dofs[a])) {
           const std::int64_t ea = map.equation(ma.dof);
@@ -513,17 +556,21 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
   }
 }
 
-void ContactProblem::constraint_residual(std::span<double> rows) const {
+void ContactProblem::constraint_residual(const ContactState& state, std::span<double> rows) const {
   for (std::size_t m = 0; m < multipliers_.size(); ++m) {
     const auto [pi, i] = multipliers_[m];
-    rows[m] = -pairs_[pi]->kin[i].area * pairs_[pi]->gap(i);
+    const Pair& p = *pairs_[pi];
+    // The overclosure the law gives the node's pressure (direct: none).
+    const double h = p.stiff ? p.law_overclosure(state.pairs[p.row][i]).h : 0.0;
+    rows[m] = -p.kin[i].area * (p.gap(i) + h);
   }
 }
 
 void ContactProblem::apply_correction(std::span<const double> rows, ContactState& state) const {
   for (std::size_t m = 0; m < multipliers_.size(); ++m) {
     const auto [pi, i] = multipliers_[m];
-    state.pairs[pairs_[pi]->row][i].lambda += rows[m];
+    SlaveState& s = state.pairs[pairs_[pi]->row][i];
+    (pairs_[pi]->stiff ? s.multiplier : s.lambda) += rows[m];
   }
 }
 
@@ -567,7 +614,7 @@ AugmentationCheck ContactProblem::check_augmentation(const ContactState& state) 
     if (!p->augmented) continue;
     const auto& slaves = state.pairs[p->row];
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
-      if (p->pressure(i, slaves[i].lambda).p <= 0.0) continue;
+      if (p->node_pressure(i, slaves[i]) <= 0.0) continue;
       // Penetration past the zero-pressure clearance: h − h_0 = c0 − g.
       const double pen = -p->gap(i) - p->law->h_zero();
       if (pen > p->tolerance) c.converged = false;
@@ -586,7 +633,7 @@ void ContactProblem::augment(ContactState& state) const {
   for (const auto& p : pairs_) {
     if (!p->augmented) continue;
     auto& slaves = state.pairs[p->row];
-    for (std::size_t i = 0; i < p->kin.size(); ++i) slaves[i].lambda = p->pressure(i, slaves[i].lambda).p;
+    for (std::size_t i = 0; i < p->kin.size(); ++i) slaves[i].lambda = p->node_pressure(i, slaves[i]);
   }
 }
 
@@ -604,9 +651,9 @@ ContactResults ContactProblem::results(std::span<const double> u, const ContactS
       r.node = k.node;
       r.copen = k.found ? k.projection.gap : std::numeric_limits<double>::quiet_NaN();
       bool closed = false;
-      if (p->direct) {
+      if (p->uses_multipliers()) {
         closed = slaves[i].closed && k.found;
-        r.cpress = closed ? -slaves[i].lambda : 0.0;
+        r.cpress = closed ? -(p->stiff ? slaves[i].multiplier : slaves[i].lambda) : 0.0;
       } else {
         r.cpress = p->pressure(i, slaves[i].lambda).p;
         closed = r.cpress > 0.0;

@@ -15,6 +15,11 @@
 ///       [A ∇gᵀ           0 ] [Δλ] = [−A g                 ]
 ///     a node closes when it penetrates and opens when its pressure turns tensile; each
 ///     iteration in which a status changes is a severe discontinuity iteration.
+///   stiff penalty-type laws (slope > 1000 k_e: table 38.1.21 says Abaqus uses Lagrange
+///     multipliers then): the same system with the law's compliance on the diagonal,
+///     constraint A (g + h(p)) = 0, h(p) the law's inverse, p = −λ: the (2,2) block is −A/p'(h)
+///     instead of 0, so the stiffness never enters K and its conditioning (a perturbed
+///     Lagrangian). The pressure is the law's exactly at convergence; status as for direct.
 ///
 /// ∇g = [n; −N_a n] over the slave node and its master facet's nodes; ∇²g only for finite
 /// sliding; A the slave node's area, held fixed in the linearisation. Multipliers take the
@@ -49,6 +54,9 @@ inline constexpr int kMaxSevereIterations = 50;
 /// What a slave node carries across iterations, increments and steps.
 struct SlaveState {
   double lambda = 0.0;  ///< augmented Lagrange: λ (a pressure); direct: the multiplier (pressure −λ)
+  /// A penalty-type law stiffer than 1000 k_e, enforced with a Lagrange multiplier (table
+  /// 38.1.21): the multiplier of a closed node, pressure −multiplier.
+  double multiplier = 0.0;
   bool closed = false;  ///< contact status at the last update
   int flips = 0;        ///< status changes in the current increment attempt
   /// Penetration at the start of the attempt (from the converged state). HCRIT limits what an
@@ -130,8 +138,10 @@ class ContactProblem {
   /// Adds the contact forces to f_int (full DOF vector) and their tangent to the assembler's
   /// matrix (after the elements), for the geometry of the last update.
   void assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler);
-  /// The multiplier rows of the residual, r_m = −A g (`rows`: the equations after the DOF map's).
-  void constraint_residual(std::span<double> rows) const;
+  /// The multiplier rows of the residual, r_m = −A (g + h(p)) with h(p) the overclosure the law
+  /// gives the node's pressure p = −multiplier (direct: h = 0) (`rows`: the equations after the
+  /// DOF map's).
+  void constraint_residual(const ContactState& state, std::span<double> rows) const;
   /// λ += Δλ from the solution's multiplier rows.
   void apply_correction(std::span<const double> rows, ContactState& state) const;
   /// Did the last assemble() leave an unsymmetric part (friction with a pressure coupling)?

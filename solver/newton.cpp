@@ -98,7 +98,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     }
     for (std::size_t d = 0; d < n; ++d) r_full[d] = state.f_ext[d] - state.f_int[d];
     ctx.assembler.reduce(r_full, std::span(r).first(n_eq));
-    if (ctx.contact) ctx.contact->constraint_residual(std::span(r).subspan(n_eq));
+    if (ctx.contact) ctx.contact->constraint_residual(state.contact, std::span(r).subspan(n_eq));
 
     const auto [max_r, worst] = largest_residual(dofs, r);
     const double q_now = average_force(asm_result, state.f_ext, contact_force_sum, contact_force_count);

@@ -185,6 +185,9 @@ TEST(ContactSoftened, PressureFollowsThePressureOverclosureLaw) {
   }
 }
 
+/// The *SURFACE BEHAVIOR, PENALTY data line with only the stiffness scale factor.
+std::string fmt_scale(double scale) { return ", , " + std::to_string(scale) + "\n"; }
+
 /// A deck text with `insert` placed after the first line starting with `after`.
 std::string deck_with(const std::string& base, const std::string& after, const std::string& insert) {
   std::ifstream in(contact_deck(base));
@@ -193,6 +196,52 @@ std::string deck_with(const std::string& base, const std::string& after, const s
   std::string s = ss.str();
   const auto at = s.find('\n', s.find(after));
   return s.substr(0, at + 1) + insert + s.substr(at + 1);
+}
+
+/// The run of deck text `text`.
+std::unique_ptr<Run> run_text(const DeckDir& dir, const std::string& name, const std::string& text) {
+  return verification::run_deck(dir.write(name, text));
+}
+
+// Table 38.1.21: a penalty stiffness above 1000 k_e is enforced with Lagrange multipliers (the
+// law's compliance on the multiplier's diagonal), so the stiffness never enters K: scale factors
+// 1e3 and 1e8 (k = 1e4 and 1e9 k_e) give the pressure to round-off, the penetration p/k, and
+// converge in one equilibrium iteration per increment like the default stiffness.
+TEST(ContactStiffLaws, PenaltyAbove1000KeUsesMultipliersAndKeepsTheLaw) {
+  const DeckDir dir;
+  for (const double scale : {1e3, 1e8}) {
+    auto r = run_text(dir, "stiff.inp", deck_with("patch_2d_penalty.inp", "*SURFACE BEHAVIOR", fmt_scale(scale)));
+    const auto fig = check_patch(*r, "penalty, scale factor " + std::to_string(scale));
+    EXPECT_LE(fig.max_cpress_error, 1e-9) << scale;
+    const double k = scale * 10.0 * kM / kSlaveElementHeight;
+    // p/k, within the projection's on-surface tolerance (1e-8 of a facet) for the stiffest.
+    EXPECT_NEAR(fig.max_penetration, kP / k, std::max(1e-6 * kP / k, 1e-8 * kSlaveFacet)) << scale;
+    EXPECT_NEAR(fig.min_penetration, kP / k, std::max(1e-6 * kP / k, 1e-8 * kSlaveFacet)) << scale;
+    EXPECT_LE(fig.iterations - fig.severe, 2 * 2) << scale;  // two increments
+    bool says_multipliers = false;
+    for (const auto& m : r->capture.messages) says_multipliers |= m.find("Lagrange multipliers (slope > 1000 k_e)") != std::string::npos;
+    EXPECT_TRUE(says_multipliers) << scale;
+  }
+}
+
+TEST(ContactStiffLaws, SoftenedLawSteeperThan1000KeUsesMultipliersAndFollowsTheLaw) {
+  // k_e = M / 1 = 1346 for the one-element deck: a LINEAR slope of 2e6 > 1000 k_e.
+  const DeckDir dir;
+  std::string text = deck_with("softened_linear.inp", "*ELASTIC", "");
+  text.replace(text.find("LINEAR\n500."), 11, "LINEAR\n2.e6");
+  auto r = run_text(dir, "steep.inp", text);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  int pressed = 0;
+  for (const auto& sf : r->capture.frames) {
+    const auto& cp = contact_field(sf.frame, "CPRESS");
+    const auto& co = contact_field(sf.frame, "COPEN");
+    for (std::size_t i = 0; i < cp.values.size(); ++i) {
+      const double h = -co.values[i], expected = h > 0 ? 2e6 * h : 0.0;
+      EXPECT_NEAR(cp.values[i], expected, 1e-6 * (1.0 + expected)) << "h = " << h;
+      pressed += cp.values[i] > 0;
+    }
+  }
+  EXPECT_GE(pressed, 2);
 }
 
 // Friction by stiffness is analysed (tests/contact/test_friction.cpp); sticking enforced by
