@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "contact/initial_adjustment.hpp"
 #include "solver/analysis_error.hpp"
 #include "solver/analysis_model.hpp"
 
@@ -20,6 +21,7 @@ std::optional<parser::ReadResult> load_analysable_deck(const std::string& deck,
     return std::nullopt;
   }
   try {
+    contact::apply_adjust(result.model);  // ADJUST: slave nodes onto their masters, strain-free
     solver::build_analysis_model(result.model);
   } catch (const solver::AnalysisError& e) {
     std::fprintf(stderr, "%s\n%s: the deck cannot be analysed\n", e.what(), deck.c_str());

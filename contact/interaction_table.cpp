@@ -148,9 +148,13 @@ std::shared_ptr<const InteractionTable> interaction_table(const model::Model& m)
     ci.first_step = step;
     t->rows.push_back(std::move(ci));
   };
+  auto add_step_pair = [&](const model::ContactPair& p, std::size_t step) {
+    add_pair(p, step);
+    t->rows.back().step_data = true;
+  };
   for (const auto& p : m.contact_pairs) add_pair(p, 0);
   for (std::size_t s = 0; s < m.steps.size(); ++s)
-    for (const auto& p : m.steps[s].contact_pairs) add_pair(p, s);
+    for (const auto& p : m.steps[s].contact_pairs) add_step_pair(p, s);
 
   const model::GeneralContact& gc = m.general_contact;
   if (!gc.defined) return t;

@@ -42,6 +42,7 @@ struct ContactInteraction {
   const model::Surface* master = nullptr;
   std::size_t first_step = 0;  ///< the step (0-based) it enters; model data: 0
   bool general = false;        ///< made by general contact
+  bool step_data = false;      ///< a *CONTACT PAIR of a step (not of the model data)
   double weight = 1.0;         ///< ½ for each row of a balanced (two-row) interaction
   /// "SLAVE/MASTER", the name in /model/contact/pairs.
   std::string name() const { return pair.slave + "/" + pair.master; }

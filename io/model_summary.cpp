@@ -116,6 +116,7 @@ void write_contact(std::ostream& out, const model::Model& m) {
     print(out, "    {}\n", contact::describe(resolved, pair_scales(m, p->slave, p->master)));
     if (!p->geometric_correction.empty()) print(out, "    smoothing: {}\n", p->geometric_correction);
   }
+  for (const auto& note : m.preprocessing_notes) print(out, "  {}\n", note);
   const auto& gc = m.general_contact;
   if (gc.defined) {
     print(out, "General contact\n");

@@ -38,6 +38,11 @@ struct Model {
   GeneralContact general_contact;
   std::map<std::string, SurfaceSmoothing> surface_smoothings;
   std::vector<Clearance> clearances;
+  /// ADJUST applied: the slave nodes it moves sit on their masters in mesh.nodes.coords
+  /// (contact::apply_adjust, run after reading: the one change to the model after the parser).
+  bool adjusted = false;
+  /// What that preprocessing did, for `inpact check` and the analysis messages.
+  std::vector<std::string> preprocessing_notes;
 
   std::vector<Step> steps;
 };

@@ -203,6 +203,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
   set_blas_threads(options.threads);
   const AnalysisModel am = build_analysis_model(model);
+  for (const auto& note : model.preprocessing_notes) observer.message(note);
   for (const auto& note : am.contact->notes) observer.message(note);
   ConditionHistory history = initial_history(am);
   IncrementState state;

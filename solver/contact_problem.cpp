@@ -107,6 +107,30 @@ void add_unsymmetric(SparseMatrix& t, const LocalEquations& eqs, std::span<const
     }
 }
 
+/// *CLEARANCE of a pair: per slave node (slave().nodes() order), clearance − the gap measured
+/// on the reference coordinates, so the initial gap is the clearance given and changes with
+/// the displacements from there [K16 §3.21]. Empty when no *CLEARANCE names the pair; nodes
+/// it does not name (TABULAR) keep their measured gap. Later *CLEARANCE lines win.
+std::vector<double> clearance_offsets(const model::Model& m, const model::ContactPair& pair,
+                                      contact::PairKinematics& geometry) {
+  std::vector<double> wanted(geometry.slave().nodes().size(), std::numeric_limits<double>::quiet_NaN());
+  bool any = false;
+  for (const model::Clearance& c : m.clearances) {
+    if (c.slave != pair.slave || c.master != pair.master) continue;
+    any = true;
+    if (c.value) std::fill(wanted.begin(), wanted.end(), *c.value);
+    for (const auto& [row, value] : c.node_values)
+      if (const std::int32_t i = geometry.slave().local_index(row); i >= 0) wanted[static_cast<std::size_t>(i)] = value;
+  }
+  if (!any) return {};
+  std::vector<contact::SlaveKinematics> kin;
+  geometry.update(contact::reference_coordinates(m.mesh.nodes), kin);
+  std::vector<double> offset(wanted.size(), 0.0);
+  for (std::size_t i = 0; i < offset.size(); ++i)
+    if (kin[i].found && !std::isnan(wanted[i])) offset[i] = wanted[i] - kin[i].projection.gap;
+  return offset;
+}
+
 }  // namespace
 
 /// One contact pair in force: its geometry, enforcement and the last kinematics.
@@ -128,6 +152,9 @@ struct ContactProblem::Pair {
   std::vector<char> contributes;           ///< per slave node, at the last update
   std::vector<std::int64_t> multiplier;    ///< per slave node: multiplier index or −1
   std::vector<contact::FrictionPoint> fric;  ///< frictional pairs: per slave node, at the last update
+  /// *CLEARANCE: per slave node, what is added to the measured gap so that the gap in the
+  /// reference configuration is the clearance given (empty: no *CLEARANCE for this pair).
+  std::vector<double> gap_offset;
 
   double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
   /// Penalty-type pressure of slave i (λ: its augmented-Lagrange multiplier).
@@ -279,6 +306,7 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     if (p->friction && p->friction->rough && !(p->ke > 0.0))
       refuse(m, inter->friction->loc, "*FRICTION", fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of "
                                                                "an element-based surface with an elastic material", pair_name));
+    if (!entry.general) p->gap_offset = clearance_offsets(m, deck, *p->geometry);
     pairs_.push_back(std::move(p));
   }
 }
@@ -313,8 +341,6 @@ std::vector<std::string> ContactProblem::describe() const {
 }
 
 void check_contact_supported(const model::Model& m, const contact::InteractionTable& table) {
-  if (!m.clearances.empty())
-    refuse(m, m.clearances.front().loc, "*CLEARANCE", "initial clearances are not analysed by this version of inpact yet");
   for (const contact::ContactInteraction& e : table.rows) {
     const model::ContactPair& p = e.pair;
     const std::string kw = e.general ? "*CONTACT" : "*CONTACT PAIR";
@@ -323,7 +349,11 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
                                        "(use TYPE=NODE TO SURFACE)", p.slave));
     if (p.slave == p.master) refuse(m, p.loc, kw, fmt::format("self-contact of {} is not analysed by this version of inpact yet", p.slave));
     if (p.tied) refuse(m, p.loc, kw, "TIED contact is not analysed by this version of inpact yet");
-    if (p.adjust_distance || !p.adjust_nset.empty()) refuse(m, p.loc, kw, "ADJUST is not analysed by this version of inpact yet");
+    if ((p.adjust_distance || !p.adjust_nset.empty()) && e.step_data)
+      refuse(m, p.loc, kw, "ADJUST on a contact pair defined in a step is not analysed by this version of inpact "
+                           "yet; define the pair in the model data");
+    if ((p.adjust_distance || !p.adjust_nset.empty()) && !m.adjusted)
+      refuse(m, p.loc, kw, "ADJUST: the model was not adjusted before the analysis (contact::apply_adjust)");
     if (e.master->kind != model::Surface::Kind::Element)
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
     const model::SurfaceInteraction* inter = interaction_of(m, p);
@@ -374,7 +404,11 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
 
 void ContactProblem::evaluate(std::span<const double> u) {
   const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
-  for (auto& p : pairs_) p->geometry->update(x, p->kin);
+  for (auto& p : pairs_) {
+    p->geometry->update(x, p->kin);
+    for (std::size_t i = 0; i < p->gap_offset.size(); ++i)
+      if (p->kin[i].found) p->kin[i].projection.gap += p->gap_offset[i];
+  }
 }
 
 ContactIteration ContactProblem::update(std::span<const double> u, ContactState& state, Assembler& assembler) {

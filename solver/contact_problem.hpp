@@ -107,10 +107,10 @@ struct AugmentationCheck {
   std::int64_t node = -1;      ///< its slave node row
 };
 
-/// Throws AnalysisError (citing the deck) for contact this version does not analyse: general
-/// contact, surface-to-surface pairs with a node-based slave, LAGRANGE friction, clearances, ADJUST, tied or no-separation
-/// contact, self-contact, node-based masters, and multipliers that softened laws or large
-/// penalty stiffnesses would need (table 38.1.21).
+/// Throws AnalysisError (citing the deck) for contact this version does not analyse:
+/// surface-to-surface pairs with a node-based slave, node-based masters, LAGRANGE friction,
+/// ADJUST on step pairs (or on a model contact::apply_adjust has not seen), TIED or
+/// no-separation contact, self-contact.
 void check_contact_supported(const model::Model& model, const contact::InteractionTable& table);
 
 class ContactProblem {

@@ -4,6 +4,8 @@
 // tolerance next to the assertion (shared/STYLE.md §11).
 #include <gtest/gtest.h>
 
+#include "contact/initial_adjustment.hpp"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -90,6 +92,7 @@ inline std::unique_ptr<Run> run_deck(const std::string& path) {
   auto r = std::make_unique<Run>();
   r->deck = parser::read_deck(path);
   EXPECT_TRUE(r->deck.ok()) << r->deck.report();
+  contact::apply_adjust(r->deck.model);  // as `inpact run` does after reading
   const auto t0 = std::chrono::steady_clock::now();
   r->outcome = solver::run_analysis(r->deck.model, r->capture);
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

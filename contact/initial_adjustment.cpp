@@ -1,0 +1,70 @@
+#include "initial_adjustment.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "contact/node_to_surface.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+/// 2 for plane and axisymmetric models, else 3.
+int model_dim(const model::Model& m) {
+  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
+    if (model::element_type(m.mesh.elements.type[e]).dim == 3) return 3;
+  return 2;
+}
+
+}  // namespace
+
+std::vector<AdjustedNode> adjusted_nodes(const model::Model& m, std::vector<std::string>& notes) {
+  std::vector<AdjustedNode> out;
+  std::set<std::int32_t> done;
+  const auto x = reference_coordinates(m.mesh.nodes);
+  for (const model::ContactPair& p : m.contact_pairs) {
+    if (!p.adjust_distance && p.adjust_nset.empty()) continue;
+    const model::Surface& slave = m.mesh.surfaces.at(p.slave);
+    const model::Surface& master = m.mesh.surfaces.at(p.master);
+    if (master.kind != model::Surface::Kind::Element) continue;  // refused by the analysis
+    NodeToSurfacePair geometry(m, slave, master, model_dim(m), 1.0);
+    std::vector<SlaveKinematics> kin;
+    geometry.update(x, kin);
+    std::set<std::int32_t> in_set;
+    if (!p.adjust_nset.empty()) {
+      const auto& rows = m.mesh.nsets.at(p.adjust_nset).rows;
+      in_set.insert(rows.begin(), rows.end());
+    }
+    std::size_t count = 0;
+    double largest = 0.0;
+    for (const SlaveKinematics& k : kin) {
+      if (!k.found || done.count(k.node)) continue;
+      const bool wanted = p.adjust_distance ? k.projection.gap <= *p.adjust_distance : in_set.count(k.node) > 0;
+      if (!wanted) continue;
+      AdjustedNode a;
+      a.row = k.node;
+      a.to = k.projection.x_master;
+      a.moved = std::abs(k.projection.gap);
+      out.push_back(a);
+      done.insert(k.node);
+      ++count;
+      largest = std::max(largest, a.moved);
+    }
+    notes.push_back(fmt::format("{}: ADJUST moved {} slave node(s) of {}/{} onto the master, the largest by {:.4g}",
+                                m.sources.describe(p.loc), count, p.slave, p.master, largest));
+  }
+  return out;
+}
+
+std::vector<std::string> apply_adjust(model::Model& m) {
+  std::vector<std::string> notes;
+  const auto moves = adjusted_nodes(m, notes);
+  for (const AdjustedNode& a : moves) m.mesh.nodes.coords[static_cast<std::size_t>(a.row)] = a.to;
+  m.adjusted = true;
+  m.preprocessing_notes.insert(m.preprocessing_notes.end(), notes.begin(), notes.end());
+  return notes;
+}
+
+}  // namespace inpact::contact
