@@ -454,12 +454,20 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       } else {
         const auto pv = p.pressure(i, s.lambda);
         closed = pv.p > 0.0;
-        p.contributes[i] = pv.active;
+        // Damping a node that keeps crossing the law's kink: after two crossings in this attempt
+        // its stiffness stays in the tangent while it is open (the force is still the law's), so
+        // Newton stops bouncing between the two branches (a stiff law, e.g. augmented Lagrange's
+        // 1000 k_e, otherwise cycles on faceting noise).
+        p.contributes[i] = pv.active || (p.kin[i].found && s.flips >= 2);
       }
       if (closed != s.closed) {
         ++it.status_changes;
         if (p.uses_multipliers()) it.blocks_convergence = true;
-        if (++s.flips > kMaxStatusChanges && it.failure.empty())
+        // Chattering is a multiplier method's trouble: its status is a discontinuity Newton
+        // cannot smooth over. A penalty-type law is continuous (a kink at first pressure), so a
+        // node crossing it is an ordinary Newton iteration and the iteration limits apply.
+        ++s.flips;
+        if (p.uses_multipliers() && s.flips > kMaxStatusChanges && it.failure.empty())
           it.failure = fmt::format("contact chattering: slave node {} of pair {}/{} changed status {} times in this "
                                    "increment", labels[p.kin[i].node], p.deck->slave, p.deck->master, s.flips);
       }
@@ -530,7 +538,8 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
       } else {
         const auto pv = p->pressure(i, slaves[i].lambda);
         s = -pv.p * area;
-        stiff = pv.dp * area;
+        // (an open node kept for damping, see update(), brings the law's first slope)
+        stiff = (pv.active ? pv.dp : p->law->max_slope(0.0)) * area;
       }
       for (std::size_t a = 0; a < n; ++a) {
         f_int[dofs[a]] += s * lin.gradient[a];
