@@ -127,7 +127,9 @@ LineMin minimize_on_segment(const FacetNodes& fn, const Vec3& xs, const std::arr
     const double t_k = static_cast<double>(k) / samples;
     double d_k;
     derivs(t_k, d_k, dd);
-    if (d_prev < 0 && d_k > 0) {
+    // (≥: a minimum exactly at a sample point, φ' = 0 there — a slave node on a Line3's
+    // midside node — must still be bracketed)
+    if (d_prev < 0 && d_k >= 0) {
       double lo = t_prev, hi = t_k, t = 0.5 * (lo + hi);
       for (int it = 0; it < 100; ++it) {
         double d1, d2;

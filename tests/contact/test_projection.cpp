@@ -194,6 +194,19 @@ TEST(Projection, CurvedLine3EdgeMatchesTheExactParabola) {
   }
 }
 
+// A minimum exactly at one of the edge search's sample points (φ' = 0 there): a slave node on
+// a straight Line3 edge's midside node, just under or over it. It was missed once (the sign
+// change test wanted φ' > 0 strictly) and the node projected to a corner 0.5 away.
+TEST(Projection, PointOverALine3MidsideNodeProjectsThere) {
+  const std::vector<Vec3> x = {{1, 1, 0}, {0, 1, 0}, {0.5, 1, 0}};
+  const auto f = make_facet(FacetShape::Line3);
+  for (const double dy : {0.0, -1e-3, 1e-3}) {
+    const auto p = project_to_facet(f, x, Vec3{0.5, 1 + dy, 0});
+    EXPECT_NEAR(p.xi[0], 0.0, 1e-12) << dy;
+    EXPECT_NEAR(p.gap, dy, 1e-15) << dy;
+  }
+}
+
 TEST(Projection, AxisymmetricAndPlaneEdgesFromADeck) {
   // CAX4 ring section r ∈ [1, 2], z ∈ [0, 1]; surface on the top edge S3 (nodes 3 → 4), outward +z.
   for (const char* type : {"CAX4", "CPE4"}) {

@@ -111,5 +111,28 @@ TEST(SurfaceToSurfacePatchTest, ThreeDimensionalOffsetMeshesGiveUniformPressureF
   }
 }
 
+// Second-order faces (CPE8, Line3 edges): node to surface on nested meshes (the slave nodes on
+// the master's corner and midside nodes; HRZ nodal areas 1/6, 2/3, 1/6) and surface to surface
+// on offset ones (3 and 4 elements across). Measured: exact (1e-15) and 4.0e-3.
+TEST(SecondOrderPatchTest, Cpe8FacesCarryTheUniformPressure) {
+  for (const char* deck : {"patch_2d_cpe8_n2s_direct.inp", "patch_2d_cpe8_s2s_direct.inp"}) {
+    auto r = verification::run_deck(contact_deck(deck));
+    ASSERT_TRUE(r->outcome.completed) << deck << ": " << r->outcome.message;
+    const auto& f = r->capture.last();
+    const auto& cpress = contact_field(f, "CPRESS");
+    const auto& copen = contact_field(f, "COPEN");
+    ASSERT_EQ(cpress.values.size(), 9u);  // 4 Line3 edges: 5 corners + 4 midside nodes
+    double worst = 0.0;
+    for (std::size_t i = 0; i < cpress.values.size(); ++i) {
+      worst = std::max(worst, std::abs(cpress.values[i] - kP) / kP);
+      EXPECT_LE(std::abs(copen.values[i]), 1e-12) << deck;  // direct: no penetration
+    }
+    EXPECT_LE(worst, 0.01) << deck;
+    const auto rf = verification::sum_rf(*r, f);
+    EXPECT_NEAR(rf[1], kP * kWidth, 1e-8 * kP * kWidth) << deck;
+    std::printf("[contact] %s: max |CPRESS - p|/p = %.3e\n", deck, worst);
+  }
+}
+
 }  // namespace
 }  // namespace inpact::test
