@@ -104,6 +104,14 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
 /// at most I_A^c times (*CONTROLS, PARAMETERS=TIME INCREMENTATION, field 13; default 50).
 NewtonOutcome solve_with_augmentations(NewtonContext& ctx, double t, IncrementState& state, int& augmentations) {
   NewtonOutcome total;
+  // USER ADAPTIVE: the first increment's early iterations with a reduced penalty stiffness, to
+  // find the contact status; then its final iterations (below) with the full stiffness.
+  if (ctx.contact && ctx.contact->has_user_adaptive() && ctx.increment == 1) {
+    ctx.contact->set_user_adaptive_scale(kUserAdaptiveScale);
+    total = solve_increment(ctx, t, state);
+    ctx.contact->set_user_adaptive_scale(1.0);
+    if (!total.converged) return total;
+  }
   for (augmentations = 0;; ++augmentations) {
     NewtonOutcome outcome = solve_increment(ctx, t, state);
     outcome.iterations += total.iterations;

@@ -157,10 +157,19 @@ struct ContactProblem::Pair {
   std::vector<double> gap_offset;
 
   double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
+  /// USER ADAPTIVE (and not enforced with multipliers): the law's factor of the moment.
+  bool user_adaptive = false;
+  double adaptive_scale = 1.0;
+
   /// Penalty-type pressure of slave i (λ: its augmented-Lagrange multiplier).
   contact::PressureValue pressure(std::size_t i, double lambda) const {
     if (!kin[i].found) return {};
-    return law->eval(-kin[i].projection.gap, augmented ? lambda : 0.0);
+    contact::PressureValue v = law->eval(-kin[i].projection.gap, augmented ? lambda : 0.0);
+    if (user_adaptive) {
+      v.p *= adaptive_scale;
+      v.dp *= adaptive_scale;
+    }
+    return v;
   }
   /// The contact pressure of slave i as the enforcement gives it: direct −λ, a stiff law's −multiplier
   /// (closed nodes; never tensile), else the law at the gap.
@@ -298,6 +307,7 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
       // round-off). Without k_e (node-based slave and master) there is nothing to compare with.
       const double slope = p->law->max_slope(0.0);
       p->stiff = scales && slope > 1000.0 * p->ke * (1.0 + 1e-12);
+      p->user_adaptive = b.user_adaptive_stiffness && !p->stiff;
     }
     if (p->augmented) p->tolerance = *contact::penetration_tolerance(b, p->l_char);
     p->hcrit = p->softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * p->l_char);
@@ -317,6 +327,10 @@ bool ContactProblem::empty() const { return pairs_.empty(); }
 
 bool ContactProblem::has_friction() const {
   return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->friction.has_value(); });
+}
+
+bool ContactProblem::has_user_adaptive() const {
+  return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->user_adaptive; });
 }
 
 bool ContactProblem::has_augmented_lagrange() const {
@@ -404,6 +418,7 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
 
 void ContactProblem::evaluate(std::span<const double> u) {
   const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
+  for (auto& p : pairs_) p->adaptive_scale = adaptive_scale_;
   for (auto& p : pairs_) {
     p->geometry->update(x, p->kin);
     for (std::size_t i = 0; i < p->gap_offset.size(); ++i)

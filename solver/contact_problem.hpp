@@ -51,6 +51,12 @@ namespace inpact::solver {
 /// parser/KEYWORDS.md *CONTROLS; *CONTROLS does not change it in inpact yet).
 inline constexpr int kMaxSevereIterations = 50;
 
+/// USER ADAPTIVE: the penalty stiffness of the early iterations of the first increment, as a
+/// fraction of the full one. Abaqus does not publish its reduction; inpact's choice: 1/100,
+/// soft enough that the contact status settles in a few iterations, after which the full
+/// stiffness is restored and Newton converges from there.
+inline constexpr double kUserAdaptiveScale = 0.01;
+
 /// What a slave node carries across iterations, increments and steps.
 struct SlaveState {
   double lambda = 0.0;  ///< augmented Lagrange: λ (a pressure); direct: the multiplier (pressure −λ)
@@ -152,6 +158,13 @@ class ContactProblem {
   /// Friction return mappings evaluated so far (0 for a frictionless model: tests).
   std::int64_t friction_evaluations() const { return friction_evaluations_; }
 
+  /// *CONTACT CONTROLS, STIFFNESS SCALE FACTOR=USER ADAPTIVE: does a pair ask for a reduced
+  /// penalty stiffness in the first increment of this step?
+  bool has_user_adaptive() const;
+  /// The factor on the penalty law of USER ADAPTIVE pairs (pressure and slope): kUserAdaptiveScale
+  /// while the first increment finds its contact status, 1 for its final iterations.
+  void set_user_adaptive_scale(double scale) { adaptive_scale_ = scale; }
+
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
@@ -177,6 +190,7 @@ class ContactProblem {
   std::vector<SkewEntry> skew_;
   SparseMatrix full_;
   std::int64_t friction_evaluations_ = 0;
+  double adaptive_scale_ = 1.0;
 };
 
 }  // namespace inpact::solver

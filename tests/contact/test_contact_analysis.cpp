@@ -244,6 +244,24 @@ TEST(ContactStiffLaws, SoftenedLawSteeperThan1000KeUsesMultipliersAndFollowsTheL
   EXPECT_GE(pressed, 2);
 }
 
+// *CONTACT CONTROLS, STIFFNESS SCALE FACTOR=USER ADAPTIVE: the first increment first converges
+// with 1/100 of the penalty stiffness, then with the full one: the answer is the full law's
+// (penetration p/k), and the adaptive phase shows as extra iterations of increment 1 only.
+TEST(ContactUserAdaptive, FirstIncrementEndsWithTheFullStiffness) {
+  const DeckDir dir;
+  auto plain = verification::run_deck(contact_deck("patch_2d_penalty.inp"));
+  auto r = run_text(dir, "adaptive.inp", deck_with("patch_2d_penalty.inp", "0.5, 1.0",
+                                                   "*CONTACT CONTROLS, STIFFNESS SCALE FACTOR=USER ADAPTIVE\n"));
+  const auto fig = check_patch(*r, "penalty, USER ADAPTIVE");
+  EXPECT_LE(fig.max_cpress_error, 1e-9);
+  const double k = 10.0 * kM / kSlaveElementHeight;
+  EXPECT_NEAR(fig.max_penetration, kP / k, 1e-9 * kP / k);
+  ASSERT_GE(r->capture.rows.size(), 2u);
+  ASSERT_GE(plain->capture.rows.size(), 2u);
+  EXPECT_GT(r->capture.rows[0].total_iters, plain->capture.rows[0].total_iters);  // the adaptive phase
+  EXPECT_EQ(r->capture.rows[1].total_iters, plain->capture.rows[1].total_iters);  // later increments: as usual
+}
+
 // Friction by stiffness is analysed (tests/contact/test_friction.cpp); sticking enforced by
 // Lagrange multipliers is not, and is refused rather than run by stiffness.
 TEST(ContactRefusals, LagrangeFrictionIsRefusedRatherThanRunByStiffness) {
