@@ -292,8 +292,10 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
   const Vec3 r = sub(xs, g.x);
   p.distance = norm(r);
   if (p.region == ProjectionRegion::Interior || p.distance <= on_surface_tol(fn.size)) {
+    // (on an edge or vertex within round-off of the surface: the distance along the facet's
+    // normal, signed — never 0 by fiat: a stiff law turns a tiny penetration into a force)
     p.normal = g.n;
-    p.gap = p.region == ProjectionRegion::Interior ? dot(r, g.n) : 0.0;
+    p.gap = dot(r, g.n);
   } else {
     const double s = dot(r, g.n) < 0 ? -1.0 : 1.0;
     p.normal = scale(s / p.distance, r);
@@ -338,8 +340,11 @@ Projection closest_projection(std::span<const Facet> facets, std::span<const std
   const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
   const Vec3 r = sub(xs, best.x_master);
   if (best.distance <= tol) {
+    // On the surface to round-off at an edge or vertex: the averaged normal, and the signed
+    // distance along it (not 0: under a stiff penalty p/k can be below this tolerance, and a
+    // node on a vertex must still carry its force).
     if (len > 0) best.normal = scale(1.0 / len, nbar);
-    best.gap = 0.0;
+    best.gap = dot(r, best.normal);
   } else if (best.region != ProjectionRegion::Interior) {
     const double s = dot(r, nbar) < 0 ? -1.0 : 1.0;
     best.normal = scale(s / best.distance, r);

@@ -23,7 +23,8 @@
 ///     turns continuously from one facet's normal to the next one's; the sign s is that of
 ///     (x_s − x_m)·n̄, n̄ the sum of the facet normals at x_m of every candidate facet sharing that
 ///     closest point;
-///   - slave exactly on the surface at an edge or vertex (distance ≈ 0): n = n̄/|n̄|, g = 0, and
+///   - slave on the surface to round-off at an edge or vertex (distance ≤ 1e-8 of a facet):
+///     n = n̄/|n̄|, g = (x_s − x_m)·n (signed, of the size of round-off, never forced to 0), and
 ///     the facet with the lowest index among those sharing the point is reported (no double
 ///     count: one slave node, one projection).
 /// Inside a concave corner two facets can be equally close with different normals; the normal

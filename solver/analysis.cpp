@@ -181,7 +181,9 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}",
                                             run.number, run.step.name, increment, attempt, t, dt, outcome.failure,
                                             describe_dof(am, outcome.worst_dof));
-      if (outcome.singular) return {false, where};  // no increment size removes a rigid-body mode
+      // No increment size removes a rigid-body mode — unless contact holds the body: an
+      // overshooting iteration may have opened what supports it, and a smaller increment may not.
+      if (outcome.singular && !run.contact) return {false, where};
       if (proc.direct) return {false, where + " (DIRECT incrementation cannot cut back)"};
       if (attempt > c.max_cutbacks) return {false, where + fmt::format(" — gave up after {} cutbacks", c.max_cutbacks)};
       if (dt * c.cutback_factor < dt_min)

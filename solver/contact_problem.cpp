@@ -487,6 +487,21 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
                                    "increment", labels[p.kin[i].node], p.deck->slave, p.deck->master, s.flips);
       }
       s.closed = closed;
+      if (p.kin[i].found) {
+        s.last_facet = p.kin[i].projection.facet;
+      } else if (s.closed && s.last_facet >= 0 && it.failure.empty()) {
+        // A closed node that lost its master: slid off an edge (fine: it opens), or went through
+        // the master in one overshooting iteration (the increment must be cut back). Tell them
+        // apart by the side of its last facet's plane it is on.
+        const contact::Facet& f = p.geometry->master().facets()[static_cast<std::size_t>(s.last_facet)];
+        const contact::FacetGeometry fg = contact::facet_geometry(f, x, 0.0, 0.0);
+        const auto& xs = x[static_cast<std::size_t>(p.kin[i].node)];
+        const double depth = -((xs[0] - fg.x[0]) * fg.n[0] + (xs[1] - fg.x[1]) * fg.n[1] + (xs[2] - fg.x[2]) * fg.n[2]);
+        if (depth > p.hcrit)
+          it.failure = fmt::format("slave node {} of pair {}/{} went through the master surface ({:.4g} behind it, "
+                                   "more than HCRIT = {:.4g}) and lost it",
+                                   labels[p.kin[i].node], p.deck->slave, p.deck->master, depth, p.hcrit);
+      }
       if (p.kin[i].found && -g - s.start_penetration > p.hcrit && it.failure.empty())
         it.failure = fmt::format("slave node {} of pair {}/{} penetrates {:.4g} (from {:.4g} at the start of the "
                                  "increment), more than HCRIT = {:.4g}",

@@ -69,6 +69,9 @@ struct SlaveState {
   /// attempt adds to it: an initial overclosure (an interference fit) is resolved in the first
   /// increment, and no cutback could reduce it.
   double start_penetration = 0.0;
+  /// The master facet of the last update that found one (−1: never): where a node that lost
+  /// its master went through it, or slid off it.
+  std::int32_t last_facet = -1;
 };
 
 /// The friction history and trial state of a slave node of a frictional pair.
