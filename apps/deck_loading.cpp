@@ -22,7 +22,8 @@ std::optional<parser::ReadResult> load_analysable_deck(const std::string& deck,
   }
   try {
     contact::apply_adjust(result.model);  // ADJUST: slave nodes onto their masters, strain-free
-    solver::build_analysis_model(result.model);
+    const solver::AnalysisModel am = solver::build_analysis_model(result.model);
+    for (const auto& w : am.warnings) std::fprintf(stderr, "%s: warning: %s\n", deck.c_str(), w.c_str());
   } catch (const solver::AnalysisError& e) {
     std::fprintf(stderr, "%s\n%s: the deck cannot be analysed\n", e.what(), deck.c_str());
     return std::nullopt;

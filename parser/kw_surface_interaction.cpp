@@ -129,6 +129,11 @@ void read_linear(KeywordContext& ctx, const Line& line, model::SurfaceBehavior& 
   b.linear_sigma_inf = sigma_inf;
   if (c0 && *c0 <= 0) ctx.error(f[2].loc, fmt::format("c0 must be positive, found {}", *c0));
   else b.linear_c0 = c0;
+  // Where inpact differs from CalculiX: its LINEAR law is Abaqus's, p = k h for h > 0 and no
+  // tension; CalculiX's tension branch up to σ∞ and its contact distance c0 are not modelled.
+  if ((sigma_inf && *sigma_inf != 0.0) || c0)
+    ctx.warning(f[1].loc, "CalculiX's σ∞ (tension at large clearance) and c0 (contact distance) are read but not "
+                          "used: inpact's LINEAR law is Abaqus's, p = k h for overclosure h > 0, without tension");
 }
 
 /// TABULAR: `pressure, overclosure` lines in ascending overclosure, at least two [K66 p.514];

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -39,10 +40,9 @@ AnalysisModel build_analysis_model(const model::Model& m) {
     am.elements[e].type = &t;
   }
 
-  // Contact: node-to-surface pairs are analysed, with Coulomb friction enforced by stiffness
-  // (solver/contact_problem.hpp); what is not yet (general contact, surface-to-surface,
-  // LAGRANGE friction, ...) stops here with the deck line, rather than run as if the bodies
-  // could pass through each other or stick where they should not.
+  // Contact: the pairs and general contact (contact/interaction_table.hpp); what is not
+  // analysed yet (LAGRANGE friction, TIED, self-contact, ...) stops here with the deck line,
+  // rather than run as if the bodies could pass through each other or stick where they should not.
   am.contact = contact::interaction_table(m);
   check_contact_supported(m, *am.contact);
 
@@ -57,6 +57,19 @@ AnalysisModel build_analysis_model(const model::Model& m) {
       s.density = mat.density.value_or(0.0);
     }
   }
+  // Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
+  // elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
+  std::set<std::pair<std::string, std::string>> locking;
+  for (std::size_t e = 0; e < el.size(); ++e) {
+    const ElementSetup& s = am.elements[e];
+    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
+    if (s.material.poissons_ratio > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", s.material.poissons_ratio)});
+  }
+  for (const auto& [type, nu] : locking)
+    am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "
+                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495, "
+                                      "which inpact does not have — use the reduced-integration (R) or incompatible-mode "
+                                      "(I) form of the element", type, nu));
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const auto& x : m.mesh.nodes.coords)
     for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);

@@ -2,6 +2,7 @@
 /// What the analysis needs per element, resolved once from the model database: its type,
 /// material constants and section data, and the model's number of DOFs per node.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "contact/interaction_table.hpp"
@@ -26,6 +27,8 @@ struct AnalysisModel {
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;
+  /// Warnings about the model as given (e.g. volumetric locking), for `check` and `run`.
+  std::vector<std::string> warnings;
 
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }

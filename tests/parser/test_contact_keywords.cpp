@@ -248,6 +248,8 @@ TEST(ContactKeywords, CalculixFragment) {
   EXPECT_DOUBLE_EQ(*b.linear_slope, 1e7);
   EXPECT_DOUBLE_EQ(*b.linear_sigma_inf, 1e-3);
   EXPECT_DOUBLE_EQ(*b.linear_c0, 1e-3);
+  // Read, but not honoured: a warning says so (inpact's LINEAR has no tension branch).
+  EXPECT_TRUE(has_diagnostic(r, "are read but not used"));
   EXPECT_DOUBLE_EQ(*r.model.interactions.at("SI1").friction->stick_slope, 5000.0);
   const auto& t = *r.model.interactions.at("SI2").behavior;
   EXPECT_EQ(t.pressure_overclosure, PressureOverclosure::Tied);
