@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Contact at the extremes (issue 4): penalty scale factors 1e-6 … 1e8, modulus contrast 1e-6 … 1e6,
+# element-size contrast 1e3, ν = 0.4999, initial gaps 0 / ±1e-12 of the model size, mm against m.
+# Every case is checked against its analytic answer and classified right / stopped / WRONG.
+# Writes bench/results/contact_extremes.md (printed) and .json; see extremes.py.
+#
+#   bash bench/contact_extremes/run.sh [--groups penalty modulus size nu gap units] [--discretization "SURFACE TO SURFACE"]
+#   env: BUILD (default build)
+#
+# Each run is a small deck (well under a second); the whole set takes about a minute.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${BUILD:-$root/build}
+if [ ! -x "$build/apps/inpact" ]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DINPACT_WARNINGS_AS_ERRORS=ON >/dev/null
+  cmake --build "$build" --target inpact -j 2
+fi
+# Debian's h5py and numpy for /usr/bin/python3, installed when missing.
+need=()
+/usr/bin/python3 -c 'import h5py' 2>/dev/null || need+=(python3-h5py)
+/usr/bin/python3 -c 'import numpy' 2>/dev/null || need+=(python3-numpy)
+if [ ${#need[@]} -gt 0 ]; then
+  sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get install -y "${need[@]}" >/dev/null
+fi
+exec /usr/bin/python3 "$root/bench/contact_extremes/extremes.py" --inpact "$build/apps/inpact" \
+  --work "$build/contact_extremes" "$@"
