@@ -54,6 +54,7 @@ RING_A, RING_B, RING_C, DELTA = 0.5, 1.0, 2.0, 0.01
 def parameter_block():
     return ["*PARAMETER",
             'method = "DIRECT"',
+            'type = "NODE TO SURFACE"',
             "sf = 1.0",
             'tolkind = "RELATIVE"',
             "tol = 0.001"]
@@ -62,7 +63,7 @@ def parameter_block():
 def contact_block(slave, master, pair_options=""):
     return ["*SURFACE INTERACTION, NAME=SMOOTH",
             "*SURFACE BEHAVIOR, <method>",
-            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=NODE TO SURFACE" + pair_options,
+            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>" + pair_options,
             f"{slave}, {master}"]
 
 

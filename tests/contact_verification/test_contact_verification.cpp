@@ -6,6 +6,8 @@
 // The coarse meshes run here; bench/contact_trade/ runs the finer ones and every method variant.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <cmath>
 #include <map>
 #include <string>
@@ -214,6 +216,54 @@ TEST(InterferenceFit, PenaltyMethodsGiveTheLamePressureAndAgreeWithDirect) {
 // chattering. A penalty-type law is continuous, so only multiplier methods count flips now.
 TEST(InterferenceFit, AugmentedLagrangeGivesTheLamePressure) {
   interference_mean_pressure("augmented Lagrange", kMethods.at("augmented Lagrange"));
+}
+
+// --- Surface to surface -----------------------------------------------------------------------
+
+const Params kSurfaceToSurfaceDirect = {{"method", "DIRECT"}, {"type", "SURFACE TO SURFACE"}};
+
+// Hertz with surface to surface (direct, standard mortar-type multipliers). Matching meshes:
+// p0 +0.8 % (node to surface +0.7 %). Non-matching (master 1.25 × the slave's), where node to
+// surface is −8.3 % on the axis: −3.6 % on the axis, peak +7.3 % beside it — the nodal
+// multipliers of a weighted gap still oscillate where the master's kinks fall inside slave faces,
+// by less than half as much.
+TEST(SurfaceToSurfaceVerification, HertzMatchingAndNonMatchingMeshes) {
+  for (const auto& [deck, p0_tol, peak_tol] : {std::tuple<const char*, double, double>{"hertz_2d", 0.02, 0.02},
+                                               {"hertz_2d_nonmatching", 0.05, 0.09}}) {
+    auto r = run(deck_path(deck), kSurfaceToSurfaceDirect);
+    ASSERT_TRUE(r->outcome.completed) << deck << ": " << r->outcome.message;
+    const HertzFigures h = report_hertz(*r, 2, std::string(deck) + " surface to surface, direct");
+    EXPECT_NEAR(h.p0, h.p0_ref, p0_tol * h.p0_ref) << deck;
+    EXPECT_NEAR(h.p_max, h.p0_ref, peak_tol * h.p0_ref) << deck;
+    EXPECT_LE(std::abs(h.a_fe - h.a_ref), h.h) << deck;
+  }
+}
+
+// Sphere on a block, surface to surface, on the coarse mesh (h = a/3): p0 +10 %, contact radius
+// −16 % (−0.47 h): the slave facets' chords lie inside the sphere by their sag, and averaging
+// the gap over them presses the nodes in. Level 2 (not run here: 14 s): p0 +1.8 %, a −4.5 %,
+// converging; node to surface is +0.7 % on level 1. Smoothing (issue 5) removes the sag.
+TEST(SurfaceToSurfaceVerification, SphereOnBlockCoarse) {
+  auto r = run(deck_path("sphere_3d"), kSurfaceToSurfaceDirect);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const HertzFigures h = report_hertz(*r, 3, "sphere_3d surface to surface, direct");
+  EXPECT_NEAR(h.p0, h.p0_ref, 0.12 * h.p0_ref);
+  EXPECT_LE(std::abs(h.a_fe - h.a_ref), h.h);
+}
+
+// The interference fit's scatter comes from the faceted circles, which surface to surface
+// averages but cannot remove (issue 5's smoothing does): the mean stays within the sag error.
+TEST(SurfaceToSurfaceVerification, InterferenceFitMeanPressure) {
+  for (const auto& [name, params] : {std::pair<std::string, Params>{"direct", kSurfaceToSurfaceDirect},
+                                     {"penalty", {{"method", "PENALTY"}, {"type", "SURFACE TO SURFACE"}}}}) {
+    auto r = run(deck_path("interference_2d"), params);
+    ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
+    const FitFigures fit = fit_figures(*r, r->capture.last());
+    const std::string label = "interference_2d surface to surface, " + name;
+    report(label + ": mean CPRESS / Lame - 1", fit.p_mean / fit.p_ref - 1.0);
+    report(label + ": scatter (max - min CPRESS) / Lame", (fit.p_max - fit.p_min) / fit.p_ref);
+    EXPECT_NEAR(fit.p_mean, fit.p_ref, (2.0 / 3.0 * facet_sag(24) / kDelta + 0.01) * fit.p_ref) << label;
+  }
 }
 
 }  // namespace
