@@ -6,11 +6,10 @@
 // The coarse meshes run here; bench/contact_trade/ runs the finer ones and every method variant.
 #include <gtest/gtest.h>
 
-#include <tuple>
-
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 
 #include "contact/normal_behavior.hpp"
 #include "contact_verification/contact_verification.hpp"
