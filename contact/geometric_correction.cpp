@@ -1,0 +1,458 @@
+#include "geometric_correction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include <fmt/format.h>
+
+#include "vec3.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+using Kind = model::GeometricCorrection::Kind;
+
+const char* kind_name(Kind k) {
+  switch (k) {
+    case Kind::Circumferential: return "CIRCUMFERENTIAL";
+    case Kind::Spherical: return "SPHERICAL";
+    case Kind::Toroidal: return "TOROIDAL";
+  }
+  return "";
+}
+
+Vec3 unit(const Vec3& v) {
+  const double l = norm(v);
+  return l > 0 ? scale(1.0 / l, v) : Vec3{0, 0, 0};
+}
+
+/// A facet's node rows, padded with −1: the same face gives the same key.
+std::array<std::int32_t, 8> facet_key(const Facet& f) {
+  std::array<std::int32_t, 8> k;
+  k.fill(-1);
+  for (int a = 0; a < f.n_nodes; ++a) k[a] = f.nodes[a];
+  return k;
+}
+
+std::array<double, 2> clamp_to_domain(FacetShape s, std::array<double, 2> xi) {
+  if (facet_param_dim(s) == 1) return {std::clamp(xi[0], -1.0, 1.0), 0.0};
+  if (s == FacetShape::Tri3 || s == FacetShape::Tri6) {
+    xi[0] = std::max(xi[0], 0.0);
+    xi[1] = std::max(xi[1], 0.0);
+    const double sum = xi[0] + xi[1];
+    if (sum > 1) xi = {xi[0] / sum, xi[1] / sum};
+    return xi;
+  }
+  return {std::clamp(xi[0], -1.0, 1.0), std::clamp(xi[1], -1.0, 1.0)};
+}
+
+/// The same facet on local node numbers 0..n−1, for coordinates gathered per facet.
+Facet local_facet(const Facet& f) {
+  Facet l = f;
+  for (int a = 0; a < f.n_nodes; ++a) l.nodes[a] = a;
+  return l;
+}
+
+/// The orthonormal facet frame (t1, t2, n) at a point; false on a degenerate facet.
+bool facet_frame(const FacetGeometry& g, std::array<Vec3, 3>& q) {
+  const double l1 = norm(g.a[0]);
+  if (!(l1 > 0) || !(norm(g.n) > 0)) return false;
+  q[0] = scale(1.0 / l1, g.a[0]);
+  q[2] = g.n;
+  q[1] = cross(q[2], q[0]);
+  return true;
+}
+
+/// v given in frame `from`, expressed in frame `to` (the rotation to·fromᵀ applied to v).
+Vec3 rotate(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& to, const Vec3& v) {
+  Vec3 out{0, 0, 0};
+  for (int i = 0; i < 3; ++i) out = axpy(dot(v, from[i]), to[i], out);
+  return out;
+}
+
+/// Sample points of a facet's parametric domain for max_deviation(): spacing 1/8 of the domain.
+std::vector<std::array<double, 2>> sample_points(FacetShape s) {
+  std::vector<std::array<double, 2>> p;
+  for (const QuadPoint& q : facet_rule(s, 3)) p.push_back({q.xi, q.eta});
+  constexpr int n = 8;
+  if (facet_param_dim(s) == 1) {
+    for (int i = 0; i <= n; ++i) p.push_back({-1.0 + 2.0 * i / n, 0.0});
+  } else if (s == FacetShape::Tri3 || s == FacetShape::Tri6) {
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) p.push_back({double(i) / n, double(j) / n});
+    p.push_back({1.0 / 3.0, 1.0 / 3.0});
+  } else {
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) p.push_back({-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n});
+  }
+  return p;
+}
+
+std::string node_name(const model::Model* m, std::int32_t row) {
+  if (!m) return fmt::format("(row {})", row);
+  const auto r = static_cast<std::size_t>(row);
+  const auto inst = static_cast<std::size_t>(m->mesh.nodes.instance[r]);
+  const std::string& iname = inst < m->instances.size() ? m->instances[inst] : std::string();
+  return iname.empty() ? fmt::format("{}", m->mesh.nodes.labels[r]) : fmt::format("{}.{}", iname, m->mesh.nodes.labels[r]);
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+SurfaceCorrection::Radial SurfaceCorrection::radial(const Vec3& p) const {
+  Radial out;
+  const Vec3 pa = sub(p, a_);
+  switch (mode_) {
+    case Mode::Identity: return out;
+    case Mode::Centre: out.c = a_; break;
+    case Mode::Axis: out.c = axpy(dot(pa, k_), k_, a_); break;
+    case Mode::Ring: {
+      const Vec3 q = axpy(-dot(pa, k_), k_, pa);
+      const double rho = norm(q);
+      if (!(rho > tol_)) return out;
+      out.c = axpy(R_ / rho, q, a_);
+      break;
+    }
+  }
+  const Vec3 v = sub(p, out.c);
+  out.r = norm(v);
+  if (!(out.r > tol_)) return out;
+  out.e = scale(1.0 / out.r, v);
+  out.ok = true;
+  return out;
+}
+
+SurfaceCorrection::SurfaceCorrection(const model::GeometricCorrection& c, const ContactSurface& surface,
+                                     std::span<const Vec3> X, const model::Model* model)
+    : data_(c) {
+  const std::string what = fmt::format("{} correction of surface {}", kind_name(c.kind), c.surface);
+  auto fail = [&](const std::string& why) { throw CorrectionError(fmt::format("{}: {}", what, why), c.loc); };
+  if (surface.node_based() || surface.facets().empty())
+    fail("the surface has no element faces; a geometric correction needs a faceted surface");
+
+  // Tolerances scale with the surface.
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (std::int32_t row : surface.nodes())
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], X[static_cast<std::size_t>(row)][i]);
+      hi[i] = std::max(hi[i], X[static_cast<std::size_t>(row)][i]);
+    }
+  const double size = norm(sub(hi, lo));
+  tol_ = 1e-8 * (size > 0 ? size : 1.0);
+  constexpr double kAngleTol = 1e-6;
+
+  a_ = c.a;
+  if (c.kind != Kind::Spherical) {
+    const Vec3 axis = sub(c.b, c.a);
+    if (!(norm(axis) > 0)) fail("the axis has zero length: point b coincides with point a");
+    k_ = unit(axis);
+  }
+  if (c.kind == Kind::Toroidal && !(c.radius > 0))
+    fail(fmt::format("the distance R of the arc centre from the axis must be positive, found {}", c.radius));
+  R_ = c.radius;
+
+  if (surface.dim() == 3) {
+    mode_ = c.kind == Kind::Circumferential ? Mode::Axis : c.kind == Kind::Spherical ? Mode::Centre : Mode::Ring;
+  } else if (!surface.axisymmetric()) {
+    // Plane model: circles in the x–y plane.
+    if (c.kind == Kind::Toroidal)
+      fail("TOROIDAL needs a 3D or axisymmetric model; in a plane model the section of a torus is a circle: use "
+           "SPHERICAL about the arc centre");
+    if (c.kind == Kind::Circumferential && std::hypot(k_[0], k_[1]) > kAngleTol)
+      fail(fmt::format("in a plane model the axis is the out-of-plane direction z; the axis given runs along "
+                       "({:g}, {:g}, {:g})",
+                       k_[0], k_[1], k_[2]));
+    mode_ = Mode::Axis;
+    a_ = {c.a[0], c.a[1], 0.0};
+    k_ = {0.0, 0.0, 1.0};
+  } else {
+    // Axisymmetric model: r = x, the symmetry axis is x = 0 along y.
+    const bool centre_on_axis = std::abs(c.a[0]) <= tol_ && std::abs(c.a[2]) <= tol_;
+    if (c.kind == Kind::Spherical) {
+      if (!centre_on_axis)
+        fail(fmt::format("in an axisymmetric model the centre lies on the symmetry axis (x = 0, z = 0); found "
+                         "({:g}, {:g}, {:g})",
+                         c.a[0], c.a[1], c.a[2]));
+    } else if (!centre_on_axis || std::hypot(k_[0], k_[2]) > kAngleTol) {
+      fail("in an axisymmetric model the axis of revolution is the symmetry axis: give two points with x = 0, z = 0");
+    }
+    mode_ = c.kind == Kind::Circumferential ? Mode::Identity : c.kind == Kind::Spherical ? Mode::Centre : Mode::Ring;
+    a_ = {0.0, c.a[1], 0.0};
+    k_ = {0.0, 1.0, 0.0};
+  }
+
+  // Nodal radii: the idealised surface passes through every node.
+  const auto nodes = surface.nodes();
+  node_rows_.assign(nodes.begin(), nodes.end());
+  node_radius_.resize(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Vec3& p = X[static_cast<std::size_t>(nodes[i])];
+    if (mode_ == Mode::Identity) {
+      node_radius_[i] = p[0];
+      continue;
+    }
+    const Radial rd = radial(p);
+    if (!rd.ok) {
+      const std::string node = node_name(model, nodes[i]);
+      const bool on_axis = mode_ == Mode::Axis || (mode_ == Mode::Ring && norm(axpy(-dot(sub(p, a_), k_), k_, sub(p, a_))) <= tol_);
+      if (c.kind == Kind::Spherical) fail(fmt::format("node {} lies at the centre of the sphere, where it has no radial direction", node));
+      if (on_axis) fail(fmt::format("node {} lies on the axis of revolution, where it has no radial direction", node));
+      fail(fmt::format("node {} lies on the circle of arc centres (radius {:g} about the axis), where it has no "
+                       "radial direction",
+                       node, R_));
+    }
+    node_radius_[i] = rd.r;
+  }
+
+  // Facets with their reference coordinates, nodal radii and normal orientation.
+  const std::size_t nf = surface.facets().size();
+  facets_.assign(surface.facets().begin(), surface.facets().end());
+  X_.resize(nf);
+  radius_.resize(nf);
+  sign_.assign(nf, 1.0);
+  std::vector<double> sizes(nf);
+  index_.reserve(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Facet& fc = facets_[f];
+    for (int a = 0; a < fc.n_nodes; ++a) {
+      X_[f][a] = X[static_cast<std::size_t>(fc.nodes[a])];
+      const std::int32_t local = surface.local_index(fc.nodes[a]);
+      radius_[f][a] = node_radius_[static_cast<std::size_t>(local)];
+    }
+    index_.emplace(facet_key(fc), static_cast<std::int32_t>(f));
+    const Facet lf = local_facet(fc);
+    const std::span<const Vec3> xf(X_[f].data(), fc.n_nodes);
+    // ñ = s e points out of the body like the facet normal (+1 on a pin, −1 in a hole).
+    double s = 0.0, area = 0.0;
+    for (const QuadPoint& q : facet_rule(fc.shape, 2)) {
+      const FacetGeometry g = facet_geometry(lf, xf, q.xi, q.eta);
+      area += q.weight * g.jacobian;
+      if (const Radial rd = radial(g.x); rd.ok) s += q.weight * g.jacobian * dot(rd.e, g.n);
+    }
+    sign_[f] = s < 0 ? -1.0 : 1.0;
+    sizes[f] = surface.dim() == 2 ? norm(sub(X_[f][1], X_[f][0])) : std::sqrt(area);
+  }
+  l_char_ = median(std::move(sizes));
+}
+
+std::size_t SurfaceCorrection::KeyHash::operator()(const std::array<std::int32_t, 8>& k) const noexcept {
+  std::size_t h = 0;
+  for (std::int32_t v : k) h = h * 1000003u ^ std::hash<std::int32_t>{}(v);
+  return h;
+}
+
+std::int32_t SurfaceCorrection::find(const Facet& f) const {
+  auto it = index_.find(facet_key(f));
+  return it == index_.end() ? -1 : it->second;
+}
+
+double SurfaceCorrection::nodal_radius(std::int32_t row) const {
+  auto it = std::lower_bound(node_rows_.begin(), node_rows_.end(), row);
+  if (it == node_rows_.end() || *it != row) return -1.0;
+  return node_radius_[static_cast<std::size_t>(it - node_rows_.begin())];
+}
+
+bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal) const {
+  const Facet& f = facets_[i];
+  const Facet lf = local_facet(f);
+  const FacetGeometry g = facet_geometry(lf, std::span<const Vec3>(X_[i].data(), f.n_nodes), xi[0], xi[1]);
+  if (mode_ == Mode::Identity) {
+    offset = {0, 0, 0};
+    normal = g.n;
+    return norm(g.n) > 0;
+  }
+  const Radial rd = radial(g.x);
+  if (!rd.ok) return false;
+  const ShapeEval sh = eval_shape(f.shape, xi[0], xi[1]);
+  double r = 0.0;
+  std::array<double, 2> dr{0, 0};
+  for (int a = 0; a < sh.n; ++a) {
+    r += sh.N[a] * radius_[i][a];
+    dr[0] += sh.dN[a][0] * radius_[i][a];
+    dr[1] += sh.dN[a][1] * radius_[i][a];
+  }
+  offset = sub(axpy(r, rd.e, rd.c), g.x);
+  if (mode_ != Mode::Axis) {
+    // Sphere and torus are fully determined: the normal is radial.
+    normal = scale(sign_[i], rd.e);
+    return true;
+  }
+  // Surface of revolution: only the hoop direction is idealised; the meridian is the facet's.
+  // The normal of X̃(ξ) = c(X_f) + r̃ e(X_f), with its hoop component removed:
+  //   ∂X̃/∂ξ_α = k (k·a_α) + r̃_α e + (r̃/r)(a_α − k (k·a_α) − e (e·a_α)).
+  std::array<Vec3, 2> t{};
+  const int pd = facet_param_dim(f.shape);
+  for (int al = 0; al < pd; ++al) {
+    const Vec3& aa = g.a[al];
+    const double ka = dot(k_, aa), ea = dot(rd.e, aa);
+    Vec3 v = scale(ka, k_);
+    v = axpy(dr[al], rd.e, v);
+    v = axpy(r / rd.r, sub(sub(aa, scale(ka, k_)), scale(ea, rd.e)), v);
+    t[al] = v;
+  }
+  Vec3 n = pd == 1 ? Vec3{t[0][1], -t[0][0], 0.0} : cross(t[1], t[0]);
+  const Vec3 hoop = cross(k_, rd.e);
+  n = unit(axpy(-dot(n, hoop), hoop, n));
+  if (!(norm(n) > 0)) return false;
+  normal = n;
+  return true;
+}
+
+CorrectedPoint SurfaceCorrection::correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x) const {
+  if (facet < 0 || static_cast<std::size_t>(facet) >= facets_.size())
+    throw std::invalid_argument("SurfaceCorrection::correct: facet index out of range");
+  const auto i = static_cast<std::size_t>(facet);
+  const Facet& f = facets_[i];
+  const FacetGeometry gx = facet_geometry(f, x, xi[0], xi[1]);
+  CorrectedPoint out{gx.x, gx.n, false};
+  Vec3 d, n;
+  if (!reference_ideal(i, xi, d, n)) return out;
+  if (mode_ == Mode::Identity) {
+    out.corrected = true;
+    return out;
+  }
+  const FacetGeometry gX = facet_geometry(local_facet(f), std::span<const Vec3>(X_[i].data(), f.n_nodes), xi[0], xi[1]);
+  std::array<Vec3, 3> qX, qx;
+  if (!facet_frame(gX, qX) || !facet_frame(gx, qx)) return out;
+  out.x = add(gx.x, rotate(qX, qx, d));
+  out.normal = unit(rotate(qX, qx, n));
+  out.corrected = true;
+  return out;
+}
+
+CorrectedPoint SurfaceCorrection::correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x) const {
+  const std::int32_t i = find(f);
+  if (i < 0)
+    throw std::invalid_argument(fmt::format("SurfaceCorrection::correct: the facet is not a face of surface {}", data_.surface));
+  return correct(i, xi, x);
+}
+
+CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x,
+                                          const Vec3& xs) const {
+  const std::int32_t i = find(f);
+  if (i < 0)
+    throw std::invalid_argument(fmt::format("SurfaceCorrection::project: the facet is not a face of surface {}", data_.surface));
+  const int pd = facet_param_dim(f.shape);
+  CorrectedPoint p = correct(i, xi, x);
+  for (int it = 0; it < 10 && p.corrected; ++it) {
+    // Tangential part of x_s − x̃ (relative to ñ), in the facet's parameters.
+    const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
+    const Vec3 d = sub(xs, p.x);
+    const Vec3 r = axpy(-dot(d, p.normal), p.normal, d);
+    std::array<double, 2> step{0, 0};
+    if (pd == 1) {
+      const double m = dot(g.a[0], g.a[0]);
+      if (!(m > 0)) break;
+      step[0] = dot(g.a[0], r) / m;
+    } else {
+      const double m00 = dot(g.a[0], g.a[0]), m01 = dot(g.a[0], g.a[1]), m11 = dot(g.a[1], g.a[1]);
+      const double det = m00 * m11 - m01 * m01;
+      if (!(det > 0)) break;
+      const double r0 = dot(g.a[0], r), r1 = dot(g.a[1], r);
+      step = {(m11 * r0 - m01 * r1) / det, (m00 * r1 - m01 * r0) / det};
+    }
+    const std::array<double, 2> next = clamp_to_domain(f.shape, {xi[0] + step[0], xi[1] + step[1]});
+    const double moved = std::hypot(next[0] - xi[0], next[1] - xi[1]);
+    xi = next;
+    p = correct(i, xi, x);
+    if (moved < 1e-13) break;
+  }
+  return p;
+}
+
+double SurfaceCorrection::max_deviation() const {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < facets_.size(); ++i)
+    for (const auto& p : sample_points(facets_[i].shape)) {
+      Vec3 d, n;
+      if (reference_ideal(i, p, d, n)) worst = std::max(worst, norm(d));
+    }
+  return worst;
+}
+
+const SurfaceCorrection* SurfaceCorrections::find(const Facet& f) const {
+  for (auto it = list_.rbegin(); it != list_.rend(); ++it)
+    if (it->find(f) >= 0) return &*it;
+  return nullptr;
+}
+
+CorrectedPoint SurfaceCorrections::correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x) const {
+  if (const SurfaceCorrection* c = find(f)) return c->correct(c->find(f), xi, x);
+  const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
+  return {g.x, g.n, false};
+}
+
+CorrectedPoint SurfaceCorrections::project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x,
+                                           const Vec3& xs) const {
+  if (const SurfaceCorrection* c = find(f)) return c->project(f, xi, x, xs);
+  const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
+  return {g.x, g.n, false};
+}
+
+std::vector<const model::GeometricCorrection*> corrections_for(const model::Model& m, std::string_view surface,
+                                                               const model::ContactPair* pair) {
+  const std::vector<model::GeometricCorrection>* lines = &m.general_contact.geometric_corrections;
+  if (pair) {
+    if (pair->geometric_correction.empty()) return {};
+    auto it = m.surface_smoothings.find(pair->geometric_correction);
+    if (it == m.surface_smoothings.end()) return {};
+    lines = &it->second.corrections;
+  }
+  std::vector<const model::GeometricCorrection*> out;
+  if (surface.empty()) {
+    for (const auto& c : *lines) out.push_back(&c);
+    return out;
+  }
+  auto target = m.mesh.surfaces.find(std::string(surface));
+  if (target == m.mesh.surfaces.end()) return {};
+  auto key = [](const model::Face& f) { return (static_cast<std::int64_t>(f.element) << 8) | f.face; };
+  std::unordered_set<std::int64_t> faces;
+  for (const model::Face& f : target->second.faces) faces.insert(key(f));
+  for (const auto& c : *lines) {
+    auto own = m.mesh.surfaces.find(c.surface);
+    if (own == m.mesh.surfaces.end()) continue;
+    if (std::any_of(own->second.faces.begin(), own->second.faces.end(),
+                    [&](const model::Face& f) { return faces.count(key(f)) > 0; }))
+      out.push_back(&c);
+  }
+  return out;
+}
+
+namespace {
+
+SurfaceCorrection build_one(const model::Model& m, const model::GeometricCorrection& c, std::span<const Vec3> X) {
+  auto it = m.mesh.surfaces.find(c.surface);
+  if (it == m.mesh.surfaces.end())
+    throw CorrectionError(fmt::format("{} correction: surface {} is not defined", kind_name(c.kind), c.surface), c.loc);
+  try {
+    return SurfaceCorrection(c, ContactSurface::build(m, it->second), X, &m);
+  } catch (const std::invalid_argument& e) {
+    throw CorrectionError(fmt::format("{} correction of surface {}: {}", kind_name(c.kind), c.surface, e.what()), c.loc);
+  }
+}
+
+}  // namespace
+
+SurfaceCorrections build_corrections(const model::Model& m, std::string_view surface, const model::ContactPair* pair) {
+  const auto X = reference_coordinates(m.mesh.nodes);
+  SurfaceCorrections out;
+  for (const model::GeometricCorrection* c : corrections_for(m, surface, pair)) out.add(build_one(m, *c, X));
+  return out;
+}
+
+void validate_corrections(const model::Model& m) {
+  if (m.general_contact.geometric_corrections.empty() && m.surface_smoothings.empty()) return;
+  const auto X = reference_coordinates(m.mesh.nodes);
+  for (const auto& c : m.general_contact.geometric_corrections) build_one(m, c, X);
+  for (const auto& [name, sm] : m.surface_smoothings)
+    for (const auto& c : sm.corrections) build_one(m, c, X);
+}
+
+}  // namespace inpact::contact
