@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vec3.hpp"
+
 namespace inpact::contact {
 
 NodeToSurfacePair::NodeToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
@@ -38,7 +40,35 @@ void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinemat
     search_.query(x[nodes[i]], candidates_);
     k.projection = closest_projection(master_.facets(), candidates_, x, x[nodes[i]]);
     k.found = k.projection.facet >= 0;
+    if (k.found && !master_correction_.empty()) correct(x, i, k.projection);
   }
+}
+
+void NodeToSurfacePair::set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave) {
+  master_correction_ = std::move(master);
+  slave_correction_ = std::move(slave);
+}
+
+void NodeToSurfacePair::correct(std::span<const Vec3> x, std::size_t slave, Projection& p) const {
+  const std::int32_t node = slave_.nodes()[slave];
+  Vec3 xs = x[node];
+  // The slave node on its idealised surface: itself, up to rounding.
+  if (const auto fs = slave_.facets_of_node(slave); !slave_correction_.empty() && !fs.empty()) {
+    const Facet& sf = slave_.facets()[static_cast<std::size_t>(fs.front())];
+    for (int a = 0; a < sf.n_nodes; ++a)
+      if (sf.nodes[a] == node) xs = slave_correction_.correct(sf, facet_node_param(sf.shape, a), x).x;
+  }
+  const Facet& f = master_.facets()[static_cast<std::size_t>(p.facet)];
+  std::array<double, 2> xi = p.xi;
+  const CorrectedPoint m = master_correction_.project(f, xi, x, xs);
+  if (!m.corrected) return;
+  p.xi = xi;
+  p.x_master = m.x;
+  p.normal = m.normal;
+  const Vec3 d = sub(xs, m.x);
+  p.gap = dot(d, m.normal);
+  p.distance = norm(d);
+  tangent_basis(p.normal, dim_, p.t1, p.t2);
 }
 
 void NodeToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {
@@ -48,7 +78,8 @@ void NodeToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, b
   // as the slave node reaches the surface (a closed node sits there): within 1e-3 of a facet
   // size of it, the corner is taken as flat (no curvature term), as away from corners.
   const bool corner_contact = k.projection.region != ProjectionRegion::Interior && k.projection.distance < 1e-3 * radius_;
-  if (!finite_sliding || corner_contact) std::fill(k.lin.hessian.begin(), k.lin.hessian.end(), 0.0);
+  if (!finite_sliding || corner_contact || !master_correction_.empty())
+    std::fill(k.lin.hessian.begin(), k.lin.hessian.end(), 0.0);
 }
 
 }  // namespace inpact::contact

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/contact_surface.hpp"
+#include "contact/geometric_correction.hpp"
 #include "contact/pair_kinematics.hpp"
 #include "contact/projection.hpp"
 #include "contact/search.hpp"
@@ -36,13 +37,26 @@ class NodeToSurfacePair final : public PairKinematics {
   /// Fills k.lin (gradient, and the Hessian when `finite_sliding`) on coordinates `x`.
   void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
 
+  /// Geometric correction of the master and slave surfaces (contact/geometric_correction.hpp;
+  /// empty sets: none). update() then measures on the idealised surfaces: ξ refined on the
+  /// projected facet (SurfaceCorrections::project), x_master = x̃_m, normal = ñ,
+  /// gap = (x̃_s − x̃_m)·ñ, with x̃_s = x_s (a node lies on its idealised surface). linearize()
+  /// keeps the gradient [ñ; −N_a ñ] and drops the faceted Hessian, which describes the facets,
+  /// not the corrected surface. Not reachable from decks (Abaqus smooths surface-to-surface pairs
+  /// and general contact only); for tests and the surface-to-surface code.
+  void set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave = {});
+
  private:
+  /// Replaces p's point, normal and gap by those of the corrected surfaces (slave node `slave`).
+  void correct(std::span<const Vec3> x, std::size_t slave, Projection& p) const;
+
   int dim_;
   ContactSurface slave_, master_;
   FacetSearch search_;
   double radius_ = 0.0;
   bool built_ = false;
   std::vector<std::int32_t> candidates_;
+  SurfaceCorrections master_correction_, slave_correction_;
 };
 
 }  // namespace inpact::contact

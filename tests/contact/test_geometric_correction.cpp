@@ -662,3 +662,40 @@ TEST(GeometricCorrection, ProjectionPutsTheCorrectedPointOnTheRayOfThePoint) {
   const CorrectedPoint q = sc.correct(f, pr.xi, X);
   EXPECT_GT(std::abs(dot(sub(xs, q.x), q.normal) - 0.02), 1e-5);
 }
+
+// ---------------------------------------------------------------------------------------------
+// The node-to-surface hook.
+
+TEST(GeometricCorrection, NodeToSurfacePairMeasuresTheInterferenceOnTheIdealisedCircles) {
+  // A pin of radius 1 (12 edges) in a hole of radius 0.99 (8 edges), concentric: an interference
+  // of 0.01. Faceted, the hole's chords sit up to 0.99 (1 − cos(π/8)) = 0.0754 inside the circle,
+  // so the gaps scatter between −0.0854 and −0.01; corrected, every gap is −0.01 and the normal
+  // points from the hole toward the centre.
+  const double Rp = 1.0, Rh = 0.99;
+  MeshBuilder b;
+  add_arc(b, "CPE4", 12, 0.0, 2 * pi, true, ring({0, 0, 0}, 0.5, Rp), "PIN", "PIN_IN");
+  add_arc(b, "CPE4", 8, 0.0, 2 * pi, true, ring({0, 0, 0}, Rh, 1.5), "HOLE_OUT", "HOLE");
+  auto& gc = b.m.general_contact.geometric_corrections;
+  gc.push_back(correction(Kind::Circumferential, "PIN", {0, 0, 0}, {0, 0, 1}));
+  gc.push_back(correction(Kind::Circumferential, "HOLE", {0, 0, 0}, {0, 0, 1}));
+  contact::NodeToSurfacePair nts(b.m, b.m.mesh.surfaces.at("PIN"), b.m.mesh.surfaces.at("HOLE"), 2, 1.0);
+  const auto X = b.X();
+  std::vector<contact::SlaveKinematics> faceted, smoothed;
+  nts.update(X, faceted);
+  nts.set_geometric_correction(contact::build_corrections(b.m, "HOLE"), contact::build_corrections(b.m, "PIN"));
+  nts.update(X, smoothed);
+  ASSERT_EQ(smoothed.size(), 12u);
+  double worst_faceted = 0.0;
+  for (std::size_t i = 0; i < smoothed.size(); ++i) {
+    ASSERT_TRUE(faceted[i].found && smoothed[i].found);
+    const Vec3& xs = X[smoothed[i].node];
+    worst_faceted = std::min(worst_faceted, faceted[i].projection.gap);
+    EXPECT_NEAR(smoothed[i].projection.gap, Rh - Rp, kTol);
+    expect_near(smoothed[i].projection.normal, scale(-1.0, unit(xs)), kTol, "toward the centre");
+    expect_near(smoothed[i].projection.x_master, scale(Rh, unit(xs)), kTol, "on the hole's circle");
+    nts.linearize(X, smoothed[i], true);
+    for (double h : smoothed[i].lin.hessian) EXPECT_EQ(h, 0.0);
+    EXPECT_NEAR(smoothed[i].lin.gradient[0], -unit(xs)[0], kTol);  // ∂g/∂x_s = ñ
+  }
+  EXPECT_LT(worst_faceted, Rh - Rp - 0.05);  // faceted: off by more than five interferences
+}
