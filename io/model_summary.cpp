@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "contact/contact_surface.hpp"
+#include "contact/geometric_correction.hpp"
 #include "contact/interaction_table.hpp"
 #include "contact/normal_behavior.hpp"
 
@@ -88,11 +90,25 @@ const char* correction_name(model::GeometricCorrection::Kind k) {
   return "";
 }
 
-void write_correction(std::ostream& out, const model::GeometricCorrection& c) {
+/// One smoothing line, and how far the correction moves the surface: the largest distance
+/// between the faceted and the idealised surface, against the surface's facet size.
+void write_correction(std::ostream& out, const model::Model& m, std::span<const contact::Vec3> X,
+                      const model::GeometricCorrection& c) {
   print(out, "    {} {} a=({:g}, {:g}, {:g})", c.surface, correction_name(c.kind), c.a[0], c.a[1], c.a[2]);
   if (c.kind != model::GeometricCorrection::Kind::Spherical) print(out, " b=({:g}, {:g}, {:g})", c.b[0], c.b[1], c.b[2]);
   if (c.kind == model::GeometricCorrection::Kind::Toroidal) print(out, " R={:g}", c.radius);
   print(out, "\n");
+  auto it = m.mesh.surfaces.find(c.surface);
+  if (it == m.mesh.surfaces.end()) return;
+  try {
+    const contact::SurfaceCorrection sc(c, contact::ContactSurface::build(m, it->second), X, &m);
+    const double dev = sc.max_deviation(), l = sc.characteristic_length();
+    print(out, "      faceted to idealised: largest distance {:.4g}, characteristic length {:.4g}", dev, l);
+    if (l > 0) print(out, " ({:.3g}%)", 100.0 * dev / l);
+    print(out, "\n");
+  } catch (const std::exception& e) {
+    print(out, "      cannot be applied: {}\n", e.what());
+  }
 }
 
 void write_contact(std::ostream& out, const model::Model& m) {
@@ -118,6 +134,8 @@ void write_contact(std::ostream& out, const model::Model& m) {
   }
   for (const auto& note : m.preprocessing_notes) print(out, "  {}\n", note);
   const auto& gc = m.general_contact;
+  std::vector<contact::Vec3> X;  // reference coordinates, for the smoothing lines
+  if (!gc.geometric_corrections.empty() || !m.surface_smoothings.empty()) X = contact::reference_coordinates(m.mesh.nodes);
   if (gc.defined) {
     print(out, "General contact\n");
     for (const auto& inc : gc.inclusions)
@@ -146,11 +164,11 @@ void write_contact(std::ostream& out, const model::Model& m) {
     }
     for (const auto& note : table->notes) print(out, "  note: {}\n", note);
     if (!gc.geometric_corrections.empty()) print(out, "  smoothing assignments:\n");
-    for (const auto& c : gc.geometric_corrections) write_correction(out, c);
+    for (const auto& c : gc.geometric_corrections) write_correction(out, m, X, c);
   }
   for (const auto& [k, sm] : m.surface_smoothings) {
     print(out, "Surface smoothing {}\n", sm.name);
-    for (const auto& c : sm.corrections) write_correction(out, c);
+    for (const auto& c : sm.corrections) write_correction(out, m, X, c);
   }
 }
 
