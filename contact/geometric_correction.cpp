@@ -450,9 +450,16 @@ SurfaceCorrections build_corrections(const model::Model& m, std::string_view sur
 void validate_corrections(const model::Model& m) {
   if (m.general_contact.geometric_corrections.empty() && m.surface_smoothings.empty()) return;
   const auto X = reference_coordinates(m.mesh.nodes);
-  for (const auto& c : m.general_contact.geometric_corrections) build_one(m, c, X);
+  auto check = [&](const model::GeometricCorrection& c, const char* keyword) {
+    try {
+      build_one(m, c, X);
+    } catch (const CorrectionError& e) {
+      throw CorrectionError(e.what(), e.loc, keyword);
+    }
+  };
+  for (const auto& c : m.general_contact.geometric_corrections) check(c, "*SURFACE PROPERTY ASSIGNMENT");
   for (const auto& [name, sm] : m.surface_smoothings)
-    for (const auto& c : sm.corrections) build_one(m, c, X);
+    for (const auto& c : sm.corrections) check(c, "*SURFACE SMOOTHING");
 }
 
 }  // namespace inpact::contact

@@ -84,10 +84,13 @@ namespace inpact::contact {
 
 /// Data of a geometric correction that the mesh contradicts (a node on the axis, an axis not
 /// normal to a plane model, ...). what() is the message without a location; loc is the data line,
-/// for the caller to report as `m.sources.describe(loc): error: *KEYWORD: what()`.
+/// for the caller to report as `m.sources.describe(loc): error: KEYWORD: what()`. keyword is set
+/// by validate_corrections() (*SURFACE PROPERTY ASSIGNMENT or *SURFACE SMOOTHING), else empty.
 struct CorrectionError : std::runtime_error {
-  CorrectionError(const std::string& what, model::SourceLoc where) : std::runtime_error(what), loc(where) {}
+  CorrectionError(const std::string& what, model::SourceLoc where, std::string kw = {})
+      : std::runtime_error(what), loc(where), keyword(std::move(kw)) {}
   model::SourceLoc loc;
+  std::string keyword;
 };
 
 /// A point of the idealised surface.

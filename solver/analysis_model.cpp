@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
 
 namespace inpact::solver {
@@ -38,6 +39,14 @@ AnalysisModel build_analysis_model(const model::Model& m) {
       throw AnalysisError(fmt::format("{}: error: *ELEMENT: element {} ({}) cannot be combined with {} elements in one model",
                                       m.sources.describe(el.loc[e]), el.labels[e], t.name, first.name));
     am.elements[e].type = &t;
+  }
+
+  // Smoothing data the mesh contradicts (a surface node on the axis or at the centre) is a
+  // deck error, reported before what this version does not analyse yet.
+  try {
+    contact::validate_corrections(m);
+  } catch (const contact::CorrectionError& e) {
+    throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(e.loc), e.keyword, e.what()));
   }
 
   // Contact: the pairs and general contact (contact/interaction_table.hpp); what is not
