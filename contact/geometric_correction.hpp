@@ -25,7 +25,8 @@
 /// A surface that is not exactly circular (the elliptical pin of [AX]) is thus corrected toward a
 /// circle of the local radius: the nodes stay where they are (X̃ = X_a at a node), a facet midpoint
 /// moves out to the radius of its nodes, and the normal is the idealised one (radial on a
-/// cylinder: the slight tilt of the ellipse is not kept), continuous from facet to facet. On a
+/// cylinder: the slight tilt of the ellipse is not kept), continuous from facet to facet around
+/// the circumference (a CIRCUMFERENTIAL profile keeps the mesh's kinks along the axis). On a
 /// circle of radius R meshed by N straight edges, a midpoint at R cos(π/N) moves to R exactly.
 ///
 /// How the correction follows the deformation. The offset d(ξ) = X̃(ξ) − X_f(ξ) and the normal
@@ -60,12 +61,13 @@
 ///     plane: no correction (x̃ = x_f, ñ = n). SPHERICAL is the circle about (0, Ya) in the r–z
 ///     plane; TOROIDAL the circle about (R, Ya).
 /// First- and second-order facets alike (Line2/3, Tri3/6, Quad4/8): r̃ uses the facet's own shape
-/// functions, so a Line3 whose midside node lies on the circle has its nodes on the circle and a
-/// deviation of order (h/R)⁴ R between them.
+/// functions, so a Line3 whose midside node lies on the circle has its nodes on the circle and
+/// deviates between them by far less than a chord (N = 8 edges: 0.95% of the chord's deviation).
 ///
 /// Degenerate data: a surface node on the axis (CIRCUMFERENTIAL, TOROIDAL), at the centre
 /// (SPHERICAL) or on the arc-centre circle (TOROIDAL) has no radial direction: CorrectionError,
-/// with the data line's location. (A zero-length axis and R ≤ 0 are rejected by the parser.)
+/// with the data line's location; so are a zero-length axis and R ≤ 0, which the parser rejects
+/// already in decks.
 /// A point inside a facet on the axis (a facet spanning it) is left uncorrected.
 #include <array>
 #include <cstdint>
