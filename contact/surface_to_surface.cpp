@@ -78,20 +78,28 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
     pts.resize(rule.size());
     for (std::size_t q = 0; q < rule.size(); ++q) {
       Point& pt = pts[q];
-      const FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
+      FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
       const ShapeEval e = eval_shape(f.shape, rule[q].xi, rule[q].eta);
-      pt.x = g.x;
       pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
+      if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
+        const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x);
+        g.x = c.x;
+        g.n = c.normal;
+      }
+      pt.x = g.x;
       pt.N = e.N;
       pt.W = weighting_functions(f.shape, e.N);
       candidates_.clear();
       search_.query(g.x, candidates_);
       pt.projection = closest_projection(master_.facets(), candidates_, x, g.x);
       const Projection& pr = pt.projection;
+      // (judged on the faceted projection: beyond the master's free edge the idealised one
+      // would look orthogonal too)
       pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
                     (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
                      std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
       if (!pt.overlaps) continue;
+      correct_master(x, g.x, pt.projection);
       for (int a = 0; a < f.n_nodes; ++a) {
         const auto i = static_cast<std::size_t>(slave_.local_index(f.nodes[a]));
         const double w = pt.W[static_cast<std::size_t>(a)] * pt.da;
@@ -125,6 +133,27 @@ void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics
   search_.query(x[static_cast<std::size_t>(k.node)], candidates_);
   k.projection = closest_projection(master_.facets(), candidates_, x, x[static_cast<std::size_t>(k.node)]);
   k.friction_found = k.projection.facet >= 0;
+  if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
+}
+
+void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave) {
+  master_correction_ = std::move(master);
+  slave_correction_ = std::move(slave);
+}
+
+void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const {
+  if (master_correction_.empty()) return;
+  const Facet& f = master_.facets()[static_cast<std::size_t>(p.facet)];
+  std::array<double, 2> xi = p.xi;
+  const CorrectedPoint m = master_correction_.project(f, xi, x, xs);
+  if (!m.corrected) return;
+  p.xi = xi;
+  p.x_master = m.x;
+  p.normal = m.normal;
+  const Vec3 d = sub(xs, m.x);
+  p.gap = dot(d, m.normal);
+  p.distance = norm(d);
+  tangent_basis(p.normal, dim_, p.t1, p.t2);
 }
 
 void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {
@@ -184,7 +213,7 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
           for (std::size_t i = 0; i < d; ++i) L.gradient[s * d + i] += c * f * q.gradient[m * d + i];
         });
       const bool corner = pt.projection.region != ProjectionRegion::Interior && pt.projection.distance < 1e-3 * radius_;
-      if (!finite_sliding || corner || !q.hessian_defined) continue;
+      if (!finite_sliding || corner || !q.hessian_defined || smoothed()) continue;
       const std::size_t qn = q.gradient.size();
       for (std::size_t m1 = 0; m1 < nq; ++m1)
         expand(m1, [&](std::size_t s1, double f1) {

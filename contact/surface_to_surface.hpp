@@ -30,11 +30,20 @@
 ///
 /// Friction acts at the slave node's own closest-point projection (node to surface) with the
 /// pressure of its weighted gap: SlaveKinematics::friction_lin.
+///
+/// Geometric correction (smoothing, contact/geometric_correction.hpp; *SURFACE SMOOTHING named
+/// by the pair, or general contact's *SURFACE PROPERTY ASSIGNMENT): every integration point is
+/// first moved onto the slave's idealised surface, x̃_q; its faceted closest point on the master
+/// is then refined onto the master's idealised surface along the idealised normal
+/// (SurfaceCorrections::project), giving x̃_m, ñ and g_q = (x̃_q − x̃_m)·ñ. The gradient keeps
+/// the form [ñ; −N ñ] (the corrections' own derivatives are left out, and so is the Hessian):
+/// the answer is the corrected one, Newton converges linearly rather than quadratically.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "contact/contact_surface.hpp"
+#include "contact/geometric_correction.hpp"
 #include "contact/pair_kinematics.hpp"
 #include "contact/projection.hpp"
 #include "contact/search.hpp"
@@ -62,6 +71,10 @@ class SurfaceToSurfacePair final : public PairKinematics {
   void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
   void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
 
+  /// Smoothing of the master and slave surfaces (empty sets: none).
+  void set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave);
+  bool smoothed() const { return !master_correction_.empty() || !slave_correction_.empty(); }
+
  private:
   /// One integration point of a slave facet at the last update.
   struct Point {
@@ -79,6 +92,9 @@ class SurfaceToSurfacePair final : public PairKinematics {
   bool built_ = false;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   std::vector<std::int32_t> candidates_;
+  SurfaceCorrections master_correction_, slave_correction_;
+  /// Moves p onto the master's idealised surface for the slave point xs (when corrected).
+  void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const;
 };
 
 }  // namespace inpact::contact

@@ -9,6 +9,7 @@
 
 #include "analysis_error.hpp"
 #include "contact/friction.hpp"
+#include "contact/geometric_correction.hpp"
 #include "contact/node_to_surface.hpp"
 #include "contact/normal_behavior.hpp"
 #include "contact/surface_to_surface.hpp"
@@ -143,6 +144,7 @@ struct ContactProblem::Pair {
   std::optional<contact::FrictionLaw> friction;     ///< unset: frictionless
   bool direct = false, augmented = false, softened = false, finite_sliding = true, surface_to_surface = false;
   bool general = false;  ///< a row general contact made
+  bool smoothed = false;  ///< geometric correction of either surface
   /// A penalty-type law with slope > 1000 k_e, enforced with multipliers (table 38.1.21).
   bool stiff = false;
   bool uses_multipliers() const { return direct || stiff; }
@@ -279,9 +281,22 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     p->finite_sliding = !deck.small_sliding;
     p->surface_to_surface = deck.type == model::ContactDiscretization::SurfaceToSurface;
     const double thickness = inter ? inter->out_of_plane_thickness : 1.0;
-    if (p->surface_to_surface)
-      p->geometry = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, thickness);
-    else
+    if (p->surface_to_surface) {
+      auto s2s = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, thickness);
+      // Smoothing: the pair's *SURFACE SMOOTHING, or general contact's *SURFACE PROPERTY
+      // ASSIGNMENT lines (a body's exterior, which has no name in the deck, takes every line
+      // whose surface it contains). Validated when the analysis model was built.
+      auto deck_name = [&](const model::Surface* s) {
+        const auto it = m.mesh.surfaces.find(s->name);
+        return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
+      };
+      const model::ContactPair* named = entry.general ? nullptr : &deck;
+      auto master_c = contact::build_corrections(m, deck_name(entry.master), named);
+      auto slave_c = contact::build_corrections(m, deck_name(entry.slave), named);
+      p->smoothed = !master_c.empty() || !slave_c.empty();
+      if (p->smoothed) s2s->set_geometric_correction(std::move(master_c), std::move(slave_c));
+      p->geometry = std::move(s2s);
+    } else
       p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, thickness);
     p->geometry->set_area_weight(entry.weight);
 
@@ -347,6 +362,7 @@ std::vector<std::string> ContactProblem::describe() const {
     s += fmt::format("; k_e = {:.4g}, characteristic length {:.4g}", p->ke, p->l_char);
     if (p->augmented) s += fmt::format(", augmented Lagrange, penetration tolerance {:.4g}", p->tolerance);
     if (p->stiff) s += ", Lagrange multipliers (slope > 1000 k_e)";
+    if (p->smoothed) s += "; smoothed (geometric correction)";
     if (p->weight != 1.0) s += fmt::format("; weight {:g} (balanced master-slave)", p->weight);
     s += p->friction ? "; " + contact::describe(*p->friction) : std::string("; frictionless");
     out.push_back(std::move(s));

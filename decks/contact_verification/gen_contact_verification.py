@@ -227,7 +227,7 @@ def sphere_3d(level):
 
 # --------------------------------------------------------------------------- interference fit
 
-def interference_2d(level):
+def interference_2d(level, smoothed=False):
     """Quarter rings, plane strain: inner ring r ∈ [A, B + δ] (n_in elements around), outer ring
     r ∈ [B, C] (n_out around, n_out ≠ n_in: non-matching). Slave: the outer ring's inner
     surface; master: the inner ring's outer surface. U2 = 0 on y = 0, U1 = 0 on x = 0. The
@@ -241,7 +241,11 @@ def interference_2d(level):
                  "Reference (Lame, same material): p = E' delta (c^2-b^2)(b^2-a^2) / (2 b^3 (c^2-a^2)), "
                  f"E' = E/(1-nu^2), a = {RING_A:g}, b = {RING_B:g}, c = {RING_C:g}.",
                  level, RING_B * math.pi / 2 / n_out)
-    out += parameter_block()
+    params = parameter_block()
+    if smoothed:  # geometric correction is for surface-to-surface pairs (and general contact)
+        params[params.index('type = "NODE TO SURFACE"')] = 'type = "SURFACE TO SURFACE"'
+        out[1:1] = ["** Smoothed: both ring surfaces corrected toward circles about the z axis ([AX] 38.1.3)."]
+    out += params
     nodes, inner, outer = [], [], []
     iid = lambda i, j: 1 + j * (nr_in + 1) + i        # i radial, j around
     oid = lambda i, j: 100001 + j * (nr_out + 1) + i
@@ -275,7 +279,12 @@ def interference_2d(level):
             "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
     # The initial overclosure δ may exceed the default HCRIT (half the slave facet) on fine
     # meshes: HCRIT limits only what an increment adds to the penetration it starts from.
-    out += contact_block("OUTER_S", "INNER_S")
+    if smoothed:
+        out += ["*SURFACE SMOOTHING, NAME=RINGS", "INNER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1.",
+                "OUTER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1."]
+        out += contact_block("OUTER_S", "INNER_S", ", GEOMETRIC CORRECTION=RINGS")
+    else:
+        out += contact_block("OUTER_S", "INNER_S")
     out += ["*BOUNDARY", "YSYM, 2", "XSYM, 1"]
     out += ["*STEP, NAME=FIT", "*STATIC", "0.5, 1.0", STEP_CONTROLS]
     out += OUTPUT + ["*END STEP"]
@@ -283,7 +292,8 @@ def interference_2d(level):
 
 
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25), "sphere_3d": sphere_3d,
-         "interference_2d": interference_2d}
+         "interference_2d": interference_2d,
+         "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True)}
 
 
 def main():
