@@ -145,6 +145,8 @@ struct ContactProblem::Pair {
   bool direct = false, augmented = false, softened = false, finite_sliding = true, surface_to_surface = false;
   bool general = false;  ///< a row general contact made
   bool smoothed = false;  ///< geometric correction of either surface
+  /// NO SEPARATION (or a TIED pair): a closed node never opens; its pressure may turn tensile.
+  bool no_separation = false;
   /// A penalty-type law with slope > 1000 k_e, enforced with multipliers (table 38.1.21).
   bool stiff = false;
   bool uses_multipliers() const { return direct || stiff; }
@@ -309,8 +311,11 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
 
     const auto& b = p->behavior;
     p->softened = b.law != PressureOverclosure::Hard;
-    p->direct = b.method == EnforcementMethod::Direct && !p->softened;
-    p->augmented = b.method == EnforcementMethod::AugmentedLagrange;
+    p->direct = (b.method == EnforcementMethod::Direct && !p->softened) || deck.tied;
+    // TIED (after ADJUST): direct hard contact that never separates, and no slip (ROUGH).
+    p->no_separation = b.deck.no_separation || deck.tied;
+    p->augmented = b.method == EnforcementMethod::AugmentedLagrange && !deck.tied;
+    if (deck.tied) p->softened = false;
     const std::string pair_name = deck.slave + "/" + deck.master;
     if (!p->direct) {
       if (!p->softened && !b.given_stiffness && !scales)
@@ -327,7 +332,10 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     if (p->augmented) p->tolerance = *contact::penetration_tolerance(b, p->l_char);
     p->hcrit = p->softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * p->l_char);
     // Friction: γ_crit from the same characteristic length (KEYWORDS.md Part C c).
-    p->friction = contact::resolve_friction(inter && inter->friction ? &*inter->friction : nullptr, p->l_char, p->ke);
+    model::Friction tie;
+    tie.rough = true;
+    p->friction = contact::resolve_friction(deck.tied ? &tie : inter && inter->friction ? &*inter->friction : nullptr,
+                                            p->l_char, p->ke);
     if (p->friction && p->friction->rough && !(p->ke > 0.0))
       refuse(m, inter->friction->loc, "*FRICTION", fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of "
                                                                "an element-based surface with an elastic material", pair_name));
@@ -378,7 +386,6 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
       refuse(m, p.loc, kw, fmt::format("TYPE=SURFACE TO SURFACE needs an element-based slave surface; {} is node based "
                                        "(use TYPE=NODE TO SURFACE)", p.slave));
     if (p.slave == p.master) refuse(m, p.loc, kw, fmt::format("self-contact of {} is not analysed by this version of inpact yet", p.slave));
-    if (p.tied) refuse(m, p.loc, kw, "TIED contact is not analysed by this version of inpact yet");
     if ((p.adjust_distance || !p.adjust_nset.empty()) && e.step_data)
       refuse(m, p.loc, kw, "ADJUST on a contact pair defined in a step is not analysed by this version of inpact "
                            "yet; define the pair in the model data");
@@ -396,7 +403,13 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
                          "elastic slip of SLIP TOLERANCE or ELASTIC SLIP, Abaqus/Standard's default", inter->name));
     if (inter->behavior) {
       const auto& b = *inter->behavior;
-      if (b.no_separation) refuse(m, b.loc, "*SURFACE BEHAVIOR", "NO SEPARATION is not analysed by this version of inpact yet");
+      if (b.no_separation && !p.tied) {
+        const auto r = contact::resolve_normal_behavior(inter, p.type, p.small_sliding, e.general);
+        if (r.method != EnforcementMethod::Direct || r.law != PressureOverclosure::Hard)
+          refuse(m, b.loc, "*SURFACE BEHAVIOR", "NO SEPARATION is analysed with direct hard contact only (a closed node "
+                                                "keeps its multiplier, which may turn tensile); add DIRECT or drop the "
+                                                "penalty or softened law");
+      }
       if (b.pressure_overclosure == PressureOverclosure::Tied)
         refuse(m, b.loc, "*SURFACE BEHAVIOR", "PRESSURE-OVERCLOSURE=TIED is not analysed by this version of inpact yet");
     }
@@ -470,7 +483,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       const double g = p.gap(i);
       bool closed = false;
       if (p.direct) {
-        closed = p.kin[i].found && (s.closed ? -s.lambda >= open_below : g < close_below);
+        closed = p.kin[i].found && (s.closed ? (p.no_separation || -s.lambda >= open_below) : g < close_below);
         if (!closed) s.lambda = 0.0;
         p.contributes[i] = closed;
         if (closed) it.max_gap_error = std::max(it.max_gap_error, std::abs(g));

@@ -7,6 +7,8 @@
 
 #include "contact/patch_test.hpp"
 #include "fixtures/deck_fixture.hpp"
+#include "solver/analysis_error.hpp"
+#include "solver/analysis_model.hpp"
 
 namespace inpact::test {
 namespace {
@@ -100,6 +102,49 @@ TEST(InitialClearance, TabularValuesApplyPerNode) {
   }
   EXPECT_GT(p_end, 0.0);
   EXPECT_LT(p_middle, p_end);  // the node given a clearance is pressed less
+}
+
+// NO SEPARATION and TIED: the lift-off deck pushes the top down by 0.005, then pulls it up to
+// +0.01 above its start. With surfaces that never separate the two blocks (height 1 each,
+// uniaxial strain) are stretched together: CPRESS = −M · 0.01 / 2 at every slave node, COPEN 0.
+TEST(NoSeparation, ClosedNodesStayClosedUnderTension) {
+  const DeckDir dir;
+  std::string no_sep = read_text(contact_deck("lift_off_2d_direct.inp"));
+  const std::string inter = "*SURFACE INTERACTION, NAME=SMOOTH\n";
+  no_sep.insert(no_sep.find(inter) + inter.size(), "*SURFACE BEHAVIOR, NO SEPARATION\n");
+  std::string tied = read_text(contact_deck("lift_off_2d_direct.inp"));
+  const std::string pair = "TYPE=NODE TO SURFACE";
+  tied.insert(tied.find(pair) + pair.size(), ", ADJUST=0., TIED");
+  for (const auto& [name, text] : {std::pair<std::string, std::string>{"NO SEPARATION", no_sep}, {"TIED", tied}}) {
+    auto r = verification::run_deck(dir.write("bonded.inp", text));
+    ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
+    const auto& cpress = contact_field(r->capture.last(), "CPRESS");
+    const auto& copen = contact_field(r->capture.last(), "COPEN");
+    const double expected = -kM * 0.01 / 2.0;
+    for (std::size_t i = 0; i < cpress.values.size(); ++i) {
+      EXPECT_NEAR(cpress.values[i], expected, 1e-9 * std::abs(expected)) << name;
+      EXPECT_NEAR(copen.values[i], 0.0, 1e-12) << name;
+    }
+  }
+}
+
+TEST(NoSeparation, WithPenaltyEnforcementIsRefused) {
+  const DeckDir dir;
+  std::string text = read_text(contact_deck("patch_2d_penalty.inp"));
+  text.replace(text.find("*SURFACE BEHAVIOR, PENALTY"), 26, "*SURFACE BEHAVIOR, PENALTY, NO SEPARATION");
+  auto deck = dir.read(text);
+  ASSERT_TRUE(deck.ok()) << deck.report();
+  EXPECT_THROW(
+      {
+        try {
+          solver::build_analysis_model(deck.model);
+        } catch (const solver::AnalysisError& e) {
+          EXPECT_NE(std::string(e.what()).find("NO SEPARATION is analysed with direct hard contact only"), std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      solver::AnalysisError);
 }
 
 }  // namespace
