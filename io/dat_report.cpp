@@ -49,6 +49,7 @@ std::string fortran_g(double v, int width, int digits) {
 
 std::string format_print_table(const PrintTable& t) {
   const bool element = t.domain == PrintTable::Domain::Element;
+  const bool contact = t.domain == PrintTable::Domain::Contact;
   const std::size_t n = t.columns.size();
   const std::size_t n_rows = t.labels.size();
   const std::size_t prefix = element ? 24 : 15;  // label (+ point) and footnote columns
@@ -56,7 +57,9 @@ std::string format_print_table(const PrintTable& t) {
   auto line = [&](const std::string& s) { out += s + '\n'; };
 
   // Title.
-  if (!element) {
+  if (contact) {
+    line("   THE FOLLOWING TABLE IS PRINTED FOR THE SLAVE NODES OF CONTACT PAIR " + t.set);
+  } else if (!element) {
     line(t.set.empty() ? "   THE FOLLOWING TABLE IS PRINTED FOR ALL NODES"
                        : "   THE FOLLOWING TABLE IS PRINTED FOR NODES BELONGING TO NODE SET " + t.set);
   } else {
@@ -160,13 +163,14 @@ void DatReport::write(const PrintFrame& frame) {
   text += fmt::format(" STEP TIME COMPLETED      {},  TOTAL TIME COMPLETED       {}\n\n\n",
                       fortran_g(frame.step_time, 10, 3), fortran_g(frame.total_time, 10, 3));
   // Element output first, then node output, as Abaqus orders them.
-  for (const auto domain : {PrintTable::Domain::Element, PrintTable::Domain::Node}) {
+  for (const auto domain : {PrintTable::Domain::Element, PrintTable::Domain::Node, PrintTable::Domain::Contact}) {
     bool first = true;
     for (const PrintTable& t : frame.tables) {
       if (t.domain != domain) continue;
       if (first) {
         text += domain == PrintTable::Domain::Element ? "                                   E L E M E N T   O U T P U T\n\n\n"
-                                                      : "                                       N O D E   O U T P U T\n\n\n";
+                : domain == PrintTable::Domain::Node  ? "                                       N O D E   O U T P U T\n\n\n"
+                                                      : "                                 C O N T A C T   O U T P U T\n\n\n";
         first = false;
       }
       text += format_print_table(t) + "\n";

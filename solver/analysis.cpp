@@ -74,7 +74,7 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
                   double dt, const OutputDue& due, AnalysisObserver& observer) {
   if (!due.any_field() && !due.any_print()) return;
   ContactResults contact;
-  if (run.contact && due.any_field()) contact = run.contact->results(s.u, s.contact);
+  if (run.contact) contact = run.contact->results(s.u, s.contact);
   OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom,
                                        run.conditions.temperature_change(t), run.contact ? &contact : nullptr);
   if (due.any_field()) {

@@ -113,6 +113,14 @@ std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) 
       if (v == k) return vector_labels(k, dim);
       if (is_variable(v, k, 1)) return component(vector_labels(k, dim));
     }
+  } else if (d == Domain::Contact) {
+    // Abaqus's CSTRESS / CDISP and CalculiX's CSTR / CDIS: the pressure (opening) and the two
+    // shear (slip) components; CFN its three components; the rest one column each.
+    if (v == "CSTRESS" || v == "CSTR") return {"CPRESS", "CSHEAR1", "CSHEAR2"};
+    if (v == "CDISP" || v == "CDIS") return {"COPEN", "CSLIP1", "CSLIP2"};
+    if (v == "CFN") return {"CFN1", "CFN2", "CFN3"};
+    for (const char* k : {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFN1", "CFN2", "CFN3"})
+      if (v == k) return {v};
   } else if (d == Domain::Element) {
     if (v == "MISES") return {v};
     if (v == "COORD") return vector_labels(v, dim);
@@ -493,6 +501,44 @@ elements::PointResult centroid_of(const std::vector<elements::PointResult>& poin
   return c;
 }
 
+std::set<std::int32_t> request_pairs(const AnalysisModel& am, const OutputRequest& r);  // below
+
+/// *CONTACT PRINT: one table per pair the request selects, a row per slave node.
+std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequest& a, const ContactResults& contact,
+                                       const std::vector<std::string>& pair_names) {
+  const auto rows = request_pairs(am, a.request);
+  std::map<std::int32_t, PrintTable> by_pair;
+  for (const ContactNodeResult& c : contact) {
+    if (!rows.count(c.pair)) continue;
+    PrintTable& t = by_pair[c.pair];
+    if (t.columns.empty()) {
+      t.domain = PrintTable::Domain::Contact;
+      t.set = pair_names[static_cast<std::size_t>(c.pair)];
+      t.columns = a.variables;
+      t.summary = a.request.summary;
+      t.totals = a.request.totals;
+      t.totals_only = a.request.totals_only;
+    }
+    t.labels.push_back(am.model->mesh.nodes.labels[static_cast<std::size_t>(c.node)]);
+    for (const std::string& col : t.columns) {
+      double v = 0.0;
+      if (col == "CPRESS") v = c.cpress;
+      else if (col == "COPEN") v = c.copen;
+      else if (col == "CSTATUS") v = static_cast<double>(c.cstatus);
+      else if (col == "CNAREA") v = c.cnarea;
+      else if (col == "CSHEAR1") v = c.cshear[0];
+      else if (col == "CSHEAR2") v = c.cshear[1];
+      else if (col == "CSLIP1") v = c.cslip[0];
+      else if (col == "CSLIP2") v = c.cslip[1];
+      else if (col.rfind("CFN", 0) == 0) v = c.cfn[static_cast<std::size_t>(col[3] - '1')];
+      t.values.push_back(v);
+    }
+  }
+  std::vector<PrintTable> out;
+  for (auto& [row, t] : by_pair) out.push_back(std::move(t));
+  return out;
+}
+
 /// One table per element type, in the order the types first appear in the set (Abaqus prints
 /// element output by element type).
 std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequest& a, PointCache& cache) {
@@ -604,6 +650,8 @@ OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, c
     else out.fields.push_back(element_field(am, key, where, cache));
   }
   const auto& prints = output.print_requests();
+  std::vector<std::string> pair_names;
+  for (const auto& row : am.contact->rows) pair_names.push_back(row.name());
   for (std::size_t i = 0; i < prints.size(); ++i) {
     const ActiveRequest& a = prints[i];
     if (!due.print[i] || a.variables.empty()) continue;
@@ -612,6 +660,8 @@ OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, c
       out.tables.push_back(node_table(am, a, u, rf, nlgeom));
     } else if (d == Domain::Element) {
       for (auto& t : element_tables(am, a, cache)) out.tables.push_back(std::move(t));
+    } else if (d == Domain::Contact && contact) {
+      for (auto& t : contact_tables(am, a, *contact, pair_names)) out.tables.push_back(std::move(t));
     }
   }
   return out;

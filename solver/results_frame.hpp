@@ -41,9 +41,10 @@ struct Frame {
 /// One printed table of a *NODE PRINT or *EL PRINT request at one increment: the values the
 /// .dat file shows (io::DatReport formats them). The solver fills it; it is plain data.
 struct PrintTable {
-  enum class Domain : std::uint8_t { Node, Element };
+  enum class Domain : std::uint8_t { Node, Element, Contact };
   Domain domain = Domain::Node;
-  std::string set;           ///< NSET / ELSET as written in the deck; "" = the whole model
+  std::string set;           ///< NSET / ELSET as written in the deck; "" = the whole model;
+                             ///< contact tables: the pair, "SLAVE/MASTER"
   std::string element_type;  ///< element tables: one table per element type (C3D8, ...)
   bool centroid = false;     ///< element tables: POSITION=CENTROIDAL (no integration point column)
   std::vector<std::string> columns;  ///< U1 U2 U3, RF1.., COORD1.., S11.., E11.., MISES

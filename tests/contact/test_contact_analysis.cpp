@@ -310,6 +310,30 @@ TEST(ContactRegression, AnOvershootThatLosesTheMasterIsCutBack) {
   EXPECT_GE(cutbacks, 1);
 }
 
+// *CONTACT PRINT with Abaqus's CSTRESS and CalculiX's CSTR / CDIS: a table per pair in the .dat,
+// a row per slave node, with the same values as the results file's CPRESS and COPEN (bench
+// report: CSTR was "not computed" and the .dat had no contact table).
+TEST(ContactPrint, CstrAndCdisPrintThePressureAndOpeningPerSlaveNode) {
+  const DeckDir dir;
+  auto r = run_text(dir, "print.inp", deck_with("patch_2d_penalty.inp", "CPRESS, COPEN, CSTATUS", "*CONTACT PRINT\nCSTR, CDIS\n"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  for (const auto& m : r->capture.messages) EXPECT_EQ(m.find("not computed"), std::string::npos) << m;
+  ASSERT_FALSE(r->capture.prints.empty());
+  const auto& tables = r->capture.prints.back().tables;
+  ASSERT_EQ(tables.size(), 1u);
+  const solver::PrintTable& t = tables[0];
+  EXPECT_EQ(t.domain, solver::PrintTable::Domain::Contact);
+  EXPECT_EQ(t.set, "SLAVE_S/MASTER_S");
+  ASSERT_EQ(t.columns, (std::vector<std::string>{"CPRESS", "CSHEAR1", "CSHEAR2", "COPEN", "CSLIP1", "CSLIP2"}));
+  const auto& cpress = contact_field(r->capture.last(), "CPRESS");
+  const auto& copen = contact_field(r->capture.last(), "COPEN");
+  ASSERT_EQ(t.labels.size(), cpress.values.size());
+  for (std::size_t i = 0; i < t.labels.size(); ++i) {
+    EXPECT_EQ(t.values[i * 6 + 0], cpress.values[i]);
+    EXPECT_EQ(t.values[i * 6 + 3], copen.values[i]);
+  }
+}
+
 // Friction by stiffness is analysed (tests/contact/test_friction.cpp); sticking enforced by
 // Lagrange multipliers is not, and is refused rather than run by stiffness.
 TEST(ContactRefusals, LagrangeFrictionIsRefusedRatherThanRunByStiffness) {

@@ -54,6 +54,7 @@ struct Capture : solver::AnalysisObserver {
   std::vector<StepFrame> frames;
   std::vector<solver::StatusRow> rows;
   std::vector<std::string> messages;
+  std::vector<solver::PrintFrame> prints;  ///< the printed output (*NODE / *EL / *CONTACT PRINT)
   int current_step = 0;
   int iterations = 0;  ///< Newton iterations over the run (equilibrium iterations of converged attempts + failed)
 
@@ -64,6 +65,7 @@ struct Capture : solver::AnalysisObserver {
   }
   void frame(const solver::Frame& f) override { frames.push_back({current_step, f}); }
   void message(std::string_view text) override { messages.emplace_back(text); }
+  void print_frame(const solver::PrintFrame& p) override { prints.push_back(p); }
 
   const solver::Frame& last() const { return frames.back().frame; }
   /// Frames of step `step` (1-based).
