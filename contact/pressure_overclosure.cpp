@@ -50,9 +50,12 @@ PressureOverclosure PressureOverclosure::from(const ResolvedNormalBehavior& r, d
         law.h_.push_back(h);
       }
       return law;
-    case Law::Tied: break;
+    case Law::Tied:
+      law.kind_ = Kind::Tied;
+      law.k_ = b.tied_slope.value_or(0.0);
+      return law;
   }
-  throw std::invalid_argument("tied contact has no pressure-overclosure law");
+  throw std::invalid_argument("unknown pressure-overclosure law");
 }
 
 PressureValue PressureOverclosure::eval(double h, double lambda) const {
@@ -92,6 +95,8 @@ PressureValue PressureOverclosure::eval(double h, double lambda) const {
     }
     case Kind::Linear:
       if (h < 0.0) return v;
+      return {k_ * h, k_, true};
+    case Kind::Tied:
       return {k_ * h, k_, true};
     case Kind::Tabular: {
       if (h_.empty() || h < h_.front()) return v;
@@ -165,6 +170,7 @@ std::string PressureOverclosure::describe() const {
     case Kind::Exponential: return fmt::format("exponential, c0 = {:g}, p0 = {:g}", c0_, p0_);
     case Kind::Linear: return fmt::format("linear softened, k = {:g}", k_);
     case Kind::Tabular: return fmt::format("tabular, {} points", h_.size());
+    case Kind::Tied: return fmt::format("tied (CalculiX), k = {:.4g}, tension included", k_);
   }
   return {};
 }

@@ -13,6 +13,8 @@
 ///   EXPONENTIAL        p = p0/(e−1) (h/c0 + 1)(exp(h/c0 + 1) − 1)  for h > −c0, else 0
 ///   LINEAR (softened)  p = k h                                      for h > 0, else 0
 ///   TABULAR            piecewise linear through (h_i, p_i); 0 below h_0; last slope beyond
+///   TIED (CalculiX)    p = k h for every h: a bonded spring, tension included (h is measured
+///                      from the initial gap, solver/contact_problem.cpp)
 /// Augmented Lagrange adds a multiplier λ (a pressure) to the linear penalty law:
 ///   p = ⟨λ + k (h + c0)⟩.
 #include <string>
@@ -30,7 +32,7 @@ struct PressureValue {
 
 class PressureOverclosure {
  public:
-  enum class Kind { LinearPenalty, NonlinearPenalty, Exponential, Linear, Tabular };
+  enum class Kind { LinearPenalty, NonlinearPenalty, Exponential, Linear, Tabular, Tied };
 
   /// The law of a resolved behaviour that is penalty-type or softened, for the pair's
   /// underlying element stiffness `ke` and characteristic length `l_char`. Throws

@@ -132,6 +132,17 @@ std::vector<double> clearance_offsets(const model::Model& m, const model::Contac
   return offset;
 }
 
+/// CalculiX's TIED law binds each slave node where it starts: offsets that make every found
+/// node's reference gap zero.
+std::vector<double> tied_offsets(const model::Model& m, contact::PairKinematics& geometry) {
+  std::vector<contact::SlaveKinematics> kin;
+  geometry.update(contact::reference_coordinates(m.mesh.nodes), kin);
+  std::vector<double> offset(kin.size(), 0.0);
+  for (std::size_t i = 0; i < kin.size(); ++i)
+    if (kin[i].found) offset[i] = -kin[i].projection.gap;
+  return offset;
+}
+
 }  // namespace
 
 /// One contact pair in force: its geometry, enforcement and the last kinematics.
@@ -147,6 +158,7 @@ struct ContactProblem::Pair {
   bool smoothed = false;  ///< geometric correction of either surface
   /// NO SEPARATION (or a TIED pair): a closed node never opens; its pressure may turn tensile.
   bool no_separation = false;
+  bool tied_law = false;  ///< CalculiX PRESSURE-OVERCLOSURE=TIED
   /// A penalty-type law with slope > 1000 k_e, enforced with multipliers (table 38.1.21).
   bool stiff = false;
   bool uses_multipliers() const { return direct || stiff; }
@@ -313,7 +325,10 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     p->softened = b.law != PressureOverclosure::Hard;
     p->direct = (b.method == EnforcementMethod::Direct && !p->softened) || deck.tied;
     // TIED (after ADJUST): direct hard contact that never separates, and no slip (ROUGH).
-    p->no_separation = b.deck.no_separation || deck.tied;
+    // CalculiX's PRESSURE-OVERCLOSURE=TIED: a bonded spring p = k h from the initial gap (its
+    // offsets below), tension included, and no slip at the *FRICTION stick slope.
+    p->tied_law = b.law == PressureOverclosure::Tied;
+    p->no_separation = b.deck.no_separation || deck.tied || p->tied_law;
     p->augmented = b.method == EnforcementMethod::AugmentedLagrange && !deck.tied;
     if (deck.tied) p->softened = false;
     const std::string pair_name = deck.slave + "/" + deck.master;
@@ -333,13 +348,17 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     p->hcrit = p->softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * p->l_char);
     // Friction: γ_crit from the same characteristic length (KEYWORDS.md Part C c).
     model::Friction tie;
+    if (p->tied_law && inter && inter->friction) tie = *inter->friction;
     tie.rough = true;
-    p->friction = contact::resolve_friction(deck.tied ? &tie : inter && inter->friction ? &*inter->friction : nullptr,
+    const bool tied = deck.tied || p->tied_law;
+    p->friction = contact::resolve_friction(tied ? &tie : inter && inter->friction ? &*inter->friction : nullptr,
                                             p->l_char, p->ke);
+    if (p->tied_law && tie.stick_slope) p->friction->fixed_stiffness = *tie.stick_slope;  // CalculiX's λ
     if (p->friction && p->friction->rough && !(p->ke > 0.0))
       refuse(m, inter->friction->loc, "*FRICTION", fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of "
                                                                "an element-based surface with an elastic material", pair_name));
     if (!entry.general) p->gap_offset = clearance_offsets(m, deck, *p->geometry);
+    if (p->tied_law) p->gap_offset = tied_offsets(m, *p->geometry);
     pairs_.push_back(std::move(p));
   }
 }
@@ -410,8 +429,6 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
                                                 "keeps its multiplier, which may turn tensile); add DIRECT or drop the "
                                                 "penalty or softened law");
       }
-      if (b.pressure_overclosure == PressureOverclosure::Tied)
-        refuse(m, b.loc, "*SURFACE BEHAVIOR", "PRESSURE-OVERCLOSURE=TIED is not analysed by this version of inpact yet");
     }
   }
 }
@@ -491,13 +508,13 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
         // As direct, with the law deciding closure: closed while the multiplier's pressure is
         // compressive, closing where the law acts (touching included), from the law's pressure.
         const auto law = p.pressure(i, s.lambda);
-        closed = p.kin[i].found && (s.closed ? -s.multiplier >= open_below : law.active);
+        closed = p.kin[i].found && (s.closed ? (p.no_separation || -s.multiplier >= open_below) : law.active);
         if (closed && !s.closed) s.multiplier = -law.p;
         if (!closed) s.multiplier = 0.0;
         p.contributes[i] = closed;
       } else {
         const auto pv = p.pressure(i, s.lambda);
-        closed = pv.p > 0.0;
+        closed = p.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
         // Damping a node that keeps crossing the law's kink: after two crossings in this attempt
         // its stiffness stays in the tangent while it is open (the force is still the law's), so
         // Newton stops bouncing between the two branches (a stiff law, e.g. augmented Lagrange's
@@ -757,8 +774,9 @@ ContactResults ContactProblem::results(std::span<const double> u, const ContactS
         closed = slaves[i].closed && k.found;
         r.cpress = closed ? -(p->stiff ? slaves[i].multiplier : slaves[i].lambda) : 0.0;
       } else {
-        r.cpress = p->pressure(i, slaves[i].lambda).p;
-        closed = r.cpress > 0.0;
+        const auto pv = p->pressure(i, slaves[i].lambda);
+        r.cpress = pv.p;
+        closed = p->tied_law ? pv.active : r.cpress > 0.0;
       }
       r.cstatus = closed ? ContactStatus::Slipping : ContactStatus::Open;  // frictionless: closed = slipping
       r.cnarea = closed ? k.area : 0.0;

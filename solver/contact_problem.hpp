@@ -118,8 +118,8 @@ struct AugmentationCheck {
 
 /// Throws AnalysisError (citing the deck) for contact this version does not analyse:
 /// surface-to-surface pairs with a node-based slave, node-based masters, LAGRANGE friction,
-/// ADJUST on step pairs (or on a model contact::apply_adjust has not seen), CalculiX's TIED
-/// law, NO SEPARATION other than with direct hard contact, self-contact.
+/// ADJUST on step pairs (or on a model contact::apply_adjust has not seen), NO SEPARATION
+/// other than with direct hard contact, self-contact.
 void check_contact_supported(const model::Model& model, const contact::InteractionTable& table);
 
 class ContactProblem {

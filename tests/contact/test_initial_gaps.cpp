@@ -128,6 +128,30 @@ TEST(NoSeparation, ClosedNodesStayClosedUnderTension) {
   }
 }
 
+// CalculiX's PRESSURE-OVERCLOSURE=TIED (slope k, stick slope on *FRICTION): a spring from the
+// initial gap, tension included. Blocks and spring in series: σ = d / (2/M + 1/k), pushed by
+// d = −0.005, then pulled to +0.01: CPRESS = −σ(+0.01) in tension.
+TEST(CalculixTied, BondsEachSlaveNodeWithASpringFromItsInitialGap) {
+  const DeckDir dir;
+  std::string text = read_text(contact_deck("lift_off_2d_direct.inp"));
+  const std::string inter = "*SURFACE INTERACTION, NAME=SMOOTH\n";
+  text.insert(text.find(inter) + inter.size(), "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n1.e6\n*FRICTION\n0., 1.e5\n");
+  auto r = verification::run_deck(dir.write("tied.inp", text));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const double k = 1e6;
+  for (const auto& [step, d] : {std::pair<int, double>{1, -0.005}, {2, 0.01}}) {
+    const auto frames = r->capture.of_step(step);
+    ASSERT_FALSE(frames.empty());
+    const auto& cpress = contact_field(*frames.back(), "CPRESS");
+    const auto& cstatus = contact_field(*frames.back(), "CSTATUS");
+    const double expected = -d / (2.0 / kM + 1.0 / k);
+    for (std::size_t i = 0; i < cpress.values.size(); ++i) {
+      EXPECT_NEAR(cpress.values[i], expected, 1e-8 * std::abs(expected)) << "step " << step;
+      EXPECT_NE(cstatus.values[i], 0.0) << "step " << step;  // closed (sticking), in tension too
+    }
+  }
+}
+
 TEST(NoSeparation, WithPenaltyEnforcementIsRefused) {
   const DeckDir dir;
   std::string text = read_text(contact_deck("patch_2d_penalty.inp"));
