@@ -17,7 +17,13 @@ std::optional<FrictionLaw> resolve_friction(const model::Friction* friction, dou
   FrictionLaw law;
   law.rough = friction->rough;
   law.mu = friction->mu;
-  if (friction->elastic_slip) {  // ELASTIC SLIP overrides SLIP TOLERANCE [K16 *FRICTION]
+  if (friction->lagrange) {
+    // LAGRANGE: Abaqus enforces sticking exactly, with multipliers. inpact keeps the elastic-slip
+    // method with an allowable slip of kLagrangeSlipFraction × the characteristic length
+    // (5000 times smaller than the default SLIP TOLERANCE): stick to that, not to round-off.
+    law.gamma_crit = kLagrangeSlipFraction * l_char;
+    law.lagrange = true;
+  } else if (friction->elastic_slip) {  // ELASTIC SLIP overrides SLIP TOLERANCE [K16 *FRICTION]
     law.gamma_crit = *friction->elastic_slip;
     law.gamma_is_absolute = true;
   } else {
@@ -36,6 +42,10 @@ std::string describe(const FrictionLaw& law) {
                                     kRoughStiffnessFactor);
   if (law.fixed_stiffness > 0.0)
     return fmt::format("Coulomb friction mu = {:g}, stick slope {:.4g} (CalculiX)", law.mu, law.fixed_stiffness);
+  if (law.lagrange)
+    return fmt::format("Coulomb friction mu = {:g}, LAGRANGE: sticking to an elastic slip of {:.4g} ({:g} of the "
+                       "characteristic length; inpact's approximation of exact sticking)", law.mu, law.gamma_crit,
+                       kLagrangeSlipFraction);
   return fmt::format("Coulomb friction mu = {:g}, penalty (elastic slip), allowable elastic slip {:.4g}{}", law.mu,
                      law.gamma_crit, law.gamma_is_absolute ? " (ELASTIC SLIP)" : "");
 }

@@ -57,6 +57,7 @@ struct FrictionLaw {
   double gamma_crit = 0.0;        ///< allowable elastic slip (a length)
   double fixed_stiffness = 0.0;   ///< > 0: τ = k e with this k (ROUGH; CalculiX's stick slope λ)
   bool gamma_is_absolute = false; ///< ELASTIC SLIP given
+  bool lagrange = false;          ///< LAGRANGE: stick to kLagrangeSlipFraction of the length
 
   /// Stick stiffness k (stress per length) at pressure p, and dk/dp.
   double stiffness(double p) const { return fixed_stiffness > 0.0 ? fixed_stiffness : mu * p / gamma_crit; }
@@ -68,6 +69,11 @@ struct FrictionLaw {
 /// penalty" otherwise without publishing the stiffness; KEYWORDS.md Part C c). 1000 k_e is the
 /// largest stiffness table 38.1.21 still enforces without multipliers.
 inline constexpr double kRoughStiffnessFactor = 1000.0;
+
+/// *FRICTION, LAGRANGE (sticking by multipliers in Abaqus): inpact's allowable elastic slip, as a
+/// fraction of the characteristic contact length — 1e-6, against the default SLIP TOLERANCE of
+/// 0.005 (a stick stiffness 5000 times larger). A documented approximation of exact sticking.
+inline constexpr double kLagrangeSlipFraction = 1e-6;
 
 /// The law of `friction` (null: no *FRICTION) for a characteristic length `l_char` and element
 /// stiffness `ke`; nullopt when the contact is frictionless (no *FRICTION, or μ = 0 without

@@ -414,12 +414,6 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
     const model::SurfaceInteraction* inter = interaction_of(m, p);
     if (!inter) continue;
-    // Friction is enforced by stiffness (elastic slip); sticking by Lagrange multipliers is not.
-    if (inter->friction && inter->friction->lagrange && inter->friction->mu > 0.0)
-      refuse(m, inter->friction->loc, "*FRICTION",
-             fmt::format("LAGRANGE (sticking enforced by Lagrange multipliers) is not analysed by this version of inpact "
-                         "yet (interaction {}); leave LAGRANGE out to enforce sticking by stiffness, with the allowable "
-                         "elastic slip of SLIP TOLERANCE or ELASTIC SLIP, Abaqus/Standard's default", inter->name));
     if (inter->behavior) {
       const auto& b = *inter->behavior;
       if (b.no_separation && !p.tied) {

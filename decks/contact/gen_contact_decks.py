@@ -230,7 +230,7 @@ def box3d(first, xs, ys, zs):
     return nodes, elems
 
 
-def friction_block(dim, method, push):
+def friction_block(dim, method, push, lagrange=False):
     """A 1 x 1 (x 1) block (2 x 2 (x 2) elements) on a fixed base, Coulomb friction mu = 0.3.
     Step PRESS: pressure p on the top (normal force N = p x top area), top held in x (and y);
     step PUSH: the top moved tangentially by `push`, the pressure kept. The base's nodes lie
@@ -270,7 +270,8 @@ def friction_block(dim, method, push):
         base_bc = "BASE_N, 1, 3\n"
     s += "*SOLID SECTION, ELSET=BASE, MATERIAL=SOFT\n*SOLID SECTION, ELSET=BLOCK, MATERIAL=SOFT\n"
     s += f"*MATERIAL, NAME=SOFT\n*ELASTIC\n{E:g}, {NU:g}\n"
-    s += "*SURFACE INTERACTION, NAME=ROUGHISH\n" + BEHAVIOR[method] + f"*FRICTION\n{MU:g}\n"
+    s += ("*SURFACE INTERACTION, NAME=ROUGHISH\n" + BEHAVIOR[method] + ("*FRICTION, LAGRANGE\n" if lagrange else "*FRICTION\n")
+          + f"{MU:g}\n")
     s += "*CONTACT PAIR, INTERACTION=ROUGHISH, TYPE=NODE TO SURFACE\nSLAVE_S, MASTER_S\n"
     s += "*BOUNDARY\n" + base_bc
     s += ("*STEP, NAME=PRESS\n*STATIC\n0.5, 1.0\n*BOUNDARY\n" + fixed_top + "*DSLOAD\nTOP_S, P, " + f"{P:g}\n" +
@@ -324,6 +325,10 @@ def main():
     for name, (dim, method, push) in friction.items():
         with open(os.path.join(HERE, name), "w") as f:
             f.write(friction_block(dim, method, push))
+    # LAGRANGE friction (sticking to 1e-6 of the characteristic length in inpact).
+    for name, push in (("friction_slide_2d_lagrange.inp", (0.05,)), ("friction_stick_2d_lagrange.inp", (1e-5,))):
+        with open(os.path.join(HERE, name), "w") as f:
+            f.write(friction_block(2, "direct", push, lagrange=True))
 
 
 if __name__ == "__main__":

@@ -334,23 +334,5 @@ TEST(ContactPrint, CstrAndCdisPrintThePressureAndOpeningPerSlaveNode) {
   }
 }
 
-// Friction by stiffness is analysed (tests/contact/test_friction.cpp); sticking enforced by
-// Lagrange multipliers is not, and is refused rather than run by stiffness.
-TEST(ContactRefusals, LagrangeFrictionIsRefusedRatherThanRunByStiffness) {
-  const DeckDir dir;
-  auto deck = parser::read_deck(
-      dir.write("friction.inp", deck_with("patch_2d_penalty.inp", "*SURFACE BEHAVIOR", "*FRICTION, LAGRANGE\n0.3\n")));
-  ASSERT_TRUE(deck.ok()) << deck.report();
-  verification::Capture capture;
-  try {
-    solver::run_analysis(deck.model, capture);
-    FAIL() << "a deck with LAGRANGE friction ran";
-  } catch (const solver::AnalysisError& e) {
-    EXPECT_NE(std::string(e.what()).find("LAGRANGE (sticking enforced by Lagrange multipliers) is not analysed"),
-              std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("friction.inp:"), std::string::npos) << e.what();
-  }
-}
-
 }  // namespace
 }  // namespace inpact::test

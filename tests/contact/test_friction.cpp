@@ -236,7 +236,7 @@ TEST(FrictionBlock3D, SlidingBlockCarriesMuTimesTheNormalForceInTheDirectionPush
 
 /// Sticking block: every slave node sticks, the tangential force stays below μ N and the
 /// relative slip is elastic only, |CSLIP| ≤ γ_crit.
-void check_sticking(const std::string& deck, const std::string& label) {
+void check_sticking(const std::string& deck, const std::string& label, double gamma_crit = kGammaCrit) {
   auto r = verification::run_deck(contact_deck(deck));
   ASSERT_TRUE(r->outcome.completed) << label << ": " << r->outcome.message;
   const solver::Frame& f = r->capture.last();
@@ -252,7 +252,7 @@ void check_sticking(const std::string& deck, const std::string& label) {
     max_slip = std::max(max_slip, std::hypot(sl1.values[i], sl2.values[i]));
     max_ratio = std::max(max_ratio, std::hypot(cs1.values[i], cs2.values[i]) / (kMu * cpress.values[i]));
   }
-  EXPECT_LE(max_slip, kGammaCrit * (1 + 1e-9)) << label;  // elastic slip only
+  EXPECT_LE(max_slip, gamma_crit * (1 + 1e-9)) << label;  // elastic slip only
   EXPECT_LT(max_ratio, 1.0) << label;
   const auto rf = top_reaction(*r, f);
   const double rt = std::hypot(rf[0], r->dim() == 3 ? rf[1] : 0.0);
@@ -261,12 +261,43 @@ void check_sticking(const std::string& deck, const std::string& label) {
   const Counts c = counts(*r, 2);
   std::printf("[friction] %s: tangential force %.6f < mu N = %.6f, max |CSLIP| %.3e <= gamma_crit %.3e, max |CSHEAR|/"
               "(mu CPRESS) %.3f; push step: %d increments, %d iterations\n",
-              label.c_str(), rt, kMu * kN, max_slip, kGammaCrit, max_ratio, c.increments, c.iterations);
+              label.c_str(), rt, kMu * kN, max_slip, gamma_crit, max_ratio, c.increments, c.iterations);
 }
 
 TEST(FrictionBlock2D, BlockSticksBelowTheLimit) { check_sticking("friction_stick_2d_direct.inp", "2D direct stick"); }
 
 TEST(FrictionBlock3D, BlockSticksBelowTheLimit) { check_sticking("friction_stick_3d_penalty.inp", "3D penalty stick"); }
+
+// *FRICTION, LAGRANGE: Abaqus sticks exactly (multipliers); inpact keeps elastic slip with an
+// allowable slip of 1e-6 of the characteristic length (contact/friction.hpp): the sticking block
+// slips at most 5e-7, the sliding block carries μ N as with the default. It costs iterations:
+// the 2D sliding push takes 29 increments (156 iterations) against 6 (18) by default.
+TEST(FrictionLagrange, SticksToAMillionthOfTheLengthAndSlidesAtMuN) {
+  check_sliding("friction_slide_2d_lagrange.inp", "2D LAGRANGE slide");
+  // The block pushed by 1e-5: pressing already let the edge nodes slip (Poisson expansion
+  // against near-exact sticking: CSHEAR = μ CPRESS there); every node still sticking at the
+  // end of the push moved by at most twice the allowable elastic slip during it.
+  auto r = verification::run_deck(contact_deck("friction_stick_2d_lagrange.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto pressed = r->capture.of_step(1), pushed = r->capture.of_step(2);
+  ASSERT_FALSE(pressed.empty());
+  ASSERT_FALSE(pushed.empty());
+  const auto& s0 = fd(*pressed.back(), "CSLIP1");
+  const auto& s1 = fd(*pushed.back(), "CSLIP1");
+  const auto& st = fd(*pushed.back(), "CSTATUS");
+  const double gamma = contact::kLagrangeSlipFraction * 0.5;  // × the facet size 0.5
+  int sticking = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < st.values.size(); ++i) {
+    if (st.values[i] != 1.0) continue;
+    ++sticking;
+    worst = std::max(worst, std::abs(s1.values[i] - s0.values[i]));
+  }
+  EXPECT_GE(sticking, 1);
+  EXPECT_LE(worst, 2.0 * gamma * (1 + 1e-9));
+  std::printf("[friction] 2D LAGRANGE stick: %d sticking nodes moved by at most %.3e during the push (gamma %.1e)\n",
+              sticking, worst, gamma);
+}
 
 }  // namespace
 }  // namespace inpact::test
