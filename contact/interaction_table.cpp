@@ -146,6 +146,8 @@ std::shared_ptr<const InteractionTable> interaction_table(const model::Model& m)
     ci.slave = &m.mesh.surfaces.at(p.slave);
     ci.master = &m.mesh.surfaces.at(p.master);
     ci.first_step = step;
+    // Self-contact: every contact is seen from both sides, like a balanced two-row interaction.
+    if (p.slave == p.master) ci.weight = 0.5;
     t->rows.push_back(std::move(ci));
   };
   auto add_step_pair = [&](const model::ContactPair& p, std::size_t step) {
@@ -187,9 +189,22 @@ std::shared_ptr<const InteractionTable> interaction_table(const model::Model& m)
       const model::Surface& s = m.mesh.surfaces.at(inc.first.empty() ? inc.second : inc.first);
       for (const auto* body : body_surfaces)
         if (!shares_faces(s, *body)) once(&s, body);
-    } else if (inc.first == inc.second) {
-      t->notes.push_back(fmt::format("{}: general contact: self-contact of {} is not searched",
-                                     m.sources.describe(inc.loc), inc.first));
+    } else if (inc.first == inc.second) {  // self-contact of a named surface: one row, weight ½
+      const model::Surface* s = &m.mesh.surfaces.at(inc.first);
+      auto key = std::minmax(s->name, s->name);
+      if (done.insert({key.first, key.second}).second && !excluded(m, s->name, s->name)) {
+        std::string interaction;
+        assigned_interaction(m, s->name, s->name, interaction);
+        ContactInteraction ci;
+        ci.pair.slave = ci.pair.master = s->name;
+        ci.pair.interaction = interaction;
+        ci.pair.type = model::ContactDiscretization::SurfaceToSurface;
+        ci.pair.loc = inc.loc;
+        ci.slave = ci.master = s;
+        ci.general = true;
+        ci.weight = 0.5;
+        t->rows.push_back(std::move(ci));
+      }
     } else {
       once(&m.mesh.surfaces.at(inc.first), &m.mesh.surfaces.at(inc.second));
     }

@@ -12,7 +12,9 @@
 ///     (a note says so).
 ///   - `surf1, surf2`: an interaction between the two surfaces; `, surf2` (the all-inclusive
 ///     exterior against surf2): surf2 against every body's exterior that has none of surf2's
-///     faces; `surf1,` (self-contact of surf1): not searched (a note).
+///     faces; `surf1,` (self-contact of surf1): one row of weight ½ (each contact is seen from
+///     both sides), as a self-contact pair. ALL EXTERIOR does not search a body against itself:
+///     a body one element thick would see its own far face as an overclosure.
 ///   - *CONTACT EXCLUSIONS remove the interactions between the surfaces they name.
 ///   - Each interaction takes the *SURFACE INTERACTION of the *CONTACT PROPERTY ASSIGNMENT that
 ///     names its two surfaces (in either order), else of the global assignment (blank surfaces),
@@ -43,7 +45,7 @@ struct ContactInteraction {
   std::size_t first_step = 0;  ///< the step (0-based) it enters; model data: 0
   bool general = false;        ///< made by general contact
   bool step_data = false;      ///< a *CONTACT PAIR of a step (not of the model data)
-  double weight = 1.0;         ///< ½ for each row of a balanced (two-row) interaction
+  double weight = 1.0;         ///< ½ for each row of a balanced (two-row) interaction, and for self-contact
   /// "SLAVE/MASTER", the name in /model/contact/pairs.
   std::string name() const { return pair.slave + "/" + pair.master; }
 };

@@ -38,8 +38,24 @@ void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinemat
     k.area = area_weight_ * areas[i];
     candidates_.clear();
     search_.query(x[nodes[i]], candidates_);
+    const std::int32_t own[1] = {nodes[i]};
+    if (self_contact_) drop_neighbours(master_.facets(), own, candidates_);
     k.projection = closest_projection(master_.facets(), candidates_, x, x[nodes[i]]);
     k.found = k.projection.facet >= 0;
+    if (k.found && self_contact_) {
+      // The node's outward normal: the sum of its facets' normals there.
+      Vec3 n{};
+      for (std::int32_t f : slave_.facets_of_node(i)) {
+        const Facet& sf = slave_.facets()[static_cast<std::size_t>(f)];
+        for (int a = 0; a < sf.n_nodes; ++a)
+          if (sf.nodes[static_cast<std::size_t>(a)] == nodes[i]) {
+            const auto xi = facet_node_param(sf.shape, a);
+            n = add(n, facet_geometry(sf, x, xi[0], xi[1]).n);
+          }
+      }
+      const double len = norm(n);
+      k.found = len > 0.0 && faces_across(scale(1.0 / len, n), k.projection);
+    }
     if (k.found && !master_correction_.empty()) correct(x, i, k.projection);
   }
 }

@@ -40,7 +40,7 @@ void choose_default_method(ResolvedNormalBehavior& r, model::ContactDiscretizati
   else if (discretization == model::ContactDiscretization::SurfaceToSurface)
     set(EnforcementMethod::PenaltyLinear, "Abaqus default for finite-sliding surface-to-surface pairs");
   else if (self_contact_3d)
-    set(EnforcementMethod::AugmentedLagrange, "Abaqus default for 3-D node-to-surface self-contact");
+    set(EnforcementMethod::AugmentedLagrange, "Abaqus default for 3-D node-to-surface self-contact (inpact's in 2-D too)");
   else set(EnforcementMethod::Direct, "Abaqus default for node-to-surface pairs");
 }
 

@@ -12,6 +12,7 @@
 
 #include "contact/contact_surface.hpp"
 #include "contact/projection.hpp"
+#include "contact/vec3.hpp"
 
 namespace inpact::contact {
 
@@ -51,8 +52,33 @@ class PairKinematics {
   void set_area_weight(double w) { area_weight_ = w; }
   double area_weight() const { return area_weight_; }
 
+  /// Self-contact (slave and master the same surface): a slave point ignores the master facets
+  /// that share a node with it (its own neighbourhood), and counts a projection only where it
+  /// faces the master (normals within 45° of opposite) and projects orthogonally (within 45°).
+  void set_self_contact(bool self) { self_contact_ = self; }
+
  protected:
   double area_weight_ = 1.0;
+  bool self_contact_ = false;
 };
+
+/// Self-contact: drops from `candidates` every facet that has a node of `own` (a facet's rows).
+inline void drop_neighbours(std::span<const Facet> facets, std::span<const std::int32_t> own,
+                            std::vector<std::int32_t>& candidates) {
+  std::erase_if(candidates, [&](std::int32_t c) {
+    for (std::int32_t r : facets[static_cast<std::size_t>(c)].node_rows())
+      for (std::int32_t o : own)
+        if (r == o) return true;
+    return false;
+  });
+}
+
+/// Self-contact: does a slave point with outward normal `n_slave` see projection `p` across the
+/// gap (facing it, orthogonally), rather than along its own surface?
+inline bool faces_across(const Vec3& n_slave, const Projection& p) {
+  constexpr double kCos45 = 0.7071;
+  return dot(n_slave, p.normal) <= -kCos45 &&
+         (p.region == ProjectionRegion::Interior || std::abs(dot(p.normal, p.facet_normal)) >= kCos45);
+}
 
 }  // namespace inpact::contact

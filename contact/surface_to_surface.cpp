@@ -91,6 +91,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
       pt.W = weighting_functions(f.shape, e.N);
       candidates_.clear();
       search_.query(g.x, candidates_);
+      if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates_);
       pt.projection = closest_projection(master_.facets(), candidates_, x, g.x);
       const Projection& pr = pt.projection;
       // (judged on the faceted projection: beyond the master's free edge the idealised one
@@ -131,6 +132,8 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
 void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics& k) {
   candidates_.clear();
   search_.query(x[static_cast<std::size_t>(k.node)], candidates_);
+  const std::int32_t own[1] = {k.node};
+  if (self_contact_) drop_neighbours(master_.facets(), own, candidates_);
   k.projection = closest_projection(master_.facets(), candidates_, x, x[static_cast<std::size_t>(k.node)]);
   k.friction_found = k.projection.facet >= 0;
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);

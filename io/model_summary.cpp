@@ -127,8 +127,10 @@ void write_contact(std::ostream& out, const model::Model& m) {
   for (const auto* p : pairs) {
     print(out, "  {} / {}: {}, {} sliding, interaction {}\n", p->slave, p->master, discretization_name(p->type),
           p->small_sliding ? "small" : "finite", p->interaction);
+    contact::NormalBehaviorOptions options;
+    options.self_contact_3d = p->slave == p->master;  // as the analysis (solver/contact_problem.cpp)
     const auto resolved = contact::resolve_normal_behavior(interaction_named(m, p->interaction), p->type,
-                                                           p->small_sliding, false);
+                                                           p->small_sliding, false, options);
     print(out, "    {}\n", contact::describe(resolved, pair_scales(m, p->slave, p->master)));
     if (!p->geometric_correction.empty()) print(out, "    smoothing: {}\n", p->geometric_correction);
   }

@@ -289,6 +289,9 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     const model::SurfaceInteraction* inter = interaction_of(m, deck);
     contact::NormalBehaviorOptions options;
     options.controls = controls_for(m, step_index, deck);
+    // Self-contact: augmented Lagrange by default (Abaqus's for 3-D node to surface; inpact's in
+    // 2D too, where Abaqus would use multipliers that a two-sided contact would duplicate).
+    options.self_contact_3d = deck.slave == deck.master;
     p->behavior = contact::resolve_normal_behavior(inter, deck.type, deck.small_sliding, entry.general, options);
     p->weight = entry.weight;
     p->general = entry.general;
@@ -313,6 +316,7 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     } else
       p->geometry = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, thickness);
     p->geometry->set_area_weight(entry.weight);
+    p->geometry->set_self_contact(deck.slave == deck.master);
 
     // k_e and the characteristic length from the slave surface (the master when the slave is
     // node based), contact/normal_behavior.cpp.
@@ -404,7 +408,15 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
     if (p.type == model::ContactDiscretization::SurfaceToSurface && e.slave->kind != model::Surface::Kind::Element)
       refuse(m, p.loc, kw, fmt::format("TYPE=SURFACE TO SURFACE needs an element-based slave surface; {} is node based "
                                        "(use TYPE=NODE TO SURFACE)", p.slave));
-    if (p.slave == p.master) refuse(m, p.loc, kw, fmt::format("self-contact of {} is not analysed by this version of inpact yet", p.slave));
+    if (p.slave == p.master) {
+      contact::NormalBehaviorOptions options;
+      options.self_contact_3d = true;
+      const auto r = contact::resolve_normal_behavior(interaction_of(m, p), p.type, p.small_sliding, e.general, options);
+      if (r.method == EnforcementMethod::Direct)
+        refuse(m, p.loc, kw, fmt::format("self-contact of {} with direct enforcement is not analysed (every contact "
+                                         "would be constrained twice, once from each side); use AUGMENTED LAGRANGE (the "
+                                         "default for self-contact) or PENALTY", p.slave));
+    }
     if ((p.adjust_distance || !p.adjust_nset.empty()) && e.step_data)
       refuse(m, p.loc, kw, "ADJUST on a contact pair defined in a step is not analysed by this version of inpact "
                            "yet; define the pair in the model data");

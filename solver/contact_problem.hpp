@@ -119,7 +119,7 @@ struct AugmentationCheck {
 /// Throws AnalysisError (citing the deck) for contact this version does not analyse:
 /// surface-to-surface pairs with a node-based slave, node-based masters,
 /// ADJUST on step pairs (or on a model contact::apply_adjust has not seen), NO SEPARATION
-/// other than with direct hard contact, self-contact.
+/// other than with direct hard contact, self-contact with direct enforcement.
 void check_contact_supported(const model::Model& model, const contact::InteractionTable& table);
 
 class ContactProblem {

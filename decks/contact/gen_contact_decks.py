@@ -304,6 +304,16 @@ def main():
                                  ("patch_2d_overclosed_adjust", -0.001, "YES")):
         with open(os.path.join(HERE, name + ".inp"), "w") as f:
             f.write(patch_2d("direct", offset=offset, adjust=adjust))
+    # Self-contact: one surface made of both blocks' contact faces (default: augmented Lagrange).
+    with open(os.path.join(HERE, "patch_2d_self.inp"), "w") as f:
+        f.write(patch_2d("direct", n_lower=3).replace("*SURFACE, NAME=MASTER_S\nLOWER_TOP, S3\n*SURFACE, NAME=SLAVE_S\nUPPER_BOTTOM, S1\n",
+                         "*SURFACE, NAME=BOTH_S\nLOWER_TOP, S3\nUPPER_BOTTOM, S1\n")
+                .replace("SLAVE_S, MASTER_S\n", "BOTH_S,\n")
+                .replace("(direct, node to surface)", "(self-contact of one surface holding both faces)"))
+    with open(os.path.join(HERE, "patch_2d_self_s2s.inp"), "w") as f:
+        f.write(open(os.path.join(HERE, "patch_2d_self.inp")).read()
+                .replace("TYPE=NODE TO SURFACE", "TYPE=SURFACE TO SURFACE")
+                .replace("(self-contact of", "(surface-to-surface self-contact of"))
     with open(os.path.join(HERE, "patch_2d_general.inp"), "w") as f:
         f.write(patch_2d_general())
     with open(os.path.join(HERE, "patch_2d_general_friction.inp"), "w") as f:
