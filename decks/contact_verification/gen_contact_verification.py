@@ -15,16 +15,30 @@ every variant of it:
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
   interference_2d   thick-cylinder interference fit, plane strain, quarter model, non-matching
                     ring meshes, interference δ set up by the geometry (Lamé)
+  interference_2d_smoothed  the same, both ring surfaces smoothed (CIRCUMFERENTIAL, [AX] 38.1.3)
+
+Smoothing verification (issue 5), surface to surface by default, each deck also as *_smoothed
+(the pair's GEOMETRIC CORRECTION names a *SURFACE SMOOTHING of both surfaces):
+  spherical_seat_axi  a solid ball in a spherical socket (thick spherical shell) with radial
+                      interference δ, axisymmetric (CAX4), a half meridian; SPHERICAL about the
+                      origin; reference: the thick-walled sphere (Lamé for spheres)
+  spherical_seat_3d   the same as a 3D octant (C3D8, cube-sphere meshes)
+  oring_axi           an O-ring (solid circular cross-section) in a toroidal sleeve with radial
+                      interference δ in the tube, axisymmetric, half the cross-section; TOROIDAL
+                      about the y axis; reference: the same deck on a finer level
 
 Parameters of every deck:
   method   DIRECT | PENALTY | PENALTY=NONLINEAR | AUGMENTED LAGRANGE   (*SURFACE BEHAVIOR)
+  type     NODE TO SURFACE | SURFACE TO SURFACE   (*CONTACT PAIR; the smoothing decks default to the latter)
   sf       *CONTACT CONTROLS, STIFFNESS SCALE FACTOR (penalty-type methods; 1 = the default)
   tolkind  RELATIVE | ABSOLUTE, tol: *CONTACT CONTROLS, <tolkind> PENETRATION TOLERANCE=<tol>
            (augmented Lagrange only; RELATIVE 0.001 is Abaqus's default for node-to-surface)
 
 Mesh levels: level L has element size h = a / 2^(L+1) at the contact in hertz_2d, a / (3·2^(L−1))
 in sphere_3d (a: the contact half-width or radius of the design load, ≈ 1), and 24·2^(L−1) /
-34·2^(L−1) elements per quarter on the interference rings. The tolerances and references are in tests/contact_verification/.
+34·2^(L−1) elements per quarter on the interference rings and the axisymmetric seat (inner / outer
+body), 12·2^(L−1) / 16·2^(L−1) per quarter great circle in the 3D seat, 48·2^(L−1) / 68·2^(L−1)
+along the half cross-section of the O-ring and its sleeve. The tolerances and references are in tests/contact_verification/.
 
 Pure standard-library Python.
 """
@@ -291,9 +305,300 @@ def interference_2d(level, smoothed=False):
     return out
 
 
+# --------------------------------------------------------------------------- smoothing: sphere and torus
+
+# Spherical seat: a solid ball of radius SEAT_B + δ in a socket (thick spherical shell) r ∈ [SEAT_B, SEAT_C].
+SEAT_B, SEAT_C, SEAT_DELTA = 1.0, 2.0, 0.01
+# O-ring in a toroidal sleeve: tube centre circle radius TORUS_R about the y axis; the ring's solid
+# cross-section has radius TORUS_RHO + δ, the sleeve's annular one TORUS_RHO … TORUS_RHO_OUT.
+TORUS_R, TORUS_RHO, TORUS_RHO_OUT, TORUS_DELTA = 4.0, 1.0, 2.0, 0.01
+
+
+class Mesh:
+    """Nodes merged by position (within `tol`), elements by node labels. Coordinates within 1e-12 of
+    zero are set to zero, so that nodes on symmetry planes and on the axis lie exactly there."""
+
+    def __init__(self, dim, tol=1e-9):
+        self.dim, self.tol = dim, tol
+        self.coords, self.body, self.grid = {}, {}, {}
+        self.elements = []  # (label, body, node labels)
+        self.n_nodes, self.n_elements = {}, {}  # per body
+
+    def node(self, p, body, first):
+        p = tuple(0.0 if abs(c) < 1e-12 else c for c in p)
+        cell = tuple(int(math.floor(c / self.tol)) for c in p)
+        for off in _OFFSETS[self.dim]:  # its own cell first
+            for label in self.grid.get(tuple(c + o for c, o in zip(cell, off)) if any(off) else cell, ()):
+                if self.body[label] == body and max(abs(a - b) for a, b in zip(self.coords[label], p)) < self.tol:
+                    return label
+        label = first + self.n_nodes.get(body, 0)
+        self.n_nodes[body] = self.n_nodes.get(body, 0) + 1
+        self.coords[label], self.body[label] = p, body
+        self.grid.setdefault(cell, []).append(label)
+        return label
+
+    def element(self, body, first, labels):
+        """A 4-node quadrilateral or 8-node hexahedron, reordered to a positive Jacobian."""
+        labels = list(labels)
+        x = [self.coords[n] for n in labels]
+        if self.dim == 2:
+            area = sum(x[i][0] * x[(i + 1) % 4][1] - x[(i + 1) % 4][0] * x[i][1] for i in range(4))
+            if area < 0:
+                labels = [labels[0], labels[3], labels[2], labels[1]]
+        else:
+            d = lambda a, b: [x[b][i] - x[a][i] for i in range(3)]
+            u, v, w = d(0, 1), d(0, 3), d(0, 4)
+            vol = (u[1] * v[2] - u[2] * v[1]) * w[0] + (u[2] * v[0] - u[0] * v[2]) * w[1] + (u[0] * v[1] - u[1] * v[0]) * w[2]
+            if vol < 0:
+                labels = [labels[i] for i in (0, 3, 2, 1, 4, 7, 6, 5)]
+        label = first + self.n_elements.get(body, 0)
+        self.n_elements[body] = self.n_elements.get(body, 0) + 1
+        self.elements.append((label, body, tuple(labels)))
+
+    def faces_on(self, body, on):
+        """{face id: [element labels]} of the faces of `body` whose nodes all satisfy on(x)."""
+        faces = {}
+        table = QUAD4_FACES if self.dim == 2 else HEX8_FACES
+        for label, b, nodes in self.elements:
+            if b != body:
+                continue
+            for k, face in enumerate(table):
+                if all(on(self.coords[nodes[i]]) for i in face):
+                    faces.setdefault(k + 1, []).append(label)
+        return faces
+
+    def nodes_where(self, body, test):
+        return [n for n, x in self.coords.items() if (body is None or self.body[n] == body) and test(x)]
+
+    def deck_lines(self, etype, elsets):
+        fmt = (lambda n, x: f"{n}, {x[0]:.15g}, {x[1]:.15g}") if self.dim == 2 else \
+              (lambda n, x: f"{n}, {x[0]:.15g}, {x[1]:.15g}, {x[2]:.15g}")
+        out = ["*NODE, NSET=ALL"] + [fmt(n, self.coords[n]) for n in sorted(self.coords)]
+        for body, elset in elsets:
+            out += [f"*ELEMENT, TYPE={etype}, ELSET={elset}"]
+            out += [f"{e[0]}, " + ", ".join(map(str, e[2])) for e in self.elements if e[1] == body]
+        return out
+
+
+_OFFSETS = {2: sorted(((i, j) for i in (-1, 0, 1) for j in (-1, 0, 1)), key=any),
+            3: sorted(((i, j, k) for i in (-1, 0, 1) for j in (-1, 0, 1) for k in (-1, 0, 1)), key=any)}
+
+
+QUAD4_FACES = [(0, 1), (1, 2), (2, 3), (3, 0)]                                              # S1 … S4
+HEX8_FACES = [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]  # S1 … S6
+
+
+def surface_lines(mesh, body, name, on):
+    """*ELSET and *SURFACE lines for the faces of `body` on the surface `on`."""
+    out, refs = [], []
+    for face, elems in sorted(mesh.faces_on(body, on).items()):
+        out += [f"*ELSET, ELSET={name}_S{face}"] + lines_of(elems)
+        refs.append(f"{name}_S{face}, S{face}")
+    return out + [f"*SURFACE, NAME={name}"] + refs
+
+
+def quarter_disk(mesh, body, first_node, first_elem, centre, radius, t0, n_arc, n_layers, core=0.5):
+    """A quarter disk of `radius` about `centre` from angle t0 to t0 + π/2, meshed as a butterfly:
+    a core square (side core·radius, n_arc/2 elements a side) and n_layers rings of n_arc
+    quadrilaterals from the square's outer sides to the arc."""
+    m = n_arc // 2
+    assert 2 * m == n_arc
+    s = core * radius
+    c, sn = math.cos(t0), math.sin(t0)
+    place = lambda u, v: (centre[0] + c * u - sn * v, centre[1] + sn * u + c * v)  # local (u, v) → model
+    node = lambda u, v: mesh.node(place(u, v), body, first_node)
+    for j in range(m):
+        for i in range(m):
+            mesh.element(body, first_elem, [node(s * i / m, s * j / m), node(s * (i + 1) / m, s * j / m),
+                                             node(s * (i + 1) / m, s * (j + 1) / m), node(s * i / m, s * (j + 1) / m)])
+
+    def square_edge(k):  # the k-th point (0 … n_arc) along the square's outer sides, from the u axis
+        return (s, s * k / m) if k <= m else (s * (2 * m - k) / m, s)
+
+    def arc(k):
+        t = 0.5 * math.pi * k / n_arc
+        return (radius * math.cos(t), radius * math.sin(t)) if 0 < k < n_arc else ((radius, 0.0) if k == 0 else (0.0, radius))
+
+    def layer(k, i):
+        (u0, v0), (u1, v1) = square_edge(k), arc(k)
+        return node(u0 + (u1 - u0) * i / n_layers, v0 + (v1 - v0) * i / n_layers)
+
+    for k in range(n_arc):
+        for i in range(n_layers):
+            mesh.element(body, first_elem, [layer(k, i), layer(k, i + 1), layer(k + 1, i + 1), layer(k + 1, i)])
+
+
+def annulus(mesh, body, first_node, first_elem, centre, r0, r1, t0, t1, n_arc, n_layers):
+    """The annular sector r0 ≤ r ≤ r1, t0 ≤ t ≤ t1 about `centre`, n_arc × n_layers quadrilaterals."""
+    def node(i, j):
+        t, r = t0 + (t1 - t0) * j / n_arc, r0 + (r1 - r0) * i / n_layers
+        return mesh.node((centre[0] + r * math.cos(t), centre[1] + r * math.sin(t)), body, first_node)
+    for j in range(n_arc):
+        for i in range(n_layers):
+            mesh.element(body, first_elem, [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)])
+
+
+def smoothing_deck(out, smoothed, mesh, etype, bodies, slave, master, correction, bcs, sets):
+    """The common part of the smoothing decks: mesh, sets, material, the surface-to-surface pair
+    (smoothed or not) and a step in which the initial overclosure is resolved."""
+    params = parameter_block()
+    params[params.index('type = "NODE TO SURFACE"')] = 'type = "SURFACE TO SURFACE"'
+    out += params
+    out += mesh.deck_lines(etype, [(b, name) for b, name in bodies])
+    out += sets
+    out += [f"*SOLID SECTION, ELSET={name}, MATERIAL=STEEL" for _, name in bodies]
+    out += ["*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
+    if smoothed:
+        out += ["*SURFACE SMOOTHING, NAME=IDEAL", f"{master}, {correction}", f"{slave}, {correction}"]
+        out += contact_block(slave, master, ", GEOMETRIC CORRECTION=IDEAL")
+    else:
+        out += contact_block(slave, master)
+    out += ["*BOUNDARY"] + bcs
+    out += ["*STEP, NAME=FIT", "*STATIC", "0.5, 1.0", STEP_CONTROLS]
+    out += OUTPUT + ["*END STEP"]
+    return out
+
+
+def seat_pressure_text():
+    return ("Reference (thick-walled sphere, same material, linear elasticity on the undeformed geometry): "
+            "delta = u_socket(b) - u_ball(b + delta), u_socket(b) = p b ((1-2nu) b^3 + (1+nu) c^3/2) / (E (c^3-b^3)), "
+            f"u_ball(r) = -p (1-2nu) r / E; b = {SEAT_B:g}, c = {SEAT_C:g}, delta = {SEAT_DELTA:g}.")
+
+
+def spherical_seat_axi(level, smoothed=False):
+    """A solid ball (radius b + δ) in a spherical socket r ∈ [b, c], axisymmetric (CAX4, the r–z plane
+    x = r, y = z), a half meridian: the quarter disk and quarter annulus 0 ≤ polar angle from the
+    equator ≤ π/2, U2 = 0 on the equator y = 0, U1 = 0 on the axis x = 0. Ball: butterfly, n_in
+    elements along the arc; socket: n_out along its inner arc (non-matching). Slave: the socket's
+    inner surface; master: the ball's. The overclosure δ is resolved in the first increment."""
+    scale = 2 ** (level - 1)
+    n_in, n_out, nr_in, nr_out = 24 * scale, 34 * scale, 4 * scale, 8 * scale
+    b_in = SEAT_B + SEAT_DELTA
+    out = header(f"Spherical seat: a ball in a spherical socket with radial interference delta = {SEAT_DELTA:g}, "
+                 f"axisymmetric, a half meridian, non-matching meshes ({n_in} and {n_out} elements along the arc)",
+                 seat_pressure_text(), level, SEAT_B * math.pi / 2 / n_out)
+    if smoothed:
+        out[1:1] = ["** Smoothed: ball and socket corrected toward spheres about the origin ([AX] 38.1.3)."]
+    mesh = Mesh(2)
+    quarter_disk(mesh, 1, 1, 1, (0.0, 0.0), b_in, 0.0, n_in, nr_in)
+    annulus(mesh, 2, 100001, 100001, (0.0, 0.0), SEAT_B, SEAT_C, 0.0, 0.5 * math.pi, n_out, nr_out)
+    on_ball = lambda x: abs(math.hypot(x[0], x[1]) - b_in) < 1e-9
+    on_socket = lambda x: abs(math.hypot(x[0], x[1]) - SEAT_B) < 1e-9
+    sets = surface_lines(mesh, 1, "BALL_S", on_ball) + surface_lines(mesh, 2, "SOCKET_S", on_socket)
+    sets += ["*NSET, NSET=AXIS"] + lines_of(mesh.nodes_where(None, lambda x: x[0] == 0.0))
+    sets += ["*NSET, NSET=BALL_EQUATOR"] + lines_of(mesh.nodes_where(1, lambda x: x[1] == 0.0))
+    sets += ["*NSET, NSET=SOCKET_EQUATOR"] + lines_of(mesh.nodes_where(2, lambda x: x[1] == 0.0))
+    return smoothing_deck(out, smoothed, mesh, "CAX4", [(1, "BALL"), (2, "SOCKET")], "SOCKET_S", "BALL_S",
+                          "SPHERICAL, 0., 0., 0.", ["AXIS, 1", "BALL_EQUATOR, 2", "SOCKET_EQUATOR, 2"], sets)
+
+
+def spherical_seat_3d(level, smoothed=False):
+    """The spherical seat as a 3D octant (x, y, z ≥ 0; C3D8), symmetry U_i = 0 on each plane x_i = 0.
+    Both bodies are cube-sphere meshes: three patches over the octant's sphere, each the central
+    projection of a face of the cube [0, 1]³ with equal angles between grid lines; the ball has a
+    core cube of side 0.4 (b + δ) joined to its sphere by layers. m_in and m_out elements along a
+    patch edge (2 m along a quarter great circle): non-matching."""
+    scale = 2 ** (level - 1)
+    m_in, m_out, nr_in, nr_out = 6 * scale, 8 * scale, 3 * scale, 8 * scale
+    b_in = SEAT_B + SEAT_DELTA
+    out = header(f"Spherical seat: a ball in a spherical socket with radial interference delta = {SEAT_DELTA:g}, "
+                 f"3D octant, non-matching meshes ({2 * m_in} and {2 * m_out} elements along a quarter great circle)",
+                 seat_pressure_text(), level, SEAT_B * math.pi / 4 / m_out)
+    if smoothed:
+        out[1:1] = ["** Smoothed: ball and socket corrected toward spheres about the origin ([AX] 38.1.3)."]
+    mesh = Mesh(3)
+
+    def direction(a, j, k, m):  # the unit vector of patch a (normal to x_a = 1) at grid point (j, k)
+        t = lambda i: 1.0 if i == m else math.tan(0.25 * math.pi * i / m)
+        v = [0.0, 0.0, 0.0]
+        v[a], v[(a + 1) % 3], v[(a + 2) % 3] = 1.0, t(j), t(k)
+        n = math.sqrt(sum(c * c for c in v))
+        return [c / n for c in v]
+
+    def cube_face(a, j, k, m, side):
+        v = [0.0, 0.0, 0.0]
+        v[a], v[(a + 1) % 3], v[(a + 2) % 3] = side, side * j / m, side * k / m
+        return v
+
+    hexa = lambda f, i, j, k: [f(i, j, k), f(i, j + 1, k), f(i, j + 1, k + 1), f(i, j, k + 1),
+                               f(i + 1, j, k), f(i + 1, j + 1, k), f(i + 1, j + 1, k + 1), f(i + 1, j, k + 1)]
+    # ball: core cube, then the layers from its outer faces to the sphere
+    side = 0.4 * b_in
+    core = lambda i, j, k: mesh.node((side * i / m_in, side * j / m_in, side * k / m_in), 1, 1)
+    for i in range(m_in):
+        for j in range(m_in):
+            for k in range(m_in):
+                mesh.element(1, 1, [core(i, j, k), core(i + 1, j, k), core(i + 1, j + 1, k), core(i, j + 1, k),
+                                    core(i, j, k + 1), core(i + 1, j, k + 1), core(i + 1, j + 1, k + 1), core(i, j + 1, k + 1)])
+    for a in range(3):
+        def ball(i, j, k, a=a):
+            p0, p1 = cube_face(a, j, k, m_in, side), [b_in * c for c in direction(a, j, k, m_in)]
+            return mesh.node(tuple(u + (v - u) * i / nr_in for u, v in zip(p0, p1)), 1, 1)
+        for i in range(nr_in):
+            for j in range(m_in):
+                for k in range(m_in):
+                    mesh.element(1, 1, hexa(ball, i, j, k))
+        def socket(i, j, k, a=a):
+            r = SEAT_B + (SEAT_C - SEAT_B) * i / nr_out
+            return mesh.node(tuple(r * c for c in direction(a, j, k, m_out)), 2, 1000001)
+        for i in range(nr_out):
+            for j in range(m_out):
+                for k in range(m_out):
+                    mesh.element(2, 1000001, hexa(socket, i, j, k))
+    on_ball = lambda x: abs(math.sqrt(sum(c * c for c in x)) - b_in) < 1e-9
+    on_socket = lambda x: abs(math.sqrt(sum(c * c for c in x)) - SEAT_B) < 1e-9
+    sets = surface_lines(mesh, 1, "BALL_S", on_ball) + surface_lines(mesh, 2, "SOCKET_S", on_socket)
+    for i, name in enumerate("XYZ"):
+        sets += [f"*NSET, NSET={name}SYM"] + lines_of(mesh.nodes_where(None, lambda x, i=i: x[i] == 0.0))
+    sets += ["*NSET, NSET=BALL_EQUATOR"] + lines_of(mesh.nodes_where(1, lambda x: x[1] == 0.0))
+    sets += ["*NSET, NSET=SOCKET_EQUATOR"] + lines_of(mesh.nodes_where(2, lambda x: x[1] == 0.0))
+    return smoothing_deck(out, smoothed, mesh, "C3D8", [(1, "BALL"), (2, "SOCKET")], "SOCKET_S", "BALL_S",
+                          "SPHERICAL, 0., 0., 0.", ["XSYM, 1", "YSYM, 2", "ZSYM, 3"], sets)
+
+
+def oring_axi(level, smoothed=False):
+    """An O-ring in a toroidal sleeve, axisymmetric (CAX4): the ring's solid circular cross-section
+    of radius ρ + δ about (R, 0) in a sleeve of annular cross-section ρ … ρ_out about the same
+    centre, half the cross-section (y ≥ 0, U2 = 0 on y = 0). The idealised surfaces are circles
+    about (R, 0) in the r–z plane: the section of the torus TOROIDAL, axis (0,0,0)–(0,1,0), R.
+    Ring: two butterfly quarters, n_in elements along the half arc; sleeve: n_out (non-matching).
+    Slave: the sleeve's inner surface; master: the ring's. No closed form (the hoop stiffness
+    varies around the cross-section): the reference is the same deck on a finer mesh."""
+    scale = 2 ** (level - 1)
+    n_in, n_out, nr_in, nr_out = 48 * scale, 68 * scale, 4 * scale, 8 * scale
+    rho_in = TORUS_RHO + TORUS_DELTA
+    out = header(f"O-ring in a toroidal sleeve: tube centre at R = {TORUS_R:g} from the axis, ring cross-section "
+                 f"radius {rho_in:g}, sleeve {TORUS_RHO:g} ... {TORUS_RHO_OUT:g} (radial interference delta = "
+                 f"{TORUS_DELTA:g}), axisymmetric, half cross-section, non-matching meshes ({n_in} and {n_out} "
+                 "elements along the half arc)",
+                 "Reference: no closed form; the same deck at a finer level (gen_contact_verification.py --level).",
+                 level, TORUS_RHO * math.pi / n_out)
+    if smoothed:
+        out[1:1] = ["** Smoothed: ring and sleeve corrected toward the torus about the y axis, R = "
+                    f"{TORUS_R:g} ([AX] 38.1.3)."]
+    mesh = Mesh(2)
+    centre = (TORUS_R, 0.0)
+    quarter_disk(mesh, 1, 1, 1, centre, rho_in, 0.0, n_in // 2, nr_in)
+    quarter_disk(mesh, 1, 1, 1, centre, rho_in, 0.5 * math.pi, n_in // 2, nr_in)
+    annulus(mesh, 2, 100001, 100001, centre, TORUS_RHO, TORUS_RHO_OUT, 0.0, math.pi, n_out, nr_out)
+    dist = lambda x: math.hypot(x[0] - TORUS_R, x[1])
+    sets = surface_lines(mesh, 1, "RING_S", lambda x: abs(dist(x) - rho_in) < 1e-9)
+    sets += surface_lines(mesh, 2, "SLEEVE_S", lambda x: abs(dist(x) - TORUS_RHO) < 1e-9)
+    sets += ["*NSET, NSET=RING_PLANE"] + lines_of(mesh.nodes_where(1, lambda x: x[1] == 0.0))
+    sets += ["*NSET, NSET=SLEEVE_PLANE"] + lines_of(mesh.nodes_where(2, lambda x: x[1] == 0.0))
+    return smoothing_deck(out, smoothed, mesh, "CAX4", [(1, "RING"), (2, "SLEEVE")], "SLEEVE_S", "RING_S",
+                          f"TOROIDAL, 0., 0., 0., 0., 1., 0., {TORUS_R:g}", ["RING_PLANE, 2", "SLEEVE_PLANE, 2"], sets)
+
+
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25), "sphere_3d": sphere_3d,
          "interference_2d": interference_2d,
-         "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True)}
+         "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
+         "spherical_seat_axi": spherical_seat_axi,
+         "spherical_seat_axi_smoothed": lambda level: spherical_seat_axi(level, smoothed=True),
+         "spherical_seat_3d": spherical_seat_3d,
+         "spherical_seat_3d_smoothed": lambda level: spherical_seat_3d(level, smoothed=True),
+         "oring_axi": oring_axi,
+         "oring_axi_smoothed": lambda level: oring_axi(level, smoothed=True)}
 
 
 def main():

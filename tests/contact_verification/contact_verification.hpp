@@ -2,7 +2,7 @@
 // Helpers of the contact verification tests: run a deck of decks/contact_verification/ with
 // *PARAMETER overrides (the enforcement method, its scale factor and tolerance), keep its frames,
 // and reduce the last frame to the figures the analytic references speak about. The references
-// (Johnson §4.2 for Hertz, Lamé for the interference fit) are here; the tolerances are at the
+// (Johnson §4.2 for Hertz, Lamé for the interference fit and the spherical seat) are here; the tolerances are at the
 // assertions (shared/STYLE.md §11). bench/contact_trade/figures.py computes the same figures from
 // a results file.
 #include <gtest/gtest.h>
@@ -38,6 +38,29 @@ constexpr double kRingA = 0.5, kRingB = 1.0, kRingC = 2.0, kDelta = 0.01;
 inline double lame_pressure() {
   const double ep = kE / (1.0 - kNu * kNu), a = kRingA, b = kRingB + 0.5 * kDelta, c = kRingC;
   return ep * kDelta * (c * c - b * b) * (b * b - a * a) / (2.0 * b * b * b * (c * c - a * a));
+}
+
+// The smoothing decks (issue 5): a ball of radius b + δ in a socket b ≤ r ≤ c; an O-ring of tube
+// radius ρ + δ about the circle of radius R (about the y axis) in a sleeve ρ ≤ s ≤ ρ_out.
+constexpr double kSeatB = 1.0, kSeatC = 2.0, kSeatDelta = 0.01;
+constexpr double kTorusR = 4.0, kTorusRho = 1.0, kTorusDelta = 0.01;
+
+/// Radial displacement of the socket's inner surface r = b under an internal pressure p: the
+/// thick-walled sphere (Lamé), u(r) = p b³/(E (c³ − b³)) [(1 − 2ν) r + (1 + ν) c³/(2 r²)].
+inline double seat_socket_displacement(double p) {
+  const double b = kSeatB, c = kSeatC, b3 = b * b * b, c3 = c * c * c;
+  return p * b3 / (kE * (c3 - b3)) * ((1.0 - 2.0 * kNu) * b + (1.0 + kNu) * c3 / (2.0 * b * b));
+}
+
+/// The spherical seat's contact pressure, same material, linear elasticity on the undeformed
+/// geometry: the interference is taken up by the socket at r = b and the ball (under an external
+/// pressure p, u(r) = −p (1 − 2ν) r / E) at r = b + δ:
+///   δ = u_socket(b) + p (1 − 2ν)(b + δ) / E.
+/// (Evaluating both at the middle of the overlap, as lame_pressure() does for the rings, gives
+/// p = 2 E δ (c³ − b³) / (3 (1 − ν) b c³) at b + δ/2: 0.38 % lower.)
+inline double seat_pressure() {
+  const double per_unit_p = seat_socket_displacement(1.0) + (1.0 - 2.0 * kNu) * (kSeatB + kSeatDelta) / kE;
+  return kSeatDelta / per_unit_p;
 }
 
 inline std::string deck_path(const std::string& name) {
