@@ -106,12 +106,16 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     out.worst_dof = worst;
     out.iterations = k;
     // q̃: the force magnitude averaged over the step's converged increments and this one, where
-    // this one counts with the largest q of its iterations. A rigid-body move ends with nearly
-    // no force at all; measured against its own round-off it would never converge, measured
-    // against the forces its first iteration met, it does.
-    increment_force = std::max(increment_force, q_now);
-    out.average_force = increment_force;
-    const double q = (ctx.force_sum + increment_force) / (ctx.force_count + 1);
+    // this one counts with the largest element-and-load q of its iterations (a rigid-body move
+    // ends with nearly no force at all; measured against its own round-off it would never
+    // converge, against the forces its first iteration met, it does) or this iteration's q with
+    // the contact forces, if larger. Contact forces count only in the iteration that has them:
+    // a stiff penalty's first-iteration spike (an overclosure times 1000 k_e) would otherwise
+    // loosen the test for the whole increment and accept a residual the size of a node's force.
+    const double q_without_contact = ctx.contact ? average_force(asm_result, state.f_ext, 0.0, 0) : q_now;
+    increment_force = std::max(increment_force, q_without_contact);
+    out.average_force = std::max(increment_force, q_now);
+    const double q = (ctx.force_sum + out.average_force) / (ctx.force_count + 1);
     double max_correction = 0.0;
     if (k > 0 && n_eq > 0)
       max_correction = *std::max_element(du.begin(), du.begin() + static_cast<std::ptrdiff_t>(n_eq),
