@@ -65,6 +65,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
   std::vector<double> history;  // largest residual per iteration
   LinearSolver* solver = &ctx.cholmod;
   double increment_force = 0.0;
+  bool status_changed_at_start = false;
 
   // A new increment commits the friction history of the converged state it starts from.
   if (ctx.contact) ctx.contact->begin_attempt(state.contact, ctx.step_number, ctx.increment, u_start);
@@ -73,7 +74,11 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     ContactIteration contact;
     if (ctx.contact) {
       contact = ctx.contact->update(state.u, state.contact, ctx.assembler);
-      if (contact.status_changes > 0) ++out.severe_iterations;
+      // A severe discontinuity iteration: one in which a contact status changed. Changes found
+      // before the first solve (the start of the increment) belong to the first iteration, so
+      // SEVERE never exceeds TOTAL in the .sta.
+      if (k == 0) status_changed_at_start = contact.status_changes > 0;
+      else if (contact.status_changes > 0 || (k == 1 && status_changed_at_start)) ++out.severe_iterations;
     }
     const std::size_t n_sys = static_cast<std::size_t>(ctx.assembler.n_equations());
     r.assign(n_sys, 0.0);
