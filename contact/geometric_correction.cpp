@@ -396,6 +396,21 @@ CorrectedPoint SurfaceCorrections::project(const Facet& f, std::array<double, 2>
   return {g.x, g.n, false};
 }
 
+void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
+                        const Vec3& xs, int dim, Projection& p) {
+  if (master.empty() || p.facet < 0) return;
+  std::array<double, 2> xi = p.xi;
+  const CorrectedPoint m = master.project(facets[static_cast<std::size_t>(p.facet)], xi, x, xs);
+  if (!m.corrected) return;
+  p.xi = xi;
+  p.x_master = m.x;
+  p.normal = m.normal;
+  const Vec3 d = sub(xs, m.x);
+  p.gap = dot(d, m.normal);
+  p.distance = norm(d);
+  tangent_basis(p.normal, dim, p.t1, p.t2);
+}
+
 std::vector<const model::GeometricCorrection*> corrections_for(const model::Model& m, std::string_view surface,
                                                                const model::ContactPair* pair) {
   const std::vector<model::GeometricCorrection>* lines = &m.general_contact.geometric_corrections;

@@ -80,6 +80,7 @@
 
 #include "contact/contact_surface.hpp"
 #include "contact/facet.hpp"
+#include "contact/projection.hpp"
 #include "model/model.hpp"
 
 namespace inpact::contact {
@@ -188,6 +189,13 @@ class SurfaceCorrections {
  private:
   std::vector<SurfaceCorrection> list_;
 };
+
+/// Moves projection `p` of the slave point `xs` (a faceted closest point on master facet
+/// `facets[p.facet]`) onto the master's idealised surface: ξ refined by `master.project()`, the
+/// idealised point, normal and tangents, gap = (xs − x̃_m)·ñ. Unchanged where no correction
+/// applies. `dim`: 2 or 3 (the tangent basis). Both discretisations measure this way.
+void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
+                        const Vec3& xs, int dim, Projection& p);
 
 /// The geometric-correction data lines that apply to the contact surface `surface` (a surface
 /// of `m`; empty: general contact's all-inclusive exterior surface, to which every assignment

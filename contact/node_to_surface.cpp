@@ -74,17 +74,7 @@ void NodeToSurfacePair::correct(std::span<const Vec3> x, std::size_t slave, Proj
     for (int a = 0; a < sf.n_nodes; ++a)
       if (sf.nodes[a] == node) xs = slave_correction_.correct(sf, facet_node_param(sf.shape, a), x).x;
   }
-  const Facet& f = master_.facets()[static_cast<std::size_t>(p.facet)];
-  std::array<double, 2> xi = p.xi;
-  const CorrectedPoint m = master_correction_.project(f, xi, x, xs);
-  if (!m.corrected) return;
-  p.xi = xi;
-  p.x_master = m.x;
-  p.normal = m.normal;
-  const Vec3 d = sub(xs, m.x);
-  p.gap = dot(d, m.normal);
-  p.distance = norm(d);
-  tangent_basis(p.normal, dim_, p.t1, p.t2);
+  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p);
 }
 
 void NodeToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {

@@ -145,18 +145,7 @@ void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, S
 }
 
 void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const {
-  if (master_correction_.empty()) return;
-  const Facet& f = master_.facets()[static_cast<std::size_t>(p.facet)];
-  std::array<double, 2> xi = p.xi;
-  const CorrectedPoint m = master_correction_.project(f, xi, x, xs);
-  if (!m.corrected) return;
-  p.xi = xi;
-  p.x_master = m.x;
-  p.normal = m.normal;
-  const Vec3 d = sub(xs, m.x);
-  p.gap = dot(d, m.normal);
-  p.distance = norm(d);
-  tangent_basis(p.normal, dim_, p.t1, p.t2);
+  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p);
 }
 
 void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {

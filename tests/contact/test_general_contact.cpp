@@ -15,13 +15,6 @@
 namespace inpact::test {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 /// The general-contact patch deck with `from` replaced by `to`.
 std::string general_deck(const std::string& from = "", const std::string& to = "") {
   std::string s = read_text(contact_deck("patch_2d_general.inp"));

@@ -13,13 +13,6 @@
 namespace inpact::test {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 bool has_message(const Run& r, const std::string& needle) {
   for (const auto& m : r.capture.messages)
     if (m.find(needle) != std::string::npos) return true;
