@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "assembler.hpp"
 #include "elements/element_kernel.hpp"
 
 namespace inpact::solver {
@@ -193,17 +194,16 @@ OutputTiming::OutputTiming(const OutputRequest& r, double period)
     : frequency_(r.frequency), n_interval_(r.number_interval.value_or(0)), time_marks_(r.time_marks),
       period_(period), tol_(1e-9 * period) {}
 
-bool OutputTiming::due(int increment, double t, bool last) {
-  if (n_interval_ > 0) {
-    bool reached = false;
-    while (next_ <= n_interval_ && t >= mark(next_) - tol_) {
-      reached = true;
-      ++next_;
-    }
-    return reached || last;
-  }
+bool OutputTiming::would_be_due(int increment, double t, bool last) const {
+  if (n_interval_ > 0) return last || (next_ <= n_interval_ && t >= mark(next_) - tol_);
   if (frequency_ <= 0) return false;
   return last || increment % frequency_ == 0;
+}
+
+bool OutputTiming::due(int increment, double t, bool last) {
+  const bool is_due = would_be_due(increment, t, last);
+  while (n_interval_ > 0 && next_ <= n_interval_ && t >= mark(next_) - tol_) ++next_;
+  return is_due;
 }
 
 std::optional<double> OutputTiming::next_mark(double t) const {
@@ -290,6 +290,19 @@ OutputDue StepOutput::due(int increment, double t, bool last) {
   return d;
 }
 
+bool StepOutput::points_due(int increment, double t, bool last) const {
+  for (std::size_t i = 0; i < field_.size(); ++i) {
+    const auto& v = field_[i].variables;
+    const bool element_key = std::find(v.begin(), v.end(), "S") != v.end() || std::find(v.begin(), v.end(), "E") != v.end();
+    if (element_key && field_timing_[i].would_be_due(increment, t, last)) return true;
+  }
+  for (std::size_t i = 0; i < print_.size(); ++i)
+    if (domain_of(print_[i].request.kind) == Domain::Element && !print_[i].variables.empty() &&
+        print_timing_[i].would_be_due(increment, t, last))
+      return true;
+  return false;
+}
+
 double von_mises(std::span<const double, 6> s) {
   const double d1 = s[0] - s[1], d2 = s[1] - s[2], d3 = s[2] - s[0];
   return std::sqrt(0.5 * (d1 * d1 + d2 * d2 + d3 * d3) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
@@ -299,11 +312,13 @@ double von_mises(std::span<const double, 6> s) {
 
 namespace {
 
-/// Element point results, computed on first use for the elements a due request covers.
+/// Element point results: those the assembly kept at this state, or else computed on first use
+/// for the elements a due request covers.
 class PointCache {
  public:
-  PointCache(const AnalysisModel& am, std::span<const double> u, bool nlgeom, std::span<const double> delta_t)
-      : am_(am), u_(u), delta_t_(delta_t), points_(am.model->mesh.elements.size()),
+  PointCache(const AnalysisModel& am, std::span<const double> u, bool nlgeom, std::span<const double> delta_t,
+             const ElementPoints* kept)
+      : am_(am), u_(u), delta_t_(delta_t), kept_(kept), points_(am.model->mesh.elements.size()),
         have_(am.model->mesh.elements.size(), 0) {
     request_.stiffness = false;
     request_.internal_force = false;
@@ -311,7 +326,9 @@ class PointCache {
     request_.nlgeom = nlgeom;
   }
 
-  const std::vector<elements::PointResult>& of(std::size_t el) {
+  std::span<const elements::PointResult> of(std::size_t el) {
+    if (kept_)
+      if (auto p = kept_->of(el); !p.empty()) return p;
     if (have_[el]) return points_[el];
     const ElementSetup& setup = am_.elements[el];
     std::vector<double> u_el, dt_el;
@@ -329,6 +346,7 @@ class PointCache {
  private:
   const AnalysisModel& am_;
   std::span<const double> u_, delta_t_;
+  const ElementPoints* kept_;
   elements::ElementRequest request_;
   std::vector<std::vector<elements::PointResult>> points_;
   std::vector<char> have_;
@@ -485,7 +503,7 @@ double point_value(const elements::PointResult& p, const Column& c) {
 
 /// POSITION=CENTROIDAL: the volume-weighted average of the integration points (exact for
 /// one-point elements and for fields linear over the element).
-elements::PointResult centroid_of(const std::vector<elements::PointResult>& points) {
+elements::PointResult centroid_of(std::span<const elements::PointResult> points) {
   elements::PointResult c{};
   double total = 0.0;
   for (const auto& p : points) total += p.volume;
@@ -637,12 +655,13 @@ FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const
 
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
-                            std::span<const double> delta_t, const ContactResults* contact) {
+                            std::span<const double> delta_t, const ContactResults* contact,
+                            const ElementPoints* points) {
   OutputValues out;
   if (contact)
     for (const std::string key : kContactKeys)
       if (key_due(output, due, key)) out.fields.push_back(contact_field(am, output, key, *contact));
-  PointCache cache(am, u, nlgeom, delta_t);
+  PointCache cache(am, u, nlgeom, delta_t, points);
   for (const std::string key : kFieldKeys) {
     if (!key_due(output, due, key)) continue;
     const KeyRegion where = key_region(output, key);
