@@ -390,11 +390,13 @@ bool key_due(const StepOutput& output, const OutputDue& due, const std::string& 
 
 /// A nodal value: U, RF or COORD (current coordinates under NLGEOM, original otherwise, as
 /// Abaqus's COORD), component c.
-double nodal_value(const AnalysisModel& am, const std::string& key, std::size_t row, int c,
-                   std::span<const double> u, std::span<const double> rf, bool nlgeom) {
+enum class NodalKey : std::uint8_t { U, RF, Coord };
+
+double nodal_value(const AnalysisModel& am, NodalKey key, std::size_t row, int c, std::span<const double> u,
+                   std::span<const double> rf, bool nlgeom) {
   const std::size_t dof = row * am.dim + c;
-  if (key == "U") return u[dof];
-  if (key == "RF") return rf[dof];
+  if (key == NodalKey::U) return u[dof];
+  if (key == NodalKey::RF) return rf[dof];
   return am.model->mesh.nodes.coords[row][c] + (nlgeom ? u[dof] : 0.0);
 }
 
@@ -405,8 +407,9 @@ FieldData nodal_field(const AnalysisModel& am, const std::string& key, const Key
   f.position = Position::Nodal;
   f.component_labels = vector_labels(key, am.dim);
   f.region = where.region;
+  const NodalKey k = key == "U" ? NodalKey::U : key == "RF" ? NodalKey::RF : NodalKey::Coord;
   auto add = [&](std::size_t row) {
-    for (int c = 0; c < am.dim; ++c) f.values.push_back(nodal_value(am, key, row, c, u, rf, nlgeom));
+    for (int c = 0; c < am.dim; ++c) f.values.push_back(nodal_value(am, k, row, c, u, rf, nlgeom));
   };
   if (where.whole) {
     f.nodes.resize(am.n_nodes());
@@ -432,14 +435,15 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
   f.position = Position::IntegrationPoint;
   f.component_labels = tensor_labels(key, am.dim);
   f.region = where.region;
+  const bool stress = key == "S";
   auto add = [&](std::size_t el) {
-    const auto& points = cache.of(el);
+    const auto points = cache.of(el);
     for (std::size_t p = 0; p < points.size(); ++p) {
       f.elements.push_back(elements.labels[el]);
       f.ip.push_back(static_cast<std::int32_t>(p + 1));
       if (with_instance) f.instance.push_back(elements.instance[el]);
-      const auto& v = key == "S" ? points[p].stress : points[p].strain;
-      f.values.insert(f.values.end(), v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n_comp));
+      const auto& v = stress ? points[p].stress : points[p].strain;
+      for (std::size_t c = 0; c < n_comp; ++c) f.values.push_back(v[c]);
     }
   };
   if (where.whole)
@@ -480,7 +484,9 @@ PrintTable node_table(const AnalysisModel& am, const ActiveRequest& a, std::span
   auto add = [&](std::size_t row) {
     t.labels.push_back(am.model->mesh.nodes.labels[row]);
     for (const Column& c : cols) {
-      const char* key = c.source == Column::Source::U ? "U" : c.source == Column::Source::RF ? "RF" : "COORD";
+      const NodalKey key = c.source == Column::Source::U    ? NodalKey::U
+                           : c.source == Column::Source::RF ? NodalKey::RF
+                                                            : NodalKey::Coord;
       t.values.push_back(nodal_value(am, key, row, c.component, u, rf, nlgeom));
     }
   };
