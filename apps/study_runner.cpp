@@ -190,6 +190,7 @@ std::map<std::string, std::string> collect_values(const fs::path& h5, const std:
   io::ReadResultsOptions read;
   for (const auto& s : specs) read.data_for.insert(parse_collect(s).var);  // only these fields' values
   read.with_data = !read.data_for.empty();
+  read.names = false;  // values by row: no node, element or location names
   const io::ResultsFile r = io::read_results(h5, read);
   std::map<std::string, std::string> v;
   v["increments"] = std::to_string(r.totals.increments);

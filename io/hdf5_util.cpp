@@ -73,13 +73,7 @@ bool Context::exists(hid_t parent, const std::string& name) const {
   return H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0;
 }
 
-namespace {
-
-/// Transfer properties of every write: a 64 KiB type-conversion buffer instead of HDF5's 1 MiB.
-/// HDF5 allocates that buffer zeroed for each write that converts (variable-length strings, the
-/// status rows into their packed file type): 1 MiB to clear and page in per write, 2 M
-/// instructions for one row of the status table.
-hid_t write_plist() {
+hid_t transfer_plist() {
   static const hid_t dxpl = [] {
     const hid_t p = H5Pcreate(H5P_DATASET_XFER);
     H5Pset_buffer(p, 64 * 1024, nullptr, nullptr);
@@ -87,8 +81,6 @@ hid_t write_plist() {
   }();
   return dxpl;
 }
-
-}  // namespace
 
 void Context::write_dataset(hid_t parent, const std::string& name, hid_t mem_type,
                             const std::vector<hsize_t>& dims, const void* data) const {
@@ -98,7 +90,7 @@ void Context::write_dataset(hid_t parent, const std::string& name, hid_t mem_typ
               "cannot create dataset '" + name + "'"));
   const bool empty = std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
   if (!empty)
-    check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, write_plist(), data), "cannot write dataset '" + name + "'");
+    check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, transfer_plist(), data), "cannot write dataset '" + name + "'");
 }
 
 void Context::write_strings(hid_t parent, const std::string& name, const std::vector<std::string>& values) const {
@@ -159,7 +151,7 @@ void Context::write_rows(hid_t dataset, hid_t mem_type, hsize_t row, hsize_t n, 
   for (int i = 0; i < rank; ++i) n_values *= count[i];
   if (n_values == 0) return;
   Id mem_space(check(H5Screate_simple(rank, count, nullptr), "cannot create memory dataspace"));
-  check(H5Dwrite(dataset, mem_type, mem_space, file_space, write_plist(), data), "cannot write rows");
+  check(H5Dwrite(dataset, mem_type, mem_space, file_space, transfer_plist(), data), "cannot write rows");
 }
 
 Id Context::create_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) const {
