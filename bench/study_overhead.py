@@ -6,7 +6,9 @@ with -j 2, both cores busy. Each case's overhead beyond the analysis is measured
 as medians of repeated runs:
   start      `inpact --version`: exec, dynamic libraries, CLI set-up
   read       `inpact check DECK` minus start: deck read + validation (+ the model summary)
-  write      `inpact run DECK` minus the same run with no *OUTPUT requests (results write)
+  write      `inpact run DECK` minus the same run with its field output switched off
+             (*OUTPUT, FIELD, FREQUENCY=0): computing and writing the frames. (A deck with no
+             *OUTPUT at all is no baseline: it gets Abaqus's preselected output, more fields.)
   dispatch   the study's wall time per case over what the cases take (fork/exec, waitpid,
              case.result, the table): 2 × study wall / 64 − mean case wall
 solve = run − start − read − write. Writes bench/results/study_overhead.md.
@@ -21,7 +23,7 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build-study")
+build = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "build-study")
 n_cases = int(sys.argv[2]) if len(sys.argv) > 2 else 64
 inpact = os.path.join(build, "apps", "inpact")
 work = os.path.join(build, "bench-study")
@@ -31,19 +33,28 @@ deck = os.path.join(work, "contact.inp")
 subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck], check=True)
 text = open(deck).read()
 noout = os.path.join(work, "contact_noout.inp")
-open(noout, "w").write(text[:text.index("*OUTPUT, FIELD")] + "*END STEP\n")
+open(noout, "w").write(text[:text.index("*OUTPUT, FIELD")] + "*OUTPUT, FIELD, FREQUENCY=0\n*NODE OUTPUT\nU\n*END STEP\n")
 
 
-def timed(args, repeat):
-    times = []
+def once(args):
+    t0 = time.perf_counter()
+    subprocess.run(args, cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    return time.perf_counter() - t0
+
+
+def paired(a, b, repeat):
+    """Medians of a's time and of (a − b), a and b run alternately: a difference of a few
+    milliseconds survives the load of other jobs better than two separate medians."""
+    ta, diff = [], []
     for _ in range(repeat):
-        t0 = time.perf_counter()
-        subprocess.run(args, cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+        x, y = once(a), once(b)
+        ta.append(x)
+        diff.append(x - y)
+    return statistics.median(ta), statistics.median(diff)
 
 
 # The study first: both cores busy, as the cases of a real study.
+load_before = os.getloadavg()[0]
 study_dir = os.path.join(work, "S")
 subprocess.run(["rm", "-rf", study_dir], check=True)
 loads = ",".join(f"{5 + 0.25 * i:g}" for i in range(n_cases))
@@ -57,12 +68,10 @@ mean_case = statistics.mean(walls)
 dispatch = max(0.0, 2 * study_wall / n_cases - mean_case)
 
 # The parts of one case, on one otherwise idle core each (medians).
-start = timed([inpact, "--version"], 15)
-check = timed([inpact, "check", deck], 7)
-run = timed([inpact, "run", deck, "-q", "-j", "full"], 5)
-run_noout = timed([inpact, "run", noout, "-q", "-j", "noout"], 5)
-read = max(0.0, check - start)
-write = max(0.0, run - run_noout)
+start = statistics.median(once([inpact, "--version"]) for _ in range(41))
+check, read = paired([inpact, "check", deck], [inpact, "--version"], 31)
+run, write = paired([inpact, "run", deck, "-q", "-j", "full"], [inpact, "run", noout, "-q", "-j", "noout"], 15)
+read, write = max(0.0, read), max(0.0, write)
 solve = run - start - read - write
 overhead = start + read + write + dispatch
 h5_size = os.path.getsize(os.path.join(work, "full.h5"))
@@ -73,13 +82,13 @@ lines = [
     "",
     f"Deck: bench/study_overhead_deck.py ({n_elem} CPE4 elements, penalty contact, one step in 4 increments);",
     f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
-    "Medians of repeated runs; `bench/study_overhead.py` writes this file.",
+    "Medians of repeated runs (read and write: medians of paired differences); `bench/study_overhead.py` writes this file.",
     "",
     "| part | seconds per case | % of solve |",
     "|---|---|---|",
 ]
 for name, t in [("process start (`inpact --version`)", start), ("deck read + validation (`check` − start)", read),
-                ("results write (run − run without *OUTPUT)", write), ("study dispatch (2·wall/N − mean case)", dispatch)]:
+                ("results write (run − run with FREQUENCY=0)", write), ("study dispatch (2·wall/N − mean case)", dispatch)]:
     lines.append(f"| {name} | {t:.4f} | {100 * t / solve:.1f} |")
 lines += [
     f"| **overhead** | **{overhead:.4f}** | **{100 * overhead / solve:.1f}** |",
@@ -87,7 +96,8 @@ lines += [
     "",
     f"Study: {len(walls)}/{n_cases} completed in {study_wall:.2f} s wall; mean case wall {mean_case:.3f} s "
     f"(both cores busy) against {run:.3f} s for one run alone.",
-    f"Load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (other jobs make every part noisy).",
+    f"Load average {load_before:.1f} at the start, {os.getloadavg()[0]:.1f} at the end, on {os.cpu_count()} cores "
+    "(other jobs make every part noisy).",
 ]
 os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
 out = os.path.join(ROOT, "bench", "results", "study_overhead.md")
