@@ -36,9 +36,15 @@ noout = os.path.join(work, "contact_noout.inp")
 open(noout, "w").write(text[:text.index("*OUTPUT, FIELD")] + "*OUTPUT, FIELD, FREQUENCY=0\n*NODE OUTPUT\nU\n*END STEP\n")
 
 
+# The environment of a study's case (apps/study_runner.cpp): one BLAS and OpenMP thread.
+case_env = dict(os.environ)
+case_env.setdefault("OPENBLAS_NUM_THREADS", "1")
+case_env.setdefault("OMP_NUM_THREADS", "1")
+
+
 def once(args):
     t0 = time.perf_counter()
-    subprocess.run(args, cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    subprocess.run(args, cwd=work, env=case_env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
     return time.perf_counter() - t0
 
 
@@ -67,7 +73,7 @@ walls = [float(r["wall_time_s"]) for r in rows if r["status"] == "completed"]
 mean_case = statistics.mean(walls)
 dispatch = max(0.0, 2 * study_wall / n_cases - mean_case)
 
-# The parts of one case, on one otherwise idle core each (medians).
+# The parts of one case, run alone in the environment of a case (medians).
 start = statistics.median(once([inpact, "--version"]) for _ in range(41))
 check, read = paired([inpact, "check", deck], [inpact, "--version"], 31)
 run, write = paired([inpact, "run", deck, "-q", "-j", "full"], [inpact, "run", noout, "-q", "-j", "noout"], 15)
