@@ -13,7 +13,9 @@ as medians of repeated runs:
              case.result, the table): 2 × study wall / 64 − mean case wall
 solve = run − start − read − write. Writes bench/results/study_overhead.md.
 
-Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)]
+Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)] [NX NY]
+NX NY: the lower block's elements (default 36 30: 3,240 elements in all); another size writes
+bench/results/study_overhead_<elements>.md instead.
 """
 import csv
 import os
@@ -26,12 +28,13 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "build-study")
 n_cases = int(sys.argv[2]) if len(sys.argv) > 2 else 64
+deck_size = sys.argv[3:5]
 inpact = os.path.join(build, "apps", "inpact")
 work = os.path.join(build, "bench-study")
 os.makedirs(work, exist_ok=True)
 
 deck = os.path.join(work, "contact.inp")
-subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck], check=True)
+subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck] + deck_size, check=True)
 text = open(deck).read()
 noout = os.path.join(work, "contact_noout.inp")
 open(noout, "w").write(text[:text.index("*OUTPUT, FIELD")] + "*OUTPUT, FIELD, FREQUENCY=0\n*NODE OUTPUT\nU\n*END STEP\n")
@@ -142,6 +145,6 @@ lines += [
     "(other jobs make every part noisy).",
 ]
 os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-out = os.path.join(ROOT, "bench", "results", "study_overhead.md")
+out = os.path.join(ROOT, "bench", "results", f"study_overhead_{n_elem}.md" if deck_size else "study_overhead.md")
 open(out, "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
