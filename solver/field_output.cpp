@@ -408,6 +408,7 @@ FieldData nodal_field(const AnalysisModel& am, const std::string& key, const Key
   f.component_labels = vector_labels(key, am.dim);
   f.region = where.region;
   const NodalKey k = key == "U" ? NodalKey::U : key == "RF" ? NodalKey::RF : NodalKey::Coord;
+  f.values.reserve((where.whole ? am.n_nodes() : where.rows.size()) * static_cast<std::size_t>(am.dim));
   auto add = [&](std::size_t row) {
     for (int c = 0; c < am.dim; ++c) f.values.push_back(nodal_value(am, k, row, c, u, rf, nlgeom));
   };
@@ -436,20 +437,30 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
   f.component_labels = tensor_labels(key, am.dim);
   f.region = where.region;
   const bool stress = key == "S";
-  auto add = [&](std::size_t el) {
-    const auto points = cache.of(el);
-    for (std::size_t p = 0; p < points.size(); ++p) {
+  // The points of every element first, so that the arrays are sized once (a frame of a few
+  // thousand elements otherwise regrows them a dozen times).
+  std::vector<std::pair<std::size_t, std::span<const elements::PointResult>>> points;
+  std::size_t n_points = 0;
+  auto gather = [&](std::size_t el) {
+    points.emplace_back(el, cache.of(el));
+    n_points += points.back().second.size();
+  };
+  if (where.whole)
+    for (std::size_t el = 0; el < elements.size(); ++el) gather(el);
+  else
+    for (std::int32_t el : where.rows) gather(static_cast<std::size_t>(el));
+  f.elements.reserve(n_points);
+  f.ip.reserve(n_points);
+  if (with_instance) f.instance.reserve(n_points);
+  f.values.reserve(n_points * n_comp);
+  for (const auto& [el, pts] : points)
+    for (std::size_t p = 0; p < pts.size(); ++p) {
       f.elements.push_back(elements.labels[el]);
       f.ip.push_back(static_cast<std::int32_t>(p + 1));
       if (with_instance) f.instance.push_back(elements.instance[el]);
-      const auto& v = stress ? points[p].stress : points[p].strain;
+      const auto& v = stress ? pts[p].stress : pts[p].strain;
       for (std::size_t c = 0; c < n_comp; ++c) f.values.push_back(v[c]);
     }
-  };
-  if (where.whole)
-    for (std::size_t el = 0; el < elements.size(); ++el) add(el);
-  else
-    for (std::int32_t el : where.rows) add(static_cast<std::size_t>(el));
   return f;
 }
 
