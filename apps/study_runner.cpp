@@ -93,13 +93,20 @@ CaseOutcome finish_case(const Manifest& m, const Case& c, const RunnerOptions& o
     out.message = fmt::format("killed by signal {} ({})", WTERMSIG(wait_status), strsignal(WTERMSIG(wait_status)));
   }
   const fs::path h5 = o.dir / Manifest::results_path(c.id);
-  if (out.exit_code == 0 && io::results_status(h5) == "COMPLETED") {
-    out.status = "completed";
+  bool completed = false;
+  if (out.exit_code == 0) {
+    // One read of the results: it refuses a file that is not COMPLETED; only then is the
+    // status looked up on its own, to tell a failed case from a failed collection.
     try {
       out.values = collect_values(h5, m.collect);
+      completed = true;
     } catch (const std::exception& e) {
-      out.message = std::string("collect: ") + e.what();
+      completed = io::results_status(h5) == "COMPLETED";
+      if (completed) out.message = std::string("collect: ") + e.what();
     }
+  }
+  if (completed) {
+    out.status = "completed";
   } else {
     out.status = "failed";
     if (out.exit_code == 0) out.message = "exit 0 but no COMPLETED results file";
@@ -190,6 +197,8 @@ std::map<std::string, std::string> collect_values(const fs::path& h5, const std:
   io::ReadResultsOptions read;
   for (const auto& s : specs) read.data_for.insert(parse_collect(s).var);  // only these fields' values
   read.with_data = !read.data_for.empty();
+  read.names = false;  // values by row: no node, element or location names
+  read.allow_incomplete = false;
   const io::ResultsFile r = io::read_results(h5, read);
   std::map<std::string, std::string> v;
   v["increments"] = std::to_string(r.totals.increments);

@@ -48,7 +48,8 @@ int run_cases(const Manifest& manifest, const RunnerOptions& options);
 int run_one_case(const Manifest& manifest, const Case& c, const RunnerOptions& options);
 
 /// The collected values of a finished case's results file (`spec.text` → value; "" when the
-/// field or set is missing), plus increments, iterations, cutbacks from /status.
+/// field or set is missing), plus increments, iterations, cutbacks from /status. Throws
+/// IoError when the file is missing, unreadable or not COMPLETED.
 std::map<std::string, std::string> collect_values(const std::filesystem::path& h5, const std::vector<std::string>& specs);
 
 std::string format_outcome(const CaseOutcome& o);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the deck of bench/study_overhead.sh: two stacked 2D plane-strain blocks (CPE4) in
+"""Writes the deck of bench/study_overhead.py: two stacked 2D plane-strain blocks (CPE4) in
 penalty contact, a few thousand elements, the top pressure a *PARAMETER <load>.
 Usage: study_overhead_deck.py OUT.inp [NX_LOWER NY_LOWER]  (upper block: 2 NX, NY)."""
 import sys

@@ -73,6 +73,15 @@ bool Context::exists(hid_t parent, const std::string& name) const {
   return H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0;
 }
 
+hid_t transfer_plist() {
+  static const hid_t dxpl = [] {
+    const hid_t p = H5Pcreate(H5P_DATASET_XFER);
+    H5Pset_buffer(p, 64 * 1024, nullptr, nullptr);
+    return p;
+  }();
+  return dxpl;
+}
+
 void Context::write_dataset(hid_t parent, const std::string& name, hid_t mem_type,
                             const std::vector<hsize_t>& dims, const void* data) const {
   Id space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
@@ -81,7 +90,7 @@ void Context::write_dataset(hid_t parent, const std::string& name, hid_t mem_typ
               "cannot create dataset '" + name + "'"));
   const bool empty = std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
   if (!empty)
-    check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "cannot write dataset '" + name + "'");
+    check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, transfer_plist(), data), "cannot write dataset '" + name + "'");
 }
 
 void Context::write_strings(hid_t parent, const std::string& name, const std::vector<std::string>& values) const {
@@ -142,7 +151,7 @@ void Context::write_rows(hid_t dataset, hid_t mem_type, hsize_t row, hsize_t n, 
   for (int i = 0; i < rank; ++i) n_values *= count[i];
   if (n_values == 0) return;
   Id mem_space(check(H5Screate_simple(rank, count, nullptr), "cannot create memory dataspace"));
-  check(H5Dwrite(dataset, mem_type, mem_space, file_space, H5P_DEFAULT, data), "cannot write rows");
+  check(H5Dwrite(dataset, mem_type, mem_space, file_space, transfer_plist(), data), "cannot write rows");
 }
 
 Id Context::create_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) const {

@@ -70,7 +70,7 @@ class Reader {
     std::size_t n = 1;
     for (hsize_t d : dims(ds)) n *= d;
     std::vector<T> out(n);
-    if (n) ctx_.check(H5Dread(ds, h5::native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()),
+    if (n) ctx_.check(H5Dread(ds, h5::native_type<T>(), H5S_ALL, H5S_ALL, h5::transfer_plist(), out.data()),
                       "cannot read dataset '" + name + "'");
     return out;
   }
@@ -83,7 +83,7 @@ class Reader {
     if (!n) return out;
     Id type = h5::vlen_string_type();
     std::vector<char*> ptrs(n);
-    ctx_.check(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), "cannot read dataset '" + name + "'");
+    ctx_.check(H5Dread(ds, type, H5S_ALL, H5S_ALL, h5::transfer_plist(), ptrs.data()), "cannot read dataset '" + name + "'");
     for (char* p : ptrs) out.emplace_back(p ? p : "");
     Id space(H5Dget_space(ds));
     H5Dvlen_reclaim(type, space, H5P_DEFAULT, ptrs.data());
@@ -144,7 +144,7 @@ ResultsStatusTotals read_status(Reader& r, hid_t file) {
   H5Tinsert(type, "total_iters", HOFFSET(StatusPart, total_iters), H5T_NATIVE_INT32);
   H5Tinsert(type, "augmentations", HOFFSET(StatusPart, augmentations), H5T_NATIVE_INT32);
   std::vector<StatusPart> rows(n);
-  r.ctx().check(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data()), "cannot read /status");
+  r.ctx().check(H5Dread(ds, type, H5S_ALL, H5S_ALL, h5::transfer_plist(), rows.data()), "cannot read /status");
   for (const StatusPart& p : rows) {
     ++t.attempts;
     if (p.cut_back_flag) ++t.cut_backs;
@@ -170,10 +170,14 @@ const ResultsStep* ResultsFile::step(const std::string& name) const {
 }
 
 std::string results_status(const fs::path& path) {
+  h5::silence_hdf5_errors();
+  std::error_code ec;
+  if (path.extension() == ".part" || !fs::is_regular_file(path, ec) || H5Fis_hdf5(path.c_str()) <= 0) return "";
   try {
-    ReadResultsOptions o;
-    o.with_data = false;
-    return read_results(path, o).status;
+    Reader r(path);
+    Id file(r.ctx().check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "cannot open the file"));
+    if (r.attr_string(file, "schema") != "inpact-results") return "";
+    return r.attr_string(file, "status");
   } catch (const IoError&) {
     return "";
   }
@@ -214,16 +218,20 @@ ResultsFile read_results(const fs::path& path, const ReadResultsOptions& options
   Id model = r.ctx().open_group(file, "model");
   const auto instances = r.ctx().exists(model, "instances") ? r.read_strings(model, "instances")
                                                             : std::vector<std::string>{};
+  std::size_t n_nodes = 0;
   {
     Id nodes = r.ctx().open_group(model, "nodes");
     const auto labels = r.read<std::int64_t>(nodes, "labels");
     const auto inst = r.ctx().exists(nodes, "instance") ? r.read<std::int32_t>(nodes, "instance")
                                                         : std::vector<std::int32_t>(labels.size(), 0);
-    out.node_names.reserve(labels.size());
-    for (std::size_t i = 0; i < labels.size(); ++i)
-      out.node_names.push_back(qualified(instances, i < inst.size() ? inst[i] : 0, labels[i]));
+    n_nodes = labels.size();
+    if (options.names) {
+      out.node_names.reserve(labels.size());
+      for (std::size_t i = 0; i < labels.size(); ++i)
+        out.node_names.push_back(qualified(instances, i < inst.size() ? inst[i] : 0, labels[i]));
+    }
   }
-  if (r.ctx().exists(model, "elements")) {
+  if (options.names && r.ctx().exists(model, "elements")) {
     Id elements = r.ctx().open_group(model, "elements");
     for (const auto& type : r.children(elements)) {
       Id tg = r.ctx().open_group(elements, type);
@@ -279,6 +287,10 @@ ResultsFile read_results(const fs::path& path, const ReadResultsOptions& options
         for (const auto& c : f.components) wanted = wanted || options.data_for.count(c) > 0;
       }
       if (wanted) f.data = r.read<double>(fg, "data");
+      if (!options.names && !options.data_for.empty() && !wanted) {  // known by key and components only
+        st.fields.push_back(std::move(f));
+        continue;
+      }
       auto optional_i32 = [&](const char* name) {
         return r.ctx().exists(fg, name) ? r.read<std::int32_t>(fg, name) : std::vector<std::int32_t>{};
       };
@@ -294,8 +306,9 @@ ResultsFile read_results(const fs::path& path, const ReadResultsOptions& options
         const auto rows = r.read<std::int64_t>(fg, "nodes");
         if (rows.size() != f.n_loc) bad("nodes has the wrong length");
         for (std::size_t i = 0; i < rows.size(); ++i) {
-          if (rows[i] < 0 || static_cast<std::size_t>(rows[i]) >= out.node_names.size()) bad("node row out of range");
+          if (rows[i] < 0 || static_cast<std::size_t>(rows[i]) >= n_nodes) bad("node row out of range");
           f.node_rows[i] = rows[i];
+          if (!options.names) continue;
           std::string name = "node " + out.node_names[rows[i]];
           if (i < pair.size()) {
             const auto p = pair[i];
@@ -303,6 +316,7 @@ ResultsFile read_results(const fs::path& path, const ReadResultsOptions& options
           }
           f.locations.push_back(std::move(name));
         }
+      } else if (!options.names) {
       } else if (r.ctx().exists(fg, "elements")) {
         const auto labels = r.read<std::int64_t>(fg, "elements");
         if (labels.size() != f.n_loc) bad("elements has the wrong length");

@@ -87,13 +87,19 @@ void element_arrays(const model::Model& model, const FieldData& f, std::size_t n
   const std::size_t out_comp = tensor ? 6 : n_comp;
   std::vector<double> sum(n_cells * out_comp, 0.0);
   std::vector<std::int32_t> count(n_cells, 0);
+  std::size_t row_of_point = 0;
   for (std::size_t i = 0; i < nloc; ++i) {
     const std::int32_t inst = f.instance.empty() ? 0 : f.instance[i];
-    const auto row = elements.index.find(inst, f.elements[i]);
-    if (!row)
-      throw IoError(path, fmt::format("field {}: element {} (instance {}) is not in the model", f.key,
-                                      f.elements[i], inst));
-    const std::size_t e = static_cast<std::size_t>(*row);
+    // The points of one element follow each other: look its row up once.
+    const bool same = i > 0 && f.elements[i] == f.elements[i - 1] && (f.instance.empty() || inst == f.instance[i - 1]);
+    if (!same) {
+      const auto row = elements.index.find(inst, f.elements[i]);
+      if (!row)
+        throw IoError(path, fmt::format("field {}: element {} (instance {}) is not in the model", f.key,
+                                        f.elements[i], inst));
+      row_of_point = static_cast<std::size_t>(*row);
+    }
+    const std::size_t e = row_of_point;
     ++count[e];
     for (std::size_t c = 0; c < n_comp; ++c)
       sum[e * out_comp + (tensor ? static_cast<std::size_t>(slot[c]) : c)] += f.values[i * n_comp + c];

@@ -7,7 +7,10 @@ namespace inpact::model {
 namespace {
 // A label may go into the direct table while the table stays within this many slots per
 // stored entry (plus a fixed allowance): keeps memory linear in the count for any numbering.
-constexpr std::int64_t kDenseSlack = 1 << 20;
+// The allowance is small (256 kB of table): a small deck that numbers a second part from
+// 1,000,001 would otherwise fill and page in a 4 MB table per map, which cost more than
+// reading its few thousand elements (bench/study_overhead.py).
+constexpr std::int64_t kDenseSlack = 1 << 16;
 constexpr std::int64_t kDenseFactor = 4;
 }  // namespace
 

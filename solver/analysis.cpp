@@ -75,8 +75,11 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   if (!due.any_field() && !due.any_print()) return;
   ContactResults contact;
   if (run.contact) contact = run.contact->results(s.u, s.contact);
-  OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom,
-                                       run.conditions.temperature_change(t), run.contact ? &contact : nullptr);
+  const std::vector<double> delta_t = run.conditions.temperature_change(t);
+  // The element point values of the converged state, as its last assembly kept them.
+  const ElementPoints* points = run.assembler.points_at(s.u, delta_t, run.step.nlgeom);
+  OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom, delta_t,
+                                       run.contact ? &contact : nullptr, points);
   if (due.any_field()) {
     Frame frame;
     frame.increment = increment;
@@ -161,6 +164,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       trial = state;
       NewtonContext ctx{am, run.conditions, run.assembler, *cholmod, *umfpack, c, observer, run.step.nlgeom,
                         force_sum, force_count, run.number, increment, attempt, run.contact.get()};
+      ctx.keep_points = run.output.points_due(increment, t + dt, t + dt >= period * (1 - 1e-12));
       int augmentations = 0;
       outcome = solve_with_augmentations(ctx, t + dt, trial, augmentations);
       StatusRow row;

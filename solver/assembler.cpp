@@ -115,6 +115,7 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   er.stiffness = request.tangent;
   er.internal_force = true;
   er.nlgeom = request.nlgeom;
+  er.point_output = request.points;
   const auto nodes = mesh.elements.nodes_of(e);
   // Gathered on the stack: no allocation per element (at most 20 nodes × 3 DOFs).
   constexpr std::size_t kMaxNodes = 32;
@@ -152,6 +153,11 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   const std::size_t chunk = n_threads == 1 ? 1 : 512 * n_threads;
   std::vector<elements::ElementSystem> systems(std::min(chunk, n_el));
   std::vector<std::int64_t> el_dofs;
+  if (request.points) {
+    have_points_ = false;  // until every element is in
+    points_.offset.assign(1, 0);
+    points_.points.clear();
+  }
   double force_sum = 0.0;
   std::size_t force_count = 0;
   for (std::size_t begin = 0; begin < n_el; begin += chunk) {
@@ -172,6 +178,10 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
         result.min_jacobian = sys.min_jacobian;
         result.min_jacobian_element = static_cast<std::int64_t>(e);
       }
+      if (request.points) {
+        points_.points.insert(points_.points.end(), sys.points.begin(), sys.points.end());
+        points_.offset.push_back(points_.points.size());
+      }
       element_dofs(e, el_dofs);
       if (sys.internal_force.size() != el_dofs.size()) continue;  // inverted: reported by min_jacobian
       for (std::size_t i = 0; i < el_dofs.size(); ++i) {
@@ -184,7 +194,21 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   }
   result.average_force = force_count ? force_sum / static_cast<double>(force_count) : 0.0;
   result.n_force_entries = force_count;
+  if (request.points) {
+    points_u_.assign(u.begin(), u.end());
+    points_delta_t_.assign(request.delta_t.begin(), request.delta_t.end());
+    points_nlgeom_ = request.nlgeom;
+    have_points_ = true;
+  }
   return result;
+}
+
+const ElementPoints* Assembler::points_at(std::span<const double> u, std::span<const double> delta_t,
+                                          bool nlgeom) const {
+  if (!have_points_ || nlgeom != points_nlgeom_ || !std::ranges::equal(u, points_u_) ||
+      !std::ranges::equal(delta_t, points_delta_t_))
+    return nullptr;
+  return &points_;
 }
 
 void Assembler::reduce(std::span<const double> full, std::span<double> reduced) const {

@@ -15,6 +15,18 @@ struct AssemblyRequest {
   bool tangent = true;
   bool nlgeom = false;
   std::span<const double> delta_t;  ///< nodal temperature change, or empty
+  /// Keep every element's integration-point results (stress, strain) at u: the output of a
+  /// converged increment then reads them instead of computing the elements again.
+  bool points = false;
+};
+
+/// Integration-point results of every element, in element order.
+struct ElementPoints {
+  std::vector<std::size_t> offset;  ///< element e: points[offset[e], offset[e + 1])
+  std::vector<elements::PointResult> points;
+  std::span<const elements::PointResult> of(std::size_t e) const {
+    return std::span(points).subspan(offset[e], offset[e + 1] - offset[e]);
+  }
 };
 
 /// Couplings beyond the elements' (contact): blocks of global DOFs that couple with each other
@@ -55,6 +67,10 @@ class Assembler {
   /// Reduces a full vector to the equations: r_eq = Σ_d w_d r_d over the DOFs feeding each one.
   void reduce(std::span<const double> full, std::span<double> reduced) const;
 
+  /// The point results kept by the last assembly that asked for them (AssemblyRequest::points),
+  /// when it was made at exactly this u, temperature change and NLGEOM; otherwise null.
+  const ElementPoints* points_at(std::span<const double> u, std::span<const double> delta_t, bool nlgeom) const;
+
  private:
   /// Global DOFs of element e, node-major.
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
@@ -70,6 +86,9 @@ class Assembler {
   const DofMap& dofs_;
   SparseMatrix tangent_;
   int threads_ = 1;
+  ElementPoints points_;
+  std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
+  bool points_nlgeom_ = false, have_points_ = false;
 };
 
 }  // namespace inpact::solver

@@ -8,7 +8,9 @@ namespace inpact::solver {
 /// "OpenBLAS 0.3.21 ..." when OpenBLAS is loaded, else "reference or unknown BLAS".
 std::string blas_description();
 
-/// Threads the BLAS may use under the factorisation (OpenBLAS; no effect on other BLAS).
+/// Threads the factorisation may use: the BLAS's (OpenBLAS; no effect on other BLAS) and,
+/// for n = 1, CHOLMOD's own OpenMP loops, which otherwise start 4 threads whatever
+/// OMP_NUM_THREADS says (a num_threads(4) clause) and wake them for every supernode.
 void set_blas_threads(int n);
 
 }  // namespace inpact::solver

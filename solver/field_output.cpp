@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "assembler.hpp"
 #include "elements/element_kernel.hpp"
 
 namespace inpact::solver {
@@ -193,17 +194,16 @@ OutputTiming::OutputTiming(const OutputRequest& r, double period)
     : frequency_(r.frequency), n_interval_(r.number_interval.value_or(0)), time_marks_(r.time_marks),
       period_(period), tol_(1e-9 * period) {}
 
-bool OutputTiming::due(int increment, double t, bool last) {
-  if (n_interval_ > 0) {
-    bool reached = false;
-    while (next_ <= n_interval_ && t >= mark(next_) - tol_) {
-      reached = true;
-      ++next_;
-    }
-    return reached || last;
-  }
+bool OutputTiming::would_be_due(int increment, double t, bool last) const {
+  if (n_interval_ > 0) return last || (next_ <= n_interval_ && t >= mark(next_) - tol_);
   if (frequency_ <= 0) return false;
   return last || increment % frequency_ == 0;
+}
+
+bool OutputTiming::due(int increment, double t, bool last) {
+  const bool is_due = would_be_due(increment, t, last);
+  while (n_interval_ > 0 && next_ <= n_interval_ && t >= mark(next_) - tol_) ++next_;
+  return is_due;
 }
 
 std::optional<double> OutputTiming::next_mark(double t) const {
@@ -290,6 +290,19 @@ OutputDue StepOutput::due(int increment, double t, bool last) {
   return d;
 }
 
+bool StepOutput::points_due(int increment, double t, bool last) const {
+  for (std::size_t i = 0; i < field_.size(); ++i) {
+    const auto& v = field_[i].variables;
+    const bool element_key = std::find(v.begin(), v.end(), "S") != v.end() || std::find(v.begin(), v.end(), "E") != v.end();
+    if (element_key && field_timing_[i].would_be_due(increment, t, last)) return true;
+  }
+  for (std::size_t i = 0; i < print_.size(); ++i)
+    if (domain_of(print_[i].request.kind) == Domain::Element && !print_[i].variables.empty() &&
+        print_timing_[i].would_be_due(increment, t, last))
+      return true;
+  return false;
+}
+
 double von_mises(std::span<const double, 6> s) {
   const double d1 = s[0] - s[1], d2 = s[1] - s[2], d3 = s[2] - s[0];
   return std::sqrt(0.5 * (d1 * d1 + d2 * d2 + d3 * d3) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
@@ -299,11 +312,13 @@ double von_mises(std::span<const double, 6> s) {
 
 namespace {
 
-/// Element point results, computed on first use for the elements a due request covers.
+/// Element point results: those the assembly kept at this state, or else computed on first use
+/// for the elements a due request covers.
 class PointCache {
  public:
-  PointCache(const AnalysisModel& am, std::span<const double> u, bool nlgeom, std::span<const double> delta_t)
-      : am_(am), u_(u), delta_t_(delta_t), points_(am.model->mesh.elements.size()),
+  PointCache(const AnalysisModel& am, std::span<const double> u, bool nlgeom, std::span<const double> delta_t,
+             const ElementPoints* kept)
+      : am_(am), u_(u), delta_t_(delta_t), kept_(kept), points_(am.model->mesh.elements.size()),
         have_(am.model->mesh.elements.size(), 0) {
     request_.stiffness = false;
     request_.internal_force = false;
@@ -311,7 +326,9 @@ class PointCache {
     request_.nlgeom = nlgeom;
   }
 
-  const std::vector<elements::PointResult>& of(std::size_t el) {
+  std::span<const elements::PointResult> of(std::size_t el) {
+    if (kept_)
+      if (auto p = kept_->of(el); !p.empty()) return p;
     if (have_[el]) return points_[el];
     const ElementSetup& setup = am_.elements[el];
     std::vector<double> u_el, dt_el;
@@ -329,6 +346,7 @@ class PointCache {
  private:
   const AnalysisModel& am_;
   std::span<const double> u_, delta_t_;
+  const ElementPoints* kept_;
   elements::ElementRequest request_;
   std::vector<std::vector<elements::PointResult>> points_;
   std::vector<char> have_;
@@ -372,11 +390,13 @@ bool key_due(const StepOutput& output, const OutputDue& due, const std::string& 
 
 /// A nodal value: U, RF or COORD (current coordinates under NLGEOM, original otherwise, as
 /// Abaqus's COORD), component c.
-double nodal_value(const AnalysisModel& am, const std::string& key, std::size_t row, int c,
-                   std::span<const double> u, std::span<const double> rf, bool nlgeom) {
+enum class NodalKey : std::uint8_t { U, RF, Coord };
+
+double nodal_value(const AnalysisModel& am, NodalKey key, std::size_t row, int c, std::span<const double> u,
+                   std::span<const double> rf, bool nlgeom) {
   const std::size_t dof = row * am.dim + c;
-  if (key == "U") return u[dof];
-  if (key == "RF") return rf[dof];
+  if (key == NodalKey::U) return u[dof];
+  if (key == NodalKey::RF) return rf[dof];
   return am.model->mesh.nodes.coords[row][c] + (nlgeom ? u[dof] : 0.0);
 }
 
@@ -387,8 +407,10 @@ FieldData nodal_field(const AnalysisModel& am, const std::string& key, const Key
   f.position = Position::Nodal;
   f.component_labels = vector_labels(key, am.dim);
   f.region = where.region;
+  const NodalKey k = key == "U" ? NodalKey::U : key == "RF" ? NodalKey::RF : NodalKey::Coord;
+  f.values.reserve((where.whole ? am.n_nodes() : where.rows.size()) * static_cast<std::size_t>(am.dim));
   auto add = [&](std::size_t row) {
-    for (int c = 0; c < am.dim; ++c) f.values.push_back(nodal_value(am, key, row, c, u, rf, nlgeom));
+    for (int c = 0; c < am.dim; ++c) f.values.push_back(nodal_value(am, k, row, c, u, rf, nlgeom));
   };
   if (where.whole) {
     f.nodes.resize(am.n_nodes());
@@ -414,20 +436,31 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
   f.position = Position::IntegrationPoint;
   f.component_labels = tensor_labels(key, am.dim);
   f.region = where.region;
-  auto add = [&](std::size_t el) {
-    const auto& points = cache.of(el);
-    for (std::size_t p = 0; p < points.size(); ++p) {
+  const bool stress = key == "S";
+  // The points of every element first, so that the arrays are sized once (a frame of a few
+  // thousand elements otherwise regrows them a dozen times).
+  std::vector<std::pair<std::size_t, std::span<const elements::PointResult>>> points;
+  std::size_t n_points = 0;
+  auto gather = [&](std::size_t el) {
+    points.emplace_back(el, cache.of(el));
+    n_points += points.back().second.size();
+  };
+  if (where.whole)
+    for (std::size_t el = 0; el < elements.size(); ++el) gather(el);
+  else
+    for (std::int32_t el : where.rows) gather(static_cast<std::size_t>(el));
+  f.elements.reserve(n_points);
+  f.ip.reserve(n_points);
+  if (with_instance) f.instance.reserve(n_points);
+  f.values.reserve(n_points * n_comp);
+  for (const auto& [el, pts] : points)
+    for (std::size_t p = 0; p < pts.size(); ++p) {
       f.elements.push_back(elements.labels[el]);
       f.ip.push_back(static_cast<std::int32_t>(p + 1));
       if (with_instance) f.instance.push_back(elements.instance[el]);
-      const auto& v = key == "S" ? points[p].stress : points[p].strain;
-      f.values.insert(f.values.end(), v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n_comp));
+      const auto& v = stress ? pts[p].stress : pts[p].strain;
+      for (std::size_t c = 0; c < n_comp; ++c) f.values.push_back(v[c]);
     }
-  };
-  if (where.whole)
-    for (std::size_t el = 0; el < elements.size(); ++el) add(el);
-  else
-    for (std::int32_t el : where.rows) add(static_cast<std::size_t>(el));
   return f;
 }
 
@@ -462,7 +495,9 @@ PrintTable node_table(const AnalysisModel& am, const ActiveRequest& a, std::span
   auto add = [&](std::size_t row) {
     t.labels.push_back(am.model->mesh.nodes.labels[row]);
     for (const Column& c : cols) {
-      const char* key = c.source == Column::Source::U ? "U" : c.source == Column::Source::RF ? "RF" : "COORD";
+      const NodalKey key = c.source == Column::Source::U    ? NodalKey::U
+                           : c.source == Column::Source::RF ? NodalKey::RF
+                                                            : NodalKey::Coord;
       t.values.push_back(nodal_value(am, key, row, c.component, u, rf, nlgeom));
     }
   };
@@ -485,7 +520,7 @@ double point_value(const elements::PointResult& p, const Column& c) {
 
 /// POSITION=CENTROIDAL: the volume-weighted average of the integration points (exact for
 /// one-point elements and for fields linear over the element).
-elements::PointResult centroid_of(const std::vector<elements::PointResult>& points) {
+elements::PointResult centroid_of(std::span<const elements::PointResult> points) {
   elements::PointResult c{};
   double total = 0.0;
   for (const auto& p : points) total += p.volume;
@@ -637,12 +672,13 @@ FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const
 
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
-                            std::span<const double> delta_t, const ContactResults* contact) {
+                            std::span<const double> delta_t, const ContactResults* contact,
+                            const ElementPoints* points) {
   OutputValues out;
   if (contact)
     for (const std::string key : kContactKeys)
       if (key_due(output, due, key)) out.fields.push_back(contact_field(am, output, key, *contact));
-  PointCache cache(am, u, nlgeom, delta_t);
+  PointCache cache(am, u, nlgeom, delta_t, points);
   for (const std::string key : kFieldKeys) {
     if (!key_due(output, due, key)) continue;
     const KeyRegion where = key_region(output, key);

@@ -46,6 +46,8 @@
 
 namespace inpact::solver {
 
+struct ElementPoints;  // assembler.hpp
+
 /// The output requests in force for step `step_index` after the carry-over rules above, in
 /// the order they were given (the default preselect request first when it applies).
 std::vector<model::OutputRequest> requests_in_force(const model::Model& model, std::size_t step_index);
@@ -57,6 +59,8 @@ class OutputTiming {
   /// Whether output is due at the converged increment `increment` (1-based) that ended at step
   /// time `t`; `last` marks the step's last increment. Advances past the time marks t reached.
   bool due(int increment, double t, bool last);
+  /// Whether due() would say yes, without advancing.
+  bool would_be_due(int increment, double t, bool last) const;
   /// TIME MARKS=YES: the next mark after step time t (the increment is cut to end there).
   std::optional<double> next_mark(double t) const;
 
@@ -105,6 +109,9 @@ class StepOutput {
   double limit_increment(double t, double dt) const;
   /// Which requests write at this converged increment; advances the timings.
   OutputDue due(int increment, double t, bool last);
+  /// Whether an increment that converges at step time t would write element point values
+  /// (S, E, *EL PRINT): its assemblies then keep them (AssemblyRequest::points).
+  bool points_due(int increment, double t, bool last) const;
 
  private:
   std::vector<ActiveRequest> field_, print_;
@@ -120,7 +127,8 @@ struct OutputValues {
 
 /// Computes the fields and print tables `due` asks for at displacement u with reactions `rf`
 /// (full DOF vectors); `delta_t` the nodal temperature change, as for the assembly. Element
-/// point values are computed only for the elements a due request covers.
+/// point values are taken from `points` (kept by the assembly at this very state) when given,
+/// else computed, only for the elements a due request covers.
 /// `contact`: the contact values of the increment (null without contact), written as the
 /// NODAL contact fields CPRESS, COPEN, CSTATUS, CNAREA, CFN and, for friction, CSHEAR1/2,
 /// CSLIP1/2 and CFS (one location per slave node per pair, `pair` and `nodes` filled) for
@@ -129,7 +137,8 @@ struct OutputValues {
 /// CPRESS and COPEN (+ CSHEAR, CSLIP with friction), ALL also CSTATUS, CNAREA, CFN (+ CFS)).
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
-                            std::span<const double> delta_t, const ContactResults* contact = nullptr);
+                            std::span<const double> delta_t, const ContactResults* contact = nullptr,
+                            const ElementPoints* points = nullptr);
 
 /// Von Mises equivalent stress of Abaqus-ordered components 11 22 33 12 13 23:
 /// q = sqrt(½[(s11−s22)² + (s22−s33)² + (s33−s11)²] + 3(s12² + s13² + s23²)).

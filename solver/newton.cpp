@@ -89,6 +89,9 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     request.tangent = k == 0 || ctx.contact != nullptr;
     request.nlgeom = ctx.nlgeom;
     request.delta_t = delta_t;
+    // The first pass seldom converges (it would need no residual at all to start with): its
+    // points are not kept, and should it converge the output computes them instead.
+    request.points = ctx.keep_points && k > 0;
     const AssemblyResult asm_result = ctx.assembler.assemble(state.u, request, state.f_int);
     double contact_force_sum = 0.0;
     std::size_t contact_force_count = 0;
@@ -177,6 +180,7 @@ NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& stat
     // in full.
     if (!request.tangent) {  // same u: f_int comes out the same, now with K(u_k)
       request.tangent = true;
+      request.points = false;  // the points kept above are at this u already
       ctx.assembler.assemble(state.u, request, state.f_int);
     }
     const SparseMatrix* tangent = &ctx.assembler.tangent();

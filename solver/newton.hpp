@@ -51,6 +51,9 @@ struct NewtonContext {
   int force_count;
   int step_number, increment, attempt;
   ContactProblem* contact = nullptr;  ///< the step's contact pairs, or null
+  /// The increment writes element output (S, E) if it converges: every assembly keeps its
+  /// point results, so that the output reads those of the converged state.
+  bool keep_points = false;
 };
 
 /// Runs the iterations from `state.u` (the converged state at the increment start) to step

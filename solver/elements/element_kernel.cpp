@@ -78,7 +78,8 @@ Assembled assemble(ElementFamily family, int dim, const Mat6& D, bool nlgeom, co
 
 // C3D8 with full 2×2×2 integration on fixed-size matrices: the formulas of
 // continuum_kinematics.hpp (small strain and total Lagrangian) without a heap allocation per
-// element — the structured-cube benchmark spends most of its assembly here.
+// element — the structured-cube benchmark spends most of its assembly here. Point output
+// too: the assembly keeps it in the increments that write S or E (Assembler).
 using Mat83 = Eigen::Matrix<double, 8, 3>;
 using Vec24 = Eigen::Matrix<double, 24, 1>;
 using Mat24 = Eigen::Matrix<double, 24, 24>;
@@ -178,6 +179,18 @@ void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coor
         for (int k = 3; k < 6; ++k) col(k) = Fb(i, kVi[k]) * g(a, kVj[k]) + Fb(i, kVj[k]) * g(a, kVi[k]);
       }
     f.noalias() += (B.transpose() * stress) * dv[p];
+    if (request.point_output) {
+      PointData pd;  // point_output reads the volume (and the thermal strain only in plane stress)
+      pd.dv = dv[p];
+      PointState st;
+      st.F = F;
+      st.strain = strain;
+      st.stress = stress;
+      PointResult& out = sys.points.emplace_back();
+      point_output(ElementFamily::Solid3D, material, request.nlgeom, pd, st, out);
+      for (int a = 0; a < 8; ++a)
+        for (int i = 0; i < 3; ++i) out.coords[i] += rule.N[p][a] * X(a, i);
+    }
     if (!request.stiffness) continue;
     const Mat6x24 DB = (D * dv[p]) * B;
     K.noalias() += B.transpose() * DB;
@@ -204,7 +217,7 @@ void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coor
 void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                      const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
                      std::span<const double> delta_t, ElementSystem& out) {
-  if (!request.point_output && is_full_hex8(type) && coords.size() == 8 && u.size() == 24 &&
+  if (is_full_hex8(type) && coords.size() == 8 && u.size() == 24 &&
       (delta_t.empty() || delta_t.size() == 8)) {
     compute_hex8(type, coords, u, material, request, delta_t, out);
     return;
@@ -223,7 +236,7 @@ ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<cons
       (!delta_t.empty() && static_cast<int>(delta_t.size()) != n))
     throw std::invalid_argument("compute_element: coordinate, displacement or temperature count mismatch");
 
-  if (!request.point_output && is_full_hex8(type)) {
+  if (is_full_hex8(type)) {
     ElementSystem fast;
     compute_hex8(type, coords, u, material, request, delta_t, fast);
     return fast;

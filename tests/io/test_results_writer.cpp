@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "h5_read.hpp"
+#include "io/results_reader.hpp"
 #include "io/results_writer.hpp"
 #include "io_fixture.hpp"
 #include "sample_jobs.hpp"
@@ -274,6 +275,47 @@ TEST(ResultsWriter, KilledRunKeepsEveryFlushedFrameInThePartFile) {
   ASSERT_EQ(ud.size(), 3u * 15 * 3);
   EXPECT_EQ(ud[(2 * 15 + 7) * 3 + 1], test::u_value(2, 7, 1));
   EXPECT_EQ(f.doubles("/VTKHDF/PointData/U")[7 * 3 + 1], test::u_value(2, 7, 1));
+}
+
+TEST(ResultsReader, StatusAloneAndTheNamelessReadOfAStudy) {
+  TempDir dir;
+  const auto m = read_model(dir, test::kThreeBodyDeck);
+  const auto h5 = dir / "job.h5";
+  test::write_three_body_job(h5, m);
+  EXPECT_EQ(io::results_status(h5), "COMPLETED");
+  EXPECT_EQ(io::results_status(dir / "missing.h5"), "");
+  {
+    std::ofstream(dir / "text.h5") << "not HDF5\n";
+  }
+  EXPECT_EQ(io::results_status(dir / "text.h5"), "");
+
+  const io::ResultsFile full = io::read_results(h5);
+  io::ReadResultsOptions o;
+  o.names = false;
+  o.data_for = {"U"};
+  const io::ResultsFile lean = io::read_results(h5, o);
+  EXPECT_TRUE(lean.node_names.empty());
+  EXPECT_TRUE(lean.element_names.empty());
+  EXPECT_EQ(lean.nsets, full.nsets);
+  EXPECT_EQ(lean.totals.iterations, full.totals.iterations);
+  EXPECT_EQ(lean.totals.increments, full.totals.increments);
+  ASSERT_EQ(lean.steps.size(), full.steps.size());
+  for (std::size_t s = 0; s < full.steps.size(); ++s) {
+    ASSERT_EQ(lean.steps[s].fields.size(), full.steps[s].fields.size());
+    for (std::size_t i = 0; i < full.steps[s].fields.size(); ++i) {
+      const auto& a = full.steps[s].fields[i];
+      const auto& b = lean.steps[s].fields[i];
+      EXPECT_EQ(b.key, a.key);
+      EXPECT_EQ(b.components, a.components);
+      EXPECT_TRUE(b.locations.empty());
+      if (a.key == "U") {
+        EXPECT_EQ(b.data, a.data);
+        EXPECT_EQ(b.node_rows, a.node_rows);
+      } else {
+        EXPECT_TRUE(b.data.empty()) << a.key;
+      }
+    }
+  }
 }
 
 TEST(ResultsWriter, UnwritablePathThrowsIoErrorWithoutHdf5Noise) {

@@ -11,6 +11,8 @@
 #include "fixtures/deck_fixture.hpp"
 #include "solver/analysis.hpp"
 #include "solver/analysis_model.hpp"
+#include "solver/assembler.hpp"
+#include "solver/dof_map.hpp"
 #include "solver/field_output.hpp"
 
 namespace inpact::solver {
@@ -205,6 +207,71 @@ TEST(OutputTiming, TimeMarksGiveTheNextMarkToEndTheIncrementOn) {
   EXPECT_TRUE(timing.due(1, 0.25, false));
   EXPECT_FALSE(timing.due(2, 0.4, false));
   EXPECT_DOUBLE_EQ(*timing.next_mark(0.4), 0.5);
+}
+
+TEST(OutputTiming, WouldBeDueAnswersAsDueWithoutPassingTheMarks) {
+  model::OutputRequest r;
+  r.kind = model::OutputRequest::Kind::NodeField;
+  r.number_interval = 2;  // marks 0.5, 1.0
+  OutputTiming timing(r, 1.0);
+  EXPECT_FALSE(timing.would_be_due(1, 0.3, false));
+  EXPECT_TRUE(timing.would_be_due(2, 0.6, false));
+  EXPECT_TRUE(timing.would_be_due(2, 0.6, false));  // asking again: the mark is still ahead
+  EXPECT_TRUE(timing.due(2, 0.6, false));
+  EXPECT_FALSE(timing.would_be_due(3, 0.8, false));  // now it is passed
+  EXPECT_TRUE(timing.would_be_due(4, 1.0, true));
+}
+
+TEST_F(FieldOutput, PointsAreDueWhenAnIncrementWouldWriteElementValues) {
+  const auto m = read(pull_step("*OUTPUT, FIELD, FREQUENCY=2\n*ELEMENT OUTPUT\nS\n*OUTPUT, FIELD\n*NODE OUTPUT\nU\n") +
+                      pull_step("*OUTPUT, FIELD, OP=NEW\n*NODE OUTPUT\nU\n") +
+                      pull_step("*EL PRINT, FREQUENCY=3\nMISES\n"));
+  const AnalysisModel am = build_analysis_model(m);
+  const StepOutput s0(am, 0), s1(am, 1), s2(am, 2);
+  EXPECT_FALSE(s0.points_due(1, 0.25, false));  // U only at odd increments
+  EXPECT_TRUE(s0.points_due(2, 0.5, false));
+  EXPECT_TRUE(s0.points_due(3, 1.0, true));  // the last increment writes
+  EXPECT_FALSE(s1.points_due(2, 1.0, true));   // U alone needs no element values
+  EXPECT_TRUE(s2.points_due(3, 0.5, false));   // *EL PRINT
+  EXPECT_FALSE(s2.points_due(1, 0.5, false));
+}
+
+TEST_F(FieldOutput, OutputFromThePointsTheAssemblyKeptEqualsComputingThem) {
+  const auto m = read(pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, E\n*EL PRINT\nS11, MISES\n"));
+  const AnalysisModel am = build_analysis_model(m);
+  const DofMap dofs = DofMap::build(am, std::vector<std::uint8_t>(am.n_dof(), 0));
+  Assembler assembler(am, dofs);
+  std::vector<double> u(am.n_dof()), f(am.n_dof()), dt(am.model->mesh.nodes.size());
+  for (std::size_t d = 0; d < u.size(); ++d) u[d] = 1e-4 * std::sin(0.7 * static_cast<double>(d));
+  for (std::size_t n = 0; n < dt.size(); ++n) dt[n] = 3.0 * static_cast<double>(n);
+  AssemblyRequest request;
+  request.points = true;
+  request.delta_t = dt;
+  assembler.assemble(u, request, f);
+  const ElementPoints* kept = assembler.points_at(u, dt, false);
+  ASSERT_NE(kept, nullptr);
+  EXPECT_EQ(kept->points.size(), 5u * 8u);
+  EXPECT_EQ(assembler.points_at(u, dt, true), nullptr);  // another state: not these points
+  EXPECT_EQ(assembler.points_at(u, {}, false), nullptr);
+  std::vector<double> u2 = u;
+  u2[7] += 1e-9;
+  EXPECT_EQ(assembler.points_at(u2, dt, false), nullptr);
+
+  StepOutput output(am, 0);
+  const OutputDue due = output.due(1, 1.0, true);
+  const std::vector<double> rf(am.n_dof(), 0.0);
+  const OutputValues fresh = compute_output(am, output, due, u, rf, false, dt, nullptr, nullptr);
+  const OutputValues reused = compute_output(am, output, due, u, rf, false, dt, nullptr, kept);
+  ASSERT_EQ(fresh.fields.size(), 2u);
+  ASSERT_EQ(reused.fields.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(reused.fields[i].key, fresh.fields[i].key);
+    EXPECT_EQ(reused.fields[i].elements, fresh.fields[i].elements);
+    EXPECT_EQ(reused.fields[i].values, fresh.fields[i].values);  // the same kernel at the same state
+  }
+  ASSERT_EQ(fresh.tables.size(), 1u);
+  ASSERT_EQ(reused.tables.size(), 1u);
+  EXPECT_EQ(reused.tables[0].values, fresh.tables[0].values);
 }
 
 TEST_F(FieldOutput, FrequencyAndTheLastIncrementDecideWhichIncrementsWriteAFrame) {
