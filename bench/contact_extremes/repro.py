@@ -6,8 +6,9 @@ two-block patch test of blocks.py whose exact answer is CPRESS = p at every inte
                    stops ("diverging"); right before the vertex snap was removed (883ce7b)
   sts_touch_3d     3-D surface to surface, penalty, gap 0: the first iteration overshoots 10×
                    (residual 1e2 × the average force); with an overclosure of 2e-15 it does not
-  sts_c3d8r        3-D surface to surface, penalty, C3D8R, ν = 0.4999: completes with CPRESS 0
+  sts_c3d8r        3-D surface to surface, penalty, C3D8R, ν = 0.4999: completed with CPRESS 0
                    everywhere, open gaps and the top moving up — residual 251 N for a 40 N load
+                   (q̃ inflated by a first-iteration spike; right since ee58956, kept as a check)
   general_split    general contact (ALL EXTERIOR), penalty: CPRESS 6.67 on one body, 13.3 on the
                    other, for p = 10 (Σ CPRESS·CNAREA = the load)
   general_stiff    general contact, given penalty stiffness 1e20 (multipliers): CPRESS −4929 … 4703
