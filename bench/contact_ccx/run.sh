@@ -5,10 +5,10 @@
 # assembly + factorisation (bench/solver_floor). Writes bench/results/contact_ccx.md (printed) and
 # .json; see ccx_bench.py.
 #
-#   bash bench/contact_ccx/run.sh [--levels 1 2] [--runs 3] [--discretization "SURFACE TO SURFACE"]
+#   bash bench/contact_ccx/run.sh [--levels 1 2] [--runs 3] [--discretization "NODE TO SURFACE" "SURFACE TO SURFACE"]
 #   env: BUILD (default build)
 #
-# ccx runs take 4 (level 1) to 15 s (level 2) of CPU each, so the default set takes a few minutes.
+# ccx runs take 4 (level 1) to 15 s (level 2) of CPU each; both discretisations take about ten minutes.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build}

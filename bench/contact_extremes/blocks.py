@@ -18,6 +18,10 @@ k_e is computed as inpact documents it (contact/normal_behavior.cpp): M/h of the
 under the facet (h its thickness normal to the facet), median over the facets; the
 characteristic length is the median facet size (edge in 2-D, √area in 3-D).
 
+discretization: NODE TO SURFACE, SURFACE TO SURFACE (the pair's TYPE) or GENERAL (general contact,
+*CONTACT INCLUSIONS, ALL EXTERIOR, instead of the pair). IFACE is the node set of both sides of the
+interface (general contact reports CPRESS on the exterior nodes of both bodies).
+
 Pure standard-library Python; `deck(**case)` returns (deck text, expectation dict).
 """
 import math
@@ -93,6 +97,19 @@ def invert(f, y, hi):
     return 0.5 * (lo + hi)
 
 
+GENERAL = "GENERAL"  # discretization value: general contact instead of the pair
+
+
+def contact_lines(discretization, slave="SLAVE_S", master="MASTER_S", interaction="SMOOTH"):
+    """The pair (TYPE=NODE TO SURFACE | SURFACE TO SURFACE), or general contact for GENERAL:
+    *CONTACT / *CONTACT INCLUSIONS, ALL EXTERIOR / *CONTACT PROPERTY ASSIGNMENT `, , interaction`
+    (inpact expands it to surface-to-surface rows between the bodies, balanced master-slave for
+    penalty-type methods: contact/interaction_table.hpp)."""
+    if discretization == GENERAL:
+        return ["*CONTACT", "*CONTACT INCLUSIONS, ALL EXTERIOR", "*CONTACT PROPERTY ASSIGNMENT", f", , {interaction}"]
+    return [f"*CONTACT PAIR, INTERACTION={interaction}, TYPE={discretization}", f"{slave}, {master}"]
+
+
 def deck(**kw):
     c = dict(BASE, **kw)
     dim = c["dim"]
@@ -128,11 +145,14 @@ def deck(**kw):
         out += [f"*SURFACE BEHAVIOR, {c['method']}"]
         if c["stiffness"] is not None:
             out += [f"{c['stiffness']:.17g}"]
-    out += [f"*CONTACT PAIR, INTERACTION=SMOOTH, TYPE={c['discretization']}", "SLAVE_S, MASTER_S"]
+    out += contact_lines(c["discretization"])
     eps = 1e-9 * W
     on = lambda x, v: abs(x - v) < eps
     out += ["*NSET, NSET=BOTTOM"] + lines([n for n, x in mn if on(x[-1], 0.0)]).splitlines()
     out += ["*NSET, NSET=TOP"] + lines([n for n, x in sn if on(x[-1], Hm + gap + Hs)]).splitlines()
+    # both sides of the interface (general contact reports CPRESS on every exterior node of both)
+    out += ["*NSET, NSET=IFACE"] + lines([n for n, x in mn if on(x[-1], Hm)] +
+                                         [n for n, x in sn if on(x[-1], Hm + gap)]).splitlines()
     out += ["*NSET, NSET=XSIDES"] + lines([n for n, x in mn + sn if on(x[0], 0.0) or on(x[0], W)]).splitlines()
     bcs = ["*BOUNDARY", f"BOTTOM, {up}", "XSIDES, 1"]
     if dim == 3:
@@ -160,32 +180,49 @@ def deck(**kw):
 
 
 def expectation(c):
-    """The analytic answer in the deck's units (mm, MPa; for unit m: m, Pa)."""
+    """The analytic answer in the deck's units (mm, MPa; for unit m: m, Pa).
+
+    General contact with a penalty-type method is two rows of weight ½ (balanced master-slave,
+    contact/interaction_table.hpp), each with the law of its own slave (k_e, characteristic
+    length): the pressure that acts is the mean of the two laws at the common penetration h."""
     dim = c["dim"]
     Ms, Mm = constrained(c["Es"], c["nus"]), constrained(c["Em"], c["num"])
     ns, nms = c["ns"], c["nms"] or max(1, round(c["ns"] * c["Hs"] / c["W"]))
-    h_el = c["Hs"] / nms
-    facet = c["W"] / ns
-    ke = Ms / h_el                       # slave element thickness normal to the facet
-    l_char = facet
+    nm, nmm = c["nm"], c["nmm"] or max(1, round(c["nm"] * c["Hm"] / c["W"]))
     method = c["method"]
     sf = c["sf"] if c["sf"] is not None else 1.0
-    k = kf = ki = se = sd = None
-    if method == "PENALTY":
-        k = (c["stiffness"] if c["stiffness"] is not None else 10.0 * ke) * sf
-    elif method == "AUGMENTED LAGRANGE":
-        k = (c["stiffness"] if c["stiffness"] is not None else 1000.0 * ke) * sf
-    elif method == "PENALTY=NONLINEAR":
-        kf = (c["stiffness"] if c["stiffness"] is not None else 100.0 * ke) * sf
-        ki, sd = 0.01 * kf, 0.03 * l_char
-        se = sd / 3.0
+    general = c["discretization"] == GENERAL
+    # (k_e, characteristic length) of each row's slave: the upper block's bottom; with balanced
+    # general contact also the lower block's top
+    upper, lower = (Ms / (c["Hs"] / nms), c["W"] / ns), (Mm / (c["Hm"] / nmm), c["W"] / nm)
+    if not general:
+        sides = [upper]
+    elif method != "DIRECT":
+        sides = [upper, lower]
+    else:  # one row: the smaller facets are the slave (ties: the first body, the lower block)
+        sides = [upper if upper[1] < lower[1] else lower]
+    ke, l_char = sides[0]
+    laws = []
+    for ke_i, l_i in sides:
+        if method == "PENALTY":
+            k_i = (c["stiffness"] if c["stiffness"] is not None else 10.0 * ke_i) * sf
+            laws.append((k_i, lambda s, k_i=k_i: k_i * s if s > 0 else 0.0))
+        elif method == "AUGMENTED LAGRANGE":
+            k_i = (c["stiffness"] if c["stiffness"] is not None else 1000.0 * ke_i) * sf
+            laws.append((k_i, None))
+        elif method == "PENALTY=NONLINEAR":
+            kf = (c["stiffness"] if c["stiffness"] is not None else 100.0 * ke_i) * sf
+            sd = 0.03 * l_i
+            laws.append((kf, lambda s, kf=kf, sd=sd: nonlinear_penalty(s, kf, 0.01 * kf, sd / 3.0, sd)))
+    k = sum(k_i for k_i, _ in laws) / len(laws) if laws else None
     compliance = c["Hs"] / Ms + c["Hm"] / Mm
 
     def pen(p):
-        if method == "PENALTY":
+        if method == "PENALTY" and len(laws) == 1:
             return p / k
-        if method == "PENALTY=NONLINEAR":
-            return invert(lambda s: nonlinear_penalty(s, kf, ki, se, sd), p, sd)
+        if method in ("PENALTY", "PENALTY=NONLINEAR"):
+            law = lambda s: sum(f(s) for _, f in laws) / len(laws)
+            return invert(law, p, p / k)
         return 0.0  # direct; augmented Lagrange within its tolerance (checked apart)
 
     gap = c["gap"]
@@ -199,19 +236,26 @@ def expectation(c):
     u_top = -(p * compliance + h + gap)
     tol_pen = None
     if method == "AUGMENTED LAGRANGE":
-        tol_pen = (c["tol"] if c["tol"] is not None else (0.001 / math.sqrt(sf) if sf < 1 else 0.001)) * l_char
-    exp = dict(p=p, penetration=h, u_top=u_top, ke=ke, l_char=l_char, k=k or kf, tol_pen=tol_pen,
+        # default: 0.1 % of the characteristic length, 5 % for finite-sliding surface to surface
+        # (general contact included), / sqrt(sf) when sf < 1 (contact/normal_behavior.cpp)
+        base = 0.001 if c["discretization"] == "NODE TO SURFACE" else 0.05
+        tol_pen = (c["tol"] if c["tol"] is not None else (base / math.sqrt(sf) if sf < 1 else base)) * \
+            min(l for _, l in sides)  # every row under its own tolerance
+    exp = dict(p=p, penetration=h, u_top=u_top, ke=ke, l_char=l_char, k=k, tol_pen=tol_pen,
                force=p * c["W"] ** (dim - 1), dim=dim, compliance=compliance, load=c["load"], gap=float(gap),
-               d=float(c["d"] or 0.0))
+               d=float(c["d"] or 0.0), general=general, rows=len(sides),
+               ks=[k_i for k_i, _ in laws], kes=[ke_i for ke_i, _ in sides], W=c["W"])
     if c["unit"] == "m":
         exp = {key: (v * SCALE.get(key, 1.0) if isinstance(v, float) else v) for key, v in exp.items()}
+        exp["ks"] = [v * SCALE["k"] for v in exp["ks"]]
+        exp["kes"] = [v * SCALE["ke"] for v in exp["kes"]]
         exp["force"] *= force_scale(dim)
     return exp
 
 
 # mm → m: lengths × 1e-3, stresses × 1e6; k (stress/length) × 1e9; forces: force_scale
 SCALE = dict(p=1e6, penetration=1e-3, u_top=1e-3, ke=1e9, l_char=1e-3, k=1e9, tol_pen=1e-3, force=1.0,
-             compliance=1e-9, gap=1e-3, d=1e-3)
+             compliance=1e-9, gap=1e-3, d=1e-3, W=1e-3)
 
 
 def force_scale(dim):

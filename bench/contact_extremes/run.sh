@@ -4,10 +4,13 @@
 # Every case is checked against its analytic answer and classified right / stopped / WRONG.
 # Writes bench/results/contact_extremes.md (printed) and .json; see extremes.py.
 #
-#   bash bench/contact_extremes/run.sh [--groups penalty modulus size nu gap units] [--discretization "SURFACE TO SURFACE"]
+#   bash bench/contact_extremes/run.sh [--groups penalty modulus size nu gap units]
+#        [--discretization "SURFACE TO SURFACE" | GENERAL] [--compare bench/results/OLD.json]
 #   env: BUILD (default build)
 #
-# Each run is a small deck (well under a second); the whole set takes about a minute.
+# GENERAL: general contact (*CONTACT INCLUSIONS, ALL EXTERIOR) instead of the pair (Hertz cases
+# not run). --compare: a section of what changed against an earlier run's .json.
+# Each run is a small deck (well under a second); each set takes about a minute.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build}
