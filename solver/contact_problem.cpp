@@ -322,6 +322,16 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     // node based), contact/normal_behavior.cpp.
     auto scales = contact::surface_scales(m, *entry.slave);
     if (!scales) scales = contact::surface_scales(m, *entry.master);
+    // A balanced two-row interaction (general contact): both rows take the mean of the two
+    // surfaces' scales, so they hold one law, see the same gap, and each reports the pressure
+    // that acts (with a row's own k_e one surface showed 2/3 p and the other 4/3 p).
+    if (entry.general && entry.weight != 1.0 && entry.slave != entry.master) {
+      const auto other = contact::surface_scales(m, *entry.master);
+      if (scales && other) {
+        scales->element_stiffness = 0.5 * (scales->element_stiffness + other->element_stiffness);
+        scales->characteristic_length = 0.5 * (scales->characteristic_length + other->characteristic_length);
+      }
+    }
     p->ke = scales ? scales->element_stiffness : 0.0;
     p->l_char = scales ? scales->characteristic_length : p->geometry->search_radius();
 
@@ -363,6 +373,15 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
                                                                "an element-based surface with an elastic material", pair_name));
     if (!entry.general) p->gap_offset = clearance_offsets(m, deck, *p->geometry);
     if (p->tied_law) p->gap_offset = tied_offsets(m, *p->geometry);
+    // A balanced interaction whose law goes to multipliers (stiffer than 1000 k_e) would hold
+    // two multipliers on one gap: its first row takes the whole weight, the second is dropped.
+    if (p->stiff && entry.general && entry.weight != 1.0 && entry.slave != entry.master) {
+      const bool second = row > 0 && table[row - 1].general && table[row - 1].slave == entry.master &&
+                          table[row - 1].master == entry.slave;
+      if (second) continue;
+      p->weight = 1.0;
+      p->geometry->set_area_weight(1.0);
+    }
     pairs_.push_back(std::move(p));
   }
 }
@@ -521,11 +540,16 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       } else {
         const auto pv = p.pressure(i, s.lambda);
         closed = p.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
-        // Damping a node that keeps crossing the law's kink: after two crossings in this attempt
-        // its stiffness stays in the tangent while it is open (the force is still the law's), so
-        // Newton stops bouncing between the two branches (a stiff law, e.g. augmented Lagrange's
-        // 1000 k_e, otherwise cycles on faceting noise).
-        p.contributes[i] = pv.active || (p.kin[i].found && s.flips >= 2);
+        // Damping an augmented-Lagrange node that keeps crossing the law's kink: after two
+        // crossings in this attempt its stiffness stays in the tangent while it is open (the
+        // force is still the law's), so Newton stops bouncing between the branches at 1000 k_e
+        // (the interference fit's faceting noise). Not for plain penalty: there the modified
+        // tangent turned Hertz's quadratic convergence linear (22 → 77 iterations).
+        // A node touching within round-off (g < 1e-9 l_char) brings the law's first slope too:
+        // a penalty law acts only from h + c0 ≥ 0, and a gap of +1e-12 would otherwise leave a
+        // body that rests on its contact with no stiffness at all (bench/contact_extremes).
+        const bool touching = p.kin[i].found && g < close_below;
+        p.contributes[i] = pv.active || touching || (p.augmented && p.kin[i].found && s.flips >= 2);
       }
       if (closed != s.closed) {
         ++it.status_changes;

@@ -74,8 +74,8 @@ std::string field_key(std::string_view v, Domain d) {
       if (is_variable(v, k, 1)) return std::string(k);
   }
   if (d == Domain::Contact || d == Domain::Model) {
-    if (v == "CSTRESS") return "CPRESS";
-    if (v == "CDISP") return "COPEN";
+    if (v == "CSTRESS" || v == "CSTR") return "CPRESS";  // CSTR, CDIS: CalculiX's *CONTACT FILE
+    if (v == "CDISP" || v == "CDIS") return "COPEN";
     if (v == "CFN1" || v == "CFN2" || v == "CFN3") return "CFN";
     if (v == "CFS1" || v == "CFS2" || v == "CFS3") return "CFS";
     for (std::string_view k : {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN", "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFS"})
@@ -252,8 +252,9 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (key.empty()) add_unique(not_computed_, v);
         else add_unique(a.variables, key);
         // CSTRESS = CPRESS + CSHEAR1/2, CDISP = COPEN + CSLIP1/2 (with friction).
-        if ((v == "CSTRESS" || v == "CDISP") && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
-          for (const char* t : v == "CSTRESS" ? std::array{"CSHEAR1", "CSHEAR2"} : std::array{"CSLIP1", "CSLIP2"})
+        const bool stress = v == "CSTRESS" || v == "CSTR", disp = v == "CDISP" || v == "CDIS";
+        if ((stress || disp) && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
+          for (const char* t : stress ? std::array{"CSHEAR1", "CSHEAR2"} : std::array{"CSLIP1", "CSLIP2"})
             add_unique(a.variables, t);
       }
       field_timing_.emplace_back(r, period);

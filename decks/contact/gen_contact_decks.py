@@ -314,6 +314,9 @@ def main():
         f.write(open(os.path.join(HERE, "patch_2d_self.inp")).read()
                 .replace("TYPE=NODE TO SURFACE", "TYPE=SURFACE TO SURFACE")
                 .replace("(self-contact of", "(surface-to-surface self-contact of"))
+    # Resting on its support with a gap of round-off (bench/contact_extremes "touch_gap").
+    with open(os.path.join(HERE, "patch_2d_touch_penalty.inp"), "w") as f:
+        f.write(patch_2d("penalty", offset=2e-12))
     with open(os.path.join(HERE, "patch_2d_general.inp"), "w") as f:
         f.write(patch_2d_general())
     with open(os.path.join(HERE, "patch_2d_general_friction.inp"), "w") as f:

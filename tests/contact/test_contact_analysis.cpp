@@ -310,6 +310,18 @@ TEST(ContactRegression, AnOvershootThatLosesTheMasterIsCutBack) {
   EXPECT_GE(cutbacks, 1);
 }
 
+// A block resting on its support across a gap of 2e-12 (round-off of the model size): touching
+// brings the penalty law's stiffness, so the block is held and carries p (it floated and
+// diverged once: bench/contact_extremes "touch_gap"). CalculiX's *CONTACT FILE, CSTR writes
+// the CPRESS field (it was "not computed").
+TEST(ContactRegression, ABlockRestingWithinRoundOffIsHeldByThePenaltyLaw) {
+  const DeckDir dir;
+  auto r = run_text(dir, "touch.inp", deck_with("patch_2d_touch_penalty.inp", "CPRESS, COPEN, CSTATUS", "*CONTACT FILE\nCSTR\n"));
+  const auto fig = check_patch(*r, "penalty, gap 2e-12");
+  EXPECT_LE(fig.max_cpress_error, 1e-6);
+  for (const auto& m : r->capture.messages) EXPECT_EQ(m.find("not computed"), std::string::npos) << m;
+}
+
 // *CONTACT PRINT with Abaqus's CSTRESS and CalculiX's CSTR / CDIS: a table per pair in the .dat,
 // a row per slave node, with the same values as the results file's CPRESS and COPEN (bench
 // report: CSTR was "not computed" and the .dat had no contact table).

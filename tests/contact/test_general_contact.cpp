@@ -117,6 +117,31 @@ TEST(GeneralContactPatchTest, AllExteriorCarriesTheUniformPressureOnBothSurfaces
   }
 }
 
+// The two blocks of different stiffness (E 3000 below, 1000 above): each row of the balanced
+// interaction once took its own slave's k_e and reported 2/3 p on one surface and 4/3 p on the
+// other (bench/contact_extremes "general_split"); both rows now hold the mean k_e, so every
+// interface node carries p. With a given stiffness of 1e20 (multipliers) one row is kept, not
+// two multipliers on one gap (which gave −4929 … 4703 for p = 10).
+TEST(GeneralContactPatchTest, UnequalBodiesReportThePressureThatActsOnBothSurfaces) {
+  const DeckDir dir;
+  std::string base = general_deck("*SOLID SECTION, ELSET=LOWER, MATERIAL=SOFT", "*SOLID SECTION, ELSET=LOWER, MATERIAL=STIFF");
+  base.insert(base.find("*STEP"), "*MATERIAL, NAME=STIFF\n*ELASTIC\n3000., 0.3\n");
+  std::string given = base;
+  given.replace(given.find(", , SMOOTH\n"), 11, ", , STIFFLAW\n");
+  given.insert(given.find("*STEP"), "*SURFACE INTERACTION, NAME=STIFFLAW\n*SURFACE BEHAVIOR, PENALTY\n1e20\n");
+  for (const auto& [name, text] : {std::pair<std::string, std::string>{"default penalty", base}, {"k = 1e20", given}}) {
+    auto r = verification::run_deck(dir.write("unequal.inp", text));
+    ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
+    const auto c = closed_figures(*r);
+    EXPECT_GE(c.n, 4u) << name;
+    EXPECT_LE(c.worst, 0.01) << name;
+    const auto rf = verification::sum_rf(*r, r->capture.last());
+    EXPECT_NEAR(rf[1], kP * kWidth, 1e-8 * kP * kWidth) << name;
+    std::printf("[contact] general contact, unequal bodies (%s): max |CPRESS - p|/p = %.3e over %zu nodes\n",
+                name.c_str(), c.worst, c.n);
+  }
+}
+
 // Self-contact (*CONTACT PAIR with one surface, `BOTH_S,`): one surface holding both blocks'
 // contact faces. Every contact is seen from both sides, so the row has weight ½, and the default
 // method is augmented Lagrange (multipliers would constrain each contact twice). Surface to
