@@ -7,7 +7,7 @@
 #   bash bench/smoothing_trade/run.sh    env: BUILD (default build), RUNS (3), RUNS_BIG (1),
 #                                             LEVELS_2D ("1 2 3 4"), LEVELS_PIN ("1 2 3")
 #
-# The pin's levels 2 and 3 take about 1.3 and 3.6 minutes of CPU (faceted and smoothed together; run
+# The pin's levels 2 and 3 take about 11 and 27 s of CPU (faceted and smoothed together; run
 # once each), the rest a few seconds. The machine is shared: CPU times are the measure, wall times are
 # noisy. `trade.py --report-only --work BUILD/smoothing_trade` rewrites the table and the plot.
 set -euo pipefail
