@@ -10,25 +10,10 @@ namespace inpact::contact {
 
 NodeToSurfacePair::NodeToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
                                      double out_of_plane_thickness)
-    : dim_(dim) {
-  SurfaceOptions options;
-  options.out_of_plane_thickness = out_of_plane_thickness;
-  slave_ = ContactSurface::build(model, slave, options);
-  master_ = ContactSurface::build(model, master, options);
-  const auto x = reference_coordinates(model.mesh.nodes);
-  // A facet size: slave nodes farther than this from the master are open without doubt.
-  radius_ = std::max(typical_facet_size(master_, x), typical_facet_size(slave_, x));
-  if (!(radius_ > 0.0)) radius_ = 1.0;
-}
+    : PairKinematics(model, slave, master, dim, out_of_plane_thickness) {}
 
 void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) {
-  if (!built_ || search_.needs_rebuild(master_.facets(), x)) {
-    SearchOptions o;
-    o.radius = radius_;
-    o.margin = 0.5 * radius_;
-    search_.build(master_.facets(), x, o);
-    built_ = true;
-  }
+  refresh_search(x);
   const auto areas = slave_.nodal_areas(x);
   const auto nodes = slave_.nodes();
   out.resize(nodes.size());

@@ -25,10 +25,7 @@ class NodeToSurfacePair final : public PairKinematics {
   /// based). `dim`: 2 or 3, the model's DOFs per node.
   NodeToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim, double out_of_plane_thickness);
 
-  const ContactSurface& slave() const override { return slave_; }
-  const ContactSurface& master() const override { return master_; }
   /// Largest distance at which a master facet is guaranteed to be found (a facet size).
-  double search_radius() const override { return radius_; }
 
   /// Searches and projects every slave node on coordinates `x` (all node rows); `out` has one
   /// entry per slave node, in slave().nodes() order. Rebuilds the search tree when the master
@@ -50,12 +47,6 @@ class NodeToSurfacePair final : public PairKinematics {
   /// Replaces p's point, normal and gap by those of the corrected surfaces (slave node `slave`).
   void correct(std::span<const Vec3> x, std::size_t slave, Projection& p) const;
 
-  int dim_;
-  ContactSurface slave_, master_;
-  FacetSearch search_;
-  double radius_ = 0.0;
-  bool built_ = false;
-  std::vector<std::int32_t> candidates_;
   SurfaceCorrections master_correction_, slave_correction_;
 };
 

@@ -12,7 +12,9 @@
 
 #include "contact/contact_surface.hpp"
 #include "contact/projection.hpp"
+#include "contact/search.hpp"
 #include "contact/vec3.hpp"
+#include "model/model.hpp"
 
 namespace inpact::contact {
 
@@ -32,14 +34,15 @@ struct SlaveKinematics {
   GapLinearization friction_lin;
 };
 
-/// A contact pair's discretisation.
+/// A contact pair's discretisation: its two surfaces and the search over the master's facets,
+/// shared by both discretisations; what they measure is theirs.
 class PairKinematics {
  public:
   virtual ~PairKinematics() = default;
-  virtual const ContactSurface& slave() const = 0;
-  virtual const ContactSurface& master() const = 0;
+  const ContactSurface& slave() const { return slave_; }
+  const ContactSurface& master() const { return master_; }
   /// Largest distance at which a master facet is guaranteed to be found (a facet size).
-  virtual double search_radius() const = 0;
+  double search_radius() const { return radius_; }
   /// Searches and measures every slave node on coordinates `x` (all node rows); `out` gets one
   /// entry per slave node, in slave().nodes() order.
   virtual void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) = 0;
@@ -58,6 +61,19 @@ class PairKinematics {
   void set_self_contact(bool self) { self_contact_ = self; }
 
  protected:
+  /// The pair's surfaces from `model`; the search radius is the larger median facet size of
+  /// the two (a slave point farther than that from the master is open without doubt).
+  PairKinematics(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
+                 double out_of_plane_thickness);
+  /// Rebuilds the search tree when the master moved more than its margin since the last build.
+  void refresh_search(std::span<const Vec3> x);
+
+  int dim_;
+  ContactSurface slave_, master_;
+  FacetSearch search_;
+  double radius_ = 0.0;
+  bool built_ = false;
+  std::vector<std::int32_t> candidates_;  ///< scratch for search queries
   double area_weight_ = 1.0;
   bool self_contact_ = false;
 };

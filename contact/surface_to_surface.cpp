@@ -44,28 +44,15 @@ std::array<double, 8> weighting_functions(FacetShape shape, const std::array<dou
 
 SurfaceToSurfacePair::SurfaceToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
                                            double out_of_plane_thickness)
-    : dim_(dim) {
-  SurfaceOptions options;
-  options.out_of_plane_thickness = out_of_plane_thickness;
-  slave_ = ContactSurface::build(model, slave, options);
-  master_ = ContactSurface::build(model, master, options);
+    : PairKinematics(model, slave, master, dim, out_of_plane_thickness) {
   if (slave_.node_based())
     throw std::invalid_argument("surface-to-surface contact needs an element-based slave surface; '" + slave_.name() +
                                 "' is node based (use TYPE=NODE TO SURFACE)");
-  const auto x = reference_coordinates(model.mesh.nodes);
-  radius_ = std::max(typical_facet_size(master_, x), typical_facet_size(slave_, x));
-  if (!(radius_ > 0.0)) radius_ = 1.0;
   points_.resize(slave_.facets().size());
 }
 
 void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) {
-  if (!built_ || search_.needs_rebuild(master_.facets(), x)) {
-    SearchOptions o;
-    o.radius = radius_;
-    o.margin = 0.5 * radius_;
-    search_.build(master_.facets(), x, o);
-    built_ = true;
-  }
+  refresh_search(x);
   const auto facets = slave_.facets();
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});

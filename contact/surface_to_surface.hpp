@@ -65,9 +65,6 @@ class SurfaceToSurfacePair final : public PairKinematics {
   /// The pair's surfaces from `model`; both must be element based (std::invalid_argument otherwise).
   SurfaceToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim, double out_of_plane_thickness);
 
-  const ContactSurface& slave() const override { return slave_; }
-  const ContactSurface& master() const override { return master_; }
-  double search_radius() const override { return radius_; }
   void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
   void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
 
@@ -85,13 +82,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
     bool overlaps = false;
   };
   void project_node(std::span<const Vec3> x, SlaveKinematics& k);
-  int dim_;
-  ContactSurface slave_, master_;
-  FacetSearch search_;
-  double radius_ = 0.0;
-  bool built_ = false;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
-  std::vector<std::int32_t> candidates_;
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs (when corrected).
   void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const;
