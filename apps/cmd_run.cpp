@@ -1,8 +1,11 @@
 /// `inpact run`: read the deck, run the analysis, and write JOB.h5 (+ .xdmf), JOB.sta and JOB.dat.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -73,6 +76,31 @@ class RunObserver final : public solver::AnalysisObserver {
   bool tty_;
 };
 
+/// Wall time of a run's phases, for `--timings FILE` (the study's cases write one each, and
+/// bench/study_overhead.py reads them: what a case spends beside its solve).
+class PhaseClock {
+ public:
+  using Clock = std::chrono::steady_clock;
+  /// Seconds since the last mark, added to `phase`.
+  void mark(const char* phase) {
+    const auto now = Clock::now();
+    seconds_.emplace_back(phase, std::chrono::duration<double>(now - last_).count());
+    last_ = now;
+  }
+  void add(const char* phase, double s) { seconds_.emplace_back(phase, s); }
+  /// key=value lines: one per phase and total_s (first mark's start to the last mark).
+  void write(const std::string& path) const {
+    if (path.empty()) return;
+    std::ofstream out(path);
+    for (const auto& [phase, s] : seconds_) out << phase << "_s=" << fmt::format("{:.6f}", s) << "\n";
+    out << "total_s=" << fmt::format("{:.6f}", std::chrono::duration<double>(last_ - start_).count()) << "\n";
+  }
+
+ private:
+  Clock::time_point start_ = Clock::now(), last_ = start_;
+  std::vector<std::pair<const char*, double>> seconds_;
+};
+
 /// SHA-256 over the deck and every file it included, in reading order.
 std::string deck_digest(const model::Model& m) {
   std::string all;
@@ -88,6 +116,7 @@ std::string deck_digest(const model::Model& m) {
 }  // namespace
 
 int run_analysis(const RunOptions& options) {
+  PhaseClock clock;
   const auto loaded = load_analysable_deck(options.deck, options.parameters);
   if (!loaded) return kDeckError;
   const parser::ReadResult& result = *loaded;
@@ -95,10 +124,12 @@ int run_analysis(const RunOptions& options) {
   const std::filesystem::path dir = options.output_dir;
   try {
     std::filesystem::create_directories(dir);
-    io::ResultsWriter results =
-        io::ResultsWriter::create(dir / (job + ".h5"), result.model, deck_digest(result.model), INPACT_VERSION);
+    const std::string digest = deck_digest(result.model);
+    clock.mark("read");
+    io::ResultsWriter results = io::ResultsWriter::create(dir / (job + ".h5"), result.model, digest, INPACT_VERSION);
     io::StatusLog status(dir / (job + ".sta"), INPACT_VERSION);
     io::DatReport dat(dir / (job + ".dat"), INPACT_VERSION, result.model.heading);
+    clock.mark("create");
     RunObserver observer(results, status, dat, options);
     solver::AnalysisOptions analysis_options;
     analysis_options.threads = options.threads;
@@ -113,10 +144,14 @@ int run_analysis(const RunOptions& options) {
       std::fprintf(stderr, "%s\n", e.what());
       return kDeckError;
     }
+    clock.mark("analysis");
+    clock.add("output", outcome.output_seconds);
     observer.end_line();
     results.finish(outcome.completed ? io::RunStatus::Completed : io::RunStatus::Aborted);
     status.finish(outcome.completed);
     dat.finish(outcome.completed);
+    clock.mark("finish");
+    clock.write(options.timings);
     if (!outcome.completed) {
       std::fprintf(stderr, "%s: the analysis stopped: %s\n", options.deck.c_str(), outcome.message.c_str());
       return kAnalysisFailed;

@@ -38,7 +38,7 @@ void print_counts(const std::vector<study::CaseOutcome>& outcomes, const fs::pat
 
 int study_main(const StudyOptions& options) {
   study::RunnerOptions runner;
-  runner.executable = options.executable.empty() ? study::self_executable() : options.executable;
+  runner.executable = options.executable;
   runner.jobs = options.jobs;
   runner.threads = options.threads;
   runner.quiet = options.quiet;

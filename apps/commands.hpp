@@ -19,6 +19,7 @@ struct RunOptions {
   std::map<std::string, std::string> parameters;
   bool quiet = false;
   bool verbose = false;
+  std::string timings;  ///< --timings FILE: the wall time of each phase, key=value lines
 };
 
 struct CompareOptions {

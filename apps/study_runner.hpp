@@ -1,9 +1,9 @@
 #pragma once
 /// `inpact study`: running the cases of a manifest on worker processes, and the results table.
 ///
-/// Each case runs as its own process, the inpact executable itself:
-///   inpact run DECK -j ID -o DIR/cases/ID --threads T -q -P name=value ...
-/// with its output in DIR/cases/ID/log.txt. When it ends, DIR/cases/ID/case.result (key=value
+/// Each case runs as its own process, a fork of the study that runs what
+///   inpact run DECK -j ID -o DIR/cases/ID --threads T -q --timings DIR/cases/ID/timings.txt -P name=value ...
+/// runs (or that command itself, with --inpact EXE), with its output in DIR/cases/ID/log.txt. When it ends, DIR/cases/ID/case.result (key=value
 /// lines: exit code, status, message, wall time and the collected values) is written through a
 /// temporary file and a rename, so a killed worker or a killed study loses at most the case
 /// that was running. A case whose results file is COMPLETED is not run again (resume); a
@@ -19,7 +19,7 @@ namespace inpact::app::study {
 
 struct RunnerOptions {
   std::filesystem::path dir;     ///< the study folder (manifest.csv, cases/, results.csv)
-  std::string executable;        ///< the inpact executable (default: this process's)
+  std::string executable;        ///< --inpact EXE: exec EXE for each case (default: fork and run in-process)
   int jobs = 1;                  ///< worker processes
   int threads = 1;               ///< --threads of each case
   Shard shard;
@@ -32,12 +32,9 @@ struct CaseOutcome {
   std::string status = "pending";  ///< completed | failed | pending
   int exit_code = -1;
   std::string message;
-  double wall_time = -1;           ///< seconds, process start to exit; < 0 unknown
+  double wall_time = -1;           ///< seconds, fork to exit; < 0 unknown
   std::map<std::string, std::string> values;  ///< increments, iterations, cutbacks + collected specs
 };
-
-/// This process's executable (/proc/self/exe).
-std::string self_executable();
 
 /// Runs the cases of `manifest` in `options.shard` on `options.jobs` workers, skipping those
 /// already COMPLETED; writes each case.result and then DIR/results.csv. Returns the number of

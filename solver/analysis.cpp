@@ -1,6 +1,7 @@
 #include "analysis.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 
@@ -47,6 +48,7 @@ struct StepRun {
   SolutionControls controls;
   StepOutput output;
   std::unique_ptr<ContactProblem> contact;  ///< null when no contact pair is in force
+  double output_seconds = 0.0;              ///< wall time in write_output this step
 };
 
 /// Reactions at the prescribed DOFs: RF = f_int − f_ext (zero elsewhere). A DOF that an
@@ -73,6 +75,7 @@ std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
 void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
                   double dt, const OutputDue& due, AnalysisObserver& observer) {
   if (!due.any_field() && !due.any_print()) return;
+  const auto started = std::chrono::steady_clock::now();
   ContactResults contact;
   if (run.contact) contact = run.contact->results(s.u, s.contact);
   const std::vector<double> delta_t = run.conditions.temperature_change(t);
@@ -99,6 +102,7 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
     print.tables = std::move(values.tables);
     observer.print_frame(print);
   }
+  run.output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 /// The augmentation level of one increment attempt: Newton to convergence, then, for
@@ -225,6 +229,7 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
   state.f_int.assign(am.n_dof(), 0.0);
   state.f_ext.assign(am.n_dof(), 0.0);
   double total_time = 0.0;
+  double output_seconds = 0.0;
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
@@ -235,11 +240,15 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));
     AnalysisOutcome outcome = run_increments(am, run, state, observer);
-    if (!outcome.completed) return outcome;
+    output_seconds += run.output_seconds;
+    if (!outcome.completed) {
+      outcome.output_seconds = output_seconds;
+      return outcome;
+    }
     history = run.conditions.end_state(reactions(run.dofs, state));
     total_time += step.static_procedure->time_period;
   }
-  return {true, ""};
+  return {true, "", output_seconds};
 }
 
 }  // namespace inpact::solver

@@ -16,6 +16,9 @@ struct AnalysisOutcome {
   bool completed = false;
   /// Why it stopped: step, increment, time, and the worst residual's node and DOF.
   std::string message;
+  /// Wall seconds spent computing and writing output (frames and printed tables), so that a
+  /// caller can tell the solve from the output it asked for (`inpact run --timings`).
+  double output_seconds = 0.0;
 };
 
 /// Runs every step of `model`; progress and frames go to `observer`. Throws AnalysisError when
