@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev                              # dense element algebra
   libsuitesparse-dev libopenblas-dev         # CHOLMOD / UMFPACK on an optimised BLAS
   libhdf5-dev                                # results file
+  libssl-dev                                 # SHA-256 of the deck (libcrypto, static)
   libfmt-dev libcli11-dev                    # formatting, command line
   libgtest-dev                               # tests
   python3-h5py python3-meshio python3-paraview xvfb xauth  # results-file reader tests (tests/io)

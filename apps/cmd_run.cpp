@@ -3,13 +3,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "case_values.hpp"
 #include "commands.hpp"
 #include "deck_loading.hpp"
 #include "exit_codes.hpp"
@@ -30,7 +32,12 @@ namespace {
 class RunObserver final : public solver::AnalysisObserver {
  public:
   RunObserver(io::ResultsWriter& results, io::StatusLog& status, io::DatReport& dat, const RunOptions& options)
-      : results_(results), status_(status), dat_(dat), options_(options), tty_(isatty(fileno(stdout)) != 0) {}
+      : results_(results),
+        status_(status),
+        dat_(dat),
+        options_(options),
+        tty_(isatty(fileno(stdout)) != 0),
+        values_(options.collect) {}
 
   void step_started(const model::Step& step, int number) override {
     results_.begin_step(step);
@@ -46,6 +53,7 @@ class RunObserver final : public solver::AnalysisObserver {
   void attempt_finished(const solver::StatusRow& row) override {
     status_.write(row);
     results_.append_status(row);
+    if (values_.active()) values_.attempt(row);
     if (options_.quiet) return;
     const std::string line = fmt::format("  step {} inc {} att {}{}  iterations {}  step time {:.4g}  dt {:.3g}",
                                          row.step, row.increment, row.attempt, row.cut_back ? "U" : "",
@@ -55,7 +63,10 @@ class RunObserver final : public solver::AnalysisObserver {
     else std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   }
-  void frame(const solver::Frame& frame) override { results_.write_frame(frame); }
+  void frame(const solver::Frame& frame) override {
+    results_.write_frame(frame);
+    if (values_.active()) values_.frame(frame);
+  }
   void print_frame(const solver::PrintFrame& frame) override { dat_.write(frame); }
   /// Notes and warnings of the analysis (contact set-up, cutbacks): on stderr unless quiet. A
   /// failure is not a message: run_analysis returns it and it is printed whatever the options.
@@ -67,6 +78,16 @@ class RunObserver final : public solver::AnalysisObserver {
   void end_line() {
     if (tty_ && !options_.quiet) std::printf("\n");
   }
+  /// A study's collected values (once the results file is COMPLETED).
+  void write_values(const model::Model& model) const {
+    if (options_.values.empty()) return;
+    const auto nset_rows = [&](const std::string& name) -> std::optional<std::set<std::int64_t>> {
+      auto it = model.mesh.nsets.find(name);
+      if (it == model.mesh.nsets.end()) return std::nullopt;
+      return std::set<std::int64_t>(it->second.rows.begin(), it->second.rows.end());
+    };
+    study::write_atomically(options_.values, study::format_values(values_.values(nset_rows)));
+  }
 
  private:
   io::ResultsWriter& results_;
@@ -74,6 +95,7 @@ class RunObserver final : public solver::AnalysisObserver {
   io::DatReport& dat_;
   const RunOptions& options_;
   bool tty_;
+  study::CaseValueRecorder values_;
 };
 
 /// Wall time of a run's phases, for `--timings FILE` (the study's cases write one each, and
@@ -103,14 +125,13 @@ class PhaseClock {
 
 /// SHA-256 over the deck and every file it included, in reading order.
 std::string deck_digest(const model::Model& m) {
-  std::string all;
+  io::Sha256 hash;
+  char buf[1 << 16];
   for (const auto& f : m.sources.files) {
     std::ifstream in(f.path, std::ios::binary);
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    all += buf.str();
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) hash.update(std::string_view(buf, static_cast<std::size_t>(in.gcount())));
   }
-  return io::sha256(all);
+  return hash.hex();
 }
 
 }  // namespace
@@ -150,6 +171,7 @@ int run_analysis(const RunOptions& options) {
     results.finish(outcome.completed ? io::RunStatus::Completed : io::RunStatus::Aborted);
     status.finish(outcome.completed);
     dat.finish(outcome.completed);
+    if (outcome.completed) observer.write_values(result.model);
     clock.mark("finish");
     clock.write(options.timings);
     if (!outcome.completed) {

@@ -20,6 +20,9 @@ struct RunOptions {
   bool quiet = false;
   bool verbose = false;
   std::string timings;  ///< --timings FILE: the wall time of each phase, key=value lines
+  /// A study's forked case: the values to collect (OP:VAR[@NSET]) and where to write them.
+  std::vector<std::string> collect;
+  std::string values;
 };
 
 struct CompareOptions {

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <deque>
 #include <limits>
 #include <set>
@@ -16,10 +17,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "case_values.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "io/io_error.hpp"
 #include "io/results_reader.hpp"
+#include "io/results_writer.hpp"
 
 namespace inpact::app::study {
 
@@ -30,6 +33,8 @@ namespace {
 
 fs::path case_dir(const fs::path& dir, const std::string& id) { return dir / "cases" / id; }
 fs::path outcome_path(const fs::path& dir, const std::string& id) { return case_dir(dir, id) / "case.result"; }
+/// The values a forked case collected in memory (written after its results file COMPLETED).
+fs::path values_path(const fs::path& dir, const std::string& id) { return case_dir(dir, id) / "values.txt"; }
 
 /// The options of one case's `inpact run`: job ID in DIR/cases/ID, quiet, the case's
 /// parameters, and its phase times in DIR/cases/ID/timings.txt.
@@ -42,6 +47,8 @@ RunOptions case_run_options(const Manifest& m, const Case& c, const RunnerOption
   r.parameters.insert(c.parameters.begin(), c.parameters.end());
   r.quiet = true;
   r.timings = (case_dir(o.dir, c.id) / "timings.txt").string();
+  r.collect = m.collect;
+  r.values = values_path(o.dir, c.id).string();
   return r;
 }
 
@@ -74,6 +81,8 @@ pid_t spawn_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
   }
+  std::error_code ec;
+  fs::remove(values_path(o.dir, c.id), ec);  // an earlier run's values are not this run's
   std::fflush(nullptr);  // the child must not print this process's buffered lines again
   const pid_t pid = fork();
   if (pid != 0) return pid;
@@ -101,6 +110,13 @@ pid_t spawn_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
   execv(argv[0], argv.data());
   std::fprintf(stderr, "inpact study: cannot run %s: %s\n", argv[0], std::strerror(errno));
   _exit(127);
+}
+
+/// What every forked case would set up for itself, done once here: the HDF5 library, and the
+/// time zone the .sta and .dat headers read (localtime loads /etc/localtime on first use).
+void prepare_for_cases() {
+  io::start_results_library();
+  tzset();
 }
 
 /// The line of a case's log that says why it stopped: the first "error:" line (a deck error
@@ -136,14 +152,20 @@ CaseOutcome finish_case(const Manifest& m, const Case& c, const RunnerOptions& o
   const fs::path h5 = o.dir / Manifest::results_path(c.id);
   bool completed = false;
   if (out.exit_code == 0) {
-    // One read of the results: it refuses a file that is not COMPLETED; only then is the
-    // status looked up on its own, to tell a failed case from a failed collection.
+    // A forked case wrote its values once its results were COMPLETED: a few lines to read.
+    // Otherwise one read of the results file: it refuses a file that is not COMPLETED; only
+    // then is the status looked up on its own, to tell a failed case from a failed collection.
     try {
-      out.values = collect_values(h5, m.collect);
+      out.values = parse_values(read_text(values_path(o.dir, c.id)));
       completed = true;
-    } catch (const std::exception& e) {
-      completed = io::results_status(h5) == "COMPLETED";
-      if (completed) out.message = std::string("collect: ") + e.what();
+    } catch (const std::exception&) {
+      try {
+        out.values = collect_values(h5, m.collect);
+        completed = true;
+      } catch (const std::exception& e) {
+        completed = io::results_status(h5) == "COMPLETED";
+        if (completed) out.message = std::string("collect: ") + e.what();
+      }
     }
   }
   if (completed) {
@@ -173,75 +195,9 @@ bool already_completed(const Manifest& m, const Case& c, const RunnerOptions& o)
   return true;
 }
 
-std::string format_value(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
-
-/// One spec on the last frame of the last step that has frames.
-std::string evaluate(const io::ResultsFile& r, const CollectSpec& spec) {
-  const io::ResultsStep* step = nullptr;
-  for (const auto& s : r.steps)
-    if (s.n_frames() > 0) step = &s;
-  if (!step) return "";
-  const io::ResultsField* field = nullptr;
-  int component = -1;
-  for (const auto& f : step->fields) {
-    if (f.key == spec.var) {
-      field = &f;
-      break;
-    }
-    for (std::size_t c = 0; c < f.components.size(); ++c)
-      if (f.components[c] == spec.var && !field) {
-        field = &f;
-        component = static_cast<int>(c);
-      }
-  }
-  if (!field || field->n_frames == 0 || field->data.empty()) return "";
-  std::set<std::int64_t> rows;
-  if (!spec.nset.empty()) {
-    std::string upper = spec.nset;
-    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    auto it = r.nsets.find(upper);
-    if (it == r.nsets.end()) return "";
-    rows.insert(it->second.begin(), it->second.end());
-  }
-  const std::size_t k = field->n_frames - 1;
-  double acc = spec.op == "sum" ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-  bool any = false;
-  for (std::size_t i = 0; i < field->n_loc; ++i) {
-    if (!rows.empty() && !rows.count(field->node_rows[i])) continue;
-    for (std::size_t c = 0; c < field->n_comp; ++c) {
-      if (component >= 0 && static_cast<int>(c) != component) continue;
-      double v = field->value(k, i, c);
-      if (std::isnan(v)) continue;
-      if (spec.negate) v = -v;
-      if (spec.op == "maxabs") v = std::abs(v);
-      if (spec.op == "sum") acc += v;
-      else if (!any) acc = v;
-      else if (spec.op == "min") acc = std::min(acc, v);
-      else acc = std::max(acc, v);
-      any = true;
-    }
-  }
-  return any ? format_value(acc) : "";
-}
-
 const std::vector<std::string> kBuiltinColumns = {"increments", "iterations", "cutbacks"};
 
 }  // namespace
-
-std::map<std::string, std::string> collect_values(const fs::path& h5, const std::vector<std::string>& specs) {
-  io::ReadResultsOptions read;
-  for (const auto& s : specs) read.data_for.insert(parse_collect(s).var);  // only these fields' values
-  read.with_data = !read.data_for.empty();
-  read.names = false;  // values by row: no node, element or location names
-  read.allow_incomplete = false;
-  const io::ResultsFile r = io::read_results(h5, read);
-  std::map<std::string, std::string> v;
-  v["increments"] = std::to_string(r.totals.increments);
-  v["iterations"] = std::to_string(r.totals.iterations);
-  v["cutbacks"] = std::to_string(r.totals.cut_backs);
-  for (const auto& s : specs) v[s] = evaluate(r, parse_collect(s));
-  return v;
-}
 
 std::string format_outcome(const CaseOutcome& o) {
   auto one_line = [](std::string s) {
@@ -317,6 +273,7 @@ std::vector<CaseOutcome> write_table(const Manifest& m, const fs::path& dir) {
 }
 
 int run_one_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
+  prepare_for_cases();
   fs::create_directories(case_dir(o.dir, c.id));
   if (already_completed(m, c, o)) return 0;
   const auto t0 = Clock::now();
@@ -330,6 +287,7 @@ int run_one_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
 }
 
 int run_cases(const Manifest& m, const RunnerOptions& o) {
+  prepare_for_cases();
   std::deque<const Case*> pending;
   std::size_t n_skipped = 0, n_shard = 0;
   for (std::size_t k = 0; k < m.cases.size(); ++k) {

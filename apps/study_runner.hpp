@@ -44,11 +44,6 @@ int run_cases(const Manifest& manifest, const RunnerOptions& options);
 /// completed).
 int run_one_case(const Manifest& manifest, const Case& c, const RunnerOptions& options);
 
-/// The collected values of a finished case's results file (`spec.text` → value; "" when the
-/// field or set is missing), plus increments, iterations, cutbacks from /status. Throws
-/// IoError when the file is missing, unreadable or not COMPLETED.
-std::map<std::string, std::string> collect_values(const std::filesystem::path& h5, const std::vector<std::string>& specs);
-
 std::string format_outcome(const CaseOutcome& o);
 CaseOutcome parse_outcome(const std::string& text);
 /// DIR/results.csv: one row per case of the manifest (pending ones too):

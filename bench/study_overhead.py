@@ -2,24 +2,30 @@
 """Overhead per case of `inpact study` against the solve time of a case (goal: < 5%).
 
 A study of 64 cases of a contact deck of a few thousand elements (study_overhead_deck.py) runs
-with -j 2, both cores busy. Each case's overhead beyond the analysis is measured separately,
-as medians of repeated runs:
-  start      `inpact --version`: exec, dynamic libraries, CLI set-up
-  read       `inpact check DECK` minus start: deck read + validation (+ the model summary)
-  write      `inpact run DECK` minus the same run with its field output switched off
-             (*OUTPUT, FIELD, FREQUENCY=0): computing and writing the frames. (A deck with no
-             *OUTPUT at all is no baseline: it gets Abaqus's preselected output, more fields.)
-  dispatch   the study's wall time per case over what the cases take (fork/exec, waitpid,
-             case.result, the table): 2 × study wall / 64 − mean case wall
-solve = run − start − read − write. Writes bench/results/study_overhead.md.
+with -j 2, both cores busy, as a user's study would. Everything is measured inside that study:
+each case writes cases/ID/timings.txt (`inpact run --timings`: wall seconds of its phases) and
+the study records each case's wall time from fork to exit (results.csv). Per case:
+  solve     the analysis minus the output it asked for (analysis_s - output_s)
+  read      deck read, parameter substitution, validation, the deck's SHA-256
+  create    the results file's model and view geometry, the .sta and .dat
+  output    computing and writing the frames (and printed tables)
+  finish    closing the results file and renaming it .h5
+  process   fork, exit and reaping: the case's wall time minus its timed phases
+  dispatch  what the study adds between cases (reaping, starting the next, collecting values,
+            case.result): 2 x (study wall - M) / N, where M is the study's wall time had each
+            worker started its next case the moment the last one ended (the cases' walls
+            scheduled in manifest order on 2 workers)
+overhead = everything but the solve. Not per case, and shown apart: the end of the study, when
+one worker has nothing left to run while the other finishes (2 M - the sum of the case walls).
+The same study also runs with `--inpact EXE`, each case an exec of the executable as before
+the fork workers. Each variant runs REPEAT times, alternating; the table gives medians.
+Writes bench/results/study_overhead.md (or study_overhead_<elements>.md for another size).
 
-Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)] [NX NY]
-NX NY: the lower block's elements (default 36 30: 3,240 elements in all); another size writes
-bench/results/study_overhead_<elements>.md instead.
+Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)] [NX NY] [REPEAT (3)]
+NX NY: the lower block's elements (default 36 30: 3,240 elements in all).
 """
 import csv
 import os
-import resource
 import statistics
 import subprocess
 import sys
@@ -29,6 +35,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "build-study")
 n_cases = int(sys.argv[2]) if len(sys.argv) > 2 else 64
 deck_size = sys.argv[3:5]
+repeat = int(sys.argv[5]) if len(sys.argv) > 5 else 3
 inpact = os.path.join(build, "apps", "inpact")
 work = os.path.join(build, "bench-study")
 os.makedirs(work, exist_ok=True)
@@ -36,39 +43,7 @@ os.makedirs(work, exist_ok=True)
 deck = os.path.join(work, "contact.inp")
 subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck] + deck_size, check=True)
 text = open(deck).read()
-noout = os.path.join(work, "contact_noout.inp")
-open(noout, "w").write(text[:text.index("*OUTPUT, FIELD")] + "*OUTPUT, FIELD, FREQUENCY=0\n*NODE OUTPUT\nU\n*END STEP\n")
-
-
-# The environment of a study's case (apps/study_runner.cpp): one BLAS and OpenMP thread.
-case_env = dict(os.environ)
-case_env.setdefault("OPENBLAS_NUM_THREADS", "1")
-case_env.setdefault("OMP_NUM_THREADS", "1")
-
-
-def once(args):
-    """Wall and CPU seconds (user + system) of one run."""
-    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t0 = time.perf_counter()
-    subprocess.run(args, cwd=work, env=case_env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-    wall = time.perf_counter() - t0
-    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return wall, (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
-
-
-def medians(samples):
-    return tuple(statistics.median(s[k] for s in samples) for k in range(2))
-
-
-def paired(a, b, repeat):
-    """Medians (wall, CPU) of a and of a − b, a and b run alternately: a difference of a few
-    milliseconds survives the load of other jobs better than two separate medians."""
-    ta, diff = [], []
-    for _ in range(repeat):
-        x, y = once(a), once(b)
-        ta.append(x)
-        diff.append((x[0] - y[0], x[1] - y[1]))
-    return medians(ta), medians(diff)
+n_elem = sum(1 for line in text.splitlines() if line[:1].isdigit() and line.count(",") == 4)
 
 
 def own_cpu(pid):
@@ -78,69 +53,112 @@ def own_cpu(pid):
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-# The study first: both cores busy, as the cases of a real study. Its own CPU time (without
-# the cases') is polled from /proc until it ends.
+def run_study(name, extra):
+    """Runs the study; returns its wall time, the study process's own CPU and the per-case rows
+    (results.csv joined with each case's timings.txt)."""
+    study_dir = os.path.join(work, name)
+    subprocess.run(["rm", "-rf", study_dir], check=True)
+    loads = ",".join(f"{5 + 0.25 * i:g}" for i in range(n_cases))
+    t0 = time.perf_counter()
+    study = subprocess.Popen([inpact, "study", deck, "--grid", f"load={loads}", "-j", "2", "-o", study_dir, "-q",
+                              "--collect", "max:CPRESS", "--collect", "max:-COPEN", "--collect", "sum:RF2@BOTTOM"]
+                             + extra)
+    cpu = 0.0
+    while study.poll() is None:
+        try:
+            cpu = own_cpu(study.pid)
+        except OSError:
+            pass
+        time.sleep(0.02)
+    wall = time.perf_counter() - t0
+    if study.returncode != 0:
+        sys.exit(f"the study {name} failed (exit {study.returncode})")
+    rows = list(csv.DictReader(open(os.path.join(study_dir, "results.csv"))))
+    for r in rows:
+        if r["status"] != "completed":
+            sys.exit(f"case {r['id']} of {name}: {r['status']} {r['message']}")
+        t = dict(line.strip().split("=") for line in open(os.path.join(study_dir, "cases", r["id"], "timings.txt")))
+        r.update({k: float(v) for k, v in t.items()})
+        r["wall"] = float(r["wall_time_s"])
+    return wall, cpu, rows
+
+
+def parts(wall, cpu, rows):
+    """Mean seconds per case of each part, and the study's figures."""
+    mean = lambda key: statistics.mean(r[key] for r in rows)
+    slots = [0.0, 0.0]  # the cases back to back on 2 workers, in manifest order
+    for r in rows:
+        k = slots.index(min(slots))
+        slots[k] += r["wall"]
+    makespan = max(slots)
+    p = {
+        "solve": statistics.mean(r["analysis_s"] - r["output_s"] for r in rows),
+        "read": mean("read_s"),
+        "create": mean("create_s"),
+        "output": mean("output_s"),
+        "finish": mean("finish_s"),
+        "process": statistics.mean(r["wall"] - r["total_s"] for r in rows),
+        "dispatch": max(0.0, 2 * (wall - makespan) / len(rows)),
+    }
+    p["overhead"] = sum(v for k, v in p.items() if k != "solve")
+    p["percent"] = 100 * p["overhead"] / p["solve"]
+    p["tail"] = 2 * makespan - sum(r["wall"] for r in rows)
+    p["study_cpu"] = cpu / len(rows)
+    p["wall"] = wall
+    p["case_wall"] = mean("wall")
+    return p
+
+
+def median_parts(runs):
+    return {k: statistics.median(r[k] for r in runs) for k in runs[0]}
+
+
 load_before = os.getloadavg()[0]
-study_dir = os.path.join(work, "S")
-subprocess.run(["rm", "-rf", study_dir], check=True)
-loads = ",".join(f"{5 + 0.25 * i:g}" for i in range(n_cases))
-t0 = time.perf_counter()
-study = subprocess.Popen([inpact, "study", deck, "--grid", f"load={loads}", "-j", "2", "-o", study_dir, "-q",
-                          "--collect", "max:CPRESS", "--collect", "max:-COPEN", "--collect", "sum:RF2@BOTTOM"])
-study_cpu = 0.0
-while study.poll() is None:
-    try:
-        study_cpu = own_cpu(study.pid)
-    except OSError:
-        pass
-    time.sleep(0.02)
-study_wall = time.perf_counter() - t0
-if study.returncode != 0:
-    sys.exit(f"the study failed (exit {study.returncode})")
-rows = list(csv.DictReader(open(os.path.join(study_dir, "results.csv"))))
-walls = [float(r["wall_time_s"]) for r in rows if r["status"] == "completed"]
-mean_case = statistics.mean(walls)
-dispatch = (max(0.0, 2 * study_wall / n_cases - mean_case), study_cpu / n_cases)
+fork_runs, exec_runs = [], []
+for i in range(repeat):
+    fork_runs.append(parts(*run_study("S", [])))
+    exec_runs.append(parts(*run_study("S_exec", ["--inpact", inpact])))
+fork, exec_ = median_parts(fork_runs), median_parts(exec_runs)
+h5_size = os.path.getsize(os.path.join(work, "S", "cases", "c0001", "c0001.h5"))
 
-# The parts of one case, run alone in the environment of a case (medians).
-start = medians([once([inpact, "--version"]) for _ in range(41)])
-check, read = paired([inpact, "check", deck], [inpact, "--version"], 31)
-run, write = paired([inpact, "run", deck, "-q", "-j", "full"], [inpact, "run", noout, "-q", "-j", "noout"], 15)
-read = tuple(max(0.0, x) for x in read)
-write = tuple(max(0.0, x) for x in write)
-solve = tuple(run[k] - start[k] - read[k] - write[k] for k in range(2))
-overhead = tuple(start[k] + read[k] + write[k] + dispatch[k] for k in range(2))
-h5_size = os.path.getsize(os.path.join(work, "full.h5"))
-
-n_elem = sum(1 for line in text.splitlines() if line[:1].isdigit() and line.count(",") == 4)
+names = [("read", "deck read + validation + SHA-256"), ("create", "results file created (model, view geometry)"),
+         ("output", "frames computed and written"), ("finish", "results file closed and renamed"),
+         ("process", "fork/exec, exit, reaping"), ("dispatch", "study dispatch (between cases)")]
 lines = [
     "# `inpact study` overhead per case",
     "",
     f"Deck: bench/study_overhead_deck.py ({n_elem} CPE4 elements, penalty contact, one step in 4 increments);",
     f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
-    "Medians of repeated runs (read and write: medians of paired differences); `bench/study_overhead.py` writes this file.",
-    "CPU is user + system time; the study dispatch's CPU is the study process's own, per case.",
+    "Measured inside the study: each case's phases from its `--timings` file, its wall time (fork to exit) from",
+    "results.csv; mean milliseconds per case; `bench/study_overhead.py` writes this file.",
+    f"Columns: the study as it runs (cases forked) and with `--inpact EXE` (each case an exec, as before);",
+    f"medians of {repeat} runs of each, alternating.",
     "",
-    "| part | wall s per case | % of solve | CPU s per case | % of solve |",
+    "| part | fork: ms | % of solve | exec: ms | % of solve |",
     "|---|---|---|---|---|",
 ]
 
 
-def row(name, t, bold=False):
+def row(label, key, bold=False):
     b = "**" if bold else ""
-    return (f"| {b}{name}{b} | {b}{t[0]:.4f}{b} | {b}{100 * t[0] / solve[0]:.1f}{b} "
-            f"| {b}{t[1]:.4f}{b} | {b}{100 * t[1] / solve[1]:.1f}{b} |")
+    cells = [f"{b}{p[key] * 1e3:.2f}{b} | {b}{100 * p[key] / p['solve']:.1f}{b}" for p in (fork, exec_)]
+    return f"| {b}{label}{b} | " + " | ".join(cells) + " |"
 
 
-for name, t in [("process start (`inpact --version`)", start), ("deck read + validation (`check` − start)", read),
-                ("results write (run − run with FREQUENCY=0)", write), ("study dispatch (2·wall/N − mean case)", dispatch)]:
-    lines.append(row(name, t))
+for key, label in names:
+    lines.append(row(label, key))
 lines += [
-    row("overhead", overhead, True),
-    row("solve (run − start − read − write)", solve),
+    row("overhead", "overhead", True),
+    row("solve (analysis − output)", "solve"),
     "",
-    f"Study: {len(walls)}/{n_cases} completed in {study_wall:.2f} s wall; mean case wall {mean_case:.3f} s "
-    f"(both cores busy) against {run[0]:.3f} s for one run alone.",
+    "",
+    "Overhead of each run, % of its solve: fork " + ", ".join(f"{r['percent']:.1f}" for r in fork_runs)
+    + "; exec " + ", ".join(f"{r['percent']:.1f}" for r in exec_runs) + ".",
+    f"Study wall {fork['wall']:.2f} s forked, {exec_['wall']:.2f} s with exec; mean case wall "
+    f"{fork['case_wall'] * 1e3:.1f} / {exec_['case_wall'] * 1e3:.1f} ms. The end of the study (once per study, not per case): "
+    f"{fork['tail'] * 1e3:.0f} / {exec_['tail'] * 1e3:.0f} ms of one worker idle.",
+    f"The study process's own CPU per case (inside dispatch): {fork['study_cpu'] * 1e3:.2f} / "
+    f"{exec_['study_cpu'] * 1e3:.2f} ms (the exec'd cases' values are read back from their results files).",
     f"Load average {load_before:.1f} at the start, {os.getloadavg()[0]:.1f} at the end, on {os.cpu_count()} cores "
     "(other jobs make every part noisy).",
 ]

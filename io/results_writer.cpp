@@ -345,6 +345,8 @@ ResultsWriter::~ResultsWriter() {
   }
 }
 
+void start_results_library() { h5::silence_hdf5_errors(); }
+
 ResultsWriter ResultsWriter::create(const fs::path& h5_path, const model::Model& model, std::string deck_sha256,
                                     std::string solver_version, const ResultsOptions& options) {
   h5::silence_hdf5_errors();

@@ -55,6 +55,10 @@ std::int32_t xdmf_cell_type(const model::ElementTypeInfo& type);
 /// XDMF topology type name of an element type ("Hexahedron", "Hexahedron_20", ...).
 const char* xdmf_topology_name(const model::ElementTypeInfo& type);
 
+/// Starts the HDF5 library (the first results file does otherwise). A study calls it before it
+/// forks its cases, so that each case inherits a started library instead of starting its own.
+void start_results_library();
+
 class ResultsWriter {
  public:
   /// Creates `h5_path` + ".part" (removing a stale `h5_path` and its .xdmf sidecar) and writes

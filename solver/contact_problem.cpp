@@ -488,8 +488,11 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
 }
 
 void ContactProblem::evaluate(std::span<const double> u) {
-  const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
   for (auto& p : pairs_) p->adaptive_scale = adaptive_scale_;
+  if (evaluated_ && std::equal(u.begin(), u.end(), evaluated_u_.begin(), evaluated_u_.end())) return;
+  evaluated_u_.assign(u.begin(), u.end());
+  evaluated_ = true;
+  const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
   for (auto& p : pairs_) {
     p->geometry->update(x, p->kin);
     for (std::size_t i = 0; i < p->gap_offset.size(); ++i)

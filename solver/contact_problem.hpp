@@ -178,6 +178,8 @@ class ContactProblem {
 
  private:
   struct Pair;
+  /// Search, projection and gap of every slave node at u; a call at the u of the last one
+  /// (the output of a converged state, whose last iteration evaluated it) keeps its results.
   void evaluate(std::span<const double> u);
   const AnalysisModel& am_;
   std::size_t n_pairs_total_ = 0;
@@ -194,6 +196,8 @@ class ContactProblem {
   SparseMatrix full_;
   std::int64_t friction_evaluations_ = 0;
   double adaptive_scale_ = 1.0;
+  std::vector<double> evaluated_u_;  ///< the u of the last evaluate()
+  bool evaluated_ = false;
 };
 
 }  // namespace inpact::solver

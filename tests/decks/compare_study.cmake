@@ -4,7 +4,7 @@
 #   cmake -DINPACT=path/to/inpact -DSOURCE=repo -DWORK=scratch-folder -DMODE=<mode> -P compare_study.cmake
 #
 # MODE: compare_rerun | compare_changed_load | compare_renumbered | compare_incomplete |
-#       study_resume | study_failed_case | study_gnu_parallel
+#       study_resume | study_failed_case | study_gnu_parallel | study_fork_matches_exec
 cmake_minimum_required(VERSION 3.22)
 foreach(var INPACT SOURCE WORK MODE)
   if(NOT DEFINED ${var})
@@ -143,6 +143,14 @@ elseif(MODE STREQUAL "study_resume")
   expect_text("4 already completed, 0 to run" "${out}" "recollect")
   file(READ "${WORK}/S/results.csv" csv)
   expect_text("c0001,5,completed,0,,2," "${csv}" "recollected row")
+  # ... and from the results file itself when the values the case wrote are lost too.
+  file(REMOVE "${WORK}/S/cases/c0002/case.result" "${WORK}/S/cases/c0002/values.txt")
+  inpact(0 out study patch.inp --grid load=5,10,15,20 -j 2 -o S ${collect})
+  file(STRINGS "${WORK}/S/results.csv" rows)
+  list(GET rows 2 row)
+  if(NOT row MATCHES "^c0002,10,completed,0,,2,[0-9]+,0,10,[0-9.e-]+,20,$")
+    string(APPEND failures "  results.csv row 2 collected from the results file: ${row}\n")
+  endif()
   # Another study in the same folder is refused.
   inpact(2 out study patch.inp --grid load=1,2 -o S)
   expect_text("holds the manifest of another study" "${out}" "other study")
@@ -182,6 +190,30 @@ elseif(MODE STREQUAL "study_gnu_parallel")
   endif()
   file(READ "${WORK}/S/results.csv" csv)
   expect_text("c0004,20,completed,0," "${csv}" "table")
+
+elseif(MODE STREQUAL "study_fork_matches_exec")
+  # The study's forked cases collect their values in memory; with --inpact EXE each case is an
+  # exec and the values are read back from its results file. Both tables are the same, wall
+  # times aside: every operation, a component, a node set, a missing set and a missing field.
+  set(specs ${collect} --collect min:U2 --collect maxabs:U1 --collect max:CPRESS@NOSUCHSET --collect max:NOSUCHVAR)
+  inpact(0 out study patch.inp --grid load=5,12.5 -j 2 -o F ${specs})
+  inpact(0 out study patch.inp --grid load=5,12.5 -j 2 -o X ${specs} --inpact "${INPACT}")
+  foreach(dir F X)
+    file(STRINGS "${WORK}/${dir}/results.csv" rows_${dir})
+    list(TRANSFORM rows_${dir} REPLACE "^(c[0-9]+,[^,]*,[^,]*,[^,]*),[0-9.]+," "\\1,WALL,")
+  endforeach()
+  if(NOT rows_F STREQUAL rows_X)
+    string(APPEND failures "  forked and exec'd tables differ:\n  ${rows_F}\n  ${rows_X}\n")
+  endif()
+  list(GET rows_F 2 row)
+  if(NOT row MATCHES "^c0002,12.5,completed,0,WALL,2,[0-9]+,0,12.5,[0-9.e-]+,25,-[0-9.e-]+,[0-9.e-]+,,,$")
+    string(APPEND failures "  forked row 2: ${row}\n")
+  endif()
+  if(NOT EXISTS "${WORK}/F/cases/c0001/values.txt" OR EXISTS "${WORK}/X/cases/c0001/values.txt")
+    string(APPEND failures "  values.txt: written by the forked case only\n")
+  endif()
+  file(READ "${WORK}/F/cases/c0001/timings.txt" timings)
+  expect_text("output_s=" "${timings}" "timings")
 
 else()
   message(FATAL_ERROR "compare_study.cmake: unknown MODE=${MODE}")

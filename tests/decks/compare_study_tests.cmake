@@ -2,7 +2,7 @@
 # in its own scratch folder under the build tree.
 set(compare_study_runner ${CMAKE_CURRENT_LIST_DIR}/compare_study.cmake)
 foreach(mode compare_rerun compare_changed_load compare_renumbered compare_incomplete
-             study_resume study_failed_case study_gnu_parallel)
+             study_resume study_failed_case study_gnu_parallel study_fork_matches_exec)
   add_test(NAME decks.${mode}
            COMMAND ${CMAKE_COMMAND} -DINPACT=$<TARGET_FILE:inpact> -DSOURCE=${PROJECT_SOURCE_DIR}
                    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/compare_study/${mode} -DMODE=${mode} -P ${compare_study_runner})
