@@ -23,6 +23,7 @@
 #include "io/io_error.hpp"
 #include "io/results_reader.hpp"
 #include "io/results_writer.hpp"
+#include "study_workers.hpp"
 
 namespace inpact::app::study {
 
@@ -63,54 +64,90 @@ std::vector<std::string> case_command(const RunOptions& r, const std::string& ex
   return args;
 }
 
-/// Starts one case as a child process with stdout and stderr into DIR/cases/ID/log.txt;
-/// returns its pid (or -1, errno set).
-///
-/// By default the child is a fork of this process that runs `inpact run`'s code directly: no
-/// exec, so no dynamic loading and no static set-up per case (about 4 ms of a 0.2 s case), and
-/// still a process of its own, so a case that crashes or is killed takes nothing else with it.
-/// With `--inpact EXE` the child execs EXE instead.
-pid_t spawn_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
-  const RunOptions run = case_run_options(m, c, o);
-  const fs::path log = case_dir(o.dir, c.id) / "log.txt";
+/// Points stdout and stderr at the case's DIR/cases/ID/log.txt.
+void redirect_output(const fs::path& log) {
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return;
+  dup2(fd, STDOUT_FILENO);
+  dup2(fd, STDERR_FILENO);
+  close(fd);
+}
+
+/// A case's BLAS uses the case's threads, not a pool per core on top of the other workers (the
+/// user's own setting wins). In a forked worker the libraries are loaded already, so
+/// run_analysis sets the threads itself (solver::set_blas_threads); an exec'd case reads these.
+void case_thread_environment(const RunnerOptions& o) {
   const std::string threads = std::to_string(o.threads);
-  std::vector<std::string> args;
-  std::vector<char*> argv;
-  if (!o.executable.empty()) {
-    args = case_command(run, o.executable);
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-  }
-  std::error_code ec;
-  fs::remove(values_path(o.dir, c.id), ec);  // an earlier run's values are not this run's
-  std::fflush(nullptr);  // the child must not print this process's buffered lines again
-  const pid_t pid = fork();
-  if (pid != 0) return pid;
-  // A case's BLAS uses the case's threads, not a pool per core on top of the other workers
-  // (the user's own setting wins). In the forked child the libraries are loaded already, so
-  // run_analysis sets the threads itself (solver::set_blas_threads).
   setenv("OPENBLAS_NUM_THREADS", threads.c_str(), 0);
   setenv("OMP_NUM_THREADS", threads.c_str(), 0);
-  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd >= 0) {
-    dup2(fd, STDOUT_FILENO);
-    dup2(fd, STDERR_FILENO);
-    close(fd);
-  }
-  if (o.executable.empty()) {
-    int rc = kAnalysisFailed;
-    try {
-      rc = run_analysis(run);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "inpact: internal error: %s\n", e.what());
-    }
-    std::fflush(nullptr);
-    _exit(rc);  // not exit(): the study's own atexit handlers and static objects are not the case's
-  }
-  execv(argv[0], argv.data());
-  std::fprintf(stderr, "inpact study: cannot run %s: %s\n", argv[0], std::strerror(errno));
-  _exit(127);
 }
+
+/// Runs case c in this process (a worker), its output into its log; returns its exit code.
+int run_case_here(const Manifest& m, const Case& c, const RunnerOptions& o) {
+  case_thread_environment(o);
+  redirect_output(case_dir(o.dir, c.id) / "log.txt");
+  int rc = kAnalysisFailed;
+  try {
+    rc = run_analysis(case_run_options(m, c, o));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "inpact: internal error: %s\n", e.what());
+  }
+  std::fflush(nullptr);
+  return rc;
+}
+
+/// `--inpact EXE`: each case an exec of EXE in a child process of its own. Same interface as
+/// WorkerPool, so that one loop runs the cases either way.
+class ExecLauncher {
+ public:
+  ExecLauncher(const Manifest& m, const RunnerOptions& o) : m_(m), o_(o) {}
+  ~ExecLauncher() {
+    for (const auto& [pid, r] : running_) {
+      int status = 0;
+      waitpid(pid, &status, 0);
+    }
+  }
+  bool has_idle() const { return static_cast<int>(running_.size()) < o_.jobs; }
+  std::size_t running() const { return running_.size(); }
+  void start(std::size_t k) {
+    const Case& c = m_.cases[k];
+    const std::vector<std::string> args = case_command(case_run_options(m_, c, o_), o_.executable);
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    std::fflush(nullptr);  // the child must not print this process's buffered lines again
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+    if (pid == 0) {
+      case_thread_environment(o_);
+      redirect_output(case_dir(o_.dir, c.id) / "log.txt");
+      execv(argv[0], argv.data());
+      std::fprintf(stderr, "inpact study: cannot run %s: %s\n", argv[0], std::strerror(errno));
+      _exit(127);
+    }
+    running_[pid] = {k, Clock::now()};
+  }
+  WorkerPool::Ended wait() {
+    for (;;) {
+      int status = 0;
+      const pid_t pid = waitpid(-1, &status, 0);
+      if (pid < 0) {
+        if (errno == EINTR) continue;
+        throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
+      }
+      auto it = running_.find(pid);
+      if (it == running_.end()) continue;
+      const auto [k, started] = it->second;
+      running_.erase(it);
+      return {k, status, std::chrono::duration<double>(Clock::now() - started).count(), started};
+    }
+  }
+
+ private:
+  const Manifest& m_;
+  const RunnerOptions& o_;
+  std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running_;
+};
 
 /// What every forked case would set up for itself, done once here: the HDF5 library, and the
 /// time zone the .sta and .dat headers read (localtime loads /etc/localtime on first use).
@@ -138,10 +175,12 @@ std::string failure_line(const fs::path& log) {
 }
 
 /// Completes an outcome from the process's wait status and its results file, and writes it.
-CaseOutcome finish_case(const Manifest& m, const Case& c, const RunnerOptions& o, int wait_status, double wall) {
+CaseOutcome finish_case(const Manifest& m, const Case& c, const RunnerOptions& o, int wait_status, double wall,
+                        double started = -1.0) {
   CaseOutcome out;
   out.id = c.id;
   out.wall_time = wall;
+  out.started = started;
   const fs::path log = case_dir(o.dir, c.id) / "log.txt";
   if (WIFEXITED(wait_status)) {
     out.exit_code = WEXITSTATUS(wait_status);
@@ -205,8 +244,9 @@ std::string format_outcome(const CaseOutcome& o) {
       if (c == '\n' || c == '\r') c = ' ';
     return s;
   };
-  std::string s = fmt::format("id={}\nstatus={}\nexit_code={}\nwall_time={}\nmessage={}\n", o.id, o.status, o.exit_code,
-                              o.wall_time < 0 ? "" : fmt::format("{:.4f}", o.wall_time), one_line(o.message));
+  std::string s = fmt::format("id={}\nstatus={}\nexit_code={}\nwall_time={}\nstarted={}\nmessage={}\n", o.id, o.status,
+                              o.exit_code, o.wall_time < 0 ? "" : fmt::format("{:.4f}", o.wall_time),
+                              o.started < 0 ? "" : fmt::format("{:.4f}", o.started), one_line(o.message));
   for (const auto& [k, v] : o.values) s += "value." + k + "=" + one_line(v) + "\n";
   return s;
 }
@@ -222,6 +262,7 @@ CaseOutcome parse_outcome(const std::string& text) {
     else if (k == "status") o.status = v;
     else if (k == "exit_code") o.exit_code = std::stoi(v);
     else if (k == "wall_time") o.wall_time = v.empty() ? -1.0 : std::stod(v);
+    else if (k == "started") o.started = v.empty() ? -1.0 : std::stod(v);
     else if (k == "message") o.message = v;
     else if (k.rfind("value.", 0) == 0) o.values[k.substr(6)] = v;
   }
@@ -272,23 +313,69 @@ std::vector<CaseOutcome> write_table(const Manifest& m, const fs::path& dir) {
   return outcomes;
 }
 
-int run_one_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
+namespace {
+
+/// Runs the cases k of `pending` on the launcher's workers; returns how many failed.
+template <class Launcher>
+std::size_t run_on(Launcher& launcher, const Manifest& m, const RunnerOptions& o, std::deque<std::size_t> pending,
+                   bool progress) {
+  std::size_t n_done = 0, n_failed = 0;
+  const std::size_t n_to_run = pending.size();
+  const Clock::time_point began = Clock::now();
+  // Fills the free worker slots; called before a finished case is collected, so the workers
+  // never wait for the collection.
+  auto fill = [&] {
+    while (!pending.empty() && launcher.has_idle()) {
+      const std::size_t k = pending.front();
+      pending.pop_front();
+      std::error_code ec;
+      fs::remove(values_path(o.dir, m.cases[k].id), ec);  // an earlier run's values are not this run's
+      launcher.start(k);
+    }
+  };
+  while (!pending.empty() || launcher.running() > 0) {
+    fill();
+    const WorkerPool::Ended e = launcher.wait();
+    fill();
+    const Case& c = m.cases[e.k];
+    const CaseOutcome out =
+        finish_case(m, c, o, e.wait_status, e.wall, std::chrono::duration<double>(e.started - began).count());
+    ++n_done;
+    if (out.status != "completed") ++n_failed;
+    if (progress) {
+      std::printf("[%zu/%zu] %s %s (exit %d) %.2f s  running %zu, failed %zu%s%s\n", n_done, n_to_run, c.id.c_str(),
+                  out.status.c_str(), out.exit_code, e.wall, launcher.running(), n_failed,
+                  out.message.empty() ? "" : ": ", out.message.c_str());
+      std::fflush(stdout);
+    }
+  }
+  return n_failed;
+}
+
+/// The cases k of `pending` on o.jobs workers: forked workers, or exec'd cases with --inpact.
+std::size_t run_pending(const Manifest& m, const RunnerOptions& o, std::deque<std::size_t> pending, bool progress) {
   prepare_for_cases();
+  if (!o.executable.empty()) {
+    ExecLauncher launcher(m, o);
+    return run_on(launcher, m, o, std::move(pending), progress);
+  }
+  WorkerPool pool(o.jobs, [&](std::size_t k) { return run_case_here(m, m.cases[k], o); });
+  return run_on(pool, m, o, std::move(pending), progress);
+}
+
+}  // namespace
+
+int run_one_case(const Manifest& m, const Case& c, const RunnerOptions& o) {
   fs::create_directories(case_dir(o.dir, c.id));
   if (already_completed(m, c, o)) return 0;
-  const auto t0 = Clock::now();
-  const pid_t pid = spawn_case(m, c, o);
-  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  const CaseOutcome out = finish_case(m, c, o, status, std::chrono::duration<double>(Clock::now() - t0).count());
-  return out.exit_code;
+  RunnerOptions one = o;
+  one.jobs = 1;
+  run_pending(m, one, {static_cast<std::size_t>(&c - m.cases.data())}, false);
+  return parse_outcome(read_text(outcome_path(o.dir, c.id))).exit_code;
 }
 
 int run_cases(const Manifest& m, const RunnerOptions& o) {
-  prepare_for_cases();
-  std::deque<const Case*> pending;
+  std::deque<std::size_t> pending;
   std::size_t n_skipped = 0, n_shard = 0;
   for (std::size_t k = 0; k < m.cases.size(); ++k) {
     if (!o.shard.contains(k)) continue;
@@ -296,56 +383,14 @@ int run_cases(const Manifest& m, const RunnerOptions& o) {
     const Case& c = m.cases[k];
     fs::create_directories(case_dir(o.dir, c.id));
     if (already_completed(m, c, o)) ++n_skipped;
-    else pending.push_back(&c);
+    else pending.push_back(k);
   }
   if (!o.quiet)
     std::printf("study: %zu case(s)%s, %zu already completed, %zu to run on %d worker(s)\n", n_shard,
                 o.shard.count > 1 ? fmt::format(" in shard {}/{}", o.shard.index, o.shard.count).c_str() : "", n_skipped,
                 pending.size(), o.jobs);
   std::fflush(stdout);
-
-  struct Running {
-    const Case* c;
-    Clock::time_point start;
-  };
-  std::map<pid_t, Running> running;
-  std::size_t n_done = 0, n_failed = 0;
-  const std::size_t n_to_run = pending.size();
-  // Fills the free worker slots; called before a finished case is collected, so the workers
-  // never wait for the collection.
-  auto fill = [&] {
-    while (!pending.empty() && static_cast<int>(running.size()) < o.jobs) {
-      const Case* c = pending.front();
-      pending.pop_front();
-      const pid_t pid = spawn_case(m, *c, o);
-      if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-      running[pid] = {c, Clock::now()};
-    }
-  };
-  while (!pending.empty() || !running.empty()) {
-    fill();
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    if (pid < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
-    }
-    auto it = running.find(pid);
-    if (it == running.end()) continue;
-    const Running r = it->second;
-    running.erase(it);
-    const double wall = std::chrono::duration<double>(Clock::now() - r.start).count();
-    fill();
-    const CaseOutcome out = finish_case(m, *r.c, o, status, wall);
-    ++n_done;
-    if (out.status != "completed") ++n_failed;
-    if (!o.quiet) {
-      std::printf("[%zu/%zu] %s %s (exit %d) %.2f s  running %zu, failed %zu%s%s\n", n_done, n_to_run, r.c->id.c_str(),
-                  out.status.c_str(), out.exit_code, wall, running.size(), n_failed, out.message.empty() ? "" : ": ",
-                  out.message.c_str());
-      std::fflush(stdout);
-    }
-  }
+  const std::size_t n_failed = run_pending(m, o, std::move(pending), !o.quiet);
   write_table(m, o.dir);
   return static_cast<int>(n_failed);
 }

@@ -32,7 +32,8 @@ struct CaseOutcome {
   std::string status = "pending";  ///< completed | failed | pending
   int exit_code = -1;
   std::string message;
-  double wall_time = -1;           ///< seconds, fork to exit; < 0 unknown
+  double wall_time = -1;           ///< seconds, handed to a worker to ended; < 0 unknown
+  double started = -1;             ///< seconds from the first case of this run of the study to this one's start
   std::map<std::string, std::string> values;  ///< increments, iterations, cutbacks + collected specs
 };
 

@@ -10,13 +10,16 @@ the study records each case's wall time from fork to exit (results.csv). Per cas
   create    the results file's model and view geometry, the .sta and .dat
   output    computing and writing the frames (and printed tables)
   finish    closing the results file and renaming it .h5
-  process   fork, exit and reaping: the case's wall time minus its timed phases
-  dispatch  what the study adds between cases (reaping, starting the next, collecting values,
-            case.result): 2 x (study wall - M) / N, where M is the study's wall time had each
-            worker started its next case the moment the last one ended (the cases' walls
+  process   handing the case to its worker and back (fork and exit with --inpact EXE): the
+            case's wall time minus its timed phases
+  dispatch  what the study adds between cases (handing the next case over, collecting the
+            values, case.result): 2 x (T - M) / N, where T runs from the first case's start to
+            the last one's end (case.result: started, wall_time) and M is what T would be had
+            each worker started its next case the moment the last one ended (the cases' walls
             scheduled in manifest order on 2 workers)
-overhead = everything but the solve. Not per case, and shown apart: the end of the study, when
-one worker has nothing left to run while the other finishes (2 M - the sum of the case walls).
+overhead = everything but the solve. Not per case, and shown apart: the study's own start and
+end (manifest, workers, the table: study wall - T), and the end of the cases, when one worker
+has nothing left to run while the other finishes (2 M - the sum of the case walls).
 The same study also runs with `--inpact EXE`, each case an exec of the executable as before
 the fork workers. Each variant runs REPEAT times, alternating; the table gives medians.
 Writes bench/results/study_overhead.md (or study_overhead_<elements>.md for another size).
@@ -77,9 +80,12 @@ def run_study(name, extra):
     for r in rows:
         if r["status"] != "completed":
             sys.exit(f"case {r['id']} of {name}: {r['status']} {r['message']}")
-        t = dict(line.strip().split("=") for line in open(os.path.join(study_dir, "cases", r["id"], "timings.txt")))
+        case = os.path.join(study_dir, "cases", r["id"])
+        t = dict(line.strip().split("=") for line in open(os.path.join(case, "timings.txt")))
         r.update({k: float(v) for k, v in t.items()})
-        r["wall"] = float(r["wall_time_s"])
+        outcome = dict(line.rstrip("\n").split("=", 1) for line in open(os.path.join(case, "case.result")))
+        r["wall"] = float(outcome["wall_time"])
+        r["started"] = float(outcome["started"])
     return wall, cpu, rows
 
 
@@ -91,6 +97,8 @@ def parts(wall, cpu, rows):
         k = slots.index(min(slots))
         slots[k] += r["wall"]
     makespan = max(slots)
+    first = min(r["started"] for r in rows)
+    last = max(r["started"] + r["wall"] for r in rows)
     p = {
         "solve": statistics.mean(r["analysis_s"] - r["output_s"] for r in rows),
         "read": mean("read_s"),
@@ -98,11 +106,12 @@ def parts(wall, cpu, rows):
         "output": mean("output_s"),
         "finish": mean("finish_s"),
         "process": statistics.mean(r["wall"] - r["total_s"] for r in rows),
-        "dispatch": max(0.0, 2 * (wall - makespan) / len(rows)),
+        "dispatch": max(0.0, 2 * ((last - first) - makespan) / len(rows)),
     }
     p["overhead"] = sum(v for k, v in p.items() if k != "solve")
     p["percent"] = 100 * p["overhead"] / p["solve"]
     p["tail"] = 2 * makespan - sum(r["wall"] for r in rows)
+    p["ends"] = wall - (last - first)  # the study before its first case and after its last
     p["study_cpu"] = cpu / len(rows)
     p["wall"] = wall
     p["case_wall"] = mean("wall")
@@ -123,7 +132,7 @@ h5_size = os.path.getsize(os.path.join(work, "S", "cases", "c0001", "c0001.h5"))
 
 names = [("read", "deck read + validation + SHA-256"), ("create", "results file created (model, view geometry)"),
          ("output", "frames computed and written"), ("finish", "results file closed and renamed"),
-         ("process", "fork/exec, exit, reaping"), ("dispatch", "study dispatch (between cases)")]
+         ("process", "to the worker and back (exec: fork, exec, exit)"), ("dispatch", "study dispatch (between cases)")]
 lines = [
     "# `inpact study` overhead per case",
     "",
@@ -131,7 +140,7 @@ lines = [
     f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
     "Measured inside the study: each case's phases from its `--timings` file, its wall time (fork to exit) from",
     "results.csv; mean milliseconds per case; `bench/study_overhead.py` writes this file.",
-    f"Columns: the study as it runs (cases forked) and with `--inpact EXE` (each case an exec, as before);",
+    f"Columns: the study as it runs (forked workers) and with `--inpact EXE` (each case an exec, as before);",
     f"medians of {repeat} runs of each, alternating.",
     "",
     "| part | fork: ms | % of solve | exec: ms | % of solve |",
@@ -155,8 +164,9 @@ lines += [
     "Overhead of each run, % of its solve: fork " + ", ".join(f"{r['percent']:.1f}" for r in fork_runs)
     + "; exec " + ", ".join(f"{r['percent']:.1f}" for r in exec_runs) + ".",
     f"Study wall {fork['wall']:.2f} s forked, {exec_['wall']:.2f} s with exec; mean case wall "
-    f"{fork['case_wall'] * 1e3:.1f} / {exec_['case_wall'] * 1e3:.1f} ms. The end of the study (once per study, not per case): "
-    f"{fork['tail'] * 1e3:.0f} / {exec_['tail'] * 1e3:.0f} ms of one worker idle.",
+    f"{fork['case_wall'] * 1e3:.1f} / {exec_['case_wall'] * 1e3:.1f} ms. Once per study, not per case: its start and end "
+    f"{fork['ends'] * 1e3:.0f} / {exec_['ends'] * 1e3:.0f} ms; one worker idle at the end of the cases "
+    f"{fork['tail'] * 1e3:.0f} / {exec_['tail'] * 1e3:.0f} ms.",
     f"The study process's own CPU per case (inside dispatch): {fork['study_cpu'] * 1e3:.2f} / "
     f"{exec_['study_cpu'] * 1e3:.2f} ms (the exec'd cases' values are read back from their results files).",
     f"Load average {load_before:.1f} at the start, {os.getloadavg()[0]:.1f} at the end, on {os.cpu_count()} cores "

@@ -1,12 +1,22 @@
 // inpact study: case expansion, shards, collect specs, the manifest and per-case outcomes
-// (apps/study_cases.hpp, apps/study_runner.hpp). Studies run end to end, with worker processes,
-// a resume, a failing case and GNU parallel, in tests/decks/compare_study.cmake.
+// (apps/study_cases.hpp, apps/study_runner.hpp) and the worker processes (apps/study_workers.hpp).
+// Studies run end to end, with a resume, a failing case and GNU parallel, in
+// tests/decks/compare_study.cmake.
 #include <gtest/gtest.h>
 
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <stdexcept>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "apps/study_cases.hpp"
 #include "apps/study_runner.hpp"
+#include "apps/study_workers.hpp"
 
 namespace inpact::app::study {
 namespace {
@@ -81,11 +91,13 @@ TEST(StudyOutcome, round_trips_and_the_table_marks_failed_and_pending_cases) {
   o.status = "failed";
   o.exit_code = 3;
   o.wall_time = 0.25;
+  o.started = 1.5;
   o.message = "deck.inp:83:11: error: *DSLOAD: magnitude: expected a number,\nfound 'bad'";
   const CaseOutcome back = parse_outcome(format_outcome(o));
   EXPECT_EQ(back.status, "failed");
   EXPECT_EQ(back.exit_code, 3);
   EXPECT_DOUBLE_EQ(back.wall_time, 0.25);
+  EXPECT_DOUBLE_EQ(back.started, 1.5);
   EXPECT_EQ(back.message.find('\n'), std::string::npos);
 
   Manifest m;
@@ -106,6 +118,70 @@ TEST(StudyOutcome, round_trips_and_the_table_marks_failed_and_pending_cases) {
       << table;
   EXPECT_NE(table.find("c0001,1,completed,0,1.000,,4,,10,"), std::string::npos) << table;
   EXPECT_NE(table.find("c0002,bad,pending,"), std::string::npos) << table;
+}
+
+// One worker runs the cases one after another; a case that kills its worker and a case that
+// fails each end theirs, the next case gets a new one, and how each case ended is reported.
+TEST(StudyWorkers, a_worker_runs_cases_until_one_fails_or_kills_it) {
+  const auto dir = std::filesystem::temp_directory_path() / ("inpact_test_workers_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  WorkerPool pool(1, [&](std::size_t k) {
+    std::ofstream(dir / std::to_string(k)) << getpid();
+    if (k == 2) kill(getpid(), SIGKILL);
+    return k == 4 ? 3 : 0;
+  });
+  std::map<std::size_t, int> status;
+  for (std::size_t k = 0; k < 6; ++k) {
+    ASSERT_TRUE(pool.has_idle());
+    pool.start(k);
+    EXPECT_FALSE(pool.has_idle());
+    const WorkerPool::Ended e = pool.wait();
+    EXPECT_EQ(e.k, k);
+    EXPECT_GE(e.wall, 0.0);
+    status[k] = e.wait_status;
+  }
+  EXPECT_EQ(pool.running(), 0u);
+  auto pid = [&](std::size_t k) {
+    std::string text;
+    std::ifstream(dir / std::to_string(k)) >> text;
+    return text;
+  };
+  for (std::size_t k : {0u, 1u, 3u, 5u}) EXPECT_TRUE(WIFEXITED(status[k]) && WEXITSTATUS(status[k]) == 0) << k;
+  EXPECT_TRUE(WIFSIGNALED(status[2]) && WTERMSIG(status[2]) == SIGKILL);
+  EXPECT_TRUE(WIFEXITED(status[4]) && WEXITSTATUS(status[4]) == 3);
+  EXPECT_NE(getpid(), std::stoi(pid(0)));  // cases run in a worker, not in the study
+  EXPECT_EQ(pid(0), pid(1));               // the same worker for consecutive cases
+  EXPECT_EQ(pid(1), pid(2));
+  EXPECT_NE(pid(2), pid(3));  // a new worker after the one that was killed
+  EXPECT_EQ(pid(3), pid(4));
+  EXPECT_NE(pid(4), pid(5));  // and after the one whose case failed
+  std::filesystem::remove_all(dir);
+}
+
+// Two workers run two cases at once.
+TEST(StudyWorkers, two_workers_run_two_cases_at_once) {
+  int go[2];
+  ASSERT_EQ(pipe(go), 0);
+  WorkerPool pool(2, [&](std::size_t k) {
+    // Case 0 waits until case 1 has run: only possible if both run at the same time.
+    if (k == 0) {
+      char c;
+      return read(go[0], &c, 1) == 1 ? 0 : 1;
+    }
+    return write(go[1], "x", 1) == 1 ? 0 : 1;
+  });
+  pool.start(0);
+  pool.start(1);
+  EXPECT_FALSE(pool.has_idle());
+  int ended = 0;
+  for (int i = 0; i < 2; ++i) {
+    const WorkerPool::Ended e = pool.wait();
+    EXPECT_TRUE(WIFEXITED(e.wait_status) && WEXITSTATUS(e.wait_status) == 0) << e.k;
+    ++ended;
+  }
+  EXPECT_EQ(ended, 2);
+  close(go[0]);
+  close(go[1]);
 }
 
 }  // namespace
