@@ -90,14 +90,22 @@ void element_arrays(const model::Model& model, const FieldData& f, std::size_t n
   std::size_t row_of_point = 0;
   for (std::size_t i = 0; i < nloc; ++i) {
     const std::int32_t inst = f.instance.empty() ? 0 : f.instance[i];
-    // The points of one element follow each other: look its row up once.
+    // The points of one element follow each other: look its row up once. A whole-model field
+    // lists the elements in row order: try the next row before the label table.
     const bool same = i > 0 && f.elements[i] == f.elements[i - 1] && (f.instance.empty() || inst == f.instance[i - 1]);
     if (!same) {
-      const auto row = elements.index.find(inst, f.elements[i]);
-      if (!row)
-        throw IoError(path, fmt::format("field {}: element {} (instance {}) is not in the model", f.key,
-                                        f.elements[i], inst));
-      row_of_point = static_cast<std::size_t>(*row);
+      const std::size_t next = i > 0 ? row_of_point + 1 : 0;
+      const bool in_order = next < n_cells && elements.labels[next] == f.elements[i] &&
+                            (elements.instance.empty() ? 0 : elements.instance[next]) == inst;
+      if (in_order) {
+        row_of_point = next;
+      } else {
+        const auto row = elements.index.find(inst, f.elements[i]);
+        if (!row)
+          throw IoError(path, fmt::format("field {}: element {} (instance {}) is not in the model", f.key,
+                                          f.elements[i], inst));
+        row_of_point = static_cast<std::size_t>(*row);
+      }
     }
     const std::size_t e = row_of_point;
     ++count[e];
