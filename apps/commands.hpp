@@ -45,7 +45,7 @@ struct StudyOptions {
   std::string run_case;       ///< `study run-case ID`
   bool collect_only = false;  ///< `study collect`
   bool manifest_only = false;  ///< --manifest-only: write the manifest, run nothing
-  std::string executable;     ///< the inpact to run cases with (default: this one)
+  std::string executable;     ///< --inpact EXE: exec EXE per case (default: forked workers run the cases)
   bool quiet = false;
 };
 

@@ -90,7 +90,8 @@ int main(int argc, char** argv) {
   study_cmd->add_option("--threads", study.threads, "Threads of each case")->check(CLI::PositiveNumber);
   study_cmd->add_option("--shard", study.shard, "Run shard i of n: cases k with k mod n = i-1");
   study_cmd->add_option("-o,--output-dir", study.dir, "Study folder (default: DECK-stem.study)");
-  study_cmd->add_option("--inpact", study.executable, "inpact executable for the cases (default: this one)");
+  study_cmd->add_option("--inpact", study.executable,
+                        "Run each case as an exec of this inpact executable (default: forked workers)");
   study_cmd->add_flag("--manifest-only", study.manifest_only, "Write DIR/manifest.csv and run nothing (Slurm arrays)");
   study_cmd->add_flag("-q,--quiet", study.quiet, "No progress lines");
   CLI::App* run_case_cmd = study_cmd->add_subcommand("run-case", "Run one case of the manifest in -o DIR (default .)");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -53,7 +54,11 @@ int reap(pid_t pid) {
 
 }  // namespace
 
-WorkerPool::WorkerPool(int jobs, RunCase run) : jobs_(std::max(jobs, 1)), run_(std::move(run)) {}
+WorkerPool::WorkerPool(int jobs, RunCase run) : jobs_(std::max(jobs, 1)), run_(std::move(run)) {
+  // A worker killed between two cases: handing it the next one must fail with EPIPE (and go to
+  // a new worker), not end the study with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+}
 
 WorkerPool::~WorkerPool() {
   for (Worker& w : workers_) stop(w);
@@ -82,10 +87,11 @@ WorkerPool::Worker& WorkerPool::fork_worker() {
   if (pid == 0) {
     // The worker: only its own pipe ends stay open (another worker's command pipe held open
     // here would keep that worker from seeing the end of the study).
-    for (const Worker& w : workers_) {
-      close(w.commands);
-      close(w.replies);
-    }
+    for (const Worker& w : workers_)
+      if (w.pid >= 0) {
+        close(w.commands);
+        close(w.replies);
+      }
     close(commands[1]);
     close(replies[0]);
     std::uint64_t k = 0;
@@ -110,6 +116,7 @@ void WorkerPool::stop(Worker& w) {
   if (w.pid < 0) return;
   close(w.commands);
   close(w.replies);
+  w.commands = w.replies = -1;  // their numbers go to the next pipes opened
   last_status_ = reap(w.pid);
   w.pid = -1;
 }

@@ -158,6 +158,39 @@ TEST(StudyWorkers, a_worker_runs_cases_until_one_fails_or_kills_it) {
   std::filesystem::remove_all(dir);
 }
 
+// A worker killed while it waits for its next case: the case goes to a new worker.
+TEST(StudyWorkers, a_worker_killed_between_cases_is_replaced) {
+  const auto dir = std::filesystem::temp_directory_path() / ("inpact_test_idle_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  WorkerPool pool(1, [&](std::size_t k) {
+    std::ofstream(dir / std::to_string(k)) << getpid();
+    return 0;
+  });
+  pool.start(0);
+  ASSERT_TRUE(WIFEXITED(pool.wait().wait_status));
+  pid_t first = 0;
+  std::ifstream(dir / "0") >> first;
+  ASSERT_GT(first, 0);
+  ASSERT_EQ(kill(first, SIGKILL), 0);
+  // Until it is a zombie: then handing it a case cannot succeed.
+  for (int i = 0; i < 1000; ++i) {
+    std::ifstream stat("/proc/" + std::to_string(first) + "/stat");
+    std::string text;
+    std::getline(stat, text);
+    if (text.empty() || text.find(") Z") != std::string::npos) break;
+    usleep(1000);
+  }
+  pool.start(1);
+  const WorkerPool::Ended e = pool.wait();
+  EXPECT_EQ(e.k, 1u);
+  EXPECT_TRUE(WIFEXITED(e.wait_status) && WEXITSTATUS(e.wait_status) == 0);
+  pid_t second = 0;
+  std::ifstream(dir / "1") >> second;
+  EXPECT_GT(second, 0);
+  EXPECT_NE(second, first);
+  std::filesystem::remove_all(dir);
+}
+
 // Two workers run two cases at once.
 TEST(StudyWorkers, two_workers_run_two_cases_at_once) {
   int go[2];
