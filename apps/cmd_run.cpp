@@ -116,6 +116,8 @@ class PhaseClock {
     std::ofstream out(path);
     for (const auto& [phase, s] : seconds_) out << phase << "_s=" << fmt::format("{:.6f}", s) << "\n";
     out << "total_s=" << fmt::format("{:.6f}", std::chrono::duration<double>(last_ - start_).count()) << "\n";
+    out.flush();
+    if (!out) std::fprintf(stderr, "inpact: warning: cannot write the timings to %s\n", path.c_str());
   }
 
  private:
@@ -126,11 +128,7 @@ class PhaseClock {
 /// SHA-256 over the deck and every file it included, in reading order.
 std::string deck_digest(const model::Model& m) {
   io::Sha256 hash;
-  char buf[1 << 16];
-  for (const auto& f : m.sources.files) {
-    std::ifstream in(f.path, std::ios::binary);
-    while (in.read(buf, sizeof buf) || in.gcount() > 0) hash.update(std::string_view(buf, static_cast<std::size_t>(in.gcount())));
-  }
+  for (const auto& f : m.sources.files) hash.update_file(f.path);
   return hash.hex();
 }
 

@@ -26,19 +26,13 @@ work=$build/solver_bench
 results=$root/bench/results
 mkdir -p "$work" "$results"
 
-if [ ! -x "$build/apps/inpact" ] || [ ! -x "$build/bench/solver_floor" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DINPACT_WARNINGS_AS_ERRORS=ON >/dev/null
-  cmake --build "$build" --target inpact solver_floor
-fi
+source "$root/bench/bench_setup.sh"
+bench_build "$root" "$build" apps/inpact bench/solver_floor
 # Tools the benchmark needs, installed when missing (never added to .ci).
-need=()
-command -v ccx >/dev/null || [ "${SKIP_CCX:-0}" = 1 ] || need+=(calculix-ccx)
-/usr/bin/python3 -c 'import matplotlib' 2>/dev/null || need+=(python3-matplotlib)
-[ -x /usr/bin/time ] || need+=(time)
-if [ ${#need[@]} -gt 0 ]; then
-  sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
-  $sudo_cmd apt-get install -y "${need[@]}" >/dev/null
-fi
+command -v ccx >/dev/null || [ "${SKIP_CCX:-0}" = 1 ] || bench_need calculix-ccx
+bench_need_python matplotlib
+[ -x /usr/bin/time ] || bench_need time
+bench_install_needed
 
 raw=$work/raw.txt
 # KEEP_RAW=1 adds to the previous measurements (e.g. a large size run on its own later); the

@@ -27,6 +27,13 @@ Sha256::Sha256() : state_{} { SHA256_Init(context(state_)); }
 
 void Sha256::update(std::string_view bytes) { SHA256_Update(context(state_), bytes.data(), bytes.size()); }
 
+void Sha256::update_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path, "cannot read the deck to compute its SHA-256");
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) update(std::string_view(buf, static_cast<std::size_t>(in.gcount())));
+}
+
 std::string Sha256::hex() {
   unsigned char digest[SHA256_DIGEST_LENGTH];
   SHA256_Final(digest, context(state_));
@@ -43,11 +50,8 @@ std::string sha256(std::string_view bytes) {
 }
 
 std::string sha256_of_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path, "cannot read the deck to compute its SHA-256");
   Sha256 h;
-  char buf[1 << 16];
-  while (in.read(buf, sizeof buf) || in.gcount() > 0) h.update(std::string_view(buf, static_cast<std::size_t>(in.gcount())));
+  h.update_file(path);
   return h.hex();
 }
 

@@ -12,6 +12,8 @@ class Sha256 {
  public:
   Sha256();
   void update(std::string_view bytes);
+  /// The file's bytes, read in 64 kB blocks; throws IoError when it cannot be read.
+  void update_file(const std::filesystem::path& path);
   /// Lower-case hex digest of everything given so far (the hash cannot be updated after).
   std::string hex();
 

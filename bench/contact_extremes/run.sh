@@ -14,17 +14,9 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build}
-if [ ! -x "$build/apps/inpact" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DINPACT_WARNINGS_AS_ERRORS=ON >/dev/null
-  cmake --build "$build" --target inpact -j 2
-fi
-# Debian's h5py and numpy for /usr/bin/python3, installed when missing.
-need=()
-/usr/bin/python3 -c 'import h5py' 2>/dev/null || need+=(python3-h5py)
-/usr/bin/python3 -c 'import numpy' 2>/dev/null || need+=(python3-numpy)
-if [ ${#need[@]} -gt 0 ]; then
-  sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
-  $sudo_cmd apt-get install -y "${need[@]}" >/dev/null
-fi
+source "$root/bench/bench_setup.sh"
+bench_build "$root" "$build" apps/inpact
+bench_need_python h5py numpy
+bench_install_needed
 exec /usr/bin/python3 "$root/bench/contact_extremes/extremes.py" --inpact "$build/apps/inpact" \
   --work "$build/contact_extremes" "$@"

@@ -13,20 +13,11 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build}
-if [ ! -x "$build/apps/inpact" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DINPACT_WARNINGS_AS_ERRORS=ON >/dev/null
-  cmake --build "$build" --target inpact -j 2
-fi
-# Debian's matplotlib, h5py and numpy for /usr/bin/python3, and GNU time, installed when missing.
-need=()
-/usr/bin/python3 -c 'import matplotlib' 2>/dev/null || need+=(python3-matplotlib)
-/usr/bin/python3 -c 'import h5py' 2>/dev/null || need+=(python3-h5py)
-/usr/bin/python3 -c 'import numpy' 2>/dev/null || need+=(python3-numpy)
-[ -x /usr/bin/time ] || need+=(time)
-if [ ${#need[@]} -gt 0 ]; then
-  sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
-  $sudo_cmd apt-get install -y "${need[@]}" >/dev/null
-fi
+source "$root/bench/bench_setup.sh"
+bench_build "$root" "$build" apps/inpact
+bench_need_python matplotlib h5py numpy
+[ -x /usr/bin/time ] || bench_need time
+bench_install_needed
 # shellcheck disable=SC2086
 exec /usr/bin/python3 "$root/bench/smoothing_trade/trade.py" --inpact "$build/apps/inpact" --runs "${RUNS:-3}" \
   --runs-big "${RUNS_BIG:-1}" --levels-2d ${LEVELS_2D:-1 2 3 4} --levels-pin ${LEVELS_PIN:-1 2 3} \

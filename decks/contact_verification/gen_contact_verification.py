@@ -465,6 +465,15 @@ def seat_pressure_text():
             f"u_ball(r) = -p (1-2nu) r / E; b = {SEAT_B:g}, c = {SEAT_C:g}, delta = {SEAT_DELTA:g}.")
 
 
+def seat_header(variant, level, element_size, smoothed):
+    """The heading of a spherical-seat deck: the problem, this variant's mesh, the reference."""
+    out = header(f"Spherical seat: a ball in a spherical socket with radial interference delta = {SEAT_DELTA:g}, "
+                 f"{variant}", seat_pressure_text(), level, element_size)
+    if smoothed:
+        out[1:1] = ["** Smoothed: ball and socket corrected toward spheres about the origin ([AX] 38.1.3)."]
+    return out
+
+
 def spherical_seat_axi(level, smoothed=False):
     """A solid ball (radius b + δ) in a spherical socket r ∈ [b, c], axisymmetric (CAX4, the r–z plane
     x = r, y = z), a half meridian: the quarter disk and quarter annulus 0 ≤ polar angle from the
@@ -474,11 +483,8 @@ def spherical_seat_axi(level, smoothed=False):
     scale = 2 ** (level - 1)
     n_in, n_out, nr_in, nr_out = 24 * scale, 34 * scale, 4 * scale, 8 * scale
     b_in = SEAT_B + SEAT_DELTA
-    out = header(f"Spherical seat: a ball in a spherical socket with radial interference delta = {SEAT_DELTA:g}, "
-                 f"axisymmetric, a half meridian, non-matching meshes ({n_in} and {n_out} elements along the arc)",
-                 seat_pressure_text(), level, SEAT_B * math.pi / 2 / n_out)
-    if smoothed:
-        out[1:1] = ["** Smoothed: ball and socket corrected toward spheres about the origin ([AX] 38.1.3)."]
+    out = seat_header(f"axisymmetric, a half meridian, non-matching meshes ({n_in} and {n_out} elements along the arc)",
+                      level, SEAT_B * math.pi / 2 / n_out, smoothed)
     mesh = Mesh(2)
     quarter_disk(mesh, 1, 1, 1, (0.0, 0.0), b_in, 0.0, n_in, nr_in)
     annulus(mesh, 2, 100001, 100001, (0.0, 0.0), SEAT_B, SEAT_C, 0.0, 0.5 * math.pi, n_out, nr_out)
@@ -501,11 +507,8 @@ def spherical_seat_3d(level, smoothed=False):
     scale = 2 ** (level - 1)
     m_in, m_out, nr_in, nr_out = 6 * scale, 8 * scale, 3 * scale, 8 * scale
     b_in = SEAT_B + SEAT_DELTA
-    out = header(f"Spherical seat: a ball in a spherical socket with radial interference delta = {SEAT_DELTA:g}, "
-                 f"3D octant, non-matching meshes ({2 * m_in} and {2 * m_out} elements along a quarter great circle)",
-                 seat_pressure_text(), level, SEAT_B * math.pi / 4 / m_out)
-    if smoothed:
-        out[1:1] = ["** Smoothed: ball and socket corrected toward spheres about the origin ([AX] 38.1.3)."]
+    out = seat_header(f"3D octant, non-matching meshes ({2 * m_in} and {2 * m_out} elements along a quarter great circle)",
+                      level, SEAT_B * math.pi / 4 / m_out, smoothed)
     mesh = Mesh(3)
 
     def direction(a, j, k, m):  # the unit vector of patch a (normal to x_a = 1) at grid point (j, k)
