@@ -26,6 +26,21 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Target size of one chunk of a field's data (bytes): large enough that a frame of a big
 /// model is a few direct writes, small enough to read one component range cheaply.
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
+/// Block HDF5 reserves for metadata, and for small datasets, at a time (see results_file_access).
+constexpr hsize_t kMetadataBlockBytes = 16 * 1024;
+
+/// File access of a results file. HDF5 places each new piece of metadata (object headers,
+/// group B-trees and heaps, attributes) in a block it reserves for metadata, by default 2 KiB
+/// at a time, between the data of the datasets written in between; a results file holds a few
+/// hundred such pieces. 16 KiB blocks keep more of them side by side, so that a flush writes
+/// them in fewer writes (229 → 198 for the study bench's case; the file grows by 240 bytes).
+/// The same for small datasets (sets, index arrays).
+h5::Id results_file_access() {
+  Id fapl(H5Pcreate(H5P_FILE_ACCESS));
+  H5Pset_meta_block_size(fapl, kMetadataBlockBytes);
+  H5Pset_small_data_block_size(fapl, kMetadataBlockBytes);
+  return fapl;
+}
 
 /// An HDF5 link name for a model name: '/' would make a path, "." is reserved.
 std::string link_name(const std::string& name) {
@@ -359,7 +374,7 @@ ResultsWriter ResultsWriter::create(const fs::path& h5_path, const model::Model&
   fs::remove(fs::path(w.h5_path).replace_extension(".xdmf"), ec);
 
   // Default (earliest) format bounds: a file whose writer was killed opens without h5clear.
-  w.file = Id(w.ctx.check(H5Fcreate(w.part_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+  w.file = Id(w.ctx.check(H5Fcreate(w.part_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, results_file_access()),
                           "cannot create the results file"));
   w.ctx.attr_string(w.file, "schema", "inpact-results");
   w.ctx.attr_int(w.file, "schema_version", kSchemaVersion);
