@@ -154,6 +154,25 @@ void Context::write_rows(hid_t dataset, hid_t mem_type, hsize_t row, hsize_t n, 
   check(H5Dwrite(dataset, mem_type, mem_space, file_space, transfer_plist(), data), "cannot write rows");
 }
 
+void Context::write_frame_chunks(hid_t dataset, hsize_t row, hsize_t n_rows, hsize_t chunk_rows, hsize_t n_comp,
+                                 const double* data, double pad) const {
+  extend(dataset, row + 1);
+  if (n_rows == 0 || n_comp == 0) return;
+  const hsize_t chunk_values = chunk_rows * n_comp;
+  std::vector<double> last;  // the padded partial chunk, when there is one
+  for (hsize_t first = 0; first < n_rows; first += chunk_rows) {
+    const hsize_t offset[3] = {row, first, 0};
+    const double* chunk = data + first * n_comp;
+    if (first + chunk_rows > n_rows) {
+      last.assign(chunk_values, pad);
+      std::copy(chunk, data + n_rows * n_comp, last.begin());
+      chunk = last.data();
+    }
+    check(H5Dwrite_chunk(dataset, transfer_plist(), 0, offset, chunk_values * sizeof(double), chunk),
+          "cannot write a chunk of rows");
+  }
+}
+
 Id Context::create_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) const {
   if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
   return Id(check(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),

@@ -106,6 +106,13 @@ class Context {
   void extend(hid_t dataset, hsize_t n_rows) const;
   /// Writes rows [row, row + n_rows) of an extendable dataset (extended first when needed).
   void write_rows(hid_t dataset, hid_t mem_type, hsize_t row, hsize_t n_rows, const void* data) const;
+  /// Writes frame `row` of a 3-D dataset extendable in its first dimension and chunked
+  /// {1, chunk_rows, n_comp} (extended first when needed) straight into its chunks with
+  /// H5Dwrite_chunk: no chunk cache, no chunk buffer to allocate, fill and copy into, as
+  /// H5Dwrite would for each chunk. `data` holds the frame's n_rows × n_comp doubles, which are
+  /// the file's type (native double, no filters). A last, partial chunk is padded with `pad`.
+  void write_frame_chunks(hid_t dataset, hsize_t row, hsize_t n_rows, hsize_t chunk_rows, hsize_t n_comp,
+                          const double* data, double pad) const;
   /// Number of rows (first dimension) of a dataset.
   hsize_t n_rows(hid_t dataset) const;
 

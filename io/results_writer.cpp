@@ -103,6 +103,7 @@ struct ResultsWriter::Impl {
     Id data;
     hsize_t nloc = 0;
     hsize_t n_comp = 0;
+    hsize_t rows_per_chunk = 1;
     Position position = Position::Nodal;
   };
   struct StepState {
@@ -308,6 +309,7 @@ ResultsWriter::Impl::FieldState& ResultsWriter::Impl::field_state(const FieldDat
   FieldState s;
   s.nloc = nloc;
   s.n_comp = n_comp;
+  s.rows_per_chunk = rows_per_chunk;
   s.position = f.position;
   // Frames before the field's first appearance (and any frame without it) read as NaN.
   s.data = ctx.create_extendable(g, "data", H5T_NATIVE_DOUBLE, {step->n_frames, nloc, n_comp},
@@ -472,7 +474,7 @@ void ResultsWriter::write_frame(const Frame& frame) {
   for (const FieldData& f : frame.fields) {
     const hsize_t n_comp = f.component_labels.size();
     Impl::FieldState& s = w.field_state(f, n_comp, f.values.size() / n_comp);
-    w.ctx.write_rows(s.data, H5T_NATIVE_DOUBLE, row, 1, f.values.data());
+    w.ctx.write_frame_chunks(s.data, row, s.nloc, s.rows_per_chunk, s.n_comp, f.values.data(), kNaN);
   }
   // Fields absent from this frame still get its row (NaN), so data rows match frames.
   for (auto& [key, s] : st.fields) w.ctx.extend(s.data, st.n_frames);
