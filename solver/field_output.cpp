@@ -450,17 +450,18 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
     for (std::size_t el = 0; el < elements.size(); ++el) gather(el);
   else
     for (std::int32_t el : where.rows) gather(static_cast<std::size_t>(el));
-  f.elements.reserve(n_points);
-  f.ip.reserve(n_points);
-  if (with_instance) f.instance.reserve(n_points);
-  f.values.reserve(n_points * n_comp);
+  f.elements.resize(n_points);
+  f.ip.resize(n_points);
+  if (with_instance) f.instance.resize(n_points);
+  f.values.resize(n_points * n_comp);
+  std::size_t i = 0;  // the location being written
   for (const auto& [el, pts] : points)
-    for (std::size_t p = 0; p < pts.size(); ++p) {
-      f.elements.push_back(elements.labels[el]);
-      f.ip.push_back(static_cast<std::int32_t>(p + 1));
-      if (with_instance) f.instance.push_back(elements.instance[el]);
+    for (std::size_t p = 0; p < pts.size(); ++p, ++i) {
+      f.elements[i] = elements.labels[el];
+      f.ip[i] = static_cast<std::int32_t>(p + 1);
+      if (with_instance) f.instance[i] = elements.instance[el];
       const auto& v = stress ? pts[p].stress : pts[p].strain;
-      for (std::size_t c = 0; c < n_comp; ++c) f.values.push_back(v[c]);
+      std::copy_n(v.begin(), n_comp, f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp));
     }
   return f;
 }
