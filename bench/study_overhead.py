@@ -22,11 +22,13 @@ end (manifest, workers, the table: study wall - T), and the end of the cases, wh
 has nothing left to run while the other finishes (2 M - the sum of the case walls).
 The same study also runs with `--inpact EXE`, each case an exec of the executable as before
 the fork workers. Each variant runs REPEAT times, alternating; the table gives medians.
-Writes bench/results/study_overhead.md (or study_overhead_<elements>.md for another size).
+Writes bench/results/study_overhead.md (or study_overhead_<elements>_<type>.md for another deck).
 
-Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)] [NX NY] [REPEAT (3)]
-NX NY: the lower block's elements (default 36 30: 3,240 elements in all).
+Usage: bench/study_overhead.py [BUILD_DIR (default build-study)] [N_CASES (64)] [NX NY [NZ]] [--repeat N (3)]
+NX NY: the lower block's elements of the plane (CPE4) deck (default 36 30: 3,240 elements in all);
+NX NY NZ: a solid (C3D8) deck instead (10 10 6: 3,000 elements).
 """
+import argparse
 import csv
 import os
 import statistics
@@ -35,18 +37,25 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-build = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "build-study")
-n_cases = int(sys.argv[2]) if len(sys.argv) > 2 else 64
-deck_size = sys.argv[3:5]
-repeat = int(sys.argv[5]) if len(sys.argv) > 5 else 3
+cli = argparse.ArgumentParser(description="Overhead per case of `inpact study` against the solve time of a case.")
+cli.add_argument("build", nargs="?", default=os.path.join(ROOT, "build-study"), help="build folder (build-study)")
+cli.add_argument("n_cases", nargs="?", type=int, default=64, help="cases of the study (64)")
+cli.add_argument("size", nargs="*", help="NX NY (plane CPE4 deck, default 36 30) or NX NY NZ (solid C3D8 deck)")
+cli.add_argument("--repeat", type=int, default=3, help="runs of each variant (3)")
+args = cli.parse_args()
+if len(args.size) not in (0, 2, 3):
+    cli.error("the deck size is NX NY or NX NY NZ")
+build, n_cases, deck_size, repeat = os.path.abspath(args.build), args.n_cases, args.size, args.repeat
 inpact = os.path.join(build, "apps", "inpact")
 work = os.path.join(build, "bench-study")
 os.makedirs(work, exist_ok=True)
 
 deck = os.path.join(work, "contact.inp")
-subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck] + deck_size, check=True)
-text = open(deck).read()
-n_elem = sum(1 for line in text.splitlines() if line[:1].isdigit() and line.count(",") == 4)
+made = subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhead_deck.py"), deck] + deck_size,
+                      check=True, capture_output=True, text=True).stdout
+print(made, end="")
+n_elem, elem_type = made.split(": ")[1].split()[:2]  # "OUT: 3240 CPE4 elements, 3410 nodes"
+n_elem = int(n_elem)
 
 
 def own_cpu(pid):
@@ -136,7 +145,8 @@ names = [("read", "deck read + validation + SHA-256"), ("create", "results file 
 lines = [
     "# `inpact study` overhead per case",
     "",
-    f"Deck: bench/study_overhead_deck.py ({n_elem} CPE4 elements, penalty contact, one step in 4 increments);",
+    f"Deck: bench/study_overhead_deck.py {' '.join(deck_size)} ({n_elem} {elem_type} elements, penalty contact, one step"
+    " in 4 increments);",
     f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
     "Measured inside the study: each case's phases from its `--timings` file, its wall time (handed to a worker",
     "to ended) and start from its case.result; mean milliseconds per case; `bench/study_overhead.py` writes this file.",
@@ -173,6 +183,6 @@ lines += [
     "(other jobs make every part noisy).",
 ]
 os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-out = os.path.join(ROOT, "bench", "results", f"study_overhead_{n_elem}.md" if deck_size else "study_overhead.md")
+out = os.path.join(ROOT, "bench", "results", f"study_overhead_{n_elem}_{elem_type}.md" if deck_size else "study_overhead.md")
 open(out, "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
