@@ -56,6 +56,7 @@ made = subprocess.run([sys.executable, os.path.join(ROOT, "bench", "study_overhe
 print(made, end="")
 n_elem, elem_type = made.split(": ")[1].split()[:2]  # "OUT: 3240 CPE4 elements, 3410 nodes"
 n_elem = int(n_elem)
+reaction = "RF3" if elem_type == "C3D8" else "RF2"  # the bottom's reaction in the stacking direction
 
 
 def own_cpu(pid):
@@ -73,7 +74,7 @@ def run_study(name, extra):
     loads = ",".join(f"{5 + 0.25 * i:g}" for i in range(n_cases))
     t0 = time.perf_counter()
     study = subprocess.Popen([inpact, "study", deck, "--grid", f"load={loads}", "-j", "2", "-o", study_dir, "-q",
-                              "--collect", "max:CPRESS", "--collect", "max:-COPEN", "--collect", "sum:RF2@BOTTOM"]
+                              "--collect", "max:CPRESS", "--collect", "max:-COPEN", "--collect", f"sum:{reaction}@BOTTOM"]
                              + extra)
     cpu = 0.0
     while study.poll() is None:
@@ -145,7 +146,8 @@ names = [("read", "deck read + validation + SHA-256"), ("create", "results file 
 lines = [
     "# `inpact study` overhead per case",
     "",
-    f"Deck: bench/study_overhead_deck.py {' '.join(deck_size)} ({n_elem} {elem_type} elements, penalty contact, one step"
+    f"Deck: bench/study_overhead_deck.py {' '.join(deck_size or ['36', '30'])} ({n_elem} {elem_type} elements, penalty"
+    " contact, one step"
     " in 4 increments);",
     f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
     "Measured inside the study: each case's phases from its `--timings` file, its wall time (handed to a worker",
