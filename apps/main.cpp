@@ -1,7 +1,5 @@
 /// The `inpact` executable: options in, exit code out. The only place where exceptions
 /// become exit codes; everything else lives in the libraries.
-#include <malloc.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -16,6 +14,7 @@
 #include "abaqus_args.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "process_setup.hpp"
 #include "solver/blas_info.hpp"
 
 using namespace inpact::app;
@@ -31,21 +30,6 @@ std::map<std::string, std::string> parameter_overrides(const std::vector<std::st
     out[p.substr(0, eq)] = p.substr(eq + 1);
   }
   return out;
-}
-
-/// Process-wide settings of a batch run, before any work.
-void set_up_process() {
-  // Every Newton iteration allocates and frees the same vectors, matrices and factors. glibc
-  // hands blocks above its mmap threshold (128 KiB at start) back to the kernel when they are
-  // freed and trims the heap's free top beyond 128 KiB, so the next iteration page-faults the
-  // same memory in again, page by page (expensive in a VM). Keeping blocks up to 32 MiB and
-  // 128 MiB of free heap in the process: 7,600 → 4,900 page faults and a 10 % shorter solve
-  // for the study bench's 3,240-element deck; a study worker also reuses its heap from case to
-  // case. Larger blocks (big factors) are still mapped and unmapped one by one.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 128 << 20);
-  // One thread until a command asks for more (run --threads, study --threads).
-  inpact::solver::set_blas_threads(1);
 }
 
 std::string version_text() {
