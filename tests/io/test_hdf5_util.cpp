@@ -31,7 +31,8 @@ TEST(Hdf5Util, FrameChunksReadBackExactlyWithAPartialLastChunkAndUnwrittenFrames
   ASSERT_TRUE(file.valid());
   const double nan = std::nan("");
   constexpr hsize_t kRows = 10, kComp = 3, kChunkRows = 4;  // chunks of 4, 4 and 2 (+2 padding) rows
-  io::h5::Id ds = ctx.create_extendable(file, "data", H5T_NATIVE_DOUBLE, {0, kRows, kComp}, {1, kChunkRows, kComp}, &nan);
+  io::h5::Id ds =
+      ctx.create_extendable(file, "data", H5T_NATIVE_DOUBLE, {0, kRows, kComp}, {1, kChunkRows, kComp}, &nan);
 
   auto frame = [&](int k) {
     std::vector<double> v(kRows * kComp);
