@@ -146,9 +146,8 @@ names = [("read", "deck read + validation + SHA-256"), ("create", "results file 
 lines = [
     "# `inpact study` overhead per case",
     "",
-    f"Deck: bench/study_overhead_deck.py {' '.join(deck_size or ['36', '30'])} ({n_elem} {elem_type} elements, penalty"
-    " contact, one step"
-    " in 4 increments);",
+    f"Deck: bench/study_overhead_deck.py {' '.join(deck_size or ['36', '30'])} ({n_elem} {elem_type} elements,"
+    " penalty contact, one step in 4 increments);",
     f"{n_cases} cases (the pressure varied) with `-j 2` on 2 cores; results {h5_size / 1e6:.1f} MB per case.",
     "Measured inside the study: each case's phases from its `--timings` file, its wall time (handed to a worker",
     "to ended) and start from its case.result; mean milliseconds per case; `bench/study_overhead.py` writes this file.",
