@@ -45,6 +45,10 @@ class RunObserver final : public solver::AnalysisObserver {
     status_.note(fmt::format("STEP {} BEGINS ({})", number, step.name));
     if (!options_.quiet) std::printf("step %d (%s)\n", number, step.name.c_str());
   }
+  void contact_interactions(int, const std::vector<std::string>& lines) override {
+    results_.write_contact_interactions(lines);
+    dat_.contact_interactions(lines);
+  }
   void iteration(const solver::IterationRecord& r) override {
     if (options_.verbose)
       std::printf("  inc %d att %d iter %d  max residual %.3e (%.2e of the average force)  max correction %.3e\n",

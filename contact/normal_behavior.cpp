@@ -105,9 +105,9 @@ double penalty_stiffness(const ResolvedNormalBehavior& r, double ke) {
 }
 
 bool uses_lagrange_multipliers(const ResolvedNormalBehavior& r, double ke, double slope) {
+  if (r.law != PressureOverclosure::Hard) return slope > kLagrangeLimit * ke * (1.0 + kRoundOff);
   if (penalty_type(r.method)) return penalty_stiffness(r, ke) > kLagrangeLimit * ke * (1.0 + kRoundOff);
-  if (r.law == PressureOverclosure::Hard) return true;  // direct hard contact: always
-  return slope > kLagrangeLimit * ke * (1.0 + kRoundOff);
+  return true;  // direct hard contact: always
 }
 
 std::optional<double> penetration_tolerance(const ResolvedNormalBehavior& r, double l_char) {

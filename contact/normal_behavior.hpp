@@ -64,9 +64,10 @@ ResolvedNormalBehavior resolve_normal_behavior(const model::SurfaceInteraction* 
 double penalty_stiffness(const ResolvedNormalBehavior& r, double ke);
 
 /// Table 38.1.21: are Lagrange multipliers used where the contact slope is `slope`? Direct hard
-/// contact: always. Penalty and augmented Lagrange: when k_penalty > 1000 k_e. Direct softened
-/// laws: where the local slope of the pressure-overclosure law exceeds 1000 k_e (`slope` is
-/// ignored for the penalty-type methods, which use their own stiffness).
+/// contact: always. Penalty and augmented Lagrange on hard contact: when k_penalty > 1000 k_e
+/// (the law's slope; `slope` is not needed). Softened laws: where the slope of the
+/// pressure-overclosure law (`slope`, its steepest at zero clearance) exceeds 1000 k_e. The
+/// analysis decides with this function (contact/resolved_interaction.cpp).
 bool uses_lagrange_multipliers(const ResolvedNormalBehavior& r, double ke, double slope = 0.0);
 
 /// The augmented-Lagrange penetration tolerance (a length) for a characteristic interface

@@ -11,9 +11,20 @@ PairKinematics::PairKinematics(const model::Model& model, const model::Surface& 
   options.out_of_plane_thickness = out_of_plane_thickness;
   slave_ = ContactSurface::build(model, slave, options);
   master_ = ContactSurface::build(model, master, options);
-  const auto x = reference_coordinates(model.mesh.nodes);
-  radius_ = std::max(typical_facet_size(master_, x), typical_facet_size(slave_, x));
-  if (!(radius_ > 0.0)) radius_ = 1.0;
+  radius_ = contact::search_radius(slave_, master_, reference_coordinates(model.mesh.nodes));
+}
+
+double search_radius(const ContactSurface& slave, const ContactSurface& master, std::span<const Vec3> x) {
+  const double r = std::max(typical_facet_size(master, x), typical_facet_size(slave, x));
+  return r > 0.0 ? r : 1.0;
+}
+
+double pair_search_radius(const model::Model& model, const model::Surface& slave, const model::Surface& master,
+                          double out_of_plane_thickness) {
+  SurfaceOptions options;
+  options.out_of_plane_thickness = out_of_plane_thickness;
+  return search_radius(ContactSurface::build(model, slave, options), ContactSurface::build(model, master, options),
+                       reference_coordinates(model.mesh.nodes));
 }
 
 void PairKinematics::refresh_search(std::span<const Vec3> x) {

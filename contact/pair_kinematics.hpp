@@ -34,6 +34,13 @@ struct SlaveKinematics {
   GapLinearization friction_lin;
 };
 
+/// The search radius of a pair: the larger median facet size of its two surfaces (a slave
+/// point farther than that from the master is open without doubt); 1 when neither has facets.
+double search_radius(const ContactSurface& slave, const ContactSurface& master, std::span<const Vec3> x);
+/// The same for surfaces of `model` on its reference coordinates.
+double pair_search_radius(const model::Model& model, const model::Surface& slave, const model::Surface& master,
+                          double out_of_plane_thickness);
+
 /// A contact pair's discretisation: its two surfaces and the search over the master's facets,
 /// shared by both discretisations; what they measure is theirs.
 class PairKinematics {
@@ -61,8 +68,7 @@ class PairKinematics {
   void set_self_contact(bool self) { self_contact_ = self; }
 
  protected:
-  /// The pair's surfaces from `model`; the search radius is the larger median facet size of
-  /// the two (a slave point farther than that from the master is open without doubt).
+  /// The pair's surfaces from `model`, and their search_radius().
   PairKinematics(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
                  double out_of_plane_thickness);
   /// Rebuilds the search tree when the master moved more than its margin since the last build.

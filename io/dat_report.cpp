@@ -155,6 +155,13 @@ void DatReport::begin_step(const model::Step& step, int number) {
                   number, step.description.empty() ? step.name : step.description));
 }
 
+void DatReport::contact_interactions(const std::vector<std::string>& lines) {
+  if (lines.empty()) return;
+  std::string text = "          CONTACT INTERACTIONS, AS ENFORCED IN THIS STEP\n\n";
+  for (const std::string& line : lines) text += "     " + line + "\n";
+  put(text + "\n");
+}
+
 void DatReport::write(const PrintFrame& frame) {
   const double fraction = frame.time_period > 0.0 ? frame.step_time / frame.time_period : 1.0;
   std::string text = fmt::format("\n                                INCREMENT{:>6} SUMMARY\n\n\n", frame.increment);

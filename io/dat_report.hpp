@@ -59,6 +59,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "model/step.hpp"
 #include "solver/results_frame.hpp"
@@ -83,6 +84,8 @@ class DatReport {
   DatReport(std::filesystem::path path, const std::string& solver_version, const std::string& heading = "");
   /// The step banner (S T E P  n  S T A T I C   A N A L Y S I S) and the step's description.
   void begin_step(const model::Step& step, int number);
+  /// The step's contact rows as the analysis enforces them (contact::describe() lines).
+  void contact_interactions(const std::vector<std::string>& lines);
   /// The increment summary and every table of `frame`; flushed.
   void write(const PrintFrame& frame);
   /// The closing line: THE ANALYSIS HAS (NOT) BEEN COMPLETED.

@@ -9,7 +9,6 @@
 #include "contact/contact_surface.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact/interaction_table.hpp"
-#include "contact/normal_behavior.hpp"
 
 namespace inpact::io {
 
@@ -65,22 +64,6 @@ const char* discretization_name(model::ContactDiscretization d) {
   return d == model::ContactDiscretization::SurfaceToSurface ? "surface-to-surface" : "node-to-surface";
 }
 
-/// Scales of the slave surface, or of the master when the slave is node-based.
-std::optional<contact::SurfaceScales> pair_scales(const model::Model& m, const std::string& slave,
-                                                  const std::string& master) {
-  for (const std::string* name : {&slave, &master}) {
-    auto it = m.mesh.surfaces.find(*name);
-    if (it == m.mesh.surfaces.end()) continue;
-    if (auto s = contact::surface_scales(m, it->second)) return s;
-  }
-  return std::nullopt;
-}
-
-const model::SurfaceInteraction* interaction_named(const model::Model& m, const std::string& name) {
-  auto it = m.interactions.find(name);
-  return it == m.interactions.end() ? nullptr : &it->second;
-}
-
 const char* correction_name(model::GeometricCorrection::Kind k) {
   switch (k) {
     case model::GeometricCorrection::Kind::Circumferential: return "CIRCUMFERENTIAL";
@@ -127,11 +110,6 @@ void write_contact(std::ostream& out, const model::Model& m) {
   for (const auto* p : pairs) {
     print(out, "  {} / {}: {}, {} sliding, interaction {}\n", p->slave, p->master, discretization_name(p->type),
           p->small_sliding ? "small" : "finite", p->interaction);
-    contact::NormalBehaviorOptions options;
-    options.self_contact_3d = p->slave == p->master;  // as the analysis (solver/contact_problem.cpp)
-    const auto resolved = contact::resolve_normal_behavior(interaction_named(m, p->interaction), p->type,
-                                                           p->small_sliding, false, options);
-    print(out, "    {}\n", contact::describe(resolved, pair_scales(m, p->slave, p->master)));
     if (!p->geometric_correction.empty()) print(out, "    smoothing: {}\n", p->geometric_correction);
   }
   for (const auto& note : m.preprocessing_notes) print(out, "  {}\n", note);
@@ -146,23 +124,14 @@ void write_contact(std::ostream& out, const model::Model& m) {
     for (const auto& pa : gc.property_assignments) {
       print(out, "  property {}: {}\n", pa.first.empty() ? std::string("(global)") : pa.first + ", " + pa.second,
             pa.interaction);
-      const auto resolved = contact::resolve_normal_behavior(interaction_named(m, pa.interaction),
-                                                             model::ContactDiscretization::SurfaceToSurface, false, true);
-      print(out, "    {}\n", contact::describe(resolved));
     }
     // What the inclusions expand to (contact/interaction_table.hpp).
     const auto table = contact::interaction_table(m);
     for (const auto& row : table->rows) {
       if (!row.general) continue;
-      const model::SurfaceInteraction* inter = interaction_named(m, row.pair.interaction);
-      const auto resolved = contact::resolve_normal_behavior(inter, row.pair.type, false, true);
-      auto scales = contact::surface_scales(m, *row.slave);
-      if (!scales) scales = contact::surface_scales(m, *row.master);
-      print(out, "  {} ({} faces) / {} ({} faces): surface to surface, interaction {}{}\n", row.pair.slave,
+      print(out, "  {} ({} faces) / {} ({} faces): surface to surface, interaction {}\n", row.pair.slave,
             row.slave->faces.size(), row.pair.master, row.master->faces.size(),
-            row.pair.interaction.empty() ? std::string("(none: hard, frictionless)") : row.pair.interaction,
-            row.weight != 1.0 ? fmt::format(", weight {:g} (balanced master-slave)", row.weight) : std::string());
-      print(out, "    {}\n", contact::describe(resolved, scales));
+            row.pair.interaction.empty() ? std::string("(none: hard, frictionless)") : row.pair.interaction);
     }
     for (const auto& note : table->notes) print(out, "  note: {}\n", note);
     if (!gc.geometric_corrections.empty()) print(out, "  smoothing assignments:\n");
@@ -176,9 +145,11 @@ void write_contact(std::ostream& out, const model::Model& m) {
 
 const char* procedure_name(const model::Step& s) { return s.static_procedure ? "STATIC" : "(none)"; }
 
-void write_steps(std::ostream& out, const model::Model& m) {
+void write_steps(std::ostream& out, const model::Model& m,
+                 std::span<const std::vector<contact::ResolvedInteraction>> interactions) {
   print(out, "Steps      {:>10}\n", m.steps.size());
-  for (const auto& s : m.steps) {
+  for (std::size_t k = 0; k < m.steps.size(); ++k) {
+    const model::Step& s = m.steps[k];
     print(out, "  {}: {}{}, at most {} increments\n", s.name, procedure_name(s), s.nlgeom ? ", NLGEOM" : "",
           s.max_increments);
     if (const auto& p = s.static_procedure) {
@@ -196,17 +167,22 @@ void write_steps(std::ostream& out, const model::Model& m) {
     for (const auto& b : s.temperatures) n_t += b.entries.size();
     print(out, "    {} boundary, {} concentrated load, {} distributed load, {} temperature lines; {} output requests\n",
           n_bc, n_cl, n_dl, n_t, s.output.size());
+    if (k >= interactions.size()) continue;
+    const std::vector<std::string> lines = contact::describe(interactions[k]);
+    if (!lines.empty()) print(out, "    contact, as the analysis enforces it:\n");
+    for (const std::string& line : lines) print(out, "      {}\n", line);
   }
 }
 
 }  // namespace
 
-void write_model_summary(std::ostream& out, const model::Model& m) {
+void write_model_summary(std::ostream& out, const model::Model& m,
+                         std::span<const std::vector<contact::ResolvedInteraction>> interactions) {
   if (!m.heading.empty()) print(out, "{}\n\n", m.heading);
   write_mesh(out, m);
   write_materials(out, m);
   write_contact(out, m);
-  write_steps(out, m);
+  write_steps(out, m, interactions);
 }
 
 }  // namespace inpact::io

@@ -424,6 +424,12 @@ void ResultsWriter::begin_step(const model::Step& s) {
   w.step = std::move(st);
 }
 
+void ResultsWriter::write_contact_interactions(const std::vector<std::string>& lines) {
+  Impl& w = *impl_;
+  if (!w.step) w.ctx.fail("write_contact_interactions called before begin_step");
+  w.ctx.write_strings(w.step->group, "contact_interactions", lines);
+}
+
 void ResultsWriter::write_frame(const Frame& frame) {
   Impl& w = *impl_;
   if (!w.step) w.ctx.fail("write_frame called before begin_step");

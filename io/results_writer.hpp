@@ -74,6 +74,9 @@ class ResultsWriter {
 
   /// Opens /steps/<NAME> (attrs procedure, nlgeom, time_period, number); frames go there.
   void begin_step(const model::Step& step);
+  /// /steps/<NAME>/contact_interactions: the current step's contact rows as the analysis
+  /// enforces them (contact::describe(), the text `inpact check` prints).
+  void write_contact_interactions(const std::vector<std::string>& lines);
   /// Appends one frame to the current step and flushes the file. Every field is checked first
   /// (sizes, node rows, element labels, same locations as in earlier frames of the step): a
   /// bad frame throws IoError and leaves the file as it was.

@@ -234,8 +234,11 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
     StepRun run(am, s, history, total_time, options.threads);
-    if (run.contact)
-      for (const auto& line : run.contact->describe()) observer.message(fmt::format("step {} ({}): {}", s + 1, step.name, line));
+    if (run.contact) {
+      const std::vector<std::string> lines = run.contact->describe();
+      observer.contact_interactions(static_cast<int>(s + 1), lines);
+      for (const auto& line : lines) observer.message(fmt::format("step {} ({}): {}", s + 1, step.name, line));
+    }
     for (const auto& v : run.output.not_computed())
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));

@@ -54,6 +54,11 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   // rather than run as if the bodies could pass through each other or stick where they should not.
   am.contact = contact::interaction_table(m);
   check_contact_supported(m, *am.contact);
+  try {
+    am.interactions = contact::resolve_all_steps(m, *am.contact);
+  } catch (const contact::InteractionError& e) {
+    throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(e.loc), e.keyword, e.what()));
+  }
 
   for (const auto& sec : m.mesh.sections) {
     const model::Material& mat = m.materials.at(sec.material);

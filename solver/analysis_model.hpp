@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contact/interaction_table.hpp"
+#include "contact/resolved_interaction.hpp"
 
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
@@ -27,6 +28,9 @@ struct AnalysisModel {
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;
+  /// Per step (index), the rows in force as they are enforced: what `check` prints and the
+  /// analysis uses (contact/resolved_interaction.hpp).
+  std::vector<std::vector<contact::ResolvedInteraction>> interactions;
   /// Warnings about the model as given (e.g. volumetric locking), for `check` and `run`.
   std::vector<std::string> warnings;
 

@@ -67,6 +67,11 @@ class Assembler {
   /// Reduces a full vector to the equations: r_eq = Σ_d w_d r_d over the DOFs feeding each one.
   void reduce(std::span<const double> full, std::span<double> reduced) const;
 
+  /// Adds a local matrix k (n × n, row-major) on global DOFs `dofs` into the reduced tangent,
+  /// through the DOF map's masters, as the elements' are (contact blocks: their couplings must
+  /// be in the pattern, set_extra_couplings).
+  void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) { scatter(dofs, k); }
+
   /// The point results kept by the last assembly that asked for them (AssemblyRequest::points),
   /// when it was made at exactly this u, temperature change and NLGEOM; otherwise null.
   const ElementPoints* points_at(std::span<const double> u, std::span<const double> delta_t, bool nlgeom) const;

@@ -1,29 +1,17 @@
 #pragma once
-/// Contact in the analysis: contact pairs, node to surface or surface to surface
-/// (contact/pair_kinematics.hpp: a gap, area and gap linearisation per slave node either way),
-/// and the enforcement of their normal constraint, as resolve_normal_behavior() decides per
-/// pair (contact/normal_behavior.hpp):
-///
-///   penalty-type (linear or nonlinear penalty, softened laws), h = −g the overclosure:
-///     f_c = −A p(h) ∇g,                K_c = A p'(h) ∇g ∇gᵀ − A p ∇²g
-///   augmented Lagrange: the linear penalty law with a multiplier per slave node,
-///     p = ⟨λ + k (h + c0)⟩, and λ ← p after Newton converges while a penetration exceeds the
-///     tolerance (the augmentation loop, solver/analysis.cpp)
-///   direct (hard, Lagrange multipliers): one multiplier λ per closed slave node, pressure −λ,
-///     f_c = λ A ∇g, constraint A g = 0:
-///       [K + λ A ∇²g   A ∇g] [Δu]   [f_ext − f_int − λ A ∇g]
-///       [A ∇gᵀ           0 ] [Δλ] = [−A g                 ]
-///     a node closes when it penetrates and opens when its pressure turns tensile; each
-///     iteration in which a status changes is a severe discontinuity iteration.
-///   stiff penalty-type laws (slope > 1000 k_e: table 38.1.21 says Abaqus uses Lagrange
-///     multipliers then): the same system with the law's compliance on the diagonal,
-///     constraint A (g + h(p)) = 0, h(p) the law's inverse, p = −λ: the (2,2) block is −A/p'(h)
-///     instead of 0, so the stiffness never enters K and its conditioning (a perturbed
-///     Lagrangian). The pressure is the law's exactly at convergence; status as for direct.
+/// Contact in the analysis: the pairs in force in a step, each as contact::resolve_interactions
+/// resolved it (contact/resolved_interaction.hpp: what `inpact check` prints), measured by its
+/// discretisation (contact/pair_kinematics.hpp: node to surface or surface to surface, a gap,
+/// area and gap linearisation per slave node either way) and enforced by its method's type
+/// (contact/enforcement.hpp: direct multipliers, a penalty-type law, a law with multipliers,
+/// augmented Lagrange). This class owns what every method shares: the search and status loop,
+/// the checks (HCRIT, chattering, a node through its master), the scatter of the local blocks
+/// through the assembler, the multiplier equations (after the DOF map's, see
+/// Assembler::set_extra_couplings), the augmentation check and the output values.
 ///
 /// ∇g = [n; −N_a n] over the slave node and its master facet's nodes; ∇²g only for finite
-/// sliding; A the slave node's area, held fixed in the linearisation. Multipliers take the
-/// equations after the DOF map's (Assembler::set_extra_couplings).
+/// sliding; A the slave node's area, held fixed in the linearisation. A status change of a
+/// multiplier's node is a severe discontinuity iteration.
 ///
 /// Friction (*FRICTION, pairs with μ > 0 or ROUGH only; contact/friction.hpp): every closed
 /// slave node of such a pair adds f = A Bᵀ τ from the elastic-slip return mapping, with the
@@ -43,6 +31,7 @@
 
 #include "analysis_model.hpp"
 #include "assembler.hpp"
+#include "contact/enforcement.hpp"
 #include "contact_results.hpp"
 
 namespace inpact::solver {
@@ -57,22 +46,8 @@ inline constexpr int kMaxSevereIterations = 50;
 /// stiffness is restored and Newton converges from there.
 inline constexpr double kUserAdaptiveScale = 0.01;
 
-/// What a slave node carries across iterations, increments and steps.
-struct SlaveState {
-  double lambda = 0.0;  ///< augmented Lagrange: λ (a pressure); direct: the multiplier (pressure −λ)
-  /// A penalty-type law stiffer than 1000 k_e, enforced with a Lagrange multiplier (table
-  /// 38.1.21): the multiplier of a closed node, pressure −multiplier.
-  double multiplier = 0.0;
-  bool closed = false;  ///< contact status at the last update
-  int flips = 0;        ///< status changes in the current increment attempt
-  /// Penetration at the start of the attempt (from the converged state). HCRIT limits what an
-  /// attempt adds to it: an initial overclosure (an interference fit) is resolved in the first
-  /// increment, and no cutback could reduce it.
-  double start_penetration = 0.0;
-  /// The master facet of the last update that found one (−1: never): where a node that lost
-  /// its master went through it, or slid off it.
-  std::int32_t last_facet = -1;
-};
+/// What a slave node carries across iterations, increments and steps (contact/enforcement.hpp).
+using contact::SlaveState;
 
 /// The friction history and trial state of a slave node of a frictional pair.
 struct FrictionNodeState {
@@ -117,9 +92,10 @@ struct AugmentationCheck {
 };
 
 /// Throws AnalysisError (citing the deck) for contact this version does not analyse:
-/// surface-to-surface pairs with a node-based slave, node-based masters,
-/// ADJUST on step pairs (or on a model contact::apply_adjust has not seen), NO SEPARATION
-/// other than with direct hard contact, self-contact with direct enforcement.
+/// surface-to-surface pairs with a node-based slave, node-based masters, ADJUST on step pairs
+/// (or on a model contact::apply_adjust has not seen). What depends on the resolved method
+/// (NO SEPARATION other than with direct hard contact, self-contact with direct enforcement) is
+/// refused by contact::resolve_interactions.
 void check_contact_supported(const model::Model& model, const contact::InteractionTable& table);
 
 class ContactProblem {
@@ -131,7 +107,7 @@ class ContactProblem {
 
   bool empty() const;
   bool has_augmented_lagrange() const;
-  /// One line per pair: surfaces, method, law and stiffness (for the step's messages).
+  /// One line per pair in force: contact::describe() of its resolved record (the step's messages).
   std::vector<std::string> describe() const;
 
   bool has_friction() const;
@@ -181,6 +157,23 @@ class ContactProblem {
   /// Search, projection and gap of every slave node at u; a call at the u of the last one
   /// (the output of a converged state, whose last iteration evaluated it) keeps its results.
   void evaluate(std::span<const double> u);
+  /// update() of slave i: its status, and the checks every method shares (chattering, HCRIT).
+  void update_node(Pair& p, std::size_t i, SlaveState& s, const contact::StatusLimits& limits,
+                   std::span<const contact::Vec3> x, ContactIteration& it) const;
+  /// A closed node that lost its master: did it go through it by more than HCRIT?
+  void check_lost_master(const Pair& p, std::size_t i, const SlaveState& s, std::span<const contact::Vec3> x,
+                         ContactIteration& it) const;
+  std::string node_name(const Pair& p, std::size_t i) const;
+  /// Appends what slave i of pair pi couples to the pattern's signature.
+  void add_couplings(std::size_t pi, std::size_t i, std::vector<std::int64_t>& signature);
+  /// Rebuilds the assembler's pattern when the couplings differ from the last ones.
+  void set_pattern(std::vector<std::int64_t> signature, Assembler& assembler);
+  void assemble_friction(const Pair& p, std::size_t i, const SlaveState& s, std::span<double> f_int,
+                         Assembler& assembler);
+  void assemble_constraint_column(const Pair& p, std::size_t i, const SlaveState& s,
+                                  std::span<const std::int64_t> dofs, Assembler& assembler) const;
+  void friction_results(const Pair& p, std::size_t i, const FrictionNodeState& f, bool closed,
+                        ContactNodeResult& r) const;
   const AnalysisModel& am_;
   std::size_t n_pairs_total_ = 0;
   std::vector<std::unique_ptr<Pair>> pairs_;

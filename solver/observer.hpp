@@ -1,7 +1,9 @@
 #pragma once
 /// How the analysis reports progress: apps/ connects an observer that writes the status log,
 /// the progress line and the results file, so the solver never includes io/.
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/step.hpp"
 #include "results_frame.hpp"
@@ -21,6 +23,9 @@ class AnalysisObserver {
  public:
   virtual ~AnalysisObserver() = default;
   virtual void step_started(const model::Step& step, int step_number) {}
+  /// The contact rows in force in the step, as the analysis enforces them (contact::describe()
+  /// of each resolved record: the text `inpact check` prints). Called after step_started.
+  virtual void contact_interactions(int step_number, const std::vector<std::string>& lines) {}
   virtual void iteration(const IterationRecord& record) {}
   virtual void attempt_finished(const StatusRow& row) {}
   virtual void frame(const Frame& frame) {}

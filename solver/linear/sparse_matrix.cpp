@@ -56,4 +56,32 @@ SparseMatrix PatternBuilder::build(bool upper_only) const {
   return m;
 }
 
+void mirror_upper(const SparseMatrix& a, SparseMatrix& full) {
+  std::vector<std::int64_t> count(static_cast<std::size_t>(a.n) + 1, 0);
+  for (std::int64_t c = 0; c < a.n; ++c)
+    for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
+      ++count[c + 1];
+      if (a.row_idx[k] != c) ++count[a.row_idx[k] + 1];
+    }
+  full.n = a.n;
+  full.upper_only = false;
+  full.col_ptr.assign(static_cast<std::size_t>(a.n) + 1, 0);
+  for (std::int64_t c = 0; c < a.n; ++c) full.col_ptr[c + 1] = full.col_ptr[c] + count[c + 1];
+  full.row_idx.assign(static_cast<std::size_t>(full.col_ptr[a.n]), 0);
+  full.values.assign(static_cast<std::size_t>(full.col_ptr[a.n]), 0.0);
+  std::vector<std::int64_t> next(full.col_ptr.begin(), full.col_ptr.end() - 1);
+  // Walking the columns in order fills column j first with its own rows (<= j, increasing),
+  // then with the mirrored rows c > j in increasing c: every column comes out sorted.
+  for (std::int64_t c = 0; c < a.n; ++c)
+    for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
+      const std::int64_t r = a.row_idx[k];
+      full.row_idx[next[c]] = r;
+      full.values[next[c]++] = a.values[k];
+      if (r != c) {
+        full.row_idx[next[r]] = c;
+        full.values[next[r]++] = a.values[k];
+      }
+    }
+}
+
 }  // namespace inpact::solver

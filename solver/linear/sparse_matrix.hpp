@@ -22,6 +22,10 @@ struct SparseMatrix {
   void multiply(std::span<const double> x, std::span<double> y) const;
 };
 
+/// The full (both triangles) matrix of a symmetric one stored as its upper triangle, into
+/// `full` (its buffers reused). Every column comes out sorted.
+void mirror_upper(const SparseMatrix& upper, SparseMatrix& full);
+
 /// Collects the couplings of dense blocks (element DOF lists, constraint rows) and builds the
 /// compressed pattern once; the values are then assembled into it iteration after iteration.
 class PatternBuilder {

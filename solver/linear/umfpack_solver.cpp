@@ -51,31 +51,7 @@ class UmfpackSolver final : public LinearSolver {
  private:
   /// The full pattern and values of a matrix stored as its upper triangle.
   const SparseMatrix& expand(const SparseMatrix& a) {
-    std::vector<std::int64_t> count(a.n + 1, 0);
-    for (std::int64_t c = 0; c < a.n; ++c)
-      for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
-        ++count[c + 1];
-        if (a.row_idx[k] != c) ++count[a.row_idx[k] + 1];
-      }
-    expanded_.n = a.n;
-    expanded_.upper_only = false;
-    expanded_.col_ptr.assign(a.n + 1, 0);
-    for (std::int64_t c = 0; c < a.n; ++c) expanded_.col_ptr[c + 1] = expanded_.col_ptr[c] + count[c + 1];
-    expanded_.row_idx.assign(expanded_.col_ptr[a.n], 0);
-    expanded_.values.assign(expanded_.col_ptr[a.n], 0.0);
-    std::vector<std::int64_t> next(expanded_.col_ptr.begin(), expanded_.col_ptr.end() - 1);
-    // Walking the columns in order fills column j first with its own rows (<= j, increasing),
-    // then with the mirrored rows c > j in increasing c: every column comes out sorted.
-    for (std::int64_t c = 0; c < a.n; ++c)
-      for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
-        const std::int64_t r = a.row_idx[k];
-        expanded_.row_idx[next[c]] = r;
-        expanded_.values[next[c]++] = a.values[k];
-        if (r != c) {
-          expanded_.row_idx[next[r]] = c;
-          expanded_.values[next[r]++] = a.values[k];
-        }
-      }
+    mirror_upper(a, expanded_);
     return expanded_;
   }
 

@@ -1,0 +1,41 @@
+#include "law_multipliers.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace inpact::contact {
+
+StatusUpdate LawWithMultipliers::update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const {
+  // As direct, with the law deciding closure: closed while the multiplier's pressure is
+  // compressive, closing where the law acts (touching included), from the law's pressure.
+  PressureValue law;
+  if (g.found) law = law_.eval(-g.gap, augmented_ ? s.lambda : 0.0);
+  const bool closed = g.found && (s.closed ? (no_separation_ || -s.multiplier >= limits.open_below) : law.active);
+  if (closed && !s.closed) s.multiplier = -law.p;
+  if (!closed) s.multiplier = 0.0;
+  return {closed, closed};
+}
+
+double LawWithMultipliers::pressure(const SlaveState& s, const NodeGap& g) const {
+  return s.closed && g.found ? std::max(-s.multiplier, 0.0) : 0.0;
+}
+
+NodePressure LawWithMultipliers::output(const SlaveState& s, const NodeGap& g) const {
+  const bool closed = s.closed && g.found;
+  return {closed ? -s.multiplier : 0.0, closed};
+}
+
+LawWithMultipliers::LawPoint LawWithMultipliers::law_point(const SlaveState& s) const {
+  const double p = -s.multiplier;
+  const double p_small = 1e-12 * std::max(ke_ * l_char_, std::abs(s.lambda));
+  LawPoint out;
+  if (p > p_small) {
+    out.dp = law_.inverse(p, s.lambda, &out.h).dp;
+    return out;
+  }
+  out.dp = law_.inverse(p_small, s.lambda, &out.h).dp;
+  if (out.dp > 0.0) out.h += (p - p_small) / out.dp;
+  return out;
+}
+
+}  // namespace inpact::contact

@@ -1,0 +1,41 @@
+#include "penalty.hpp"
+
+namespace inpact::contact {
+
+PressureValue PenaltyLaw::law_pressure(const SlaveState& s, const NodeGap& g) const {
+  if (!g.found) return {};
+  PressureValue v = law_.eval(-g.gap, options_.augmented ? s.lambda : 0.0);
+  if (options_.user_adaptive) {
+    v.p *= adaptive_scale_;
+    v.dp *= adaptive_scale_;
+  }
+  return v;
+}
+
+StatusUpdate PenaltyLaw::update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const {
+  const PressureValue pv = law_pressure(s, g);
+  const bool closed = options_.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
+  // Damping an augmented-Lagrange node that keeps crossing the law's kink: after two crossings
+  // in this attempt its stiffness stays in the tangent while it is open (the force is still the
+  // law's), so Newton stops bouncing between the branches at 1000 k_e (the interference fit's
+  // faceting noise). Not for plain penalty: there the modified tangent turned Hertz's quadratic
+  // convergence linear (22 → 77 iterations).
+  // A node touching within round-off brings the law's first slope too: a penalty law acts only
+  // from h + c0 ≥ 0, and a gap of +1e-12 would otherwise leave a body that rests on its contact
+  // with no stiffness at all (bench/contact_extremes).
+  const bool touching = g.found && g.gap < limits.close_below;
+  return {closed, pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
+}
+
+NormalForce PenaltyLaw::normal_force(const SlaveState& s, const NodeGap& g) const {
+  const PressureValue pv = law_pressure(s, g);
+  // An open node kept for damping or touching (update_status) brings the law's first slope.
+  return {-pv.p, pv.active ? pv.dp : law_.max_slope(0.0)};
+}
+
+NodePressure PenaltyLaw::output(const SlaveState& s, const NodeGap& g) const {
+  const PressureValue pv = law_pressure(s, g);
+  return {pv.p, options_.tied_law ? pv.active : pv.p > 0.0};
+}
+
+}  // namespace inpact::contact

@@ -1,0 +1,228 @@
+#include "resolved_interaction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "contact/contact_surface.hpp"
+#include "contact/geometric_correction.hpp"
+#include "contact/pair_kinematics.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+using model::EnforcementMethod;
+using Law = model::PressureOverclosure;
+
+/// The *CONTACT CONTROLS in force for `pair` in step `step`: the pair's own over the global
+/// ones, carried over from earlier steps until RESET.
+const model::ContactControls* controls_for(const model::Model& m, std::size_t step, const model::ContactPair& pair) {
+  const model::ContactControls *global = nullptr, *specific = nullptr;
+  for (std::size_t s = 0; s <= step && s < m.steps.size(); ++s)
+    for (const auto& c : m.steps[s].contact_controls) {
+      const bool all = c.master.empty() && c.slave.empty();
+      const bool mine = c.master == pair.master && c.slave == pair.slave;
+      if (c.reset) {
+        if (all) global = specific = nullptr;
+        if (mine) specific = nullptr;
+      }
+      if (all) global = &c;
+      else if (mine) specific = &c;
+    }
+  return specific ? specific : global;
+}
+
+const model::SurfaceInteraction* interaction_of(const model::Model& m, const model::ContactPair& p) {
+  auto it = m.interactions.find(p.interaction);
+  return it == m.interactions.end() ? nullptr : &it->second;
+}
+
+/// The name a surface has in the deck ("" for a body exterior general contact made).
+std::string deck_name(const model::Model& m, const model::Surface* s) {
+  const auto it = m.mesh.surfaces.find(s->name);
+  return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
+}
+
+/// surface_scales() once per surface (it visits every element).
+class ScaleCache {
+ public:
+  explicit ScaleCache(const model::Model& m) : m_(m) {}
+  std::optional<SurfaceScales> of(const model::Surface* s) {
+    auto it = cache_.find(s);
+    if (it == cache_.end()) it = cache_.emplace(s, surface_scales(m_, *s)).first;
+    return it->second;
+  }
+
+ private:
+  const model::Model& m_;
+  std::map<const model::Surface*, std::optional<SurfaceScales>> cache_;
+};
+
+/// Step 3: k_e and the characteristic length.
+void resolve_scales(const model::Model& m, const ContactInteraction& entry, ScaleCache& cache, ResolvedInteraction& r) {
+  auto scales = cache.of(entry.slave);
+  if (!scales) scales = cache.of(entry.master);
+  // A balanced two-row interaction (general contact): both rows take the mean of the two
+  // surfaces' scales, so they hold one law, see the same gap, and each reports the pressure
+  // that acts (with a row's own k_e one surface showed 2/3 p and the other 4/3 p).
+  if (entry.general && entry.weight != 1.0 && entry.slave != entry.master) {
+    const auto other = cache.of(entry.master);
+    if (scales && other) {
+      scales->element_stiffness = 0.5 * (scales->element_stiffness + other->element_stiffness);
+      scales->characteristic_length = 0.5 * (scales->characteristic_length + other->characteristic_length);
+    }
+  }
+  r.scales_from_mesh = scales.has_value();
+  r.ke = scales ? scales->element_stiffness : 0.0;
+  r.l_char = scales ? scales->characteristic_length : pair_search_radius(m, *entry.slave, *entry.master, r.thickness);
+}
+
+[[noreturn]] void refuse(const model::SourceLoc& loc, const std::string& keyword, const std::string& what) {
+  throw InteractionError(what, loc, keyword);
+}
+
+/// Step 4: the law and how it is enforced.
+void resolve_enforcement(const ContactInteraction& entry, ResolvedInteraction& r) {
+  const ResolvedNormalBehavior& b = r.behavior;
+  const model::ContactPair& deck = entry.pair;
+  const bool softened = b.law != Law::Hard && !deck.tied;
+  const bool direct = (b.method == EnforcementMethod::Direct && b.law == Law::Hard) || deck.tied;
+  // TIED (after ADJUST): direct hard contact that never separates, and no slip (ROUGH).
+  // CalculiX's PRESSURE-OVERCLOSURE=TIED: a bonded spring p = k h from the initial gap (its
+  // offsets), tension included, and no slip at the *FRICTION stick slope.
+  r.tied_pair = deck.tied;
+  r.tied_law = b.law == Law::Tied;
+  r.no_separation = b.deck.no_separation || deck.tied || r.tied_law;
+  r.augmented = b.method == EnforcementMethod::AugmentedLagrange && !deck.tied;
+  if (direct) {
+    r.enforcement = EnforcementKind::DirectMultipliers;
+    return;
+  }
+  if (!softened && !b.given_stiffness && !r.scales_from_mesh)
+    refuse(deck.loc, entry.general ? "*CONTACT" : "*CONTACT PAIR",
+           fmt::format("pair {}: the default penalty stiffness needs an element-based surface with an elastic "
+                       "material; give the stiffness on *SURFACE BEHAVIOR", r.name));
+  r.law = PressureOverclosure::from(b, r.ke, r.l_char);
+  // Table 38.1.21: Lagrange multipliers above 1000 k_e (the law's slope at zero clearance;
+  // exponential: at h = 0). Without k_e (node-based slave and master) there is nothing to
+  // compare with.
+  const bool stiff = r.scales_from_mesh && uses_lagrange_multipliers(b, r.ke, r.law->max_slope(0.0));
+  r.enforcement = stiff ? EnforcementKind::LawWithMultipliers
+                  : r.augmented ? EnforcementKind::AugmentedLagrange
+                                : EnforcementKind::PenaltyLaw;
+  r.user_adaptive = b.user_adaptive_stiffness && !stiff;
+}
+
+/// Step 5: HCRIT, friction and the gap offsets.
+void resolve_limits_and_friction(const model::Model& m, const ContactInteraction& entry, ResolvedInteraction& r) {
+  const model::ContactPair& deck = entry.pair;
+  const model::SurfaceInteraction* inter = interaction_of(m, deck);
+  const bool softened = r.behavior.law != Law::Hard && !deck.tied;
+  if (r.augmented) r.tolerance = *penetration_tolerance(r.behavior, r.l_char);
+  r.hcrit = softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * r.l_char);
+  // Friction: γ_crit from the same characteristic length (KEYWORDS.md Part C c).
+  model::Friction tie;
+  if (r.tied_law && inter && inter->friction) tie = *inter->friction;
+  tie.rough = true;
+  const bool tied = deck.tied || r.tied_law;
+  r.friction = resolve_friction(tied ? &tie : inter && inter->friction ? &*inter->friction : nullptr, r.l_char, r.ke);
+  if (r.tied_law && tie.stick_slope) r.friction->fixed_stiffness = *tie.stick_slope;  // CalculiX's λ
+  if (r.friction && r.friction->rough && !(r.ke > 0.0))
+    refuse(inter->friction->loc, "*FRICTION",
+           fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of an element-based surface with an "
+                       "elastic material", r.name));
+  const bool has_clearance = !entry.general && std::any_of(m.clearances.begin(), m.clearances.end(), [&](const auto& c) {
+    return c.slave == deck.slave && c.master == deck.master;
+  });
+  r.offsets = r.tied_law ? GapOffsets::InitialGap : has_clearance ? GapOffsets::Clearance : GapOffsets::None;
+}
+
+/// What the enforcement cannot do (checked on the resolved method, so check and run agree).
+void refuse_unsupported(const ContactInteraction& entry, const model::SurfaceInteraction* inter,
+                        const ResolvedInteraction& r) {
+  const model::ContactPair& p = entry.pair;
+  const std::string kw = entry.general ? "*CONTACT" : "*CONTACT PAIR";
+  if (r.self_contact && r.behavior.method == EnforcementMethod::Direct)
+    refuse(p.loc, kw, fmt::format("self-contact of {} with direct enforcement is not analysed (every contact would be "
+                                  "constrained twice, once from each side); use AUGMENTED LAGRANGE (the default for "
+                                  "self-contact) or PENALTY", p.slave));
+  if (inter && inter->behavior && inter->behavior->no_separation && !p.tied &&
+      (r.behavior.method != EnforcementMethod::Direct || r.behavior.law != Law::Hard))
+    refuse(inter->behavior->loc, "*SURFACE BEHAVIOR",
+           "NO SEPARATION is analysed with direct hard contact only (a closed node keeps its multiplier, which may "
+           "turn tensile); add DIRECT or drop the penalty or softened law");
+}
+
+ResolvedInteraction resolve_row(const model::Model& m, const InteractionTable& table, std::size_t row,
+                                std::size_t step, ScaleCache& cache) {
+  const ContactInteraction& entry = table.rows[row];
+  const model::ContactPair& deck = entry.pair;
+  const model::SurfaceInteraction* inter = interaction_of(m, deck);
+  ResolvedInteraction r;
+  r.row = row;
+  r.step = step;
+  r.name = entry.name();
+  r.pair = &entry.pair;
+  r.general = entry.general;
+  r.self_contact = deck.slave == deck.master;
+  r.surface_to_surface = deck.type == model::ContactDiscretization::SurfaceToSurface;
+  r.finite_sliding = !deck.small_sliding;
+  r.weight = entry.weight;
+  r.thickness = inter ? inter->out_of_plane_thickness : 1.0;
+  NormalBehaviorOptions options;
+  options.controls = controls_for(m, step, deck);
+  // Self-contact: augmented Lagrange by default (Abaqus's for 3-D node to surface; inpact's in
+  // 2D too, where Abaqus would use multipliers that a two-sided contact would duplicate).
+  options.self_contact_3d = r.self_contact;
+  r.behavior = resolve_normal_behavior(inter, deck.type, deck.small_sliding, entry.general, options);
+  refuse_unsupported(entry, inter, r);
+  resolve_scales(m, entry, cache, r);
+  resolve_enforcement(entry, r);
+  resolve_limits_and_friction(m, entry, r);
+  if (r.surface_to_surface) {
+    const model::ContactPair* named = entry.general ? nullptr : &deck;
+    r.smoothed = !corrections_for(m, deck_name(m, entry.master), named).empty() ||
+                 !corrections_for(m, deck_name(m, entry.slave), named).empty();
+  }
+  return r;
+}
+
+/// A balanced interaction whose law goes to multipliers would hold two multipliers on one gap:
+/// its first row takes the whole weight, the second is not in force.
+void merge_balanced_multiplier_rows(const InteractionTable& table, std::vector<ResolvedInteraction>& records) {
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    ResolvedInteraction& r = records[k];
+    const ContactInteraction& entry = table.rows[r.row];
+    if (r.enforcement != EnforcementKind::LawWithMultipliers || !entry.general || entry.weight == 1.0 ||
+        entry.slave == entry.master)
+      continue;
+    const bool second = r.row > 0 && table.rows[r.row - 1].general && table.rows[r.row - 1].slave == entry.master &&
+                        table.rows[r.row - 1].master == entry.slave;
+    if (second) r.in_force = false;
+    else r.weight = 1.0;
+  }
+}
+
+}  // namespace
+
+std::vector<ResolvedInteraction> resolve_interactions(const model::Model& m, const InteractionTable& table,
+                                                      std::size_t step) {
+  ScaleCache cache(m);
+  std::vector<ResolvedInteraction> out;
+  for (std::size_t row = 0; row < table.rows.size(); ++row)
+    if (table.rows[row].first_step <= step) out.push_back(resolve_row(m, table, row, step, cache));
+  merge_balanced_multiplier_rows(table, out);
+  return out;
+}
+
+std::vector<std::vector<ResolvedInteraction>> resolve_all_steps(const model::Model& m, const InteractionTable& table) {
+  std::vector<std::vector<ResolvedInteraction>> out;
+  for (std::size_t s = 0; s < m.steps.size(); ++s) out.push_back(resolve_interactions(m, table, s));
+  return out;
+}
+
+}  // namespace inpact::contact

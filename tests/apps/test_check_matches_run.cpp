@@ -1,0 +1,109 @@
+// `inpact check` prints, per step, exactly the contact interactions the run enforces: for every
+// deck of decks/ with contact, the lines of check's summary equal, step by step, the lines the
+// run's ContactProblem holds (what the run reports to its observer, the results file and the
+// .dat header). The decks of decks/contact/ are also run to the end, and the lines the analysis
+// reported at each step's start are compared too.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "apps/commands.hpp"
+#include "contact/initial_adjustment.hpp"
+#include "parser/read_deck.hpp"
+#include "solver/analysis.hpp"
+#include "solver/analysis_model.hpp"
+#include "solver/contact_problem.hpp"
+
+namespace inpact::app {
+namespace {
+
+namespace fs = std::filesystem;
+using StepLines = std::vector<std::vector<std::string>>;
+
+/// The contact lines of `inpact check DECK`, per step (steps without contact: empty).
+StepLines check_lines(const std::string& deck, std::size_t n_steps) {
+  std::ostringstream captured;
+  std::streambuf* old = std::cout.rdbuf(captured.rdbuf());
+  const int rc = run_check({deck, {}});
+  std::cout.rdbuf(old);
+  EXPECT_EQ(rc, 0) << deck;
+  StepLines out(n_steps);
+  std::istringstream in(captured.str());
+  std::string line;
+  bool in_steps = false, in_contact = false;
+  std::size_t step = 0, steps_seen = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("Steps ", 0) == 0) in_steps = true;
+    if (!in_steps) continue;
+    if (line.size() > 2 && line.rfind("  ", 0) == 0 && line[2] != ' ') {  // "  NAME: STATIC, ..." starts a step
+      step = steps_seen++;
+      in_contact = false;
+      continue;
+    }
+    if (line == "    contact, as the analysis enforces it:") in_contact = true;
+    else if (in_contact && line.rfind("      ", 0) == 0 && step < out.size()) out[step].push_back(line.substr(6));
+  }
+  EXPECT_EQ(steps_seen, n_steps) << deck;
+  return out;
+}
+
+/// What each step's ContactProblem (the object the run builds) describes.
+StepLines problem_lines(const model::Model& m) {
+  const solver::AnalysisModel am = solver::build_analysis_model(m);
+  StepLines out(m.steps.size());
+  for (std::size_t s = 0; s < m.steps.size(); ++s) out[s] = solver::ContactProblem(am, s).describe();
+  return out;
+}
+
+struct LineCapture : solver::AnalysisObserver {
+  StepLines lines;
+  void contact_interactions(int step, const std::vector<std::string>& l) override {
+    lines.resize(static_cast<std::size_t>(step));
+    lines[static_cast<std::size_t>(step) - 1] = l;
+  }
+};
+
+std::vector<std::string> contact_decks() {
+  std::vector<std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(INPACT_SOURCE_DIR) / "decks")) {
+    const std::string p = e.path().string();
+    if (e.path().extension() != ".inp" || p.find("/errors/") != std::string::npos) continue;
+    out.push_back(p);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(CheckMatchesRun, EveryContactDeckPrintsWhatTheRunEnforces) {
+  int with_contact = 0, run_to_the_end = 0;
+  for (const std::string& deck : contact_decks()) {
+    parser::ReadResult r = parser::read_deck(deck);
+    if (!r.ok()) continue;  // decks that are included by others
+    contact::apply_adjust(r.model);
+    const StepLines run = problem_lines(r.model);
+    bool any = false;
+    for (const auto& s : run) any = any || !s.empty();
+    if (!any) continue;
+    ++with_contact;
+    EXPECT_EQ(check_lines(deck, r.model.steps.size()), run) << deck;
+    if (deck.find("/decks/contact/") == std::string::npos) continue;
+    LineCapture capture;
+    const solver::AnalysisOutcome outcome = solver::run_analysis(r.model, capture);
+    if (!outcome.completed) continue;  // (a deck that aborts on purpose)
+    capture.lines.resize(run.size());
+    EXPECT_EQ(capture.lines, run) << deck;
+    ++run_to_the_end;
+  }
+  std::printf("%d decks with contact compared, %d of them run to the end\n", with_contact, run_to_the_end);
+  EXPECT_GE(with_contact, 50);
+  EXPECT_GE(run_to_the_end, 35);
+}
+
+}  // namespace
+}  // namespace inpact::app
