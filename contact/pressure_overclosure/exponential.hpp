@@ -18,6 +18,12 @@ class ExponentialLaw final : public PressureLaw {
   double stiffness() const override { return 0.0; }
   std::string describe() const override;
 
+ protected:
+  /// c0: the slope is 0 at −c0, so p over it would put the bracket's top out of reach (exp
+  /// overflows, bisection cannot come back in 200 halvings); from −c0 + c0 = 0 (p = p0) the
+  /// doubling needs a few steps, exp(ŝ) growing as it does.
+  double bracket_width(double p, double lo) const override { return c0_; }
+
  private:
   double c0_, p0_;
 };
