@@ -76,8 +76,6 @@ class Enforcement {
 
   /// Does a closed node carry a Lagrange multiplier (a system row of its own)?
   virtual bool uses_multipliers() const { return false; }
-  /// Direct hard contact: the gap of a closed node must vanish (Newton's compatibility check).
-  virtual bool enforces_zero_gap() const { return false; }
   /// The field of SlaveState holding the node's multiplier (the unknown of its system row).
   virtual double SlaveState::*multiplier() const { return &SlaveState::lambda; }
   /// Pressures below this, in magnitude, are round-off of the method (the open threshold's scale).

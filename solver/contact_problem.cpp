@@ -330,7 +330,10 @@ void ContactProblem::update_node(Pair& p, std::size_t i, SlaveState& s, const co
                                  std::span<const contact::Vec3> x, ContactIteration& it) const {
   const contact::StatusUpdate status = p.enforcement->update_status(s, p.node_gap(i), limits);
   p.contributes[i] = status.contributes;
-  if (status.closed && p.enforcement->enforces_zero_gap()) it.max_gap_error = std::max(it.max_gap_error, std::abs(p.gap(i)));
+  // A multiplier's constraint g + h(p) = 0 (direct: g = 0) at this iterate: Newton's contact
+  // compatibility check.
+  if (status.closed && p.uses_multipliers())
+    it.max_gap_error = std::max(it.max_gap_error, std::abs(p.gap(i) + p.enforcement->constraint_overclosure(s)));
   if (status.closed != s.closed) {
     ++it.status_changes;
     if (p.uses_multipliers()) it.blocks_convergence = true;

@@ -79,7 +79,7 @@ struct ContactState {
 struct ContactIteration {
   int status_changes = 0;          ///< nodes that opened or closed
   bool blocks_convergence = false; ///< a direct (multiplier) node changed status: a severe discontinuity
-  double max_gap_error = 0.0;      ///< largest |g| of a closed direct node (zero penetration is the goal)
+  double max_gap_error = 0.0;      ///< largest |g + h(p)| of a closed multiplier node (direct: |g|)
   std::string failure;             ///< chattering or HCRIT exceeded: the attempt must be cut back
 };
 

@@ -10,7 +10,6 @@ class DirectMultipliers final : public Enforcement {
  public:
   explicit DirectMultipliers(bool no_separation) : no_separation_(no_separation) {}
   bool uses_multipliers() const override { return true; }
-  bool enforces_zero_gap() const override { return true; }
   StatusUpdate update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const override;
   NormalForce normal_force(const SlaveState& s, const NodeGap&) const override { return {s.lambda, 0.0}; }
   double pressure(const SlaveState& s, const NodeGap& g) const override;

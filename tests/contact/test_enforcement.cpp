@@ -44,7 +44,6 @@ TEST(DirectMultipliers, ClosesOnPenetrationAndOpensOnTension) {
   EXPECT_FALSE(direct.update_status(s, gap(0.0), kLimits).closed);
   EXPECT_EQ(s.lambda, 0.0);
   EXPECT_TRUE(direct.uses_multipliers());
-  EXPECT_TRUE(direct.enforces_zero_gap());
   EXPECT_EQ(direct.constraint_overclosure(s), 0.0);
 }
 

@@ -65,10 +65,11 @@ TEST(ContactStiffSoftened, ExponentialAbove1000KeRunsWithMultipliers) {
 }
 
 // CPRESS = p(−COPEN) on every frame (relative 1e-9, as ContactSoftened checks the deck's own
-// law). Disabled: the Newton test (solver/newton.cpp) does not look at a stiff law's constraint
-// rows g + h(p) = 0, so a curved h(p) is accepted after one linearised step per increment (the
-// first pressed frame has CPRESS 0.52 where p(−COPEN) = 302; the error shrinks with the
-// increment to 0.9 % at the end). Enable once the constraint residual enters convergence.
+// law). Disabled: Newton's contact compatibility check holds a multiplier's constraint
+// g + h(p) = 0 to 1e-3 of the increment's largest displacement (Abaqus's tolerance), which on
+// this law's steep flank (p' ≈ 6e4 at p = 1.6) leaves the first pressed frame 18 % low (CPRESS
+// 1.277 where p(−COPEN) = 1.559); later frames agree to 2e-5. A tolerance on the law's own
+// overclosure (or on the pressure) would close it: measured figures, not yet a rule.
 TEST(ContactStiffSoftened, DISABLED_ExponentialAbove1000KeFollowsTheLaw) {
   const DeckDir dir;
   auto r = run_stiff_exponential(dir);
