@@ -220,4 +220,42 @@ void Assembler::reduce(std::span<const double> full, std::span<double> reduced) 
     }
 }
 
+void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<const double> k,
+                                       std::vector<SkewEntry>& skew) {
+  const std::size_t n = eqs.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a; b < n; ++b) {
+      const double sym = a == b ? k[a * n + a] : 0.5 * (k[a * n + b] + k[b * n + a]);
+      const double skw = a == b ? 0.0 : 0.5 * (k[a * n + b] - k[b * n + a]);
+      if (sym == 0.0 && skw == 0.0) continue;
+      for (const auto& [ea, wa] : eqs[a])
+        for (const auto& [eb, wb] : eqs[b]) {
+          // Entry (ea, eb) gets w (sym + skw), entry (eb, ea) w (sym − skw); when a ≠ b both land
+          // in the upper triangle's one position for the symmetric part.
+          const double w = wa * wb;
+          if (sym != 0.0) {
+            const std::int64_t pos = tangent_.find(std::min(ea, eb), std::max(ea, eb));
+            if (pos >= 0) tangent_.values[pos] += (ea == eb && a != b ? 2.0 : 1.0) * w * sym;
+          }
+          if (skw != 0.0 && ea != eb) {
+            skew.push_back({ea, eb, w * skw});
+            skew.push_back({eb, ea, -w * skw});
+          }
+        }
+    }
+}
+
+void Assembler::add_multiplier_column(std::int64_t row, std::span<const std::int64_t> dofs, double scale,
+                                      std::span<const double> gradient, double diagonal) {
+  if (diagonal != 0.0)
+    if (const std::int64_t pos = tangent_.find(row, row); pos >= 0) tangent_.values[pos] += diagonal;
+  for (std::size_t a = 0; a < dofs.size(); ++a)
+    for (const auto& ma : dofs_.masters(dofs[a])) {
+      const std::int64_t ea = dofs_.equation(ma.dof);
+      if (ea < 0) continue;
+      const std::int64_t pos = tangent_.find(ea, row);
+      if (pos >= 0) tangent_.values[pos] += ma.weight * scale * gradient[a];
+    }
+}
+
 }  // namespace inpact::solver

@@ -72,6 +72,24 @@ class Assembler {
   /// be in the pattern, set_extra_couplings).
   void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) { scatter(dofs, k); }
 
+  /// The equations each local unknown feeds, with their weights (the DOF map's masters of a
+  /// DOF, or a multiplier's own equation).
+  using LocalEquations = std::vector<std::vector<std::pair<std::int64_t, double>>>;
+  /// One entry of the skew part ½(K − Kᵀ) of an unsymmetric tangent, kept beside the matrix.
+  struct SkewEntry {
+    std::int64_t row, col;
+    double value;
+  };
+  /// Adds a local matrix k (n × n, row-major, n = eqs.size()) that need not be symmetric: its
+  /// symmetric part ½(k + kᵀ) into the tangent's upper triangle, its skew part (when not zero)
+  /// to `skew` (friction: Newton then solves with the full matrix).
+  void add_unsymmetric_matrix(const LocalEquations& eqs, std::span<const double> k, std::vector<SkewEntry>& skew);
+  /// Adds the column scale · gradient (on global DOFs `dofs`, through their masters) at the
+  /// multiplier equation `row` (above the diagonal: DOF equations come first), and `diagonal`
+  /// to its diagonal.
+  void add_multiplier_column(std::int64_t row, std::span<const std::int64_t> dofs, double scale,
+                             std::span<const double> gradient, double diagonal);
+
   /// The point results kept by the last assembly that asked for them (AssemblyRequest::points),
   /// when it was made at exactly this u, temperature change and NLGEOM; otherwise null.
   const ElementPoints* points_at(std::span<const double> u, std::span<const double> delta_t, bool nlgeom) const;

@@ -24,38 +24,6 @@ namespace {
   throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(loc), keyword, what));
 }
 
-/// The equations a local unknown feeds, with their weights (the DOF map's masters of a DOF, or
-/// a multiplier's own equation).
-using LocalEquations = std::vector<std::vector<std::pair<std::int64_t, double>>>;
-
-/// Adds a local matrix k (n × n, row-major, n = eqs.size()) that need not be symmetric: its
-/// symmetric part ½(k + kᵀ) into the upper triangle `t`, its skew part ½(k − kᵀ) (when not
-/// zero) to `skew`.
-template <class Skew>
-void add_unsymmetric(SparseMatrix& t, const LocalEquations& eqs, std::span<const double> k, std::vector<Skew>& skew) {
-  const std::size_t n = eqs.size();
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a; b < n; ++b) {
-      const double sym = a == b ? k[a * n + a] : 0.5 * (k[a * n + b] + k[b * n + a]);
-      const double skw = a == b ? 0.0 : 0.5 * (k[a * n + b] - k[b * n + a]);
-      if (sym == 0.0 && skw == 0.0) continue;
-      for (const auto& [ea, wa] : eqs[a])
-        for (const auto& [eb, wb] : eqs[b]) {
-          // Entry (ea, eb) gets w (sym + skw), entry (eb, ea) w (sym − skw); when a ≠ b both land
-          // in the upper triangle's one position for the symmetric part.
-          const double w = wa * wb;
-          if (sym != 0.0) {
-            const std::int64_t pos = t.find(std::min(ea, eb), std::max(ea, eb));
-            if (pos >= 0) t.values[pos] += (ea == eb && a != b ? 2.0 : 1.0) * w * sym;
-          }
-          if (skw != 0.0 && ea != eb) {
-            skew.push_back({ea, eb, w * skw});
-            skew.push_back({eb, ea, -w * skw});
-          }
-        }
-    }
-}
-
 /// *CLEARANCE of a pair: per slave node (slave().nodes() order), clearance − the gap measured
 /// on the reference coordinates, so the initial gap is the clearance given and changes with
 /// the displacements from there [K16 §3.21]. Empty when no *CLEARANCE names the pair; nodes
@@ -484,7 +452,7 @@ void ContactProblem::assemble_friction(const Pair& p, std::size_t i, const Slave
     for (int c = 0; c < am_.dim; ++c) fpos.push_back(position(static_cast<std::int64_t>(node) * am_.dim + c));
   const bool with_multiplier = p.multiplier[i] >= 0;
   const std::size_t nu = all.size(), nl = nu + (with_multiplier ? 1 : 0), nf = fpos.size();
-  LocalEquations eqs(nl);
+  Assembler::LocalEquations eqs(nl);
   for (std::size_t a = 0; a < nu; ++a)
     for (const auto& ma : map.masters(all[a]))
       if (const std::int64_t e = map.equation(ma.dof); e >= 0) eqs[a].push_back({e, ma.weight});
@@ -497,29 +465,17 @@ void ContactProblem::assemble_friction(const Pair& p, std::size_t i, const Slave
     for (std::size_t b = 0; b < n; ++b) kf[fpos[a] * nl + b] -= area * fp.coupling[a] * dp_dh * lin.gradient[b];
     if (with_multiplier) kf[fpos[a] * nl + nu] = -area * fp.coupling[a];
   }
-  add_unsymmetric(assembler.tangent(), eqs, kf, skew_);
+  assembler.add_unsymmetric_matrix(eqs, kf, skew_);
 }
 
 void ContactProblem::assemble_constraint_column(const Pair& p, std::size_t i, const SlaveState& s,
                                                 std::span<const std::int64_t> dofs, Assembler& assembler) const {
-  // Constraint column A ∇g at the multiplier's equation (upper triangle: DOF rows < it), and
-  // a law's compliance on its diagonal: ∂(A (g + h(p)))/∂λ = −A h'(p) = −A / p'(h), p = −λ.
-  const DofMap& map = assembler.dofs();
-  SparseMatrix& t = assembler.tangent();
-  const contact::GapLinearization& lin = p.kin[i].lin;
+  // Constraint column A ∇g at the multiplier's equation, and a law's compliance on its diagonal:
+  // ∂(A (g + h(p)))/∂λ = −A h'(p) = −A / p'(h), p = −λ.
   const double area = p.kin[i].area;
-  const std::int64_t em = map.n_equations() + p.multiplier[i];
-  if (const double dp = p.enforcement->compliance_slope(s); dp > 0.0) {
-    const std::int64_t pos = t.find(em, em);
-    if (pos >= 0) t.values[pos] -= area / dp;
-  }
-  for (std::size_t a = 0; a < dofs.size(); ++a)
-    for (const auto& ma : map.masters(dofs[a])) {
-      const std::int64_t ea = map.equation(ma.dof);
-      if (ea < 0) continue;
-      const std::int64_t pos = t.find(ea, em);
-      if (pos >= 0) t.values[pos] += ma.weight * area * lin.gradient[a];
-    }
+  const double dp = p.enforcement->compliance_slope(s);
+  assembler.add_multiplier_column(assembler.dofs().n_equations() + p.multiplier[i], dofs, area, p.kin[i].lin.gradient,
+                                  dp > 0.0 ? -(area / dp) : 0.0);
 }
 
 void ContactProblem::constraint_residual(const ContactState& state, std::span<double> rows) const {
@@ -542,7 +498,7 @@ void ContactProblem::apply_correction(std::span<const double> rows, ContactState
 
 const SparseMatrix& ContactProblem::unsymmetric_tangent(const SparseMatrix& a) {
   mirror_upper(a, full_);
-  for (const SkewEntry& e : skew_)
+  for (const Assembler::SkewEntry& e : skew_)
     if (const std::int64_t pos = full_.find(e.row, e.col); pos >= 0) full_.values[pos] += e.value;
   return full_;
 }

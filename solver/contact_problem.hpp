@@ -181,11 +181,7 @@ class ContactProblem {
   /// Multiplier m (equation n_eq + m): pair index into pairs_, slave index.
   std::vector<std::pair<std::size_t, std::size_t>> multipliers_;
   /// Skew part of the contact tangent, ½(K − Kᵀ) entries (row, column equation, value).
-  struct SkewEntry {
-    std::int64_t row, col;
-    double value;
-  };
-  std::vector<SkewEntry> skew_;
+  std::vector<Assembler::SkewEntry> skew_;
   SparseMatrix full_;
   std::int64_t friction_evaluations_ = 0;
   double adaptive_scale_ = 1.0;

@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "apps/commands.hpp"
 #include "contact/initial_adjustment.hpp"
@@ -103,6 +106,31 @@ TEST(CheckMatchesRun, EveryContactDeckPrintsWhatTheRunEnforces) {
   std::printf("%d decks with contact compared, %d of them run to the end\n", with_contact, run_to_the_end);
   EXPECT_GE(with_contact, 50);
   EXPECT_GE(run_to_the_end, 35);
+}
+
+// `inpact run` writes the same lines into the .dat header of each step (and the results file,
+// tests/io/test_results_writer.cpp): a two-step deck, one pair.
+TEST(CheckMatchesRun, RunWritesTheStepsInteractionsIntoTheDatFile) {
+  const fs::path dir = fs::temp_directory_path() / ("inpact-check-run-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string deck = (fs::path(INPACT_SOURCE_DIR) / "decks/contact/friction_slide_2d_penalty.inp").string();
+  RunOptions options;
+  options.deck = deck;
+  options.output_dir = dir.string();
+  options.job = "job";
+  options.quiet = true;
+  ASSERT_EQ(run_analysis(options), 0);
+  parser::ReadResult r = parser::read_deck(deck);
+  const StepLines expected = check_lines(deck, r.model.steps.size());
+  std::ifstream in(dir / "job.dat");
+  std::vector<std::string> dat_lines;
+  for (std::string l; std::getline(in, l);)
+    if (l.rfind("     ", 0) == 0 && l.find("contact pair ") == 5) dat_lines.push_back(l.substr(5));
+  std::vector<std::string> all;
+  for (const auto& s : expected) all.insert(all.end(), s.begin(), s.end());
+  EXPECT_EQ(dat_lines, all);
+  EXPECT_EQ(all.size(), 2u);  // one pair, two steps
+  fs::remove_all(dir);
 }
 
 }  // namespace

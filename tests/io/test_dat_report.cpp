@@ -1,6 +1,7 @@
 // The .dat print file (io/dat_report.hpp): Abaqus's number format and table layout, and a
 // uniaxial bar run end to end (solver::run_analysis → DatReport) whose printed values are
 // checked against the hand solution σ = F/A, u = σL/E, ΣRF = −F, MISES = |σ|.
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -254,6 +255,29 @@ TEST(DatReport, UniaxialBarPrintsTheHandComputedValues) {
 
 TEST(DatReport, UnwritablePathThrowsIoError) {
   EXPECT_THROW(DatReport("/nonexistent-dir/x/job.dat", "test"), IoError);
+}
+
+TEST(DatReport, StepHeaderListsTheContactInteractionsAsEnforced) {
+  test::TempDir dir;
+  {
+    DatReport dat(dir / "job.dat", "test");
+    model::Step step;
+    step.name = "PRESS";
+    dat.begin_step(step, 1);
+    dat.contact_interactions({"contact pair A/B: node to surface", "general contact C/D: surface to surface"});
+    dat.contact_interactions({});  // a step without contact prints nothing
+    dat.finish(true);
+  }
+  std::ifstream in(dir / "job.dat");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  const auto lines = lines_of(buf.str());
+  const auto title = std::find(lines.begin(), lines.end(), "          CONTACT INTERACTIONS, AS ENFORCED IN THIS STEP");
+  ASSERT_NE(title, lines.end()) << buf.str();
+  ASSERT_GE(lines.end() - title, 4);
+  EXPECT_EQ(title[2], "     contact pair A/B: node to surface");
+  EXPECT_EQ(title[3], "     general contact C/D: surface to surface");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), *title), 1);
 }
 
 }  // namespace

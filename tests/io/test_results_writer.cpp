@@ -438,3 +438,18 @@ TEST(PythonSample, WriteJobs) {
   test::write_all_types_job(dir / "all_types.h5", read_model(tmp, test::all_types_deck()));
   test::write_all_types_job(dir / "hex20.h5", read_model(tmp, test::all_types_deck({"C3D20"})));
 }
+
+TEST(ResultsWriter, StepHoldsTheContactInteractionsAsTheAnalysisEnforcesThem) {
+  TempDir dir;
+  const auto m = read_model(dir, test::kThreeBodyDeck);
+  const auto h5 = dir / "job.h5";
+  auto w = io::ResultsWriter::create(h5, m, std::string(64, 'a'), "0.1.0-test");
+  w.begin_step(m.steps.at(0));
+  const std::vector<std::string> lines = {"contact pair SLAVE_S/MASTER_S: node to surface, finite sliding; ...",
+                                          "second line"};
+  w.write_contact_interactions(lines);
+  w.write_frame(test::three_body_frame(m, 0));
+  w.finish(io::RunStatus::Completed);
+  H5Reader f(h5.string());
+  EXPECT_EQ(f.strings("/steps/" + m.steps.at(0).name + "/contact_interactions"), lines);
+}
