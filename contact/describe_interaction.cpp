@@ -10,17 +10,6 @@ namespace inpact::contact {
 
 namespace {
 
-const char* law_name(const ResolvedInteraction& r) {
-  switch (r.behavior.law) {
-    case model::PressureOverclosure::Hard: return r.no_separation ? "hard contact, no separation" : "hard contact";
-    case model::PressureOverclosure::Exponential: return "exponential softened contact";
-    case model::PressureOverclosure::Linear: return "linear softened contact";
-    case model::PressureOverclosure::Tabular: return "tabular softened contact";
-    case model::PressureOverclosure::Tied: return "tied contact (CalculiX), tension included";
-  }
-  return "";
-}
-
 const char* method_name(model::EnforcementMethod m) {
   switch (m) {
     case model::EnforcementMethod::Direct: return "direct";
@@ -75,8 +64,9 @@ std::string describe(const ResolvedInteraction& r) {
   std::string out = fmt::format("{} {}: {}, {} sliding", r.general ? "general contact" : "contact pair", r.name,
                                 r.surface_to_surface ? "surface to surface" : "node to surface",
                                 r.finite_sliding ? "finite" : "small");
-  out += fmt::format("; {}, {} ({})", law_name(r), method_name(r.behavior.method), r.behavior.method_reason);
-  if (r.law) out += "; " + r.law->describe();
+  if (r.behavior.law == model::PressureOverclosure::Hard) out += r.no_separation ? "; hard contact, no separation" : "; hard contact";
+  out += fmt::format("; {} ({})", method_name(r.behavior.method), r.behavior.method_reason);
+  if (r.law) out += "; " + r.law->describe();  // the law, with its values
   out += "; " + enforcement_text(r);
   if (r.augmented) out += "; " + tolerance_text(r);
   if (r.user_adaptive) out += "; user-adaptive stiffness in the first increment";

@@ -87,8 +87,5 @@ struct SurfaceScales {
 /// how (KEYWORDS.md Part C a); inpact's estimators are documented in normal_behavior.cpp.
 std::optional<SurfaceScales> surface_scales(const model::Model& model, const model::Surface& surface);
 
-/// One line for `inpact check`: the method, why it was chosen, the stiffness rule, the use of
-/// Lagrange multipliers and the tolerance; with the surface's scales, also their values.
-std::string describe(const ResolvedNormalBehavior& r, const std::optional<SurfaceScales>& scales = std::nullopt);
 
 }  // namespace inpact::contact

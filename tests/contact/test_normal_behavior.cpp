@@ -211,16 +211,3 @@ TEST(NormalBehavior, PlaneStressEdgeScales) {
   EXPECT_DOUBLE_EQ(s->characteristic_length, 2.0);
 }
 
-TEST(NormalBehavior, DescribeForCheck) {
-  const auto r = resolve_normal_behavior(nullptr, kSts, false, false);
-  EXPECT_EQ(contact::describe(r),
-            "hard contact, linear penalty (Abaqus default for finite-sliding surface-to-surface pairs), "
-            "stiffness 10 × k_e, no Lagrange multipliers (k ≤ 1000 k_e)");
-  const auto al = with_behavior(method(EnforcementMethod::AugmentedLagrange));
-  EXPECT_EQ(contact::describe(resolve_normal_behavior(&al, kNts, false, false), contact::SurfaceScales{2.0, 4.0, 1}),
-            "hard contact, augmented Lagrange (given in *SURFACE BEHAVIOR), stiffness 1000 × k_e = 2000 (k_e = 2), "
-            "no Lagrange multipliers (k ≤ 1000 k_e), penetration tolerance 0.1 % of the characteristic length = 0.004 "
-            "(default)");
-  EXPECT_EQ(contact::describe(resolve_normal_behavior(nullptr, kNts, false, false)),
-            "hard contact, direct (Abaqus default for node-to-surface pairs), Lagrange multipliers");
-}

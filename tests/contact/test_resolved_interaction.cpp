@@ -51,6 +51,11 @@ TEST(ResolvedInteraction, PenaltyPairTakesTenTimesKeAndHalfAFacetAsHcrit) {
   EXPECT_NEAR(i.hcrit, 0.5 * kSlaveFacet, 1e-15);
   EXPECT_FALSE(i.friction);
   EXPECT_EQ(i.weight, 1.0);
+  // The one text check, run, the results file and the .dat header show: the values above.
+  EXPECT_EQ(contact::describe(i),
+            "contact pair SLAVE_S/MASTER_S: node to surface, finite sliding; hard contact; linear penalty (given in "
+            "*SURFACE BEHAVIOR); linear penalty, k = 2.692e+04, c0 = 0; no Lagrange multipliers (slope <= 1000 k_e); "
+            "k_e = 2692.31, characteristic length 0.5; HCRIT 0.25; frictionless");
 }
 
 TEST(ResolvedInteraction, DirectPairHasNoLawAndAugmentedLagrangeItsTolerance) {
