@@ -96,10 +96,12 @@ class Enforcement {
   virtual double constraint_overclosure(const SlaveState& s) const { return 0.0; }
   virtual double compliance_slope(const SlaveState& s) const { return 0.0; }
 
-  /// Augmented Lagrange: does the augmentation loop apply, and the overclosure where the law
-  /// starts (penetration = −g − h_zero)?
+  /// Augmented Lagrange: does the augmentation loop apply; the penetration it holds to the
+  /// tolerance (past the law's zero-pressure clearance: −g − h_zero), and the update λ ← p.
   virtual bool augmented() const { return false; }
   virtual double h_zero() const { return 0.0; }
+  double penetration(const NodeGap& g) const { return -g.gap - h_zero(); }
+  void augment(SlaveState& s, const NodeGap& g) const { s.lambda = pressure(s, g); }
   /// USER ADAPTIVE: the factor on the penalty law of the moment (penalty law only).
   virtual void set_adaptive_scale(double) {}
 };

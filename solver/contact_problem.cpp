@@ -514,8 +514,7 @@ AugmentationCheck ContactProblem::check_augmentation(const ContactState& state) 
     const double tolerance = p->resolved->tolerance;
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
       if (p->node_pressure(i, slaves[i]) <= 0.0) continue;
-      // Penetration past the zero-pressure clearance: h − h_0 = c0 − g.
-      const double pen = -p->gap(i) - p->enforcement->h_zero();
+      const double pen = p->enforcement->penetration(p->node_gap(i));
       if (pen > tolerance) c.converged = false;
       if (pen / tolerance > worst_ratio) {
         worst_ratio = pen / tolerance;
@@ -532,7 +531,7 @@ void ContactProblem::augment(ContactState& state) const {
   for (const auto& p : pairs_) {
     if (!p->enforcement->augmented()) continue;
     auto& slaves = state.pairs[p->row];
-    for (std::size_t i = 0; i < p->kin.size(); ++i) slaves[i].lambda = p->node_pressure(i, slaves[i]);
+    for (std::size_t i = 0; i < p->kin.size(); ++i) p->enforcement->augment(slaves[i], p->node_gap(i));
   }
 }
 

@@ -124,6 +124,10 @@ TEST(AugmentedLagrange, TheMultiplierShiftsTheLawAndADampedNodeStaysInTheTangent
   EXPECT_DOUBLE_EQ(augmented.pressure(s, gap(-0.02)), 5.0);  // p = ⟨λ + k h⟩
   EXPECT_DOUBLE_EQ(augmented.pressure(s, gap(0.01)), 2.0);   // λ holds it closed a little beyond zero gap
   EXPECT_EQ(augmented.pressure(s, gap(0.05)), 0.0);
+  EXPECT_DOUBLE_EQ(augmented.penetration(gap(-0.02)), 0.02);
+  SlaveState next = s;
+  augmented.augment(next, gap(-0.02));  // λ ← p
+  EXPECT_DOUBLE_EQ(next.lambda, 5.0);
   s.flips = 2;  // after two crossings an open node keeps the law's slope in the tangent
   const StatusUpdate damped = augmented.update_status(s, gap(0.05), kLimits);
   EXPECT_FALSE(damped.closed);
