@@ -21,30 +21,37 @@ ContactSurface ContactSurface::build(const model::Model& model, const model::Sur
   ContactSurface cs;
   cs.name_ = surface.name;
   cs.thickness_ = options.out_of_plane_thickness;
-  const model::Elements& elements = model.mesh.elements;
-
   if (surface.kind == model::Surface::Kind::Node) {
-    cs.node_based_ = true;
-    // The dimension of the model's elements (3 when there are none or any is 3D).
-    cs.dim_ = 3;
-    if (elements.size() > 0) {
-      cs.dim_ = 2;
-      for (std::size_t e = 0; e < elements.size(); ++e)
-        if (model::element_type(elements.type[e]).dim == 3) cs.dim_ = 3;
-    }
-    std::vector<std::pair<std::int32_t, double>> rows;
-    for (std::size_t i = 0; i < surface.nodes.size(); ++i)
-      rows.emplace_back(surface.nodes[i], i < surface.node_areas.size() ? surface.node_areas[i] : 1.0);
-    std::sort(rows.begin(), rows.end());
-    for (const auto& [row, area] : rows) {
-      if (!cs.nodes_.empty() && cs.nodes_.back() == row) continue;  // first area given wins
-      cs.nodes_.push_back(row);
-      cs.given_areas_.push_back(area);
-    }
-    cs.node_facet_ptr_.assign(cs.nodes_.size() + 1, 0);
+    cs.set_nodes(model.mesh.elements, surface);
     return cs;
   }
+  cs.add_facets(model.mesh.elements, surface);
+  cs.index_node_facets();
+  return cs;
+}
 
+void ContactSurface::set_nodes(const model::Elements& elements, const model::Surface& surface) {
+  node_based_ = true;
+  // The dimension of the model's elements (3 when there are none or any is 3D).
+  dim_ = 3;
+  if (elements.size() > 0) {
+    dim_ = 2;
+    for (std::size_t e = 0; e < elements.size(); ++e)
+      if (model::element_type(elements.type[e]).dim == 3) dim_ = 3;
+  }
+  std::vector<std::pair<std::int32_t, double>> rows;
+  for (std::size_t i = 0; i < surface.nodes.size(); ++i)
+    rows.emplace_back(surface.nodes[i], i < surface.node_areas.size() ? surface.node_areas[i] : 1.0);
+  std::sort(rows.begin(), rows.end());
+  for (const auto& [row, area] : rows) {
+    if (!nodes_.empty() && nodes_.back() == row) continue;  // first area given wins
+    nodes_.push_back(row);
+    given_areas_.push_back(area);
+  }
+  node_facet_ptr_.assign(nodes_.size() + 1, 0);
+}
+
+void ContactSurface::add_facets(const model::Elements& elements, const model::Surface& surface) {
   bool first = true;
   for (const model::Face& face : surface.faces) {
     const model::ElementTypeInfo& info = model::element_type(elements.type[static_cast<std::size_t>(face.element)]);
@@ -53,11 +60,11 @@ ContactSurface ContactSurface::build(const model::Model& model, const model::Sur
                                   " does not exist on " + std::string(info.name));
     const bool axi = info.family == model::ElementFamily::Axisymmetric;
     if (first) {
-      cs.dim_ = info.dim;
-      cs.axisymmetric_ = axi;
+      dim_ = info.dim;
+      axisymmetric_ = axi;
       first = false;
-    } else if (cs.dim_ != info.dim || cs.axisymmetric_ != axi) {
-      throw std::invalid_argument(where(surface) + " mixes " + (cs.dim_ == 3 ? "3-D" : cs.axisymmetric_ ? "axisymmetric" : "planar") +
+    } else if (dim_ != info.dim || axisymmetric_ != axi) {
+      throw std::invalid_argument(where(surface) + " mixes " + (dim_ == 3 ? "3-D" : axisymmetric_ ? "axisymmetric" : "planar") +
                                   " and " + std::string(info.name) + " element faces");
     }
     const model::FaceDef& def = info.faces[face.face];
@@ -68,25 +75,25 @@ ContactSurface ContactSurface::build(const model::Model& model, const model::Sur
     std::copy(rows.begin(), rows.end(), f.nodes.begin());
     f.element = face.element;
     f.face = face.face;
-    cs.facets_.push_back(f);
+    facets_.push_back(f);
   }
+}
 
-  // Unique nodes and the facets around each (compressed rows).
-  for (const Facet& f : cs.facets_)
-    for (std::int32_t r : f.node_rows()) cs.nodes_.push_back(r);
-  std::sort(cs.nodes_.begin(), cs.nodes_.end());
-  cs.nodes_.erase(std::unique(cs.nodes_.begin(), cs.nodes_.end()), cs.nodes_.end());
-  cs.node_facet_ptr_.assign(cs.nodes_.size() + 1, 0);
-  for (const Facet& f : cs.facets_)
-    for (std::int32_t r : f.node_rows()) ++cs.node_facet_ptr_[static_cast<std::size_t>(cs.local_index(r)) + 1];
-  for (std::size_t i = 0; i < cs.nodes_.size(); ++i) cs.node_facet_ptr_[i + 1] += cs.node_facet_ptr_[i];
-  cs.node_facet_.resize(static_cast<std::size_t>(cs.node_facet_ptr_.back()));
-  std::vector<std::int32_t> fill(cs.node_facet_ptr_.begin(), cs.node_facet_ptr_.end() - 1);
-  for (std::size_t fi = 0; fi < cs.facets_.size(); ++fi)
-    for (std::int32_t r : cs.facets_[fi].node_rows())
-      cs.node_facet_[static_cast<std::size_t>(fill[static_cast<std::size_t>(cs.local_index(r))]++)] =
+void ContactSurface::index_node_facets() {
+  for (const Facet& f : facets_)
+    for (std::int32_t r : f.node_rows()) nodes_.push_back(r);
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  node_facet_ptr_.assign(nodes_.size() + 1, 0);
+  for (const Facet& f : facets_)
+    for (std::int32_t r : f.node_rows()) ++node_facet_ptr_[static_cast<std::size_t>(local_index(r)) + 1];
+  for (std::size_t i = 0; i < nodes_.size(); ++i) node_facet_ptr_[i + 1] += node_facet_ptr_[i];
+  node_facet_.resize(static_cast<std::size_t>(node_facet_ptr_.back()));
+  std::vector<std::int32_t> fill(node_facet_ptr_.begin(), node_facet_ptr_.end() - 1);
+  for (std::size_t fi = 0; fi < facets_.size(); ++fi)
+    for (std::int32_t r : facets_[fi].node_rows())
+      node_facet_[static_cast<std::size_t>(fill[static_cast<std::size_t>(local_index(r))]++)] =
           static_cast<std::int32_t>(fi);
-  return cs;
 }
 
 std::int32_t ContactSurface::local_index(std::int32_t row) const {

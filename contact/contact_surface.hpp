@@ -59,6 +59,14 @@ class ContactSurface {
   double area_factor(const Vec3& point) const;
 
  private:
+  // The steps of build().
+  /// A node-based surface: its unique node rows (the first area given wins) and the model's dimension.
+  void set_nodes(const model::Elements& elements, const model::Surface& surface);
+  /// An element-based surface's facets, checked for one dimension and one element family.
+  void add_facets(const model::Elements& elements, const model::Surface& surface);
+  /// The unique nodes of the facets and the facets around each (compressed rows).
+  void index_node_facets();
+
   std::string name_;
   bool node_based_ = false;
   int dim_ = 3;

@@ -10,6 +10,121 @@ namespace {
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+/// P_T = t1 t1ᵀ + t2 t2ᵀ, the projection onto the tangent plane.
+struct Mat3 {
+  double m[3][3] = {};
+};
+Mat3 tangent_projector(const Projection& p) {
+  Mat3 PT;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) PT.m[r][c] = p.t1[r] * p.t1[c] + p.t2[r] * p.t2[c];
+  return PT;
+}
+
+/// Δx = x_s − x_anchor(ξ₀) on the current coordinates.
+Vec3 motion_from_anchor(const Facet& anchor_facet, const FrictionAnchor& anchor, const Vec3& xs,
+                        std::span<const Vec3> x) {
+  const FacetGeometry g0 = facet_geometry(anchor_facet, x, anchor.xi[0], anchor.xi[1]);
+  Vec3 dx{};
+  for (int c = 0; c < 3; ++c) dx[c] = xs[c] - g0.x[c];
+  return dx;
+}
+
+/// D = ∂Δx/∂u (3 × n, row-major), the anchor taken as the material point at the current ξ of
+/// the current facet: slave block I, facet node a block −N_a(ξ) I.
+std::vector<double> motion_jacobian(const Facet& facet, const Projection& p, int dim, std::size_t n) {
+  const ShapeEval s = eval_shape(facet.shape, p.xi[0], p.xi[1]);
+  std::vector<double> D(3 * n, 0.0);
+  for (int c = 0; c < dim; ++c) D[c * n + static_cast<std::size_t>(c)] = 1.0;
+  for (int a = 0; a < s.n; ++a)
+    for (int c = 0; c < dim; ++c) D[c * n + static_cast<std::size_t>((a + 1) * dim + c)] = -s.N[a];
+  return D;
+}
+
+/// Δs = P_T Δx, the elastic predictor e_tr = P_T e₀ + Δs, and B = P_T D (3 × n, row-major).
+struct TangentialMotion {
+  Vec3 slip_increment{}, e_tr{};
+  std::vector<double> B;
+};
+TangentialMotion tangential_motion(const Mat3& PT, const Vec3& dx, const Vec3& e0, const std::vector<double>& D,
+                                   std::size_t n) {
+  TangentialMotion t;
+  t.B.assign(3 * n, 0.0);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      t.slip_increment[r] += PT.m[r][c] * dx[c];
+      t.e_tr[r] += PT.m[r][c] * e0[c];
+      for (std::size_t j = 0; j < n; ++j) t.B[r * n + j] += PT.m[r][c] * D[c * n + j];
+    }
+  }
+  for (int r = 0; r < 3; ++r) t.e_tr[r] += t.slip_increment[r];
+  return t;
+}
+
+/// The derivatives of τ from the return mapping: M = ∂τ/∂Δs at fixed pressure, and ∂τ/∂p.
+struct TractionDerivatives {
+  Mat3 M;
+  Vec3 dtau_dp{};
+};
+
+/// Stick: e = e_tr, τ = k e, M = k P_T, ∂τ/∂p = (dk/dp) e.
+TractionDerivatives stick(const FrictionLaw& law, double k, const Vec3& e_tr, const Mat3& PT, FrictionPoint& out) {
+  TractionDerivatives d;
+  out.elastic_slip = e_tr;
+  for (int r = 0; r < 3; ++r) {
+    out.traction[r] = k * e_tr[r];
+    d.dtau_dp[r] = law.dstiffness_dp() * e_tr[r];
+    for (int c = 0; c < 3; ++c) d.M.m[r][c] = k * PT.m[r][c];
+  }
+  return d;
+}
+
+/// Slip: m = e_tr/|e_tr|, τ = μ p m, e = (μ p / k) m, M = μ p/|e_tr| (P_T − m mᵀ), ∂τ/∂p = μ m.
+TractionDerivatives slip(const FrictionLaw& law, double k, double limit, const Vec3& e_tr, double e_norm,
+                         const Mat3& PT, FrictionPoint& out) {
+  TractionDerivatives d;
+  Vec3 m{};
+  for (int r = 0; r < 3; ++r) m[r] = e_tr[r] / e_norm;
+  for (int r = 0; r < 3; ++r) {
+    out.traction[r] = limit * m[r];
+    out.elastic_slip[r] = (k > 0.0 ? limit / k : 0.0) * m[r];
+    d.dtau_dp[r] = law.mu * m[r];
+    for (int c = 0; c < 3; ++c) d.M.m[r][c] = limit / e_norm * (PT.m[r][c] - m[r] * m[c]);
+  }
+  return d;
+}
+
+/// The return mapping: sets out.slipping, out.elastic_slip and out.traction.
+TractionDerivatives return_mapping(const FrictionLaw& law, double pressure, const Vec3& e_tr, const Mat3& PT,
+                                   FrictionPoint& out) {
+  const double k = law.stiffness(pressure);
+  const double e_norm = std::sqrt(dot(e_tr, e_tr));
+  const double limit = law.mu * pressure;
+  out.slipping = !law.rough && k * e_norm > limit * (1.0 + 1e-12) && e_norm > 0.0;
+  return out.slipping ? slip(law, k, limit, e_tr, e_norm, PT, out) : stick(law, k, e_tr, PT, out);
+}
+
+/// force = Bᵀ τ, coupling = Bᵀ ∂τ/∂p, tangent = Bᵀ M B.
+void assemble_friction(const std::vector<double>& B, const TractionDerivatives& d, std::size_t n, FrictionPoint& out) {
+  out.force.assign(n, 0.0);
+  out.coupling.assign(n, 0.0);
+  std::vector<double> MB(3 * n, 0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      if (d.M.m[r][c] != 0.0)
+        for (std::size_t j = 0; j < n; ++j) MB[r * n + j] += d.M.m[r][c] * B[c * n + j];
+  out.tangent.assign(n * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int r = 0; r < 3; ++r) {
+      const double bri = B[r * n + i];
+      if (bri == 0.0) continue;
+      out.force[i] += bri * out.traction[r];
+      out.coupling[i] += bri * d.dtau_dp[r];
+      for (std::size_t j = 0; j < n; ++j) out.tangent[i * n + j] += bri * MB[r * n + j];
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<FrictionLaw> resolve_friction(const model::Friction* friction, double l_char, double ke) {
@@ -53,85 +168,23 @@ std::string describe(const FrictionLaw& law) {
 FrictionPoint friction_point(const FrictionLaw& law, const Facet& facet, const Projection& p,
                              const GapLinearization& lin, const Facet& anchor_facet, const FrictionAnchor& anchor,
                              const Vec3& e0, double pressure, std::span<const Vec3> x) {
-  const int dim = lin.dim;
-  const int nd = lin.n_dof;
-  const std::size_t n = static_cast<std::size_t>(nd);
+  const std::size_t n = static_cast<std::size_t>(lin.n_dof);
   FrictionPoint out;
-  out.n_dof = nd;
+  out.n_dof = lin.n_dof;
 
   // Δx = x_s − x_anchor(ξ₀) on the current coordinates (its tangential part equals the motion
   // of the projected point, x_s − x_m(ξ) being normal), and D = ∂Δx/∂u with the anchor taken as
-  // the material point at the current ξ of the current facet: slave block I, facet node a
-  // block −N_a(ξ) I. The same D distributes the force: the master's share acts at the contact
-  // point, whichever facet the anchor lies on.
-  const FacetGeometry g0 = facet_geometry(anchor_facet, x, anchor.xi[0], anchor.xi[1]);
-  const ShapeEval s = eval_shape(facet.shape, p.xi[0], p.xi[1]);
+  // the material point at the current ξ of the current facet. The same D distributes the force:
+  // the master's share acts at the contact point, whichever facet the anchor lies on.
   const Vec3& xs = x[static_cast<std::size_t>(lin.nodes[0])];
-  Vec3 dx{};
-  for (int c = 0; c < 3; ++c) dx[c] = xs[c] - g0.x[c];
-  std::vector<double> D(3 * n, 0.0);
-  for (int c = 0; c < dim; ++c) D[c * n + static_cast<std::size_t>(c)] = 1.0;
-  for (int a = 0; a < s.n; ++a)
-    for (int c = 0; c < dim; ++c) D[c * n + static_cast<std::size_t>((a + 1) * dim + c)] = -s.N[a];
+  const Vec3 dx = motion_from_anchor(anchor_facet, anchor, xs, x);
+  const std::vector<double> D = motion_jacobian(facet, p, lin.dim, n);
 
-  // P_T, Δs = P_T Δx, B = P_T D.
-  double PT[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) PT[r][c] = p.t1[r] * p.t1[c] + p.t2[r] * p.t2[c];
-  std::vector<double> B(3 * n, 0.0);
-  Vec3 e_tr{};
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) {
-      out.slip_increment[r] += PT[r][c] * dx[c];
-      e_tr[r] += PT[r][c] * e0[c];
-      for (std::size_t j = 0; j < n; ++j) B[r * n + j] += PT[r][c] * D[c * n + j];
-    }
-  }
-  for (int r = 0; r < 3; ++r) e_tr[r] += out.slip_increment[r];
-
-  // Return mapping.
-  const double k = law.stiffness(pressure);
-  const double e_norm = std::sqrt(dot(e_tr, e_tr));
-  const double limit = law.mu * pressure;
-  double M[3][3] = {};  // ∂τ/∂Δs at fixed pressure
-  Vec3 dtau_dp{};
-  out.slipping = !law.rough && k * e_norm > limit * (1.0 + 1e-12) && e_norm > 0.0;
-  if (!out.slipping) {
-    out.elastic_slip = e_tr;
-    for (int r = 0; r < 3; ++r) {
-      out.traction[r] = k * e_tr[r];
-      dtau_dp[r] = law.dstiffness_dp() * e_tr[r];
-      for (int c = 0; c < 3; ++c) M[r][c] = k * PT[r][c];
-    }
-  } else {
-    Vec3 m{};
-    for (int r = 0; r < 3; ++r) m[r] = e_tr[r] / e_norm;
-    for (int r = 0; r < 3; ++r) {
-      out.traction[r] = limit * m[r];
-      out.elastic_slip[r] = (k > 0.0 ? limit / k : 0.0) * m[r];
-      dtau_dp[r] = law.mu * m[r];
-      for (int c = 0; c < 3; ++c) M[r][c] = limit / e_norm * (PT[r][c] - m[r] * m[c]);
-    }
-  }
-
-  // force = Bᵀ τ, coupling = Bᵀ ∂τ/∂p, tangent = Bᵀ M B.
-  out.force.assign(n, 0.0);
-  out.coupling.assign(n, 0.0);
-  std::vector<double> MB(3 * n, 0.0);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c)
-      if (M[r][c] != 0.0)
-        for (std::size_t j = 0; j < n; ++j) MB[r * n + j] += M[r][c] * B[c * n + j];
-  out.tangent.assign(n * n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int r = 0; r < 3; ++r) {
-      const double bri = B[r * n + i];
-      if (bri == 0.0) continue;
-      out.force[i] += bri * out.traction[r];
-      out.coupling[i] += bri * dtau_dp[r];
-      for (std::size_t j = 0; j < n; ++j) out.tangent[i * n + j] += bri * MB[r * n + j];
-    }
-  }
+  const Mat3 PT = tangent_projector(p);
+  const TangentialMotion t = tangential_motion(PT, dx, e0, D, n);
+  out.slip_increment = t.slip_increment;
+  const TractionDerivatives d = return_mapping(law, pressure, t.e_tr, PT, out);
+  assemble_friction(t.B, d, n, out);
   return out;
 }
 

@@ -104,6 +104,24 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+/// Tolerance on the angle between an axis given and the one a 2D model requires.
+constexpr double kAngleTol = 1e-6;
+
+[[noreturn]] void fail(const model::GeometricCorrection& c, const std::string& why) {
+  throw CorrectionError(fmt::format("{} correction of surface {}: {}", kind_name(c.kind), c.surface, why), c.loc);
+}
+
+/// Diagonal of the bounding box of the surface's nodes: the size tolerances scale with.
+double bounding_box_diagonal(const ContactSurface& surface, std::span<const Vec3> X) {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (std::int32_t row : surface.nodes())
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], X[static_cast<std::size_t>(row)][i]);
+      hi[i] = std::max(hi[i], X[static_cast<std::size_t>(row)][i]);
+    }
+  return norm(sub(hi, lo));
+}
+
 }  // namespace
 
 SurfaceCorrection::Radial SurfaceCorrection::radial(const Vec3& p) const {
@@ -132,63 +150,72 @@ SurfaceCorrection::Radial SurfaceCorrection::radial(const Vec3& p) const {
 SurfaceCorrection::SurfaceCorrection(const model::GeometricCorrection& c, const ContactSurface& surface,
                                      std::span<const Vec3> X, const model::Model* model)
     : data_(c) {
-  const std::string what = fmt::format("{} correction of surface {}", kind_name(c.kind), c.surface);
-  auto fail = [&](const std::string& why) { throw CorrectionError(fmt::format("{}: {}", what, why), c.loc); };
   if (surface.node_based() || surface.facets().empty())
-    fail("the surface has no element faces; a geometric correction needs a faceted surface");
-
+    fail(c, "the surface has no element faces; a geometric correction needs a faceted surface");
   // Tolerances scale with the surface.
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (std::int32_t row : surface.nodes())
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], X[static_cast<std::size_t>(row)][i]);
-      hi[i] = std::max(hi[i], X[static_cast<std::size_t>(row)][i]);
-    }
-  const double size = norm(sub(hi, lo));
+  const double size = bounding_box_diagonal(surface, X);
   tol_ = 1e-8 * (size > 0 ? size : 1.0);
-  constexpr double kAngleTol = 1e-6;
+  set_idealised_shape(surface);
+  set_node_radii(surface, X, model);
+  set_facets(surface, X);
+}
 
+void SurfaceCorrection::set_idealised_shape(const ContactSurface& surface) {
+  const model::GeometricCorrection& c = data_;
   a_ = c.a;
   if (c.kind != Kind::Spherical) {
     const Vec3 axis = sub(c.b, c.a);
-    if (!(norm(axis) > 0)) fail("the axis has zero length: point b coincides with point a");
+    if (!(norm(axis) > 0)) fail(c, "the axis has zero length: point b coincides with point a");
     k_ = unit(axis);
   }
   if (c.kind == Kind::Toroidal && !(c.radius > 0))
-    fail(fmt::format("the distance R of the arc centre from the axis must be positive, found {}", c.radius));
+    fail(c, fmt::format("the distance R of the arc centre from the axis must be positive, found {}", c.radius));
   R_ = c.radius;
 
   if (surface.dim() == 3) {
     mode_ = c.kind == Kind::Circumferential ? Mode::Axis : c.kind == Kind::Spherical ? Mode::Centre : Mode::Ring;
   } else if (!surface.axisymmetric()) {
-    // Plane model: circles in the x–y plane.
-    if (c.kind == Kind::Toroidal)
-      fail("TOROIDAL needs a 3D or axisymmetric model; in a plane model the section of a torus is a circle: use "
-           "SPHERICAL about the arc centre");
-    if (c.kind == Kind::Circumferential && std::hypot(k_[0], k_[1]) > kAngleTol)
-      fail(fmt::format("in a plane model the axis is the out-of-plane direction z; the axis given runs along "
-                       "({:g}, {:g}, {:g})",
-                       k_[0], k_[1], k_[2]));
-    mode_ = Mode::Axis;
-    a_ = {c.a[0], c.a[1], 0.0};
-    k_ = {0.0, 0.0, 1.0};
+    set_plane_shape();
   } else {
-    // Axisymmetric model: r = x, the symmetry axis is x = 0 along y.
-    const bool centre_on_axis = std::abs(c.a[0]) <= tol_ && std::abs(c.a[2]) <= tol_;
-    if (c.kind == Kind::Spherical) {
-      if (!centre_on_axis)
-        fail(fmt::format("in an axisymmetric model the centre lies on the symmetry axis (x = 0, z = 0); found "
-                         "({:g}, {:g}, {:g})",
-                         c.a[0], c.a[1], c.a[2]));
-    } else if (!centre_on_axis || std::hypot(k_[0], k_[2]) > kAngleTol) {
-      fail("in an axisymmetric model the axis of revolution is the symmetry axis: give two points with x = 0, z = 0");
-    }
-    mode_ = c.kind == Kind::Circumferential ? Mode::Identity : c.kind == Kind::Spherical ? Mode::Centre : Mode::Ring;
-    a_ = {0.0, c.a[1], 0.0};
-    k_ = {0.0, 1.0, 0.0};
+    set_axisymmetric_shape();
   }
+}
 
-  // Nodal radii: the idealised surface passes through every node.
+// Plane model: circles in the x–y plane.
+void SurfaceCorrection::set_plane_shape() {
+  const model::GeometricCorrection& c = data_;
+  if (c.kind == Kind::Toroidal)
+    fail(c, "TOROIDAL needs a 3D or axisymmetric model; in a plane model the section of a torus is a circle: use "
+            "SPHERICAL about the arc centre");
+  if (c.kind == Kind::Circumferential && std::hypot(k_[0], k_[1]) > kAngleTol)
+    fail(c, fmt::format("in a plane model the axis is the out-of-plane direction z; the axis given runs along "
+                        "({:g}, {:g}, {:g})",
+                        k_[0], k_[1], k_[2]));
+  mode_ = Mode::Axis;
+  a_ = {c.a[0], c.a[1], 0.0};
+  k_ = {0.0, 0.0, 1.0};
+}
+
+// Axisymmetric model: r = x, the symmetry axis is x = 0 along y.
+void SurfaceCorrection::set_axisymmetric_shape() {
+  const model::GeometricCorrection& c = data_;
+  const bool centre_on_axis = std::abs(c.a[0]) <= tol_ && std::abs(c.a[2]) <= tol_;
+  if (c.kind == Kind::Spherical) {
+    if (!centre_on_axis)
+      fail(c, fmt::format("in an axisymmetric model the centre lies on the symmetry axis (x = 0, z = 0); found "
+                          "({:g}, {:g}, {:g})",
+                          c.a[0], c.a[1], c.a[2]));
+  } else if (!centre_on_axis || std::hypot(k_[0], k_[2]) > kAngleTol) {
+    fail(c, "in an axisymmetric model the axis of revolution is the symmetry axis: give two points with x = 0, z = 0");
+  }
+  mode_ = c.kind == Kind::Circumferential ? Mode::Identity : c.kind == Kind::Spherical ? Mode::Centre : Mode::Ring;
+  a_ = {0.0, c.a[1], 0.0};
+  k_ = {0.0, 1.0, 0.0};
+}
+
+// Nodal radii: the idealised surface passes through every node.
+void SurfaceCorrection::set_node_radii(const ContactSurface& surface, std::span<const Vec3> X,
+                                       const model::Model* model) {
   const auto nodes = surface.nodes();
   node_rows_.assign(nodes.begin(), nodes.end());
   node_radius_.resize(nodes.size());
@@ -199,19 +226,23 @@ SurfaceCorrection::SurfaceCorrection(const model::GeometricCorrection& c, const 
       continue;
     }
     const Radial rd = radial(p);
-    if (!rd.ok) {
-      const std::string node = node_name(model, nodes[i]);
-      const bool on_axis = mode_ == Mode::Axis || (mode_ == Mode::Ring && norm(axpy(-dot(sub(p, a_), k_), k_, sub(p, a_))) <= tol_);
-      if (c.kind == Kind::Spherical) fail(fmt::format("node {} lies at the centre of the sphere, where it has no radial direction", node));
-      if (on_axis) fail(fmt::format("node {} lies on the axis of revolution, where it has no radial direction", node));
-      fail(fmt::format("node {} lies on the circle of arc centres (radius {:g} about the axis), where it has no "
-                       "radial direction",
-                       node, R_));
-    }
+    if (!rd.ok) fail_no_radial_direction(p, node_name(model, nodes[i]));
     node_radius_[i] = rd.r;
   }
+}
 
-  // Facets with their reference coordinates, nodal radii and normal orientation.
+void SurfaceCorrection::fail_no_radial_direction(const Vec3& p, const std::string& node) const {
+  const model::GeometricCorrection& c = data_;
+  const bool on_axis = mode_ == Mode::Axis || (mode_ == Mode::Ring && norm(axpy(-dot(sub(p, a_), k_), k_, sub(p, a_))) <= tol_);
+  if (c.kind == Kind::Spherical) fail(c, fmt::format("node {} lies at the centre of the sphere, where it has no radial direction", node));
+  if (on_axis) fail(c, fmt::format("node {} lies on the axis of revolution, where it has no radial direction", node));
+  fail(c, fmt::format("node {} lies on the circle of arc centres (radius {:g} about the axis), where it has no "
+                      "radial direction",
+                      node, R_));
+}
+
+// Facets with their reference coordinates, nodal radii and normal orientation.
+void SurfaceCorrection::set_facets(const ContactSurface& surface, std::span<const Vec3> X) {
   const std::size_t nf = surface.facets().size();
   facets_.assign(surface.facets().begin(), surface.facets().end());
   X_.resize(nf);
@@ -227,19 +258,25 @@ SurfaceCorrection::SurfaceCorrection(const model::GeometricCorrection& c, const 
       radius_[f][a] = node_radius_[static_cast<std::size_t>(local)];
     }
     index_.emplace(facet_key(fc), static_cast<std::int32_t>(f));
-    const Facet lf = local_facet(fc);
-    const std::span<const Vec3> xf(X_[f].data(), fc.n_nodes);
-    // ñ = s e points out of the body like the facet normal (+1 on a pin, −1 in a hole).
-    double s = 0.0, area = 0.0;
-    for (const QuadPoint& q : facet_rule(fc.shape, 2)) {
-      const FacetGeometry g = facet_geometry(lf, xf, q.xi, q.eta);
-      area += q.weight * g.jacobian;
-      if (const Radial rd = radial(g.x); rd.ok) s += q.weight * g.jacobian * dot(rd.e, g.n);
-    }
-    sign_[f] = s < 0 ? -1.0 : 1.0;
+    const double area = orient_facet(f);
     sizes[f] = surface.dim() == 2 ? norm(sub(X_[f][1], X_[f][0])) : std::sqrt(area);
   }
   l_char_ = median(std::move(sizes));
+}
+
+double SurfaceCorrection::orient_facet(std::size_t f) {
+  const Facet& fc = facets_[f];
+  const Facet lf = local_facet(fc);
+  const std::span<const Vec3> xf(X_[f].data(), fc.n_nodes);
+  // ñ = s e points out of the body like the facet normal (+1 on a pin, −1 in a hole).
+  double s = 0.0, area = 0.0;
+  for (const QuadPoint& q : facet_rule(fc.shape, 2)) {
+    const FacetGeometry g = facet_geometry(lf, xf, q.xi, q.eta);
+    area += q.weight * g.jacobian;
+    if (const Radial rd = radial(g.x); rd.ok) s += q.weight * g.jacobian * dot(rd.e, g.n);
+  }
+  sign_[f] = s < 0 ? -1.0 : 1.0;
+  return area;
 }
 
 std::size_t SurfaceCorrection::KeyHash::operator()(const std::array<std::int32_t, 8>& k) const noexcept {

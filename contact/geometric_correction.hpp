@@ -147,6 +147,15 @@ class SurfaceCorrection {
     bool ok = false;
   };
   Radial radial(const Vec3& p) const;
+  // Construction steps, in the constructor's order (each throws CorrectionError on bad data).
+  void set_idealised_shape(const ContactSurface& surface);  ///< a_, k_, R_, mode_ from the data line
+  void set_plane_shape();                                    ///< ... in a plane model
+  void set_axisymmetric_shape();                             ///< ... in an axisymmetric model
+  void set_node_radii(const ContactSurface& surface, std::span<const Vec3> X, const model::Model* model);
+  [[noreturn]] void fail_no_radial_direction(const Vec3& p, const std::string& node) const;
+  void set_facets(const ContactSurface& surface, std::span<const Vec3> X);
+  /// Sets sign_[f] (the sign of ∫ e·n over facet f) and returns the facet's reference area.
+  double orient_facet(std::size_t f);
   /// Reference offset d(ξ) and normal ñ(ξ) of facet `i`; false where the point has no radial
   /// direction.
   bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal) const;

@@ -136,10 +136,8 @@ void add_general(const model::Model& m, InteractionTable& t, const model::Surfac
   }
 }
 
-}  // namespace
-
-std::shared_ptr<const InteractionTable> interaction_table(const model::Model& m) {
-  auto t = std::make_shared<InteractionTable>();
+/// The *CONTACT PAIR rows: the model's, then each step's (flagged as step data).
+void add_contact_pairs(const model::Model& m, InteractionTable& t) {
   auto add_pair = [&](const model::ContactPair& p, std::size_t step) {
     ContactInteraction ci;
     ci.pair = p;
@@ -148,65 +146,96 @@ std::shared_ptr<const InteractionTable> interaction_table(const model::Model& m)
     ci.first_step = step;
     // Self-contact: every contact is seen from both sides, like a balanced two-row interaction.
     if (p.slave == p.master) ci.weight = 0.5;
-    t->rows.push_back(std::move(ci));
+    t.rows.push_back(std::move(ci));
   };
   auto add_step_pair = [&](const model::ContactPair& p, std::size_t step) {
     add_pair(p, step);
-    t->rows.back().step_data = true;
+    t.rows.back().step_data = true;
   };
   for (const auto& p : m.contact_pairs) add_pair(p, 0);
   for (std::size_t s = 0; s < m.steps.size(); ++s)
     for (const auto& p : m.steps[s].contact_pairs) add_step_pair(p, s);
+}
 
-  const model::GeneralContact& gc = m.general_contact;
-  if (!gc.defined) return t;
-  const bool needs_bodies = std::any_of(gc.inclusions.begin(), gc.inclusions.end(),
+/// The bodies' exterior surfaces, kept in the table (only when an inclusion names the
+/// all-inclusive exterior surface: finding the bodies costs a pass over the mesh).
+std::vector<const model::Surface*> add_body_surfaces(const model::Model& m, InteractionTable& t) {
+  const auto& inclusions = m.general_contact.inclusions;
+  const bool needs_bodies = std::any_of(inclusions.begin(), inclusions.end(),
                                         [](const auto& inc) { return inc.first.empty() || inc.second.empty(); });
   std::vector<const model::Surface*> body_surfaces;
   if (needs_bodies)
     for (Body& b : bodies(m)) {
-      t->surfaces.push_back(std::move(b.exterior));
-      body_surfaces.push_back(&t->surfaces.back());
+      t.surfaces.push_back(std::move(b.exterior));  // (a deque: the pointers stay valid)
+      body_surfaces.push_back(&t.surfaces.back());
     }
+  return body_surfaces;
+}
+
+/// General contact's rows, each (unordered) pair of surfaces once.
+struct GeneralRows {
+  const model::Model& m;
+  InteractionTable& t;
   std::set<std::pair<std::string, std::string>> done;
-  auto once = [&](const model::Surface* a, const model::Surface* b) {
-    auto key = std::minmax(a->name, b->name);
-    if (!done.insert({key.first, key.second}).second) return;
-    add_general(m, *t, a, b);
-  };
+
+  bool first_time(const std::string& a, const std::string& b) {
+    auto key = std::minmax(a, b);
+    return done.insert({key.first, key.second}).second;
+  }
+  void once(const model::Surface* a, const model::Surface* b) {
+    if (!first_time(a->name, b->name)) return;
+    add_general(m, t, a, b);
+  }
+};
+
+/// ALL EXTERIOR: every two bodies, and a note that self-contact within a body is not searched.
+void add_all_exterior(GeneralRows& g, const model::GeneralContact::Inclusion& inc,
+                      const std::vector<const model::Surface*>& body_surfaces) {
+  for (std::size_t i = 0; i < body_surfaces.size(); ++i)
+    for (std::size_t j = i + 1; j < body_surfaces.size(); ++j) g.once(body_surfaces[i], body_surfaces[j]);
+  std::vector<std::string> names;
+  for (auto* s : body_surfaces) names.push_back(s->name);
+  g.t.notes.push_back(fmt::format("{}: general contact: self-contact within a body is not searched ({} bodies: {})",
+                                  g.m.sources.describe(inc.loc), body_surfaces.size(), fmt::join(names, ", ")));
+}
+
+/// Self-contact of a named surface: one row, weight ½.
+void add_self_contact(GeneralRows& g, const model::GeneralContact::Inclusion& inc) {
+  const model::Surface* s = &g.m.mesh.surfaces.at(inc.first);
+  if (!g.first_time(s->name, s->name) || excluded(g.m, s->name, s->name)) return;
+  std::string interaction;
+  assigned_interaction(g.m, s->name, s->name, interaction);
+  ContactInteraction ci;
+  ci.pair.slave = ci.pair.master = s->name;
+  ci.pair.interaction = interaction;
+  ci.pair.type = model::ContactDiscretization::SurfaceToSurface;
+  ci.pair.loc = inc.loc;
+  ci.slave = ci.master = s;
+  ci.general = true;
+  ci.weight = 0.5;
+  g.t.rows.push_back(std::move(ci));
+}
+
+}  // namespace
+
+std::shared_ptr<const InteractionTable> interaction_table(const model::Model& m) {
+  auto t = std::make_shared<InteractionTable>();
+  add_contact_pairs(m, *t);
+  const model::GeneralContact& gc = m.general_contact;
+  if (!gc.defined) return t;
+  const std::vector<const model::Surface*> body_surfaces = add_body_surfaces(m, *t);
+  GeneralRows g{m, *t, {}};
   for (const auto& inc : gc.inclusions) {
     if (inc.first.empty() && inc.second.empty()) {  // ALL EXTERIOR
-      for (std::size_t i = 0; i < body_surfaces.size(); ++i)
-        for (std::size_t j = i + 1; j < body_surfaces.size(); ++j) once(body_surfaces[i], body_surfaces[j]);
-      t->notes.push_back(fmt::format("{}: general contact: self-contact within a body is not searched ({} bodies: {})",
-                                     m.sources.describe(inc.loc), body_surfaces.size(),
-                                     fmt::join([&] {
-                                       std::vector<std::string> n;
-                                       for (auto* s : body_surfaces) n.push_back(s->name);
-                                       return n;
-                                     }(), ", ")));
+      add_all_exterior(g, inc, body_surfaces);
     } else if (inc.first.empty() || inc.second.empty()) {  // the exterior against one surface
       const model::Surface& s = m.mesh.surfaces.at(inc.first.empty() ? inc.second : inc.first);
       for (const auto* body : body_surfaces)
-        if (!shares_faces(s, *body)) once(&s, body);
-    } else if (inc.first == inc.second) {  // self-contact of a named surface: one row, weight ½
-      const model::Surface* s = &m.mesh.surfaces.at(inc.first);
-      auto key = std::minmax(s->name, s->name);
-      if (done.insert({key.first, key.second}).second && !excluded(m, s->name, s->name)) {
-        std::string interaction;
-        assigned_interaction(m, s->name, s->name, interaction);
-        ContactInteraction ci;
-        ci.pair.slave = ci.pair.master = s->name;
-        ci.pair.interaction = interaction;
-        ci.pair.type = model::ContactDiscretization::SurfaceToSurface;
-        ci.pair.loc = inc.loc;
-        ci.slave = ci.master = s;
-        ci.general = true;
-        ci.weight = 0.5;
-        t->rows.push_back(std::move(ci));
-      }
+        if (!shares_faces(s, *body)) g.once(&s, body);
+    } else if (inc.first == inc.second) {
+      add_self_contact(g, inc);
     } else {
-      once(&m.mesh.surfaces.at(inc.first), &m.mesh.surfaces.at(inc.second));
+      g.once(&m.mesh.surfaces.at(inc.first), &m.mesh.surfaces.at(inc.second));
     }
   }
   return t;

@@ -381,12 +381,22 @@ Small multiply(const Small& a, const Small& b, int p) {
   return c;
 }
 
-}  // namespace
+/// What every part of linearize_gap() reads: the facet's geometry at ξ* and the layout of
+/// u = [x_s; x_1; …; x_k] (node 0 = the slave, node a + 1 = facet node a, `dim` components each).
+struct GapFrame {
+  const Local& l;  ///< x(ξ*) and its derivatives
+  int k = 0;       ///< facet nodes
+  int pd = 0;      ///< parametric dimension
+  int dim = 3;
+  std::size_t nd = 0;  ///< n_dof
+  Vec3 r{};            ///< x_s − x(ξ*)
 
-GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Vec3& xs, const Projection& p, int dim,
-                               std::int32_t slave_row) {
-  const FacetNodes fn(f, x);
-  const int k = fn.n, pd = facet_param_dim(f.shape);
+  std::size_t at(int node, int comp) const { return static_cast<std::size_t>(node * dim + comp); }
+  double& H(GapLinearization& L, std::size_t i, std::size_t j) const { return L.hessian[i * nd + j]; }
+};
+
+/// The linearisation sized for the slave and the facet's k nodes, every derivative zero.
+GapLinearization zero_linearization(const Facet& f, int k, int pd, int dim, std::int32_t slave_row) {
   GapLinearization L;
   L.dim = dim;
   L.n_dof = dim * (k + 1);
@@ -396,108 +406,156 @@ GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Ve
   L.gradient.assign(nd, 0.0);
   L.hessian.assign(nd * nd, 0.0);
   for (int al = 0; al < pd; ++al) L.dxi[al].assign(nd, 0.0);
+  return L;
+}
 
-  const Local l = fn.eval(p.xi[0], p.xi[1]);
-  const ShapeEval& e = l.e;
-  const Vec3& n = p.normal;
-  auto at = [&](int node, int comp) { return static_cast<std::size_t>(node * dim + comp); };  // node 0 = slave
-
-  // ∂g/∂u = [n; −N_a n]
-  for (int c = 0; c < dim; ++c) {
-    L.gradient[at(0, c)] = n[c];
-    for (int a = 0; a < k; ++a) L.gradient[at(a + 1, c)] = -e.N[a] * n[c];
+/// ∂g/∂u = [n; −N_a n], the same in every region.
+void set_gap_gradient(const GapFrame& u, const Vec3& n, GapLinearization& L) {
+  for (int c = 0; c < u.dim; ++c) {
+    L.gradient[u.at(0, c)] = n[c];
+    for (int a = 0; a < u.k; ++a) L.gradient[u.at(a + 1, c)] = -u.l.e.N[a] * n[c];
   }
-  auto H = [&](std::size_t i, std::size_t j) -> double& { return L.hessian[i * nd + j]; };
-  const Vec3 r = sub(xs, l.x);
-  const std::array<Vec3, 2> a_vec{l.a0, l.a1};
-  const double tol = on_surface_tol(fn.size);
+}
 
-  if (p.region == ProjectionRegion::Interior) {
-    const Vec3& nf = p.facet_normal;
-    const double g = dot(r, nf);
-    // P_α, Q_α as vectors over u.
-    std::array<std::vector<double>, 2> P, Q;
-    for (int al = 0; al < pd; ++al) {
-      P[al].assign(nd, 0.0);
-      Q[al].assign(nd, 0.0);
-      for (int c = 0; c < dim; ++c) {
-        P[al][at(0, c)] = a_vec[al][c];
-        for (int a = 0; a < k; ++a) {
-          P[al][at(a + 1, c)] = -e.N[a] * a_vec[al][c];
-          Q[al][at(a + 1, c)] = e.dN[a][al] * nf[c];
-        }
+/// P_α = [a_α; −N_b a_α] and Q_α = [0; N_b,α n] as vectors over u.
+struct TangentVariations {
+  std::array<std::vector<double>, 2> P, Q;
+};
+TangentVariations tangent_variations(const GapFrame& u, const Vec3& nf) {
+  const std::array<Vec3, 2> a_vec{u.l.a0, u.l.a1};
+  TangentVariations t;
+  for (int al = 0; al < u.pd; ++al) {
+    t.P[al].assign(u.nd, 0.0);
+    t.Q[al].assign(u.nd, 0.0);
+    for (int c = 0; c < u.dim; ++c) {
+      t.P[al][u.at(0, c)] = a_vec[al][c];
+      for (int a = 0; a < u.k; ++a) {
+        t.P[al][u.at(a + 1, c)] = -u.l.e.N[a] * a_vec[al][c];
+        t.Q[al][u.at(a + 1, c)] = u.l.e.dN[a][al] * nf[c];
       }
     }
-    Small m, b;
-    const std::array<std::array<Vec3, 2>, 2> a2{{{l.a00, l.a01}, {l.a01, l.a11}}};
-    for (int i = 0; i < pd; ++i)
-      for (int j = 0; j < pd; ++j) {
-        m.m[i][j] = dot(a_vec[i], a_vec[j]);
-        b.m[i][j] = dot(nf, a2[i][j]);
-      }
-    Small A;
-    for (int i = 0; i < pd; ++i)
-      for (int j = 0; j < pd; ++j) A.m[i][j] = m.m[i][j] - g * b.m[i][j];
-    const Small Ai = inverse(A, pd), mi = inverse(m, pd);
-    const Small mbA = multiply(multiply(mi, b, pd), Ai, pd);
-    for (std::size_t i = 0; i < nd; ++i)
-      for (std::size_t j = 0; j < nd; ++j) {
-        double h = 0.0;
-        for (int al = 0; al < pd; ++al)
-          for (int be = 0; be < pd; ++be)
-            h -= Ai.m[al][be] * (P[al][i] * Q[be][j] + Q[al][i] * P[be][j] + g * Q[al][i] * Q[be][j]) +
-                 mbA.m[al][be] * P[al][i] * P[be][j];
-        H(i, j) = h;
-      }
-    for (int al = 0; al < pd; ++al)
-      for (std::size_t i = 0; i < nd; ++i)
-        for (int be = 0; be < pd; ++be) L.dxi[al][i] += Ai.m[al][be] * (P[be][i] + g * Q[be][i]);
+  }
+  return t;
+}
+
+/// A⁻¹ and m⁻¹ b A⁻¹, with the metric m_αβ = a_α·a_β, the curvature b_αβ = n·a_αβ and A = m − g b.
+struct InteriorMatrices {
+  Small Ai, mbA;
+};
+InteriorMatrices interior_matrices(const Local& l, const Vec3& nf, double g, int pd) {
+  const std::array<Vec3, 2> a_vec{l.a0, l.a1};
+  Small m, b;
+  const std::array<std::array<Vec3, 2>, 2> a2{{{l.a00, l.a01}, {l.a01, l.a11}}};
+  for (int i = 0; i < pd; ++i)
+    for (int j = 0; j < pd; ++j) {
+      m.m[i][j] = dot(a_vec[i], a_vec[j]);
+      b.m[i][j] = dot(nf, a2[i][j]);
+    }
+  Small A;
+  for (int i = 0; i < pd; ++i)
+    for (int j = 0; j < pd; ++j) A.m[i][j] = m.m[i][j] - g * b.m[i][j];
+  const Small Ai = inverse(A, pd), mi = inverse(m, pd);
+  return {Ai, multiply(multiply(mi, b, pd), Ai, pd)};
+}
+
+/// Inside the facet: ∂²g = −(Pᵀ A⁻¹ Q + Qᵀ A⁻¹ P) − Pᵀ m⁻¹ b A⁻¹ P − g Qᵀ A⁻¹ Q and
+/// ∂ξ*/∂u = A⁻¹(P + g Q), nf the facet normal at ξ*.
+void linearize_interior(const GapFrame& u, const Vec3& nf, GapLinearization& L) {
+  const double g = dot(u.r, nf);
+  const TangentVariations t = tangent_variations(u, nf);
+  const auto& P = t.P;
+  const auto& Q = t.Q;
+  const InteriorMatrices im = interior_matrices(u.l, nf, g, u.pd);
+  const Small& Ai = im.Ai;
+  const Small& mbA = im.mbA;
+  const int pd = u.pd;
+  for (std::size_t i = 0; i < u.nd; ++i)
+    for (std::size_t j = 0; j < u.nd; ++j) {
+      double h = 0.0;
+      for (int al = 0; al < pd; ++al)
+        for (int be = 0; be < pd; ++be)
+          h -= Ai.m[al][be] * (P[al][i] * Q[be][j] + Q[al][i] * P[be][j] + g * Q[al][i] * Q[be][j]) +
+               mbA.m[al][be] * P[al][i] * P[be][j];
+      u.H(L, i, j) = h;
+    }
+  for (int al = 0; al < pd; ++al)
+    for (std::size_t i = 0; i < u.nd; ++i)
+      for (int be = 0; be < pd; ++be) L.dxi[al][i] += Ai.m[al][be] * (P[be][i] + g * Q[be][i]);
+}
+
+/// The direction, in the parametric domain, of the edge that ξ lies on.
+std::array<double, 2> edge_direction(FacetShape s, const std::array<double, 2>& xi) {
+  std::array<double, 2> dir{1, 0};
+  constexpr double tol_xi = 1e-10;
+  if (is_tri(s)) {
+    if (xi[1] <= tol_xi) dir = {1, 0};
+    else if (xi[0] <= tol_xi) dir = {0, 1};
+    else dir = {-1, 1};
+  } else {
+    dir = std::abs(std::abs(xi[0]) - 1) <= tol_xi ? std::array<double, 2>{0, 1} : std::array<double, 2>{1, 0};
+  }
+  return dir;
+}
+
+/// On an edge, ξ* still slides along it: −c cᵀ/φ_tt is added to ∂²(½d²), and ∂ξ*/∂u runs
+/// along the edge (when φ_tt > 0, i.e. the minimum along the edge is strict).
+void add_edge_sliding(const GapFrame& u, FacetShape s, const std::array<double, 2>& xi, GapLinearization& L) {
+  const Local& l = u.l;
+  const std::array<double, 2> dir = edge_direction(s, xi);
+  const Vec3 a_t = axpy(dir[1], l.a1, scale(dir[0], l.a0));
+  const Vec3 a_tt = axpy(dir[1] * dir[1], l.a11, axpy(2 * dir[0] * dir[1], l.a01, scale(dir[0] * dir[0], l.a00)));
+  const double phi_tt = dot(a_t, a_t) - dot(u.r, a_tt);
+  std::vector<double> cvec(u.nd, 0.0);
+  for (int c = 0; c < u.dim; ++c) {
+    cvec[u.at(0, c)] = -a_t[c];
+    for (int a = 0; a < u.k; ++a)
+      cvec[u.at(a + 1, c)] = l.e.N[a] * a_t[c] - (l.e.dN[a][0] * dir[0] + l.e.dN[a][1] * dir[1]) * u.r[c];
+  }
+  if (phi_tt > 0) {
+    for (std::size_t i = 0; i < u.nd; ++i)
+      for (std::size_t j = 0; j < u.nd; ++j) u.H(L, i, j) -= cvec[i] * cvec[j] / phi_tt;
+    for (int al = 0; al < u.pd; ++al)
+      for (std::size_t i = 0; i < u.nd; ++i) L.dxi[al][i] = -dir[al] * cvec[i] / phi_tt;
+  }
+}
+
+/// On an edge or vertex at distance d > 0, g = s d: ∂²(½d²) = BᵀB (− c cᵀ/φ_tt on an edge),
+/// B = [I, −N_1 I, …], then ∂²g = s (∂²(½d²) − ∇d ∇dᵀ)/d with ∇d = s ∇g.
+void linearize_distance(const GapFrame& u, FacetShape shape, const Projection& p, GapLinearization& L) {
+  const int k = u.k;
+  const double d = p.distance;
+  const double s = p.gap < 0 ? -1.0 : 1.0;
+  std::vector<double> Bcoef(static_cast<std::size_t>(k + 1));
+  Bcoef[0] = 1.0;
+  for (int a = 0; a < k; ++a) Bcoef[static_cast<std::size_t>(a) + 1] = -u.l.e.N[a];
+  for (int A = 0; A <= k; ++A)
+    for (int Bn = 0; Bn <= k; ++Bn)
+      for (int c = 0; c < u.dim; ++c)
+        u.H(L, u.at(A, c), u.at(Bn, c)) = Bcoef[static_cast<std::size_t>(A)] * Bcoef[static_cast<std::size_t>(Bn)];
+  if (p.region == ProjectionRegion::Edge) add_edge_sliding(u, shape, p.xi, L);
+  for (std::size_t i = 0; i < u.nd; ++i)
+    for (std::size_t j = 0; j < u.nd; ++j) u.H(L, i, j) = s * (u.H(L, i, j) - L.gradient[i] * L.gradient[j]) / d;
+}
+
+}  // namespace
+
+GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Vec3& xs, const Projection& p, int dim,
+                               std::int32_t slave_row) {
+  const FacetNodes fn(f, x);
+  const int k = fn.n, pd = facet_param_dim(f.shape);
+  GapLinearization L = zero_linearization(f, k, pd, dim, slave_row);
+  const Local l = fn.eval(p.xi[0], p.xi[1]);
+  const GapFrame u{l, k, pd, dim, static_cast<std::size_t>(L.n_dof), sub(xs, l.x)};
+  set_gap_gradient(u, p.normal, L);
+  if (p.region == ProjectionRegion::Interior) {
+    linearize_interior(u, p.facet_normal, L);
     return L;
   }
-
-  const double d = p.distance;
-  if (d <= tol) {
+  if (p.distance <= on_surface_tol(fn.size)) {  // the distance has a kink at d = 0
     L.hessian_defined = false;
     return L;
   }
-  const double s = p.gap < 0 ? -1.0 : 1.0;
-  // B = [I, −N_1 I, …]; ∂²(½d²) = BᵀB − c cᵀ/φ_tt (edge); ∇d = Bᵀ r/d.
-  std::vector<double> Bcoef(static_cast<std::size_t>(k + 1));
-  Bcoef[0] = 1.0;
-  for (int a = 0; a < k; ++a) Bcoef[static_cast<std::size_t>(a) + 1] = -e.N[a];
-  for (int A = 0; A <= k; ++A)
-    for (int Bn = 0; Bn <= k; ++Bn)
-      for (int c = 0; c < dim; ++c) H(at(A, c), at(Bn, c)) = Bcoef[static_cast<std::size_t>(A)] * Bcoef[static_cast<std::size_t>(Bn)];
-  if (p.region == ProjectionRegion::Edge) {
-    // The edge direction in the parametric domain.
-    std::array<double, 2> dir{1, 0};
-    constexpr double tol_xi = 1e-10;
-    if (is_tri(f.shape)) {
-      if (p.xi[1] <= tol_xi) dir = {1, 0};
-      else if (p.xi[0] <= tol_xi) dir = {0, 1};
-      else dir = {-1, 1};
-    } else {
-      dir = std::abs(std::abs(p.xi[0]) - 1) <= tol_xi ? std::array<double, 2>{0, 1} : std::array<double, 2>{1, 0};
-    }
-    const Vec3 a_t = axpy(dir[1], l.a1, scale(dir[0], l.a0));
-    const Vec3 a_tt = axpy(dir[1] * dir[1], l.a11, axpy(2 * dir[0] * dir[1], l.a01, scale(dir[0] * dir[0], l.a00)));
-    const double phi_tt = dot(a_t, a_t) - dot(r, a_tt);
-    std::vector<double> cvec(nd, 0.0);
-    for (int c = 0; c < dim; ++c) {
-      cvec[at(0, c)] = -a_t[c];
-      for (int a = 0; a < k; ++a)
-        cvec[at(a + 1, c)] = e.N[a] * a_t[c] - (e.dN[a][0] * dir[0] + e.dN[a][1] * dir[1]) * r[c];
-    }
-    if (phi_tt > 0) {
-      for (std::size_t i = 0; i < nd; ++i)
-        for (std::size_t j = 0; j < nd; ++j) H(i, j) -= cvec[i] * cvec[j] / phi_tt;
-      for (int al = 0; al < pd; ++al)
-        for (std::size_t i = 0; i < nd; ++i) L.dxi[al][i] = -dir[al] * cvec[i] / phi_tt;
-    }
-  }
-  // ∂²g = s (∂²(½d²) − ∇d ∇dᵀ)/d, with ∇d = s ∇g.
-  for (std::size_t i = 0; i < nd; ++i)
-    for (std::size_t j = 0; j < nd; ++j) H(i, j) = s * (H(i, j) - L.gradient[i] * L.gradient[j]) / d;
+  linearize_distance(u, f.shape, p, L);
   return L;
 }
 
