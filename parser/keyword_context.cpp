@@ -118,6 +118,33 @@ std::optional<int> KeywordContext::dof(const Field& f, int max) {
   return static_cast<int>(*v);
 }
 
+void KeywordContext::check_numeric_fields(std::size_t n_diagnostics_before) {
+  if (!spec.numbers_from) return;
+  const std::size_t first = *spec.numbers_from;
+  // The lines the handler reported an error on (usually none).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> reported;
+  const auto& all = diags.all();
+  for (std::size_t i = n_diagnostics_before; i < all.size(); ++i) {
+    if (all[i].severity != Diagnostic::Severity::Error) continue;
+    if (all[i].loc.file == keyword.loc.file && all[i].loc.line == keyword.loc.line) return;
+    reported.emplace_back(all[i].loc.file, all[i].loc.line);
+  }
+  std::vector<Field> f;
+  for (const Line& line : data) {
+    // Fewer commas than `first`: no field from `first` on (the common case of *NODE).
+    if (static_cast<std::size_t>(std::count(line.text.begin(), line.text.end(), ',')) < first) continue;
+    const std::pair at{line.loc.file, line.loc.line};
+    if (std::find(reported.begin(), reported.end(), at) != reported.end()) continue;
+    split_fields(line, f);
+    for (std::size_t i = first; i < f.size(); ++i)
+      if (!f[i].empty() && !parse_real(f[i].text)) {
+        error(f[i].loc, fmt::format("field {}: expected a number, found {} (a field inpact does not use must "
+                                    "still be a number or empty)", i + 1, quoted(f[i].text)));
+        break;
+      }
+  }
+}
+
 namespace {
 
 /// Splits `Instance.label` into instance index and label when the text has that form.
