@@ -65,9 +65,13 @@ void KeywordContext::warning(model::SourceLoc loc, std::string message) {
   diags.warning(loc, kw(), std::move(message));
 }
 
-void KeywordContext::error_param(std::string_view canonical, std::string message) {
+model::SourceLoc KeywordContext::param_loc(std::string_view canonical) const {
   const KeywordParam* p = param(canonical);
-  error(p ? (p->value ? p->value_loc : p->loc) : keyword.loc, std::move(message));
+  return p ? (p->value ? p->value_loc : p->loc) : keyword.loc;
+}
+
+void KeywordContext::error_param(std::string_view canonical, std::string message) {
+  error(param_loc(canonical), std::move(message));
 }
 
 namespace {

@@ -101,6 +101,9 @@ struct KeywordContext {
   void error(model::SourceLoc loc, std::string message);
   void warning(model::SourceLoc loc, std::string message);
   void error_param(std::string_view canonical, std::string message);
+  /// Where a parameter is written: its value if it has one, else its name (the keyword line if
+  /// the parameter is absent). error_param reports there.
+  model::SourceLoc param_loc(std::string_view canonical) const;
 
   // --- data fields; each conversion reports its own error and returns nullopt ---
   std::optional<double> real(const Field& f, std::string_view what);
