@@ -48,7 +48,9 @@ int main(int argc, char** argv) {
     return kUsage;
   }
 
-  CLI::App app{"inpact: an Abaqus-style input deck solver for contact problems"};
+  // The name is given, not taken from argv[0]: parse() gets the arguments without it, and the
+  // usage lines ("Usage: inpact run [OPTIONS] deck") need it.
+  CLI::App app{"inpact: an Abaqus-style input deck solver for contact problems", "inpact"};
   app.set_version_flag("--version", version_text());
   app.require_subcommand(1);
 

@@ -104,7 +104,10 @@ struct ContactPair {
   double smooth = 0.2;
   /// CalculiX LINEAR flag: the pair does not switch on nonlinear geometry.
   bool linear = false;
-  SourceLoc loc;
+  SourceLoc loc;  ///< the data line's slave surface
+  /// Where the names given as parameters are written (the values of INTERACTION=, GEOMETRIC
+  /// CORRECTION= and ADJUST= on the keyword line): an undefined name is reported there.
+  SourceLoc interaction_loc, geometric_correction_loc, adjust_loc;
 };
 
 /// One *SURFACE PROPERTY ASSIGNMENT, PROPERTY=GEOMETRIC CORRECTION data line, or one line of a
@@ -137,6 +140,7 @@ struct GeneralContact {
     std::string first, second;  ///< empty: the global assignment
     std::string interaction;
     SourceLoc loc;
+    SourceLoc interaction_loc;  ///< the data line's third field, which names the interaction
   };
   bool defined = false;
   std::vector<Inclusion> inclusions;

@@ -289,7 +289,9 @@ class DeckReader {
       return;
     }
     KeywordContext ctx{*b.spec, b.keyword, b.data, state_, diags()};
+    const std::size_t n_diagnostics = diags().all().size();
     b.spec->handler(ctx);
+    ctx.check_numeric_fields(n_diagnostics);
   }
 
   const KeywordParam* find_input(const Block& b) const {

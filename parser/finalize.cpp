@@ -88,11 +88,13 @@ void check_contact(model::Model& m, Diagnostics& diags) {
   auto check_pair = [&](const model::ContactPair& p) {
     check_surface(m, diags, p.slave, p.loc, "*CONTACT PAIR");
     check_surface(m, diags, p.master, p.loc, "*CONTACT PAIR");
-    check_defined(diags, m.interactions, p.interaction, p.loc, "*CONTACT PAIR", "surface interaction");
+    // Names given as parameters are reported where the keyword line writes them.
+    check_defined(diags, m.interactions, p.interaction, p.interaction_loc, "*CONTACT PAIR", "surface interaction");
     if (!p.geometric_correction.empty())
-      check_defined(diags, m.surface_smoothings, p.geometric_correction, p.loc, "*CONTACT PAIR",
+      check_defined(diags, m.surface_smoothings, p.geometric_correction, p.geometric_correction_loc, "*CONTACT PAIR",
                     "surface smoothing");
-    if (!p.adjust_nset.empty()) check_defined(diags, m.mesh.nsets, p.adjust_nset, p.loc, "*CONTACT PAIR", "node set");
+    if (!p.adjust_nset.empty())
+      check_defined(diags, m.mesh.nsets, p.adjust_nset, p.adjust_loc, "*CONTACT PAIR", "node set");
   };
   for (const auto& p : m.contact_pairs) check_pair(p);
   for (const auto& step : m.steps)
@@ -109,7 +111,8 @@ void check_contact(model::Model& m, Diagnostics& diags) {
   for (const auto& pa : gc.property_assignments) {
     check_surface(m, diags, pa.first, pa.loc, "*CONTACT PROPERTY ASSIGNMENT");
     check_surface(m, diags, pa.second, pa.loc, "*CONTACT PROPERTY ASSIGNMENT");
-    check_defined(diags, m.interactions, pa.interaction, pa.loc, "*CONTACT PROPERTY ASSIGNMENT", "surface interaction");
+    check_defined(diags, m.interactions, pa.interaction, pa.interaction_loc, "*CONTACT PROPERTY ASSIGNMENT",
+                  "surface interaction");
   }
   for (const auto& gcorr : gc.geometric_corrections)
     check_surface(m, diags, gcorr.surface, gcorr.loc, "*SURFACE PROPERTY ASSIGNMENT");

@@ -65,9 +65,13 @@ void KeywordContext::warning(model::SourceLoc loc, std::string message) {
   diags.warning(loc, kw(), std::move(message));
 }
 
-void KeywordContext::error_param(std::string_view canonical, std::string message) {
+model::SourceLoc KeywordContext::param_loc(std::string_view canonical) const {
   const KeywordParam* p = param(canonical);
-  error(p ? (p->value ? p->value_loc : p->loc) : keyword.loc, std::move(message));
+  return p ? (p->value ? p->value_loc : p->loc) : keyword.loc;
+}
+
+void KeywordContext::error_param(std::string_view canonical, std::string message) {
+  error(param_loc(canonical), std::move(message));
 }
 
 namespace {
@@ -116,6 +120,33 @@ std::optional<int> KeywordContext::dof(const Field& f, int max) {
     return std::nullopt;
   }
   return static_cast<int>(*v);
+}
+
+void KeywordContext::check_numeric_fields(std::size_t n_diagnostics_before) {
+  if (!spec.numbers_from) return;
+  const std::size_t first = *spec.numbers_from;
+  // The lines the handler reported an error on (usually none).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> reported;
+  const auto& all = diags.all();
+  for (std::size_t i = n_diagnostics_before; i < all.size(); ++i) {
+    if (all[i].severity != Diagnostic::Severity::Error) continue;
+    if (all[i].loc.file == keyword.loc.file && all[i].loc.line == keyword.loc.line) return;
+    reported.emplace_back(all[i].loc.file, all[i].loc.line);
+  }
+  std::vector<Field> f;
+  for (const Line& line : data) {
+    // Fewer commas than `first`: no field from `first` on (the common case of *NODE).
+    if (static_cast<std::size_t>(std::count(line.text.begin(), line.text.end(), ',')) < first) continue;
+    const std::pair at{line.loc.file, line.loc.line};
+    if (std::find(reported.begin(), reported.end(), at) != reported.end()) continue;
+    split_fields(line, f);
+    for (std::size_t i = first; i < f.size(); ++i)
+      if (!f[i].empty() && !parse_real(f[i].text)) {
+        error(f[i].loc, fmt::format("field {}: expected a number, found {} (a field inpact does not use must "
+                                    "still be a number or empty)", i + 1, quoted(f[i].text)));
+        break;
+      }
+  }
 }
 
 namespace {

@@ -53,6 +53,14 @@ struct KeywordSpec {
   std::vector<std::string_view> parents = {};
   /// True for keywords whose data may come from a file (`INPUT=`).
   bool input_file = false;
+  /// Set for keywords whose data lines hold numbers from this field (0-based) on: a field there
+  /// that the handler does not read (a temperature column, an Abaqus/Explicit or CalculiX
+  /// extra) must still be a number or empty, as Abaqus reads it as one; the reader checks that
+  /// after the handler (KeywordContext::check_numeric_fields). The fields before it are the
+  /// handler's to check: names and labels (*BOUNDARY's node set, *DLOAD's load type) or numbers
+  /// it reads anyway. Unset where names mix in at no fixed place (sets, surfaces, *EQUATION) or
+  /// where the field count is exact and every field is read (*ELEMENT).
+  std::optional<std::uint8_t> numbers_from = std::nullopt;
 };
 
 /// `value` (normalized) matched against `choices`: exact, or the prefix of exactly one choice
@@ -93,6 +101,9 @@ struct KeywordContext {
   void error(model::SourceLoc loc, std::string message);
   void warning(model::SourceLoc loc, std::string message);
   void error_param(std::string_view canonical, std::string message);
+  /// Where a parameter is written: its value if it has one, else its name (the keyword line if
+  /// the parameter is absent). error_param reports there.
+  model::SourceLoc param_loc(std::string_view canonical) const;
 
   // --- data fields; each conversion reports its own error and returns nullopt ---
   std::optional<double> real(const Field& f, std::string_view what);
@@ -102,6 +113,11 @@ struct KeywordContext {
                    std::size_t max, std::string_view layout);
   /// A 1-based DOF number in [1, max].
   std::optional<int> dof(const Field& f, int max = 6);
+  /// Run by the reader after the handler: on every data line, the fields from
+  /// spec.numbers_from on are numbers or empty. A line the handler reported an error on is left
+  /// alone (one error a line), and so is every line of a keyword the handler refused (an error on
+  /// the keyword line). `n_diagnostics_before`: the diagnostics count before the handler ran.
+  void check_numeric_fields(std::size_t n_diagnostics_before);
 
   // --- references in data lines ---
   /// A node label (`12`), an instance node (`Part-1-1.12`) or a node set name → node rows.

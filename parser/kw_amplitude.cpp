@@ -144,6 +144,7 @@ void add_amplitude_keywords(std::vector<KeywordSpec>& t) {
                               {"FIXED INTERVAL", VK::Required, VT::Real}, {"BEGIN", VK::Required, VT::Real}},
                              DataLines::Required, amplitude};
   amplitude_spec.input_file = true;
+  amplitude_spec.numbers_from = 0;  // (time, value) pairs or values
   t.push_back(std::move(amplitude_spec));
 }
 

@@ -168,6 +168,7 @@ void add_assembly_keywords(std::vector<KeywordSpec>& t) {
                {{"NAME", ValueKind::Required, ValueType::Text, {}, true},
                 {"PART", ValueKind::Required, ValueType::Text, {}, true}},
                DataLines::Optional, instance});
+  t.back().numbers_from = 0;
   t.push_back({"*END INSTANCE", kInstanceScope, {}, DataLines::None, end_instance});
 }
 

@@ -60,6 +60,7 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                 {"PROPERTIES", VK::Required, VT::Int},
                 {"UNSYMM", VK::None}},
                DataLines::Optional, surface_interaction});
+  t.back().numbers_from = 0;
 
   // [K16 §18.48], [K17]; TIED is CalculiX's; HERTZ/JKR/LKM are newer discrete-element laws and
   // SCALE FACTOR is Abaqus/Explicit's: listed so that they get "not supported", not "unknown".
@@ -71,6 +72,7 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                 {"PENALTY", VK::Optional, VT::Choice, {"LINEAR", "NONLINEAR"}},
                 {"NO SEPARATION", VK::None}},
                DataLines::Optional, surface_behavior, interaction_parent});
+  t.back().numbers_from = 0;
 
   // [K16 §6.36], [IG ctc_friction]; CalculiX takes no parameters.
   t.push_back({"*FRICTION", kModelDataScopes,
@@ -89,6 +91,7 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                 {"TAUMAX", VK::Required, VT::Real},
                 {"SHEAR TRACTION SLOPE", VK::Required, VT::Text}},
                DataLines::Optional, friction, interaction_parent});
+  t.back().numbers_from = 0;
 
   // Model data [K16 §3.68]; the brief lets a step add pairs too (they go to Step::contact_pairs).
   // TYPE: MORTAR/LINMORTAR/PGLINMORTAR/MASSLESS are CalculiX's, listed to be refused clearly.
@@ -133,9 +136,11 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                  {"GEOMETRIC CORRECTION", "BEAM SMOOTHING", "FEATURE EDGE CRITERIA", "OFFSET FRACTION", "THICKNESS"},
                  true}},
                DataLines::Required, surface_property_assignment, contact_parent});
+  t.back().numbers_from = 2;  // surface, method, then coordinates
 
   t.push_back({"*SURFACE SMOOTHING", kModelDataScopes, {{"NAME", VK::Required, VT::Text, {}, true}},
                DataLines::Required, surface_smoothing});
+  t.back().numbers_from = 2;  // surface, method, then coordinates
 
   // History data only [K16 §3.57]: it belongs to a step.
   t.push_back({"*CONTACT CONTROLS", kStepScope,
@@ -158,6 +163,7 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                 {"WARP CHECK PERIOD", VK::Required, VT::Int},
                 {"WARP CUT OFF", VK::Required, VT::Real}},
                DataLines::Optional, contact_controls});
+  t.back().numbers_from = 0;
 
   // Model data [K16 §3.21]; INPUT= may hold the TABULAR lines.
   t.push_back({"*CLEARANCE", kModelDataScopes,
@@ -169,6 +175,7 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                 {"TABULAR", VK::None},
                 {"BOLT", VK::None}},
                DataLines::Optional, clearance, {}, true});
+  t.back().numbers_from = 1;  // node or node set, then numbers
 }
 
 }  // namespace inpact::parser

@@ -49,6 +49,9 @@ void contact_pair(KeywordContext& ctx) {
   model::ContactPair base;
   base.interaction = ctx.name_value("INTERACTION");
   base.loc = ctx.keyword.loc;
+  base.interaction_loc = ctx.param_loc("INTERACTION");
+  base.geometric_correction_loc = ctx.param_loc("GEOMETRIC CORRECTION");
+  base.adjust_loc = ctx.param_loc("ADJUST");
 
   const std::string type = ctx.choice_value("TYPE");
   if (type == "SURFACETOSURFACE") base.type = model::ContactDiscretization::SurfaceToSurface;

@@ -162,6 +162,7 @@ void contact_property_assignment(KeywordContext& ctx) {
     pa.second = f[1].empty() ? pa.first : normalize_label(f[1].text);
     pa.interaction = normalize_label(f[2].text);
     pa.loc = line_start(line);
+    pa.interaction_loc = f[2].loc;
     ctx.model().general_contact.property_assignments.push_back(std::move(pa));
   }
 }

@@ -367,21 +367,26 @@ void add_load_keywords(std::vector<KeywordSpec>& t) {
                 {"FIXED", VK::None}, {"USER", VK::None}, {"LOAD CASE", VK::Required, VT::Int},
                 {"SUBMODEL", VK::None}, {"PHANTOM", VK::Required}},
                DataLines::Optional, boundary});
+  t.back().numbers_from = 2;  // node or node set, DOF or boundary type
   t.push_back({"*CLOAD", kStepScope,
                {op, amp, {"FOLLOWER", VK::None}, {"USER", VK::None}, {"ORIENTATION", VK::Required}},
                DataLines::Optional, cload});
+  t.back().numbers_from = 1;  // node or node set
   const std::vector<ParamSpec> dload_params{op, amp,
                                             {"FOLLOWER", VK::Optional, VT::Choice, {"YES", "NO"}},
                                             {"CONSTANT RESULTANT", VK::Optional, VT::Choice, {"YES", "NO"}},
                                             {"ORIENTATION", VK::Required},
                                             {"USER", VK::None}};
   t.push_back({"*DLOAD", kStepScope, dload_params, DataLines::Optional, dload});
+  t.back().numbers_from = 2;  // element or element set, load type
   t.push_back({"*DSLOAD", kStepScope, dload_params, DataLines::Optional, dsload});
+  t.back().numbers_from = 2;  // surface, load type
   t.push_back({"*TEMPERATURE", kStepScope,
                {op, amp, {"USER", VK::None}, {"FILE", VK::Required}, {"BSTEP", VK::Required, VT::Int},
                 {"BINC", VK::Required, VT::Int}, {"ESTEP", VK::Required, VT::Int}, {"EINC", VK::Required, VT::Int},
                 {"INPUT", VK::Required}, {"MIDSIDE", VK::None}, {"INTERPOLATE", VK::None}},
                DataLines::Optional, temperature});
+  t.back().numbers_from = 1;  // node or node set
   t.push_back({"*INITIAL CONDITIONS", kModelDataScopes,
                {{"TYPE", VK::Required, VT::Choice,
                  {"TEMPERATURE", "STRESS", "VELOCITY", "FIELD", "PLASTIC STRAIN", "HARDENING", "SOLUTION", "RATIO",
@@ -391,6 +396,7 @@ void add_load_keywords(std::vector<KeywordSpec>& t) {
                 {"USER", VK::None}, {"FILE", VK::Required}, {"STEP", VK::Required, VT::Int},
                 {"INC", VK::Required, VT::Int}, {"INPUT", VK::Required}},
                DataLines::Required, initial_conditions});
+  t.back().numbers_from = 1;  // node or node set (TYPE=TEMPERATURE)
   add_amplitude_keywords(t);
   add_equation_keywords(t);
 }

@@ -105,17 +105,21 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
                 {"MODULI", ValueKind::Required, ValueType::Choice, {"LONG TERM", "INSTANTANEOUS"}},
                 {"DEPENDENCIES", ValueKind::Required, ValueType::Int}},
                DataLines::Required, elastic, parent});
+  t.back().numbers_from = 0;
   t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});
+  t.back().numbers_from = 0;
   t.push_back({"*EXPANSION", kModelScope,
                {{"TYPE", ValueKind::Required, ValueType::Choice, {"ISO", "ORTHO", "ANISO"}},
                 {"ZERO", ValueKind::Required, ValueType::Real},
                 {"DEPENDENCIES", ValueKind::Required, ValueType::Int}},
                DataLines::Required, expansion, parent});
+  t.back().numbers_from = 0;
   t.push_back({"*SOLID SECTION", kMeshScopes,
                {{"ELSET", ValueKind::Required, ValueType::Text, {}, true},
                 {"MATERIAL", ValueKind::Required, ValueType::Text, {}, true},
                 {"ORIENTATION", ValueKind::Required}, {"CONTROLS", ValueKind::Required}},
                DataLines::Optional, solid_section});
+  t.back().numbers_from = 0;
 }
 
 }  // namespace inpact::parser

@@ -315,6 +315,7 @@ void add_mesh_keywords(std::vector<KeywordSpec>& t) {
   t.push_back({"*HEADING", kModelScope, {}, DataLines::Optional, heading});
   t.push_back({"*NODE", kMeshScopes, {{"NSET", ValueKind::Required}, {"SYSTEM", ValueKind::Required, ValueType::Choice, {"R"}}},
                DataLines::Optional, node, {}, true});
+  t.back().numbers_from = 4;  // label, x, y, z read by the handler; fields 5-7 (Abaqus: a normal)
   t.push_back({"*ELEMENT", kMeshScopes,
                {{"TYPE", ValueKind::Required, ValueType::Text, {}, true}, {"ELSET", ValueKind::Required}},
                DataLines::Optional, element, {}, true});

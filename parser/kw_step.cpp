@@ -256,6 +256,7 @@ void add_step_keywords(std::vector<KeywordSpec>& t) {
                 {"TOTAL TIME AT START", VK::Required, VT::Real},
                 {"EXPLICIT", VK::Optional}},
                DataLines::Optional, static_step});
+  t.back().numbers_from = 0;
   t.push_back({"*END STEP", kStepScope, {}, DataLines::None, end_step});
   t.push_back({"*CONTROLS", kStepScope,
                {{"PARAMETERS", VK::Required, VT::Choice, {"FIELD", "TIME INCREMENTATION", "LINE SEARCH", "CONSTRAINTS", "CONTACT"}},
@@ -266,6 +267,7 @@ void add_step_keywords(std::vector<KeywordSpec>& t) {
                   "ELECTRICAL POTENTIAL", "CONCENTRATION", "CONSTRAINT FORCE", "MOMENT"}},
                 {"TYPE", VK::Required}},
                DataLines::Optional, controls});
+  t.back().numbers_from = 0;
 }
 
 }  // namespace inpact::parser

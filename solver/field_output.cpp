@@ -145,8 +145,11 @@ bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key
 constexpr const char* kContactKeys[] = {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN",
                                         "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFS"};
 
+/// Contact pairs (model or step data) or general contact with inclusions: the model has contact
+/// rows, and Abaqus's preselection (CSTRESS, CDISP) applies to both kinds alike.
 bool model_has_contact(const model::Model& m) {
   if (!m.contact_pairs.empty()) return true;
+  if (m.general_contact.defined && !m.general_contact.inclusions.empty()) return true;
   return std::any_of(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return !s.contact_pairs.empty(); });
 }
 

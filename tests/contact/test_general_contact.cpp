@@ -142,6 +142,38 @@ TEST(GeneralContactPatchTest, UnequalBodiesReportThePressureThatActsOnBothSurfac
   }
 }
 
+// Abaqus's preselected field output holds CSTRESS and CDISP for general contact as for pairs:
+// CPRESS and COPEN, with CSHEAR1/2 and CSLIP1/2 when there is friction. Both ways of asking for
+// it: *OUTPUT, FIELD, VARIABLE=PRESELECT, and a first step without field requests (Abaqus's
+// default). The preselected CPRESS is the patch test's p at the 9 interface nodes (as above).
+TEST(GeneralContactOutput, PreselectionWritesTheContactStressAndOpening) {
+  const std::string given = "*OUTPUT, FIELD\n*NODE OUTPUT\nU, RF\n*CONTACT OUTPUT\nCPRESS, COPEN, CSTATUS, CNAREA, CFN\n";
+  const DeckDir dir;
+  for (const char* deck : {"patch_2d_general.inp", "patch_2d_general_friction.inp"})
+    for (const char* request : {"*OUTPUT, FIELD, VARIABLE=PRESELECT\n", ""}) {
+      std::string text = read_text(contact_deck(deck));
+      text.replace(text.find(given), given.size(), request);
+      auto r = verification::run_deck(dir.write("preselect.inp", text));
+      const std::string label = std::string(deck) + (*request ? " PRESELECT" : " default");
+      ASSERT_TRUE(r->outcome.completed) << label << ": " << r->outcome.message;
+      const solver::Frame& f = r->capture.last();
+      ASSERT_NE(verification::field(f, "CPRESS"), nullptr) << label;
+      ASSERT_NE(verification::field(f, "COPEN"), nullptr) << label;
+      const bool friction = std::string(deck).find("friction") != std::string::npos;
+      for (const char* key : {"CSHEAR1", "CSLIP1"})
+        EXPECT_EQ(verification::field(f, key) != nullptr, friction) << label << " " << key;
+      EXPECT_EQ(verification::field(f, "CNAREA"), nullptr) << label;  // not preselected
+      const auto& cpress = contact_field(f, "CPRESS");
+      std::size_t n_closed = 0;
+      for (double p : cpress.values)
+        if (p > 0.0) {
+          ++n_closed;
+          EXPECT_NEAR(p, kP, 0.01 * kP) << label;
+        }
+      EXPECT_EQ(n_closed, 9u) << label;
+    }
+}
+
 // Self-contact (*CONTACT PAIR with one surface, `BOTH_S,`): one surface holding both blocks'
 // contact faces. Every contact is seen from both sides, so the row has weight ½, and the default
 // method is augmented Lagrange (multipliers would constrain each contact twice). Surface to

@@ -363,9 +363,29 @@ TEST(ContactKeywordErrors, UndefinedReferencesAreFoundWhenTheDeckIsComplete) {
                                  "*CLEARANCE, SLAVE=BOTTOM, MASTER=TOP, VALUE=0.1\n"));
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:21:1: error: *CONTACT PAIR: surface 'BOTOM' is not defined (did you mean 'BOTTOM'?)"))
       << r.report();
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:21:1: error: *CONTACT PAIR: surface interaction 'NOPE' is not defined")) << r.report();
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:21:1: error: *CONTACT PAIR: node set 'NOSET' is not defined")) << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:28: error: *CONTACT PAIR: surface interaction 'NOPE' is not defined"))
+      << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:41: error: *CONTACT PAIR: node set 'NOSET' is not defined")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:22:1: error: *CLEARANCE: no *CONTACT PAIR has slave 'BOTTOM' and master 'TOP'"))
+      << r.report();
+}
+
+// An undefined name is reported where the deck writes it: INTERACTION= (and GEOMETRIC
+// CORRECTION=) on the *CONTACT PAIR keyword line, not the pair's data line; the third field of a
+// *CONTACT PROPERTY ASSIGNMENT data line. Line 20 is the keyword line, NOPE starts at column 28.
+TEST(ContactKeywordErrors, AnUndefinedNameIsReportedWhereItIsWritten) {
+  DeckDir dir;
+  auto r = dir.read(contact_deck("*CONTACT PAIR, INTERACTION=NOPE\nTOP, BOTTOM\n"
+                                 "*SURFACE INTERACTION, NAME=I\n"
+                                 "*CONTACT PAIR, INTERACTION=I, TYPE=SURFACE TO SURFACE, GEOMETRIC CORRECTION=NOSM\n"
+                                 "TOP, BOTTOM\n"
+                                 "*CONTACT\n*CONTACT INCLUSIONS, ALL EXTERIOR\n*CONTACT PROPERTY ASSIGNMENT\n, , NOPE2\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:28: error: *CONTACT PAIR: surface interaction 'NOPE' is not defined"))
+      << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:77: error: *CONTACT PAIR: surface smoothing 'NOSM' is not defined"))
+      << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:28:5: error: *CONTACT PROPERTY ASSIGNMENT: surface interaction 'NOPE2' is not "
+                                "defined"))
       << r.report();
 }
 
