@@ -16,6 +16,7 @@
 #include "field_output.hpp"
 #include "increment_controller.hpp"
 #include "linear_solve.hpp"
+#include "material_states.hpp"
 #include "newton.hpp"
 #include "solution_controls.hpp"
 #include "step_conditions.hpp"
@@ -27,16 +28,18 @@ namespace {
 /// What a step needs while it runs, built when it starts. Not movable: the assembler keeps a
 /// reference to the DOF map beside it.
 struct StepRun {
-  StepRun(const AnalysisModel& am, std::size_t index, const ConditionHistory& history, double total_time, int threads)
+  StepRun(const AnalysisModel& am, std::size_t index, const ConditionHistory& history, double total_time, int threads,
+          MaterialStates& material_states)
       : step(am.model->steps[index]),
         number(static_cast<int>(index + 1)),
         start_time(total_time),
         conditions(am, step, history, total_time),
         dofs(DofMap::build(am, conditions.prescribed())),
-        assembler(am, dofs, threads),
+        assembler(am, dofs, threads, &material_states),
         controls(solution_controls(step)),
         output(am, index),
-        contact(std::make_unique<ContactProblem>(am, index)) {
+        contact(std::make_unique<ContactProblem>(am, index)),
+        states(material_states) {
     if (contact->empty()) contact.reset();
   }
   StepRun(const StepRun&) = delete;
@@ -51,6 +54,7 @@ struct StepRun {
   LinearSolvers solvers;  ///< their symbolic analyses last the step
   StepOutput output;
   std::unique_ptr<ContactProblem> contact;  ///< null when no contact pair is in force
+  MaterialStates& states;                   ///< the points' material history (the analysis's)
   double output_seconds = 0.0;              ///< wall time in write_output this step
 };
 
@@ -85,7 +89,7 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   // The element point values of the converged state, as its last assembly kept them.
   const ElementPoints* points = run.assembler.points_at(s.u, delta_t, run.step.nlgeom);
   OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom, delta_t,
-                                       run.contact ? &contact : nullptr, points);
+                                       run.contact ? &contact : nullptr, points, &run.states);
   if (due.any_field()) {
     Frame frame;
     frame.increment = increment;
@@ -168,6 +172,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       const Cutback cutback = inc.attempt_failed(outcome.singular, run.contact != nullptr);
       if (!cutback.retry) return {false, where + cutback.note};
       observer.message(where + cutback.note);
+      run.states.discard();  // the next attempt starts from the same committed history
     }
     const int increment = inc.increment();
     const double t = inc.end(), dt = inc.size();
@@ -175,6 +180,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
     state = std::move(trial);
     force.add(outcome.average_force);
     write_output(am, run, state, increment, t, dt, run.output.due(increment, t, inc.step_complete()), observer);
+    run.states.commit();  // after the output, which evaluates from the committed history
   }
   return {true, ""};
 }
@@ -184,6 +190,13 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
   set_blas_threads(options.threads);
   const AnalysisModel am = build_analysis_model(model);
+  MaterialStates material_states(am);
+  return run_steps(am, material_states, observer, options);
+}
+
+AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_states, AnalysisObserver& observer,
+                          const AnalysisOptions& options) {
+  const model::Model& model = *am.model;
   for (const auto& note : model.preprocessing_notes) observer.message(note);
   for (const auto& note : am.contact->notes) observer.message(note);
   ConditionHistory history = initial_history(am);
@@ -196,7 +209,7 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
-    StepRun run(am, s, history, total_time, options.threads);
+    StepRun run(am, s, history, total_time, options.threads, material_states);
     if (run.contact)
       for (const auto& line : run.contact->describe()) observer.message(fmt::format("step {} ({}): {}", s + 1, step.name, line));
     for (const auto& v : run.output.not_computed())
