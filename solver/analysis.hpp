@@ -1,6 +1,11 @@
 #pragma once
 /// The analysis: step → increment → (augmentation →) Newton iteration, as the Abaqus manual
-/// describes the loop of a static step with automatic incrementation.
+/// describes the loop of a static step with automatic incrementation:
+///   step        analysis.cpp              conditions, DOFs, contact pairs and output of the step
+///   increment   analysis.cpp              sizes from increment_controller.hpp; commits the
+///                                         material history when an increment converges
+///   augmentation augmentation.hpp         augmented-Lagrange multiplier updates
+///   iteration   newton.hpp                residual, convergence.hpp, linear_solve.hpp
 #include <string>
 
 #include "model/model.hpp"
@@ -24,5 +29,14 @@ struct AnalysisOutcome {
 /// Runs every step of `model`; progress and frames go to `observer`. Throws AnalysisError when
 /// the model cannot be analysed at all (the deck is wrong in a way only the analysis sees).
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options = {});
+
+struct AnalysisModel;
+class MaterialStates;
+
+/// The same for a model already resolved, with the points' material history in `states`
+/// (built for `am`, committed increment after increment): for callers that give elements
+/// their own material laws (tests), or look at the history afterwards.
+AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& states, AnalysisObserver& observer,
+                          const AnalysisOptions& options = {});
 
 }  // namespace inpact::solver

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <set>
 
 #include <fmt/format.h>
@@ -10,6 +12,7 @@
 #include "analysis_error.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
+#include "elements/material.hpp"
 
 namespace inpact::solver {
 
@@ -20,6 +23,38 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
   for (std::size_t i = 0; i < nodes.size(); ++i) x[i] = mesh.nodes.coords[nodes[i]];
   return x;
 }
+
+namespace {
+
+/// Each element's material law and section data. One law per section and element family (plane
+/// stress condenses the elasticity matrix), shared by the section's elements; an element no
+/// section covers keeps zero constants.
+void assign_materials(const model::Model& m, AnalysisModel& am) {
+  std::map<std::pair<std::size_t, model::ElementFamily>, const elements::Material*> laws;
+  const auto law = [&](std::size_t section, model::ElementFamily family, const elements::ElasticConstants& c) {
+    const elements::Material*& l = laws[{section, family}];
+    if (!l) l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
+    return l;
+  };
+  for (std::size_t k = 0; k < m.mesh.sections.size(); ++k) {
+    const auto& sec = m.mesh.sections[k];
+    const model::Material& mat = m.materials.at(sec.material);
+    elements::ElasticConstants c;
+    c.youngs_modulus = mat.elastic->youngs_modulus;
+    c.poissons_ratio = mat.elastic->poissons_ratio;
+    c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
+    for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
+      ElementSetup& s = am.elements[e];
+      s.material = law(k, s.type->family, c);
+      s.section.thickness = sec.thickness;
+      s.density = mat.density.value_or(0.0);
+    }
+  }
+  for (ElementSetup& s : am.elements)
+    if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {});
+}
+
+}  // namespace
 
 AnalysisModel build_analysis_model(const model::Model& m) {
   AnalysisModel am;
@@ -60,24 +95,15 @@ AnalysisModel build_analysis_model(const model::Model& m) {
     throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(e.loc), e.keyword, e.what()));
   }
 
-  for (const auto& sec : m.mesh.sections) {
-    const model::Material& mat = m.materials.at(sec.material);
-    for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
-      ElementSetup& s = am.elements[e];
-      s.material.youngs_modulus = mat.elastic->youngs_modulus;
-      s.material.poissons_ratio = mat.elastic->poissons_ratio;
-      s.material.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
-      s.section.thickness = sec.thickness;
-      s.density = mat.density.value_or(0.0);
-    }
-  }
+  assign_materials(m, am);
   // Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
   // elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
   std::set<std::pair<std::string, std::string>> locking;
   for (std::size_t e = 0; e < el.size(); ++e) {
     const ElementSetup& s = am.elements[e];
     if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
-    if (s.material.poissons_ratio > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", s.material.poissons_ratio)});
+    const double nu = s.material->elastic().poissons_ratio;
+    if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
   }
   for (const auto& [type, nu] : locking)
     am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "

@@ -1,6 +1,6 @@
 #pragma once
 /// What the analysis needs per element, resolved once from the model database: its type,
-/// material constants and section data, and the model's number of DOFs per node.
+/// material law and section data, and the model's number of DOFs per node.
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,9 +13,15 @@
 
 namespace inpact::solver {
 
+namespace elements {
+class Material;
+}
+
 struct ElementSetup {
   const model::ElementTypeInfo* type = nullptr;
-  elements::ElasticConstants material;
+  /// The law at the element's points (material.hpp), one per section and element family,
+  /// owned by AnalysisModel::materials.
+  const elements::Material* material = nullptr;
   elements::SectionData section;
   double density = 0.0;
 };
@@ -25,6 +31,7 @@ struct AnalysisModel {
   int dim = 3;  ///< DOFs per node: 3 for solids, 2 for plane and axisymmetric models
   bool axisymmetric = false;
   std::vector<ElementSetup> elements;  ///< per element row
+  std::vector<std::shared_ptr<const elements::Material>> materials;  ///< what ElementSetup::material points to
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "elements/element_kernel.hpp"
+#include "material_states.hpp"
 
 namespace inpact::solver {
 
@@ -15,7 +16,8 @@ void Assembler::element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) con
     for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * am_.dim + c);
 }
 
-Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads) : am_(am), dofs_(dofs), threads_(threads) {
+Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, MaterialStates* states)
+    : am_(am), dofs_(dofs), threads_(threads), states_(states) {
   build_pattern(nullptr);
 }
 
@@ -120,8 +122,8 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   // Gathered on the stack: no allocation per element (at most 20 nodes × 3 DOFs).
   constexpr std::size_t kMaxNodes = 32;
   if (nodes.size() > kMaxNodes) {
-    out = elements::compute_element(*setup.type, am_.coords(e), std::vector<double>(), setup.material,
-                                     setup.section, er);  // throws: no element type has this many nodes
+    elements::compute_element(*setup.type, am_.coords(e), std::vector<double>(), *setup.material, setup.section, er,
+                              {}, {}, out);  // throws: no element type has this many nodes
     return;
   }
   std::array<elements::Vec3, kMaxNodes> x;
@@ -135,10 +137,11 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
     if (!request.delta_t.empty()) dt_el[a] = request.delta_t[node];
   }
   const std::size_t n = nodes.size();
-  elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n * dim), setup.material,
+  const elements::ElementHistory history = states_ ? states_->assembly_history(e) : elements::ElementHistory{};
+  elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n * dim), *setup.material,
                             setup.section, er,
                             request.delta_t.empty() ? std::span<const double>() : std::span<const double>(dt_el).first(n),
-                            out);
+                            history, out);
 }
 
 AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int) {

@@ -11,6 +11,8 @@
 
 namespace inpact::solver {
 
+class MaterialStates;
+
 struct AssemblyRequest {
   bool tangent = true;
   bool nlgeom = false;
@@ -50,7 +52,9 @@ struct AssemblyResult {
 class Assembler {
  public:
   /// `threads`: element computations run on this many threads (the sum stays in element order).
-  Assembler(const AnalysisModel& am, const DofMap& dofs, int threads = 1);
+  /// `states`: the points' material history (material_states.hpp); every assembly evaluates
+  /// from its committed state and writes its trial state. Null: no element has state.
+  Assembler(const AnalysisModel& am, const DofMap& dofs, int threads = 1, MaterialStates* states = nullptr);
 
   /// The reduced tangent's pattern (upper triangle); assemble() fills its values.
   SparseMatrix& tangent() { return tangent_; }
@@ -109,6 +113,7 @@ class Assembler {
   const DofMap& dofs_;
   SparseMatrix tangent_;
   int threads_ = 1;
+  MaterialStates* states_ = nullptr;
   ElementPoints points_;
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;

@@ -7,6 +7,7 @@
 
 #include "assembler.hpp"
 #include "elements/element_kernel.hpp"
+#include "material_states.hpp"
 
 namespace inpact::solver {
 
@@ -321,8 +322,8 @@ namespace {
 class PointCache {
  public:
   PointCache(const AnalysisModel& am, std::span<const double> u, bool nlgeom, std::span<const double> delta_t,
-             const ElementPoints* kept)
-      : am_(am), u_(u), delta_t_(delta_t), kept_(kept), points_(am.model->mesh.elements.size()),
+             const ElementPoints* kept, const MaterialStates* states)
+      : am_(am), u_(u), delta_t_(delta_t), kept_(kept), states_(states), points_(am.model->mesh.elements.size()),
         have_(am.model->mesh.elements.size(), 0) {
     request_.stiffness = false;
     request_.internal_force = false;
@@ -340,8 +341,12 @@ class PointCache {
       for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(node) * am_.dim + c]);
       if (!delta_t_.empty()) dt_el.push_back(delta_t_[node]);
     }
-    auto sys = elements::compute_element(*setup.type, am_.coords(el), u_el, setup.material, setup.section,
-                                         request_, dt_el);
+    // From the committed history: the output of a converged increment comes before its commit.
+    std::vector<double> trial;
+    const elements::ElementHistory history = states_ ? states_->output_history(el, trial) : elements::ElementHistory{};
+    elements::ElementSystem sys;
+    elements::compute_element(*setup.type, am_.coords(el), u_el, *setup.material, setup.section, request_, dt_el,
+                              history, sys);
     points_[el] = std::move(sys.points);
     have_[el] = 1;
     return points_[el];
@@ -351,6 +356,7 @@ class PointCache {
   const AnalysisModel& am_;
   std::span<const double> u_, delta_t_;
   const ElementPoints* kept_;
+  const MaterialStates* states_;
   elements::ElementRequest request_;
   std::vector<std::vector<elements::PointResult>> points_;
   std::vector<char> have_;
@@ -678,12 +684,12 @@ FieldData contact_field(const AnalysisModel& am, const StepOutput& output, const
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
                             std::span<const double> delta_t, const ContactResults* contact,
-                            const ElementPoints* points) {
+                            const ElementPoints* points, const MaterialStates* states) {
   OutputValues out;
   if (contact)
     for (const std::string key : kContactKeys)
       if (key_due(output, due, key)) out.fields.push_back(contact_field(am, output, key, *contact));
-  PointCache cache(am, u, nlgeom, delta_t, points);
+  PointCache cache(am, u, nlgeom, delta_t, points, states);
   for (const std::string key : kFieldKeys) {
     if (!key_due(output, due, key)) continue;
     const KeyRegion where = key_region(output, key);

@@ -47,6 +47,8 @@
 
 namespace inpact::solver {
 
+class MaterialStates;
+
 struct ElementPoints;  // assembler.hpp
 
 /// The output requests in force for step `step_index` after the carry-over rules above, in
@@ -129,7 +131,8 @@ struct OutputValues {
 /// Computes the fields and print tables `due` asks for at displacement u with reactions `rf`
 /// (full DOF vectors); `delta_t` the nodal temperature change, as for the assembly. Element
 /// point values are taken from `points` (kept by the assembly at this very state) when given,
-/// else computed, only for the elements a due request covers.
+/// else computed, only for the elements a due request covers, from the committed history in
+/// `states` (null: none has state).
 /// `contact`: the contact values of the increment (null without contact), written as the
 /// NODAL contact fields CPRESS, COPEN, CSTATUS, CNAREA, CFN and, for friction, CSHEAR1/2,
 /// CSLIP1/2 and CFS (one location per slave node per pair, `pair` and `nodes` filled) for
@@ -139,7 +142,7 @@ struct OutputValues {
 OutputValues compute_output(const AnalysisModel& am, const StepOutput& output, const OutputDue& due,
                             std::span<const double> u, std::span<const double> rf, bool nlgeom,
                             std::span<const double> delta_t, const ContactResults* contact = nullptr,
-                            const ElementPoints* points = nullptr);
+                            const ElementPoints* points = nullptr, const MaterialStates* states = nullptr);
 
 /// Von Mises equivalent stress of Abaqus-ordered components 11 22 33 12 13 23:
 /// q = sqrt(½[(s11−s22)² + (s22−s33)² + (s33−s11)²] + 3(s12² + s13² + s23²)).

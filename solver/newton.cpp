@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -9,221 +10,220 @@ namespace inpact::solver {
 
 namespace {
 
-/// Largest |r| over the equations, and the DOF it sits on. `r` is the reduced residual (one
-/// entry per equation): a free DOF that masters *EQUATION dependents carries their residual
-/// too, and only that sum vanishes at equilibrium.
-std::pair<double, std::int64_t> largest_residual(const DofMap& dofs, std::span<const double> r) {
-  double worst = 0.0;
-  std::int64_t at = -1;
-  for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
-    if (dofs.kind(d) != DofMap::Kind::Free) continue;
-    const double v = std::abs(r[dofs.equation(d)]);
-    if (!(v <= worst)) {  // also catches NaN
-      worst = v;
-      at = d;
-    }
-  }
-  return {worst, at};
+/// One iteration's residual and what it is measured against.
+struct Residual {
+  AssemblyRequest request;  ///< how the elements were assembled (the solve may add the tangent)
+  AssemblyResult assembly;
+  double max = 0.0;         ///< largest |r| at a free DOF
+  std::int64_t worst = -1;  ///< its DOF
+  double q = 0.0;           ///< q̃
+};
+
+/// The iterations of one attempt and the state they share.
+class NewtonIterations {
+ public:
+  NewtonIterations(NewtonContext& ctx, double t, IncrementState& state);
+  NewtonOutcome run();
+
+ private:
+  ContactIteration update_contact(int k);
+  Residual assemble_residual(int k);
+  double largest_correction(int k) const;
+  bool failed(const Residual& res, const ContactIteration& contact);
+  bool gives_up(int k, const Residual& res, const ContactIteration& contact);
+  bool solve_correction(Residual& res);
+  void apply_correction();
+
+  NewtonContext& ctx_;
+  IncrementState& state_;
+  const DofMap& dofs_;
+  const std::size_t n_, n_eq_;  ///< DOFs, and the DOF map's equations (the multipliers follow)
+  const std::vector<double> u_start_;
+  const std::vector<double> delta_t_;
+  std::vector<double> r_full_, r_, du_;
+  std::vector<double> f_int_elements_;  ///< f_int before the contact forces are added (for q)
+  std::vector<double> history_;         ///< largest residual per iteration without a status change
+  CorrectionSolver solver_;
+  IncrementForce increment_force_;
+  bool status_changed_at_start_ = false;
+  NewtonOutcome out_;
+};
+
+NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState& state)
+    : ctx_(ctx),
+      state_(state),
+      dofs_(ctx.assembler.dofs()),
+      n_(static_cast<std::size_t>(dofs_.n_dof())),
+      n_eq_(static_cast<std::size_t>(dofs_.n_equations())),
+      u_start_(state.u),
+      delta_t_(ctx.conditions.temperature_change(t)),
+      r_full_(n_),
+      r_(n_eq_),
+      du_(n_eq_),
+      solver_(ctx.solvers) {
+  // Impose the boundary conditions of time t, then iterate on the free DOFs.
+  ctx.conditions.apply_prescribed(t, u_start_, state.u);
+  dofs_.update_dependent(state.u);
+  state.f_ext.assign(n_, 0.0);
+  ctx.conditions.external_force(t, state.f_ext);
+  state.f_int.assign(n_, 0.0);
 }
 
-/// Abaqus's q: the spatial average of the force magnitudes over the model, element nodal forces
-/// and applied loads together (without the applied loads the first iteration of a load-driven
-/// increment would see no force at all).
-/// Contact forces count too: an interference fit with no applied load has nothing else at its
-/// first iteration, and measured against zero it would "converge" with the overclosure in place.
-double average_force(const AssemblyResult& assembly, std::span<const double> f_ext, double contact_sum,
-                     std::size_t contact_count) {
-  double sum = assembly.average_force * static_cast<double>(assembly.n_force_entries) + contact_sum;
-  std::size_t count = assembly.n_force_entries + contact_count;
-  for (double f : f_ext)
-    if (f != 0.0) {
-      sum += std::abs(f);
-      ++count;
+NewtonOutcome NewtonIterations::run() {
+  // A new increment commits the friction history of the converged state it starts from.
+  if (ctx_.contact) ctx_.contact->begin_attempt(state_.contact, ctx_.at.step, ctx_.at.increment, u_start_);
+  for (int k = 0;; ++k) {
+    const ContactIteration contact = update_contact(k);
+    Residual res = assemble_residual(k);
+    const double max_correction = largest_correction(k);
+    ctx_.observer.iteration({ctx_.at.step, ctx_.at.increment, ctx_.at.attempt, k, res.max,
+                             res.q > 0 ? res.max / res.q : 0.0, std::abs(max_correction), res.worst});
+    if (failed(res, contact)) return out_;
+    const ConvergenceCheck check = check_convergence(
+        {.iteration = k, .max_residual = res.max, .q = res.q, .max_correction = std::abs(max_correction),
+         .max_increment = largest_increment(state_.u, u_start_), .contact_status_changed = contact.blocks_convergence,
+         .max_gap_error = contact.max_gap_error},
+        ctx_.controls);
+    if (check.converged) {
+      out_.converged = true;
+      return out_;
     }
-  return count ? sum / static_cast<double>(count) : 0.0;
+    if (gives_up(k, res, contact) || !solve_correction(res)) return out_;
+    apply_correction();
+  }
+}
+
+/// Contact search, projection and status at u_k (may resize the system: multipliers).
+ContactIteration NewtonIterations::update_contact(int k) {
+  ContactIteration contact;
+  if (!ctx_.contact) return contact;
+  contact = ctx_.contact->update(state_.u, state_.contact, ctx_.assembler);
+  // A severe discontinuity iteration: one in which a contact status changed. Changes found
+  // before the first solve (the start of the increment) belong to the first iteration, so
+  // SEVERE never exceeds TOTAL in the .sta.
+  if (k == 0) status_changed_at_start_ = contact.status_changes > 0;
+  else if (contact.status_changes > 0 || (k == 1 && status_changed_at_start_)) ++out_.severe_iterations;
+  return contact;
+}
+
+/// r = f_ext − f_int(u_k) over the equations (elements, then contact forces and constraint
+/// rows), its largest entry and q̃.
+Residual NewtonIterations::assemble_residual(int k) {
+  const std::size_t n_sys = static_cast<std::size_t>(ctx_.assembler.n_equations());
+  r_.assign(n_sys, 0.0);
+  du_.resize(n_sys, 0.0);
+  Residual res;
+  // From the second pass on the residual alone decides convergence (a linear step converges
+  // there); the tangent is assembled in solve_correction only when another solve follows.
+  res.request.tangent = k == 0 || ctx_.contact != nullptr;
+  res.request.nlgeom = ctx_.nlgeom;
+  res.request.delta_t = delta_t_;
+  // The first pass seldom converges (it would need no residual at all to start with): its
+  // points are not kept, and should it converge the output computes them instead.
+  res.request.points = ctx_.keep_points && k > 0;
+  res.assembly = ctx_.assembler.assemble(state_.u, res.request, state_.f_int);
+  double contact_force_sum = 0.0;
+  std::size_t contact_force_count = 0;
+  if (ctx_.contact) {
+    f_int_elements_.assign(state_.f_int.begin(), state_.f_int.end());
+    ctx_.contact->assemble(state_.contact, state_.f_int, ctx_.assembler);
+    for (std::size_t d = 0; d < n_; ++d)
+      if (const double fc = state_.f_int[d] - f_int_elements_[d]; fc != 0.0) {
+        contact_force_sum += std::abs(fc);
+        ++contact_force_count;
+      }
+  }
+  for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d];
+  ctx_.assembler.reduce(r_full_, std::span(r_).first(n_eq_));
+  if (ctx_.contact) ctx_.contact->constraint_residual(state_.contact, std::span(r_).subspan(n_eq_));
+
+  std::tie(res.max, res.worst) = largest_residual(dofs_, r_);
+  const double q_now = average_force(res.assembly, state_.f_ext, contact_force_sum, contact_force_count);
+  out_.max_residual = res.max;
+  out_.worst_dof = res.worst;
+  out_.iterations = k;
+  const double q_without_contact = ctx_.contact ? average_force(res.assembly, state_.f_ext, 0.0, 0) : q_now;
+  out_.average_force = increment_force_.update(q_without_contact, q_now);
+  res.q = ctx_.force_history.with(out_.average_force);
+  return res;
+}
+
+/// The signed displacement correction of largest magnitude of the last solve (0 before one).
+double NewtonIterations::largest_correction(int k) const {
+  if (k == 0 || n_eq_ == 0) return 0.0;
+  return *std::max_element(du_.begin(), du_.begin() + static_cast<std::ptrdiff_t>(n_eq_),
+                           [](double a, double b) { return std::abs(a) < std::abs(b); });
+}
+
+/// A state no iteration can recover from.
+bool NewtonIterations::failed(const Residual& res, const ContactIteration& contact) {
+  if (!std::isfinite(res.max)) {
+    out_.failure = "the residual is not a number (NaN or infinite)";
+    return true;
+  }
+  if (res.assembly.min_jacobian <= 0.0) {
+    out_.failure = fmt::format("element {} is turned inside out (Jacobian {:.3g})",
+                               ctx_.am.model->mesh.elements.labels[res.assembly.min_jacobian_element],
+                               res.assembly.min_jacobian);
+    return true;
+  }
+  if (!contact.failure.empty()) {
+    out_.failure = contact.failure;
+    return true;
+  }
+  return false;
+}
+
+/// Too many iterations, or a residual that grows twice in a row.
+bool NewtonIterations::gives_up(int k, const Residual& res, const ContactIteration& contact) {
+  // Severe discontinuity iterations count apart (Abaqus: I_S = 50 of them, I_C equilibrium
+  // ones) and stay out of the divergence check.
+  if (contact.status_changes == 0) history_.push_back(res.max);
+  if (k - out_.severe_iterations >= ctx_.controls.max_iterations || out_.severe_iterations > kMaxSevereIterations) {
+    out_.failure = fmt::format("no convergence in {} iterations ({} with contact status changes)", k,
+                               out_.severe_iterations);
+    return true;
+  }
+  const std::size_t h = history_.size();
+  if (k >= ctx_.controls.divergence_check_after && h >= 3 && history_[h - 1] > history_[h - 2] &&
+      history_[h - 2] > history_[h - 3]) {
+    out_.failure = "the residual grows in two consecutive iterations (diverging)";
+    return true;
+  }
+  return false;
+}
+
+/// K Δu = r; the tangent of an unsymmetric contact formulation (friction) is given in full.
+bool NewtonIterations::solve_correction(Residual& res) {
+  if (!res.request.tangent) {  // same u: f_int comes out the same, now with K(u_k)
+    res.request.tangent = true;
+    res.request.points = false;  // the points kept above are at this u already
+    ctx_.assembler.assemble(state_.u, res.request, state_.f_int);
+  }
+  const SparseMatrix* tangent = &ctx_.assembler.tangent();
+  if (ctx_.contact && ctx_.contact->unsymmetric()) tangent = &ctx_.contact->unsymmetric_tangent(*tangent);
+  const std::size_t n_sys = static_cast<std::size_t>(ctx_.assembler.n_equations());
+  CorrectionOutcome solved = solver_.solve(*tangent, n_sys > n_eq_, r_, du_, n_eq_, ctx_.am.size);
+  if (solved.solved) return true;
+  out_.failure = std::move(solved.failure);
+  out_.singular = solved.singular;
+  return false;
+}
+
+/// u_{k+1} = u_k + Δu on the free DOFs, the dependents follow; contact multipliers too.
+void NewtonIterations::apply_correction() {
+  for (std::int64_t d = 0; d < dofs_.n_dof(); ++d) {
+    const std::int64_t eq = dofs_.equation(d);
+    if (eq >= 0) state_.u[d] += du_[eq];
+  }
+  dofs_.update_dependent(state_.u);
+  if (ctx_.contact) ctx_.contact->apply_correction(std::span<const double>(du_).subspan(n_eq_), state_.contact);
 }
 
 }  // namespace
 
 NewtonOutcome solve_increment(NewtonContext& ctx, double t, IncrementState& state) {
-  const DofMap& dofs = ctx.assembler.dofs();
-  const std::size_t n = static_cast<std::size_t>(dofs.n_dof());
-  const std::size_t n_eq = static_cast<std::size_t>(dofs.n_equations());
-  const std::vector<double> u_start = state.u;
-  const std::vector<double> delta_t = ctx.conditions.temperature_change(t);
-
-  // Impose the boundary conditions of time t, then iterate on the free DOFs.
-  ctx.conditions.apply_prescribed(t, u_start, state.u);
-  dofs.update_dependent(state.u);
-  state.f_ext.assign(n, 0.0);
-  ctx.conditions.external_force(t, state.f_ext);
-  state.f_int.assign(n, 0.0);
-
-  std::vector<double> r_full(n), r(n_eq), du(n_eq);
-  std::vector<double> f_int_elements;  // f_int before the contact forces are added (for q)
-  NewtonOutcome out;
-  std::vector<double> history;  // largest residual per iteration
-  LinearSolver* solver = &ctx.cholmod;
-  double increment_force = 0.0;
-  bool status_changed_at_start = false;
-
-  // A new increment commits the friction history of the converged state it starts from.
-  if (ctx.contact) ctx.contact->begin_attempt(state.contact, ctx.step_number, ctx.increment, u_start);
-  for (int k = 0;; ++k) {
-    // Contact search, projection and status at u_k (may resize the system: multipliers).
-    ContactIteration contact;
-    if (ctx.contact) {
-      contact = ctx.contact->update(state.u, state.contact, ctx.assembler);
-      // A severe discontinuity iteration: one in which a contact status changed. Changes found
-      // before the first solve (the start of the increment) belong to the first iteration, so
-      // SEVERE never exceeds TOTAL in the .sta.
-      if (k == 0) status_changed_at_start = contact.status_changes > 0;
-      else if (contact.status_changes > 0 || (k == 1 && status_changed_at_start)) ++out.severe_iterations;
-    }
-    const std::size_t n_sys = static_cast<std::size_t>(ctx.assembler.n_equations());
-    r.assign(n_sys, 0.0);
-    du.resize(n_sys, 0.0);
-    AssemblyRequest request;
-    // From the second pass on the residual alone decides convergence (a linear step converges
-    // there); the tangent is assembled below only when another solve follows.
-    request.tangent = k == 0 || ctx.contact != nullptr;
-    request.nlgeom = ctx.nlgeom;
-    request.delta_t = delta_t;
-    // The first pass seldom converges (it would need no residual at all to start with): its
-    // points are not kept, and should it converge the output computes them instead.
-    request.points = ctx.keep_points && k > 0;
-    const AssemblyResult asm_result = ctx.assembler.assemble(state.u, request, state.f_int);
-    double contact_force_sum = 0.0;
-    std::size_t contact_force_count = 0;
-    if (ctx.contact) {
-      f_int_elements.assign(state.f_int.begin(), state.f_int.end());
-      ctx.contact->assemble(state.contact, state.f_int, ctx.assembler);
-      for (std::size_t d = 0; d < n; ++d)
-        if (const double fc = state.f_int[d] - f_int_elements[d]; fc != 0.0) {
-          contact_force_sum += std::abs(fc);
-          ++contact_force_count;
-        }
-    }
-    for (std::size_t d = 0; d < n; ++d) r_full[d] = state.f_ext[d] - state.f_int[d];
-    ctx.assembler.reduce(r_full, std::span(r).first(n_eq));
-    if (ctx.contact) ctx.contact->constraint_residual(state.contact, std::span(r).subspan(n_eq));
-
-    const auto [max_r, worst] = largest_residual(dofs, r);
-    const double q_now = average_force(asm_result, state.f_ext, contact_force_sum, contact_force_count);
-    out.max_residual = max_r;
-    out.worst_dof = worst;
-    out.iterations = k;
-    // q̃: the force magnitude averaged over the step's converged increments and this one, where
-    // this one counts with the largest element-and-load q of its iterations (a rigid-body move
-    // ends with nearly no force at all; measured against its own round-off it would never
-    // converge, against the forces its first iteration met, it does) or this iteration's q with
-    // the contact forces, if larger. Contact forces count only in the iteration that has them:
-    // a stiff penalty's first-iteration spike (an overclosure times 1000 k_e) would otherwise
-    // loosen the test for the whole increment and accept a residual the size of a node's force.
-    const double q_without_contact = ctx.contact ? average_force(asm_result, state.f_ext, 0.0, 0) : q_now;
-    increment_force = std::max(increment_force, q_without_contact);
-    out.average_force = std::max(increment_force, q_now);
-    const double q = (ctx.force_sum + out.average_force) / (ctx.force_count + 1);
-    double max_correction = 0.0;
-    if (k > 0 && n_eq > 0)
-      max_correction = *std::max_element(du.begin(), du.begin() + static_cast<std::ptrdiff_t>(n_eq),
-                                         [](double a, double b) { return std::abs(a) < std::abs(b); });
-    ctx.observer.iteration({ctx.step_number, ctx.increment, ctx.attempt, k, max_r, q > 0 ? max_r / q : 0.0,
-                            std::abs(max_correction), worst});
-
-    if (!std::isfinite(max_r)) {
-      out.failure = "the residual is not a number (NaN or infinite)";
-      return out;
-    }
-    if (asm_result.min_jacobian <= 0.0) {
-      out.failure = fmt::format("element {} is turned inside out (Jacobian {:.3g})",
-                                ctx.am.model->mesh.elements.labels[asm_result.min_jacobian_element],
-                                asm_result.min_jacobian);
-      return out;
-    }
-    if (!contact.failure.empty()) {
-      out.failure = contact.failure;
-      return out;
-    }
-    // Convergence (from the second pass on, a correction exists to judge).
-    double max_du_inc = 0.0;
-    for (std::size_t d = 0; d < n; ++d) max_du_inc = std::max(max_du_inc, std::abs(state.u[d] - u_start[d]));
-    // Contact: no status change in this iteration, and the closed direct nodes on the surface
-    // (|g| ≤ C_ε max|Δu|, C_ε = 1e-3: Abaqus's contact compatibility tolerance, *CONTROLS FIELD).
-    const bool contact_ok = !contact.blocks_convergence && contact.max_gap_error <= 1e-3 * max_du_inc + 1e-14;
-    const bool no_force = q <= 0.0;  // nothing loads the model: equilibrium is exact or nothing
-    if (contact_ok && (no_force || max_r <= ctx.controls.linear_tolerance * q)) {
-      out.converged = true;  // Abaqus accepts a residual this small without the correction test
-      return out;
-    }
-    if (contact_ok && k > 0 && max_r <= ctx.controls.residual_tolerance * q &&
-        std::abs(max_correction) <= ctx.controls.correction_tolerance * max_du_inc) {
-      out.converged = true;
-      return out;
-    }
-    // Severe discontinuity iterations count apart (Abaqus: I_S = 50 of them, I_C equilibrium
-    // ones) and stay out of the divergence check.
-    if (contact.status_changes == 0) history.push_back(max_r);
-    if (k - out.severe_iterations >= ctx.controls.max_iterations || out.severe_iterations > kMaxSevereIterations) {
-      out.failure = fmt::format("no convergence in {} iterations ({} with contact status changes)", k, out.severe_iterations);
-      return out;
-    }
-    const std::size_t h = history.size();
-    if (k >= ctx.controls.divergence_check_after && h >= 3 && history[h - 1] > history[h - 2] &&
-        history[h - 2] > history[h - 3]) {
-      out.failure = "the residual grows in two consecutive iterations (diverging)";
-      return out;
-    }
-
-    // Solve K Δu = r; a tangent that is not positive definite (or a saddle-point system with
-    // contact multipliers) goes to UMFPACK, and so does an unsymmetric one (friction), given
-    // in full.
-    if (!request.tangent) {  // same u: f_int comes out the same, now with K(u_k)
-      request.tangent = true;
-      request.points = false;  // the points kept above are at this u already
-      ctx.assembler.assemble(state.u, request, state.f_int);
-    }
-    const SparseMatrix* tangent = &ctx.assembler.tangent();
-    if (ctx.contact && ctx.contact->unsymmetric()) tangent = &ctx.contact->unsymmetric_tangent(*tangent);
-    if (n_sys > n_eq || !tangent->upper_only) solver = &ctx.umfpack;
-    FactorStatus status = solver->factorize(*tangent);
-    if (status == FactorStatus::NotPositiveDefinite) {
-      solver = &ctx.umfpack;
-      status = solver->factorize(*tangent);
-    }
-    if (status == FactorStatus::Singular || status == FactorStatus::NotPositiveDefinite) {
-      out.failure = "the stiffness matrix is singular: a part of the model is free to move as a rigid body "
-                    "(check its boundary conditions)";
-      out.singular = true;
-      return out;
-    }
-    if (status == FactorStatus::OutOfMemory) {
-      out.failure = "out of memory in the factorisation";
-      return out;
-    }
-    solver->solve(r, du);
-    // A rigid-body mode often factorises with round-off pivots instead of failing: its
-    // correction is then absurdly large. Say what it is rather than iterate on it.
-    double largest_du = 0.0;  // over the displacement equations (not the contact multipliers)
-    bool finite = true;
-    for (std::size_t i = 0; i < n_eq; ++i) {
-      finite = finite && std::isfinite(du[i]);
-      largest_du = std::max(largest_du, std::abs(du[i]));
-    }
-    if (!finite || largest_du > 1e8 * ctx.am.size) {
-      out.failure = fmt::format("the stiffness matrix is singular: a part of the model is free to move as a rigid "
-                                "body (check its boundary conditions); the correction was {:.3g}, {:.3g} times the "
-                                "model size", largest_du, largest_du / ctx.am.size);
-      out.singular = true;
-      return out;
-    }
-    for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
-      const std::int64_t eq = dofs.equation(d);
-      if (eq >= 0) state.u[d] += du[eq];
-    }
-    dofs.update_dependent(state.u);
-    if (ctx.contact) ctx.contact->apply_correction(std::span<const double>(du).subspan(n_eq), state.contact);
-  }
+  return NewtonIterations(ctx, t, state).run();
 }
 
 }  // namespace inpact::solver

@@ -1,16 +1,24 @@
 #pragma once
 /// The Newton iterations of one increment attempt:
-///   K(u_k) Δu = f_ext(t) − f_int(u_k),  u_{k+1} = u_k + Δu,
-/// until the largest residual is below R_n · q̃ (q̃: the force averaged over the step so far)
-/// and the largest correction below C_n · the largest displacement increment — Abaqus's
-/// default criteria for a displacement field.
+///   K(u_k) Δu = f_ext(t) − f_int(u_k),  u_{k+1} = u_k + Δu.
+/// Each iteration, as the Abaqus manual describes it:
+///   1. contact search and status at u_k (a status change makes it a severe discontinuity
+///      iteration);
+///   2. assemble the residual r = f_ext − f_int (elements, then contact) and measure it against
+///      q̃, the force averaged over the step so far;
+///   3. check convergence (convergence.hpp): residual ≤ R_n q̃ and correction ≤ C_n Δu_max, or a
+///      residual R_l times smaller outright, with contact compatibility;
+///   4. give up on NaN, an inverted element, a contact failure, too many iterations or a residual
+///      that grows twice in a row;
+///   5. solve K Δu = r (linear_solve.hpp: CHOLMOD → UMFPACK, the rigid-body guard) and correct u.
 #include <span>
 #include <string>
 #include <vector>
 
 #include "assembler.hpp"
 #include "contact_problem.hpp"
-#include "linear/linear_solver.hpp"
+#include "convergence.hpp"
+#include "linear_solve.hpp"
 #include "observer.hpp"
 #include "solution_controls.hpp"
 #include "step_conditions.hpp"
@@ -36,21 +44,24 @@ struct NewtonOutcome {
   bool singular = false;  ///< a rigid-body mode: a smaller increment cannot help
 };
 
-/// Everything one increment attempt needs.
+/// Which attempt this is, for the progress records and the contact history.
+struct AttemptId {
+  int step = 0, increment = 0, attempt = 0;  ///< all 1-based
+};
+
+/// Everything one increment attempt needs: what the step keeps (model, conditions, assembly,
+/// solvers, controls, contact) and what the increment loop knows (q̃'s history, the attempt).
 struct NewtonContext {
   const AnalysisModel& am;
   const StepConditions& conditions;
   Assembler& assembler;
-  LinearSolver& cholmod;
-  LinearSolver& umfpack;  ///< used when the tangent is not positive definite
+  LinearSolvers& solvers;
   const SolutionControls& controls;
   AnalysisObserver& observer;
-  bool nlgeom;
-  /// Sum and count of q over the converged increments of the step (time averaging).
-  double force_sum;
-  int force_count;
-  int step_number, increment, attempt;
   ContactProblem* contact = nullptr;  ///< the step's contact pairs, or null
+  bool nlgeom = false;
+  TimeAveragedForce force_history;  ///< q over the converged increments of the step (q̃)
+  AttemptId at;
   /// The increment writes element output (S, E) if it converges: every assembly keeps its
   /// point results, so that the output reads those of the converged state.
   bool keep_points = false;

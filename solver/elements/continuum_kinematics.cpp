@@ -35,28 +35,8 @@ double plane_stress_e33(const ElasticConstants& m, const Vec6& e, double eth) {
 
 }  // namespace
 
-Mat6 elasticity_matrix(ElementFamily family, const ElasticConstants& m) {
-  const double E = m.youngs_modulus, nu = m.poissons_ratio;
-  const double mu = E / (2 * (1 + nu));
-  Mat6 D = Mat6::Zero();
-  if (family == ElementFamily::PlaneStress) {
-    const double c = E / (1 - nu * nu);
-    D(0, 0) = D(1, 1) = c;
-    D(0, 1) = D(1, 0) = c * nu;
-    D(3, 3) = mu;
-    return D;
-  }
-  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) D(i, j) = lambda;
-    D(i, i) = lambda + 2 * mu;
-    D(i + 3, i + 3) = mu;
-  }
-  return D;
-}
-
-PointState point_state(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const PointData& pd,
-                       const Eigen::Ref<const Eigen::VectorXd>& u) {
+PointState point_kinematics(ElementFamily family, int dim, bool nlgeom, const PointData& pd,
+                            const Eigen::Ref<const Eigen::VectorXd>& u) {
   PointState st;
   const int n = static_cast<int>(pd.N.size());
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();  // ∇₀u
@@ -75,9 +55,6 @@ PointState point_state(ElementFamily family, int dim, const Mat6& D, bool nlgeom
   } else {
     st.strain << H(0, 0), H(1, 1), H(2, 2), H(0, 1) + H(1, 0), H(0, 2) + H(2, 0), H(1, 2) + H(2, 1);
   }
-  Vec6 eth = Vec6::Zero();
-  eth.head<3>().setConstant(pd.thermal_strain);
-  st.stress = D * (st.strain - eth);
   return st;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-/// One integration point of a continuum element: elasticity matrix, strain–displacement
-/// operator, stress, and the point's contribution to the element stiffness and internal force.
+/// One integration point of a continuum element: deformation and strain, the strain–displacement
+/// operator, and the point's contribution to the element stiffness and internal force; the
+/// stress and its tangent D come from the point's material (material.hpp).
 /// Small strain and total Lagrangian share one code path:
 ///
 ///   F = I + Σ_a u_a ⊗ ∇₀N_a            (CAX: F33 = 1 + u_r/R, the hoop stretch)
@@ -19,17 +20,9 @@
 #include <Eigen/Core>
 
 #include "element_kernel.hpp"
+#include "material.hpp"
 
 namespace inpact::solver::elements {
-
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-
-/// The elasticity matrix in Voigt order 11, 22, 33, 12, 13, 23 (engineering shear):
-/// 3D/plane strain/axisymmetric: the isotropic 3D matrix (λ + 2μ on the diagonal, μ for shear);
-/// plane stress: the in-plane matrix condensed for σ33 = 0, E/(1−ν²)[[1, ν], [ν, 1]] and μ for 12,
-/// zero rows/columns for 33, 13, 23.
-Mat6 elasticity_matrix(model::ElementFamily family, const ElasticConstants& m);
 
 /// Reference-configuration data of one integration point.
 struct PointData {
@@ -46,12 +39,12 @@ struct PointState {
   Vec6 stress = Vec6::Zero();  ///< σ or S
 };
 
-/// Evaluates F, the strain and the stress at the point for the DOF vector u (node-major, `dim`
-/// per row of pd.grad).
-PointState point_state(model::ElementFamily family, int dim, const Mat6& D, bool nlgeom, const PointData& pd,
-                       const Eigen::Ref<const Eigen::VectorXd>& u);
+/// Evaluates F and the strain at the point for the DOF vector u (node-major, `dim` per row of
+/// pd.grad); the stress is the material's (material.hpp).
+PointState point_kinematics(model::ElementFamily family, int dim, bool nlgeom, const PointData& pd,
+                            const Eigen::Ref<const Eigen::VectorXd>& u);
 
-/// Adds Bᵀσ dV to f and Bᵀ D B dV (+ K_σ) to K (either may be null).
+/// Adds Bᵀσ dV to f and Bᵀ D B dV (+ K_σ) to K (either may be null); D is the material tangent.
 void add_point_contribution(model::ElementFamily family, int dim, const Mat6& D, bool nlgeom,
                             const PointData& pd, const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K);
 

@@ -12,6 +12,7 @@
 #include "continuum_kinematics.hpp"
 #include "hourglass.hpp"
 #include "incompatible_modes.hpp"
+#include "material.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
 
@@ -64,14 +65,19 @@ struct Assembled {
   std::vector<PointState> states;
 };
 
-Assembled assemble(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const std::vector<PointData>& pts,
-                   const Eigen::VectorXd& u, bool want_k) {
+/// f and (want_k) K of the points at u, the material evaluated at each from its history.
+template <class Law>
+Assembled assemble(ElementFamily family, int dim, const Law& law, bool nlgeom, const std::vector<PointData>& pts,
+                   const Eigen::VectorXd& u, bool want_k, const ElementHistory& history) {
   Assembled r;
   r.f = Eigen::VectorXd::Zero(u.size());
   if (want_k) r.K = Eigen::MatrixXd::Zero(u.size(), u.size());
-  for (const PointData& pd : pts) {
-    r.states.push_back(point_state(family, dim, D, nlgeom, pd, u));
-    add_point_contribution(family, dim, D, nlgeom, pd, r.states.back(), &r.f, want_k ? &r.K : nullptr);
+  Mat6 scratch;  // the tangent of a material whose tangent varies
+  for (std::size_t p = 0; p < pts.size(); ++p) {
+    const PointData& pd = pts[p];
+    PointState& st = r.states.emplace_back(point_kinematics(family, dim, nlgeom, pd, u));
+    const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain}, history.at(p), st.stress, scratch);
+    add_point_contribution(family, dim, D, nlgeom, pd, st, &r.f, want_k ? &r.K : nullptr);
   }
   return r;
 }
@@ -117,91 +123,114 @@ const Hex8Rule& hex8_rule(const model::ElementTypeInfo& type) {
   return rule;
 }
 
-void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                  const ElasticConstants& material, const ElementRequest& request, std::span<const double> delta_t,
-                  ElementSystem& sys) {
-  const Hex8Rule& rule = hex8_rule(type);
-  const Mat6 D = elasticity_matrix(ElementFamily::Solid3D, material);
+/// The points' gradients ∇₀N_a and volumes; returns the smallest det J.
+struct Hex8Geometry {
   Mat83 X;
+  std::array<Mat83, 8> grad;
+  std::array<double, 8> dv{};
+};
+
+double hex8_geometry(const Hex8Rule& rule, std::span<const Vec3> coords, Hex8Geometry& geo) {
   for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) X(a, i) = coords[a][i];
+    for (int i = 0; i < 3; ++i) geo.X(a, i) = coords[a][i];
+  double min_jacobian = std::numeric_limits<double>::infinity();
+  for (int p = 0; p < 8; ++p) {
+    const Eigen::Matrix3d J = geo.X.transpose() * rule.dN[p];
+    const double det = J.determinant();
+    min_jacobian = std::min(min_jacobian, det);
+    geo.grad[p] = det != 0.0 ? Mat83(rule.dN[p] * J.inverse()) : Mat83::Zero();
+    geo.dv[p] = rule.weight[p] * det;
+  }
+  return min_jacobian;
+}
+
+/// B(k, a·3 + i) = ∂E_k/∂u_ai at a point with gradients g (F = I for small strain).
+Mat6x24 hex8_b(const Eigen::Matrix3d& Fb, const Mat83& g) {
+  Mat6x24 B;
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i) {
+      auto col = B.col(a * 3 + i);
+      for (int k = 0; k < 3; ++k) col(k) = Fb(i, k) * g(a, k);
+      for (int k = 3; k < 6; ++k) col(k) = Fb(i, kVi[k]) * g(a, kVj[k]) + Fb(i, kVj[k]) * g(a, kVi[k]);
+    }
+  return B;
+}
+
+/// The hex8 point's output: Cauchy stress and strain at its reference coordinates.
+void hex8_output(const Hex8Rule& rule, const Hex8Geometry& geo, int p, const ElasticConstants& elastic, bool nlgeom,
+                 const Eigen::Matrix3d& F, const Vec6& strain, const Vec6& stress, ElementSystem& sys) {
+  PointData pd;  // point_output reads the volume (and the thermal strain only in plane stress)
+  pd.dv = geo.dv[p];
+  PointState st;
+  st.F = F;
+  st.strain = strain;
+  st.stress = stress;
+  PointResult& out = sys.points.emplace_back();
+  point_output(ElementFamily::Solid3D, elastic, nlgeom, pd, st, out);
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i) out.coords[i] += rule.N[p][a] * geo.X(a, i);
+}
+
+/// Point p's share of f and K (and its output): state F = I + ∇₀u, strain, the material's stress.
+template <class Law>
+void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<const double> u, const Law& law,
+                const ElementRequest& request, std::span<const double> delta_t, const PointHistory& history,
+                Vec24& f, Mat24& K, ElementSystem& sys) {
+  const Mat83& g = geo.grad[p];
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i) H.row(i) += u[a * 3 + i] * g.row(a);
+  const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
+  Vec6 strain;
+  if (request.nlgeom) {
+    const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+    strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
+  } else {
+    strain << H(0, 0), H(1, 1), H(2, 2), H(0, 1) + H(1, 0), H(0, 2) + H(2, 0), H(1, 2) + H(2, 1);
+  }
+  double thermal_strain = 0.0;
+  if (!delta_t.empty()) {
+    double dt = 0.0;
+    for (int a = 0; a < 8; ++a) dt += rule.N[p][a] * delta_t[a];
+    thermal_strain = law.elastic().expansion * dt;
+  }
+  Vec6 stress;
+  Mat6 scratch;
+  const Mat6& D = law.update({F, strain, thermal_strain}, history, stress, scratch);
+  const Mat6x24 B = hex8_b(request.nlgeom ? F : Eigen::Matrix3d::Identity(), g);
+  f.noalias() += (B.transpose() * stress) * geo.dv[p];
+  if (request.point_output) hex8_output(rule, geo, p, law.elastic(), request.nlgeom, F, strain, stress, sys);
+  if (!request.stiffness) return;
+  const Mat6x24 DB = (D * geo.dv[p]) * B;
+  K.noalias() += B.transpose() * DB;
+  if (!request.nlgeom) return;
+  Eigen::Matrix3d S;  // geometric (initial-stress) stiffness
+  S << stress(0), stress(3), stress(4), stress(3), stress(1), stress(5), stress(4), stress(5), stress(2);
+  const Eigen::Matrix<double, 8, 8> G = g * S * g.transpose() * geo.dv[p];
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b)
+      for (int i = 0; i < 3; ++i) K(a * 3 + i, b * 3 + i) += G(a, b);
+}
+
+template <class Law>
+void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                  const Law& law, const ElementRequest& request, std::span<const double> delta_t,
+                  const ElementHistory& history, ElementSystem& sys) {
+  const Hex8Rule& rule = hex8_rule(type);
   sys.n_dof = 24;
   sys.local_iterations = 0;
   sys.points.clear();
-
-  std::array<Mat83, 8> grad;
-  std::array<double, 8> dv{};
-  sys.min_jacobian = std::numeric_limits<double>::infinity();
-  for (int p = 0; p < 8; ++p) {
-    const Eigen::Matrix3d J = X.transpose() * rule.dN[p];
-    const double det = J.determinant();
-    sys.min_jacobian = std::min(sys.min_jacobian, det);
-    grad[p] = det != 0.0 ? Mat83(rule.dN[p] * J.inverse()) : Mat83::Zero();
-    dv[p] = rule.weight[p] * det;
-  }
+  Hex8Geometry geo;
+  sys.min_jacobian = hex8_geometry(rule, coords, geo);
   if (sys.min_jacobian <= 0.0) {  // the caller reports the distorted element
     sys.internal_force.clear();
     sys.stiffness.clear();
     return;
   }
-
   Vec24 f = Vec24::Zero();
   Mat24 K;
   if (request.stiffness) K.setZero();
-  for (int p = 0; p < 8; ++p) {
-    const Mat83& g = grad[p];
-    // State: F = I + ∇₀u, strain, σ = D(ε − ε_th).
-    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < 8; ++a)
-      for (int i = 0; i < 3; ++i) H.row(i) += u[a * 3 + i] * g.row(a);
-    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
-    Vec6 strain;
-    if (request.nlgeom) {
-      const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
-      strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
-    } else {
-      strain << H(0, 0), H(1, 1), H(2, 2), H(0, 1) + H(1, 0), H(0, 2) + H(2, 0), H(1, 2) + H(2, 1);
-    }
-    Vec6 eth = Vec6::Zero();
-    if (!delta_t.empty()) {
-      double dt = 0.0;
-      for (int a = 0; a < 8; ++a) dt += rule.N[p][a] * delta_t[a];
-      eth.head<3>().setConstant(material.expansion * dt);
-    }
-    const Vec6 stress = D * (strain - eth);
-    // B(k, a·3 + i) = ∂E_k/∂u_ai (F = I for small strain).
-    const Eigen::Matrix3d Fb = request.nlgeom ? F : Eigen::Matrix3d::Identity();
-    Mat6x24 B;
-    for (int a = 0; a < 8; ++a)
-      for (int i = 0; i < 3; ++i) {
-        auto col = B.col(a * 3 + i);
-        for (int k = 0; k < 3; ++k) col(k) = Fb(i, k) * g(a, k);
-        for (int k = 3; k < 6; ++k) col(k) = Fb(i, kVi[k]) * g(a, kVj[k]) + Fb(i, kVj[k]) * g(a, kVi[k]);
-      }
-    f.noalias() += (B.transpose() * stress) * dv[p];
-    if (request.point_output) {
-      PointData pd;  // point_output reads the volume (and the thermal strain only in plane stress)
-      pd.dv = dv[p];
-      PointState st;
-      st.F = F;
-      st.strain = strain;
-      st.stress = stress;
-      PointResult& out = sys.points.emplace_back();
-      point_output(ElementFamily::Solid3D, material, request.nlgeom, pd, st, out);
-      for (int a = 0; a < 8; ++a)
-        for (int i = 0; i < 3; ++i) out.coords[i] += rule.N[p][a] * X(a, i);
-    }
-    if (!request.stiffness) continue;
-    const Mat6x24 DB = (D * dv[p]) * B;
-    K.noalias() += B.transpose() * DB;
-    if (!request.nlgeom) continue;
-    Eigen::Matrix3d S;  // geometric (initial-stress) stiffness
-    S << stress(0), stress(3), stress(4), stress(3), stress(1), stress(5), stress(4), stress(5), stress(2);
-    const Eigen::Matrix<double, 8, 8> G = g * S * g.transpose() * dv[p];
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; ++b)
-        for (int i = 0; i < 3; ++i) K(a * 3 + i, b * 3 + i) += G(a, b);
-  }
+  for (int p = 0; p < 8; ++p) hex8_point(rule, geo, p, u, law, request, delta_t, history.at(p), f, K, sys);
   if (request.internal_force) sys.internal_force.assign(f.data(), f.data() + 24);
   else sys.internal_force.clear();
   if (request.stiffness) {
@@ -212,70 +241,39 @@ void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coor
   }
 }
 
-}  // namespace
+/// Reference data of a generic element's points: coordinates, the centre's mapping (for the
+/// incompatible modes and the hourglass control), the points' data and the smallest det J.
+struct ElementGeometry {
+  Eigen::MatrixXd X;
+  Mapping centre;
+  std::vector<PointData> pts;
+  std::vector<Vec3> point_coords;
+  double min_jacobian = std::numeric_limits<double>::infinity();
+};
 
-void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                     const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
-                     std::span<const double> delta_t, ElementSystem& out) {
-  if (is_full_hex8(type) && coords.size() == 8 && u.size() == 24 &&
-      (delta_t.empty() || delta_t.size() == 8)) {
-    compute_hex8(type, coords, u, material, request, delta_t, out);
-    return;
-  }
-  out = compute_element(type, coords, u, material, section, request, delta_t);
-}
-
-ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
-                              std::span<const double> u, const ElasticConstants& material,
-                              const SectionData& section, const ElementRequest& request,
-                              std::span<const double> delta_t) {
-  const int dim = type.dim;
-  const int n = type.n_nodes;
-  const int n_dof = n * dim;
-  if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n_dof ||
-      (!delta_t.empty() && static_cast<int>(delta_t.size()) != n))
-    throw std::invalid_argument("compute_element: coordinate, displacement or temperature count mismatch");
-
-  if (is_full_hex8(type)) {
-    ElementSystem fast;
-    compute_hex8(type, coords, u, material, request, delta_t, fast);
-    return fast;
-  }
-
+ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, double expansion,
+                                 const SectionData& section, std::span<const double> delta_t) {
+  const int dim = type.dim, n = type.n_nodes;
   const ElementFamily family = type.family;
   const Shape shape = element_shape(type);
-  const Mat6 D = elasticity_matrix(family, material);
   const bool incompatible = type.integration == Integration::IncompatibleModes;
   const bool hourglass = type.integration == Integration::Reduced && type.order == 1;
   const int n_modes = incompatible ? n_incompatible_modes(dim) : 0;
   const int n_total = n + n_modes;
-
-  Eigen::MatrixXd X(n, dim);
+  ElementGeometry geo;
+  geo.X.resize(n, dim);
   for (int a = 0; a < n; ++a)
-    for (int i = 0; i < dim; ++i) X(a, i) = coords[a][i];
-
-  ElementSystem sys;
-  sys.n_dof = n_dof;
-
-  // Centre of the quadrilateral/brick: Jacobian for the incompatible modes, gradients for the
-  // hourglass control.
-  Mapping centre;
-  if (incompatible || hourglass) centre = map_point(shape, dim, X, {0, 0, 0});
+    for (int i = 0; i < dim; ++i) geo.X(a, i) = coords[a][i];
+  if (incompatible || hourglass) geo.centre = map_point(shape, dim, geo.X, {0, 0, 0});
   Eigen::MatrixXd J0_inv_t;
   double j0 = 0.0;
   if (incompatible) {
-    J0_inv_t = centre.J.inverse().transpose();
-    j0 = centre.det * (family == ElementFamily::Axisymmetric ? centre.radius : 1.0);
+    J0_inv_t = geo.centre.J.inverse().transpose();
+    j0 = geo.centre.det * (family == ElementFamily::Axisymmetric ? geo.centre.radius : 1.0);
   }
-
-  // Reference data of every integration point.
-  const std::vector<QuadraturePoint> rule = element_rule(type);
-  std::vector<PointData> pts;
-  std::vector<Vec3> point_coords;
-  sys.min_jacobian = std::numeric_limits<double>::infinity();
-  for (const QuadraturePoint& q : rule) {
-    const Mapping m = map_point(shape, dim, X, q.xi);
-    sys.min_jacobian = std::min(sys.min_jacobian, m.det);
+  for (const QuadraturePoint& q : element_rule(type)) {
+    const Mapping m = map_point(shape, dim, geo.X, q.xi);
+    geo.min_jacobian = std::min(geo.min_jacobian, m.det);
     const ShapeValues sv = evaluate_shape(shape, q.xi);
     PointData pd;
     pd.N = Eigen::VectorXd::Zero(n_total);
@@ -291,52 +289,76 @@ ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<cons
     if (!delta_t.empty()) {
       double dt = 0.0;
       for (int a = 0; a < n; ++a) dt += sv.N[a] * delta_t[a];
-      pd.thermal_strain = material.expansion * dt;
+      pd.thermal_strain = expansion * dt;
     }
-    pts.push_back(std::move(pd));
-    point_coords.push_back(m.x);
+    geo.pts.push_back(std::move(pd));
+    geo.point_coords.push_back(m.x);
   }
+  return geo;
+}
+
+/// Incompatible modes: solves f_α(u, α) = 0 for the internal modes (one step when linear,
+/// Newton with NLGEOM) and condenses them out of f and K.
+template <class Law>
+void condense_modes(const model::ElementTypeInfo& type, const Law& law, const ElementRequest& request,
+                    const std::vector<PointData>& pts, const ElementHistory& history, Eigen::VectorXd& uf,
+                    Assembled& as, Eigen::VectorXd& f, Eigen::MatrixXd& K, ElementSystem& sys) {
+  const int n_dof = type.n_nodes * type.dim;
+  const int na = n_incompatible_modes(type.dim) * type.dim;
+  const double ref = std::max(as.f.norm(), 1e-300);
+  for (int it = 0; it < 30; ++it) {
+    const Eigen::VectorXd fa = as.f.tail(na);
+    if (it > 0 && (!request.nlgeom || fa.norm() <= 1e-13 * ref)) break;
+    const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
+    uf.tail(na) -= Kaa.ldlt().solve(fa);
+    as = assemble(type.family, type.dim, law, request.nlgeom, pts, uf, true, history);
+    sys.local_iterations = it + 1;
+  }
+  const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
+  const Eigen::MatrixXd Kua = as.K.topRightCorner(n_dof, na);
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kaa);
+  f = as.f.head(n_dof) - Kua * ldlt.solve(as.f.tail(na));
+  if (request.stiffness) K = as.K.topLeftCorner(n_dof, n_dof) - Kua * ldlt.solve(Kua.transpose());
+}
+
+/// Every element but the full-integration C3D8: dynamic sizes, incompatible modes, hourglass
+/// control of the reduced first-order elements.
+template <class Law>
+ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                              std::span<const double> u, const Law& law, const SectionData& section,
+                              const ElementRequest& request, std::span<const double> delta_t,
+                              const ElementHistory& history) {
+  const int dim = type.dim;
+  const int n_dof = type.n_nodes * dim;
+  const bool incompatible = type.integration == Integration::IncompatibleModes;
+  const bool hourglass = type.integration == Integration::Reduced && type.order == 1;
+  const int n_total = type.n_nodes + (incompatible ? n_incompatible_modes(dim) : 0);
+  ElementSystem sys;
+  sys.n_dof = n_dof;
+  const ElementGeometry geo = element_geometry(type, coords, law.elastic().expansion, section, delta_t);
+  sys.min_jacobian = geo.min_jacobian;
   if (sys.min_jacobian <= 0.0) return sys;  // the caller reports the distorted element
 
   Eigen::VectorXd uf = Eigen::VectorXd::Zero(n_total * dim);
   for (int k = 0; k < n_dof; ++k) uf(k) = u[k];
-
   const bool want_k = request.stiffness || incompatible;
-  Assembled as = assemble(family, dim, D, request.nlgeom, pts, uf, want_k);
-
+  Assembled as = assemble(type.family, dim, law, request.nlgeom, geo.pts, uf, want_k, history);
   Eigen::VectorXd f = as.f.head(n_dof);
   Eigen::MatrixXd K;
   if (incompatible) {
-    // Solve f_α(u, α) = 0 for the internal modes: one step when linear, Newton with NLGEOM.
-    const int na = n_modes * dim;
-    const double ref = std::max(as.f.norm(), 1e-300);
-    for (int it = 0; it < 30; ++it) {
-      const Eigen::VectorXd fa = as.f.tail(na);
-      if (it > 0 && (!request.nlgeom || fa.norm() <= 1e-13 * ref)) break;
-      const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
-      uf.tail(na) -= Kaa.ldlt().solve(fa);
-      as = assemble(family, dim, D, request.nlgeom, pts, uf, true);
-      sys.local_iterations = it + 1;
-    }
-    const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
-    const Eigen::MatrixXd Kua = as.K.topRightCorner(n_dof, na);
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kaa);
-    f = as.f.head(n_dof) - Kua * ldlt.solve(as.f.tail(na));
-    if (request.stiffness) K = as.K.topLeftCorner(n_dof, n_dof) - Kua * ldlt.solve(Kua.transpose());
+    condense_modes(type, law, request, geo.pts, history, uf, as, f, K, sys);
   } else {
     f = as.f;
     if (request.stiffness) K = std::move(as.K);
   }
-
   if (hourglass) {
-    const double volume = pts.front().dv;  // the one-point rule integrates the whole element
-    const Eigen::MatrixXd b = centre.grad.leftCols(dim);
+    const double volume = geo.pts.front().dv;  // the one-point rule integrates the whole element
+    const Eigen::MatrixXd b = geo.centre.grad.leftCols(dim);
     const Eigen::MatrixXd Khg =
-        hourglass_stiffness(dim, X, b, volume, material.shear_modulus(), section.hourglass_scale);
+        hourglass_stiffness(dim, geo.X, b, volume, law.elastic().shear_modulus(), section.hourglass_scale);
     f += Khg * uf.head(n_dof);
     if (request.stiffness) K += Khg;
   }
-
   if (request.internal_force) sys.internal_force.assign(f.data(), f.data() + n_dof);
   if (request.stiffness) {
     sys.stiffness.resize(static_cast<std::size_t>(n_dof) * n_dof);
@@ -344,12 +366,72 @@ ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<cons
       for (int j = 0; j < n_dof; ++j) sys.stiffness[static_cast<std::size_t>(i) * n_dof + j] = K(i, j);
   }
   if (request.point_output) {
-    sys.points.resize(pts.size());
-    for (std::size_t p = 0; p < pts.size(); ++p) {
-      point_output(family, material, request.nlgeom, pts[p], as.states[p], sys.points[p]);
-      sys.points[p].coords = point_coords[p];
+    sys.points.resize(geo.pts.size());
+    for (std::size_t p = 0; p < geo.pts.size(); ++p) {
+      point_output(type.family, law.elastic(), request.nlgeom, geo.pts[p], as.states[p], sys.points[p]);
+      sys.points[p].coords = geo.point_coords[p];
     }
   }
+  return sys;
+}
+
+void check_sizes(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                 std::span<const double> delta_t) {
+  const int n = type.n_nodes;
+  if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n * type.dim ||
+      (!delta_t.empty() && static_cast<int>(delta_t.size()) != n))
+    throw std::invalid_argument("compute_element: coordinate, displacement or temperature count mismatch");
+}
+
+/// The kernel for `law`: the fixed-size C3D8 one where it applies, the generic one otherwise.
+template <class Law>
+void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                  const Law& law, const SectionData& section, const ElementRequest& request,
+                  std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
+  if (is_full_hex8(type) && coords.size() == 8 && u.size() == 24 && (delta_t.empty() || delta_t.size() == 8)) {
+    compute_hex8(type, coords, u, law, request, delta_t, history, out);
+    return;
+  }
+  check_sizes(type, coords, u, delta_t);
+  out = compute_generic(type, coords, u, law, section, request, delta_t, history);
+}
+
+}  // namespace
+
+void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                     const Material& material, const SectionData& section, const ElementRequest& request,
+                     std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
+  if (const IsotropicElastic* elastic = material.as_isotropic_elastic()) {
+    compute_with(type, coords, u, *elastic, section, request, delta_t, ElementHistory{}, out);
+    return;
+  }
+  const std::size_t per_point = material.state_size();
+  if (per_point == 0 || history.per_point == per_point) {
+    compute_with(type, coords, u, material, section, request, delta_t, history, out);
+    return;
+  }
+  // No history given for a material with state: its initial state, the trial state discarded.
+  const std::size_t n = element_rule(type).size() * per_point;
+  std::vector<double> committed(n), trial(n);
+  for (std::size_t p = 0; p < n; p += per_point) material.initial_state(std::span(committed).subspan(p, per_point));
+  compute_with(type, coords, u, material, section, request, delta_t, ElementHistory{committed, trial, per_point}, out);
+}
+
+void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                     const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
+                     std::span<const double> delta_t, ElementSystem& out) {
+  compute_with(type, coords, u, IsotropicElastic(type.family, material), section, request, delta_t, ElementHistory{},
+               out);
+}
+
+ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                              std::span<const double> u, const ElasticConstants& material,
+                              const SectionData& section, const ElementRequest& request,
+                              std::span<const double> delta_t) {
+  check_sizes(type, coords, u, delta_t);
+  ElementSystem sys;
+  compute_with(type, coords, u, IsotropicElastic(type.family, material), section, request, delta_t, ElementHistory{},
+               sys);
   return sys;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-/// Element kernels for small-strain and total-Lagrangian (NLGEOM) linear elasticity: pure
-/// functions from element coordinates, displacements and material data to the element
-/// stiffness, internal force and integration-point stresses. No Eigen, no global state, no I/O.
+/// Element kernels for small-strain and total-Lagrangian (NLGEOM) continua: pure functions from
+/// element coordinates, displacements, the material (material.hpp) and its points' history to
+/// the element stiffness, internal force, integration-point stresses and trial history. No Eigen
+/// in this header, no global state, no I/O.
 ///
 /// Conventions (shared by every kernel in solver/elements/):
 ///  - DOFs are node-major: (u1, u2[, u3]) of node 1, then node 2, …; 2 per node in 2D, 3 in 3D.
@@ -56,6 +57,28 @@ struct PointResult {
   double volume = 0.0;  ///< reference volume it represents (Abaqus IVOL; 2πr·dA for CAX)
 };
 
+/// The history variables of one integration point (material.hpp, material_states.hpp): the
+/// committed state the increment started from, and the trial state an evaluation writes. Both
+/// empty for a stateless material.
+struct PointHistory {
+  std::span<const double> committed;
+  std::span<double> trial;
+};
+
+/// The history of every point of an element, point after point, `per_point` values each
+/// (per_point = 0: none).
+struct ElementHistory {
+  std::span<const double> committed;
+  std::span<double> trial;
+  std::size_t per_point = 0;
+  PointHistory at(std::size_t p) const {
+    if (per_point == 0) return {};
+    return {committed.subspan(p * per_point, per_point), trial.subspan(p * per_point, per_point)};
+  }
+};
+
+class Material;
+
 struct ElementSystem {
   int n_dof = 0;
   std::vector<double> stiffness;       ///< n_dof × n_dof, row-major; symmetric
@@ -89,5 +112,12 @@ ElementSystem compute_element(const model::ElementTypeInfo& type, std::span<cons
 void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                      const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
                      std::span<const double> delta_t, ElementSystem& out);
+
+/// The same with any material: each point evaluates `material` from `history`'s committed state
+/// and writes its trial state there. An empty history for a material with state: the
+/// material's initial state, the trial state discarded.
+void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                     const Material& material, const SectionData& section, const ElementRequest& request,
+                     std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out);
 
 }  // namespace inpact::solver::elements

@@ -1,0 +1,34 @@
+#include "material.hpp"
+
+#include <algorithm>
+
+namespace inpact::solver::elements {
+
+using model::ElementFamily;
+
+void Material::initial_state(std::span<double> state) const { std::fill(state.begin(), state.end(), 0.0); }
+
+IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants)
+    : constants_(constants), D_(elasticity_matrix(family, constants)) {}
+
+Mat6 elasticity_matrix(ElementFamily family, const ElasticConstants& m) {
+  const double E = m.youngs_modulus, nu = m.poissons_ratio;
+  const double mu = E / (2 * (1 + nu));
+  Mat6 D = Mat6::Zero();
+  if (family == ElementFamily::PlaneStress) {
+    const double c = E / (1 - nu * nu);
+    D(0, 0) = D(1, 1) = c;
+    D(0, 1) = D(1, 0) = c * nu;
+    D(3, 3) = mu;
+    return D;
+  }
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) D(i, j) = lambda;
+    D(i, i) = lambda + 2 * mu;
+    D(i + 3, i + 3) = mu;
+  }
+  return D;
+}
+
+}  // namespace inpact::solver::elements

@@ -1,0 +1,89 @@
+#pragma once
+/// The material behind an integration point: strain (and deformation) and the point's
+/// committed state in → stress, tangent and the trial state out.
+///
+///   stress = σ(strain, committed state),  tangent = ∂stress/∂strain,  trial state
+///
+/// The strain is the element's measure: ε = sym(F − I) for small strain, E = ½(FᵀF − I) with
+/// NLGEOM (total Lagrangian; the stress is then S, the second Piola–Kirchhoff stress, and the
+/// element adds the geometric stiffness itself). Voigt order 11, 22, 33, 12, 13, 23 with
+/// engineering shear strains.
+///
+/// State contract (see solver/material_states.hpp): a material with state_size() > 0 reads the
+/// committed state of the point — the state of the last converged increment — and writes the
+/// trial state for the strain it is given; it never writes the committed state. Evaluations
+/// may be repeated at any strain (Newton iterations, cut-back attempts, output): each one starts
+/// from the same committed state, so the trial state depends only on it and the strain.
+/// A stateless material (state_size() = 0) gets empty spans and no storage at all.
+#include <cstddef>
+#include <span>
+
+#include <Eigen/Core>
+
+#include "element_kernel.hpp"
+
+namespace inpact::solver::elements {
+
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
+/// What an integration point hands its material.
+struct MaterialPointInput {
+  const Eigen::Matrix3d& F;  ///< deformation gradient I + ∇₀u (CAX: F33 = 1 + u_r/R)
+  const Vec6& strain;        ///< ε, or E with NLGEOM
+  double thermal_strain;     ///< α ΔT at the point (isotropic, on the diagonal)
+};
+
+class IsotropicElastic;
+
+class Material {
+ public:
+  virtual ~Material() = default;
+
+  /// Doubles of history each integration point carries; 0: stateless.
+  virtual std::size_t state_size() const { return 0; }
+  /// The state of a point before the first increment (state_size() values).
+  virtual void initial_state(std::span<double> state) const;
+  /// Writes the stress at `in` into `stress` and returns the tangent: a matrix the material
+  /// owns (a constant tangent), or `scratch` filled with it. Writes `point.trial` from
+  /// `point.committed` (both empty when stateless).
+  virtual const Mat6& update(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
+                             Mat6& scratch) const = 0;
+  /// The elastic constants, for what is not the stress: the expansion α, the hourglass
+  /// control's shear modulus, the plane-stress thickness strain in the output.
+  virtual const ElasticConstants& elastic() const = 0;
+  /// The element kernels' fast path: this material when it is isotropic linear elastic.
+  virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
+};
+
+/// Isotropic linear elasticity (*ELASTIC) with isotropic expansion (*EXPANSION):
+/// stress = D (strain − α ΔT I), D the isotropic matrix of the element family (plane stress
+/// condensed for σ33 = 0, see elasticity_matrix). With NLGEOM this is St. Venant–Kirchhoff,
+/// S = D E. Stateless: no storage, one matrix shared by every point of the section.
+class IsotropicElastic final : public Material {
+ public:
+  IsotropicElastic(model::ElementFamily family, const ElasticConstants& constants);
+
+  const Mat6& update(const MaterialPointInput& in, const PointHistory&, Vec6& stress, Mat6&) const override {
+    Vec6 eth = Vec6::Zero();
+    eth.head<3>().setConstant(in.thermal_strain);
+    stress = D_ * (in.strain - eth);
+    return D_;
+  }
+  const ElasticConstants& elastic() const override { return constants_; }
+  const IsotropicElastic* as_isotropic_elastic() const override { return this; }
+
+  const Mat6& D() const { return D_; }
+
+ private:
+  ElasticConstants constants_;
+  Mat6 D_;
+};
+
+/// The elasticity matrix in Voigt order 11, 22, 33, 12, 13, 23 (engineering shear):
+/// 3D/plane strain/axisymmetric: the isotropic 3D matrix (λ + 2μ on the diagonal, μ for shear);
+/// plane stress: the in-plane matrix condensed for σ33 = 0, E/(1−ν²)[[1, ν], [ν, 1]] and μ for 12,
+/// zero rows/columns for 33, 13, 23.
+Mat6 elasticity_matrix(model::ElementFamily family, const ElasticConstants& m);
+
+}  // namespace inpact::solver::elements

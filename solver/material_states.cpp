@@ -1,0 +1,58 @@
+#include "material_states.hpp"
+
+#include <algorithm>
+
+#include "elements/material.hpp"
+#include "elements/quadrature.hpp"
+
+namespace inpact::solver {
+
+MaterialStates::MaterialStates(const AnalysisModel& am) {
+  const std::size_t n_el = am.elements.size();
+  const bool any = std::any_of(am.elements.begin(), am.elements.end(),
+                               [](const ElementSetup& s) { return s.material && s.material->state_size() > 0; });
+  if (!any) return;  // nothing at all for stateless models
+  offset_.assign(n_el + 1, 0);
+  per_point_.assign(n_el, 0);
+  for (std::size_t e = 0; e < n_el; ++e) {
+    const ElementSetup& s = am.elements[e];
+    const std::size_t size = s.material ? s.material->state_size() : 0;
+    per_point_[e] = static_cast<std::uint32_t>(size);
+    offset_[e + 1] = offset_[e] + (size ? size * elements::element_rule(*s.type).size() : 0);
+  }
+  committed_.assign(offset_.back(), 0.0);
+  for (std::size_t e = 0; e < n_el; ++e)
+    for (std::size_t p = offset_[e]; p < offset_[e + 1]; p += per_point_[e])
+      am.elements[e].material->initial_state(std::span(committed_).subspan(p, per_point_[e]));
+  trial_ = committed_;
+}
+
+std::size_t MaterialStates::bytes() const {
+  return offset_.size() * sizeof(std::size_t) + per_point_.size() * sizeof(std::uint32_t) +
+         (committed_.size() + trial_.size()) * sizeof(double);
+}
+
+std::span<const double> MaterialStates::slice(const std::vector<double>& v, std::size_t e) const {
+  if (empty()) return {};
+  return std::span(v).subspan(offset_[e], offset_[e + 1] - offset_[e]);
+}
+
+elements::ElementHistory MaterialStates::assembly_history(std::size_t e) {
+  if (empty() || per_point_[e] == 0) return {};
+  const std::size_t n = offset_[e + 1] - offset_[e];
+  return {std::span<const double>(committed_).subspan(offset_[e], n), std::span(trial_).subspan(offset_[e], n),
+          per_point_[e]};
+}
+
+elements::ElementHistory MaterialStates::output_history(std::size_t e, std::vector<double>& scratch) const {
+  if (empty() || per_point_[e] == 0) return {};
+  const std::span<const double> committed = slice(committed_, e);
+  scratch.assign(committed.begin(), committed.end());
+  return {committed, scratch, per_point_[e]};
+}
+
+void MaterialStates::commit() { std::copy(trial_.begin(), trial_.end(), committed_.begin()); }
+
+void MaterialStates::discard() { std::copy(committed_.begin(), committed_.end(), trial_.begin()); }
+
+}  // namespace inpact::solver
