@@ -452,13 +452,16 @@ void ContactProblem::assemble_friction(const Pair& p, std::size_t i, const Slave
     for (int c = 0; c < am_.dim; ++c) fpos.push_back(position(static_cast<std::int64_t>(node) * am_.dim + c));
   const bool with_multiplier = p.multiplier[i] >= 0;
   const std::size_t nu = all.size(), nl = nu + (with_multiplier ? 1 : 0), nf = fpos.size();
-  Assembler::LocalEquations eqs(nl);
+  Assembler::LocalEquations& eqs = friction_eqs_;  // (buffers reused from node to node)
+  eqs.resize(nl);
+  for (auto& e : eqs) e.clear();
   for (std::size_t a = 0; a < nu; ++a)
     for (const auto& ma : map.masters(all[a]))
       if (const std::int64_t e = map.equation(ma.dof); e >= 0) eqs[a].push_back({e, ma.weight});
   if (with_multiplier) eqs[nu].push_back({map.n_equations() + p.multiplier[i], 1.0});
   const double dp_dh = p.enforcement->pressure_slope(s, p.node_gap(i));
-  std::vector<double> kf(nl * nl, 0.0);
+  std::vector<double>& kf = friction_k_;
+  kf.assign(nl * nl, 0.0);
   for (std::size_t a = 0; a < nf; ++a) {
     f_int[all[fpos[a]]] += area * fp.force[a];
     for (std::size_t b = 0; b < nf; ++b) kf[fpos[a] * nl + fpos[b]] += area * fp.tangent[a * nf + b];

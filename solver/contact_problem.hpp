@@ -182,6 +182,8 @@ class ContactProblem {
   std::vector<std::pair<std::size_t, std::size_t>> multipliers_;
   /// Skew part of the contact tangent, ½(K − Kᵀ) entries (row, column equation, value).
   std::vector<Assembler::SkewEntry> skew_;
+  Assembler::LocalEquations friction_eqs_;  ///< assemble_friction's scratch
+  std::vector<double> friction_k_;
   SparseMatrix full_;
   std::int64_t friction_evaluations_ = 0;
   double adaptive_scale_ = 1.0;
