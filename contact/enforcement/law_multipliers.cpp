@@ -16,15 +16,6 @@ StatusUpdate LawWithMultipliers::update_status(SlaveState& s, const NodeGap& g, 
   return {closed, closed};
 }
 
-double LawWithMultipliers::pressure(const SlaveState& s, const NodeGap& g) const {
-  return s.closed && g.found ? std::max(-s.multiplier, 0.0) : 0.0;
-}
-
-NodePressure LawWithMultipliers::output(const SlaveState& s, const NodeGap& g) const {
-  const bool closed = s.closed && g.found;
-  return {closed ? -s.multiplier : 0.0, closed};
-}
-
 LawWithMultipliers::LawPoint LawWithMultipliers::law_point(const SlaveState& s) const {
   const double p = -s.multiplier;
   const double p_small = 1e-12 * std::max(ke_ * l_char_, std::abs(s.lambda));
