@@ -25,10 +25,14 @@ std::string enforcement_text(const ResolvedInteraction& r) {
   switch (r.enforcement) {
     case EnforcementKind::DirectMultipliers:
       return r.tied_pair ? "Lagrange multipliers (TIED: bonded once adjusted, no slip)" : "Lagrange multipliers";
-    case EnforcementKind::PenaltyLaw: return "no Lagrange multipliers (slope <= 1000 k_e)";
+    case EnforcementKind::PenaltyLaw:
+      return r.scales_from_mesh ? "no Lagrange multipliers (slope <= 1000 k_e)"
+                                : "no Lagrange multipliers (no k_e to compare the slope with)";
     case EnforcementKind::LawWithMultipliers:
       return "Lagrange multipliers (slope > 1000 k_e), the law's compliance on their diagonal";
-    case EnforcementKind::AugmentedLagrange: return "augmented Lagrange multipliers (slope <= 1000 k_e)";
+    case EnforcementKind::AugmentedLagrange:
+      return r.scales_from_mesh ? "augmented Lagrange multipliers (slope <= 1000 k_e)"
+                                : "augmented Lagrange multipliers (no k_e to compare the slope with)";
   }
   return "";
 }

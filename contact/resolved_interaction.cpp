@@ -41,12 +41,6 @@ const model::SurfaceInteraction* interaction_of(const model::Model& m, const mod
   return it == m.interactions.end() ? nullptr : &it->second;
 }
 
-/// The name a surface has in the deck ("" for a body exterior general contact made).
-std::string deck_name(const model::Model& m, const model::Surface* s) {
-  const auto it = m.mesh.surfaces.find(s->name);
-  return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
-}
-
 /// surface_scales() once per surface (it visits every element).
 class ScaleCache {
  public:
@@ -68,7 +62,7 @@ void resolve_scales(const model::Model& m, const ContactInteraction& entry, Scal
   if (!scales) scales = cache.of(entry.master);
   // A balanced two-row interaction (general contact): both rows take the mean of the two
   // surfaces' scales, so they hold one law, see the same gap, and each reports the pressure
-  // that acts (with a row's own k_e one surface showed 2/3 p and the other 4/3 p).
+  // that acts (with its own k_e each row would carry a different share of the load).
   if (entry.general && entry.weight != 1.0 && entry.slave != entry.master) {
     const auto other = cache.of(entry.master);
     if (scales && other) {
@@ -132,11 +126,11 @@ void resolve_limits_and_friction(const model::Model& m, const ContactInteraction
   r.friction = resolve_friction(tied ? &tie : inter && inter->friction ? &*inter->friction : nullptr, r.l_char, r.ke);
   if (r.tied_law && tie.stick_slope) r.friction->fixed_stiffness = *tie.stick_slope;  // CalculiX's λ
   if (r.friction && r.friction->rough && !(r.ke > 0.0))
-    refuse(inter->friction->loc, "*FRICTION",
+    refuse(inter && inter->friction ? inter->friction->loc : deck.loc, inter && inter->friction ? "*FRICTION" : "*CONTACT PAIR",
            fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of an element-based surface with an "
                        "elastic material", r.name));
   const bool has_clearance = !entry.general && std::any_of(m.clearances.begin(), m.clearances.end(), [&](const auto& c) {
-    return c.slave == deck.slave && c.master == deck.master;
+    return clearance_names(c, deck);
   });
   r.offsets = r.tied_law ? GapOffsets::InitialGap : has_clearance ? GapOffsets::Clearance : GapOffsets::None;
 }
@@ -164,9 +158,7 @@ ResolvedInteraction resolve_row(const model::Model& m, const InteractionTable& t
   const model::SurfaceInteraction* inter = interaction_of(m, deck);
   ResolvedInteraction r;
   r.row = row;
-  r.step = step;
   r.name = entry.name();
-  r.pair = &entry.pair;
   r.general = entry.general;
   r.self_contact = deck.slave == deck.master;
   r.surface_to_surface = deck.type == model::ContactDiscretization::SurfaceToSurface;
@@ -185,8 +177,8 @@ ResolvedInteraction resolve_row(const model::Model& m, const InteractionTable& t
   resolve_limits_and_friction(m, entry, r);
   if (r.surface_to_surface) {
     const model::ContactPair* named = entry.general ? nullptr : &deck;
-    r.smoothed = !corrections_for(m, deck_name(m, entry.master), named).empty() ||
-                 !corrections_for(m, deck_name(m, entry.slave), named).empty();
+    r.smoothed = !corrections_for(m, deck_surface_name(m, entry.master), named).empty() ||
+                 !corrections_for(m, deck_surface_name(m, entry.slave), named).empty();
   }
   return r;
 }
@@ -208,6 +200,11 @@ void merge_balanced_multiplier_rows(const InteractionTable& table, std::vector<R
 }
 
 }  // namespace
+
+std::string deck_surface_name(const model::Model& m, const model::Surface* s) {
+  const auto it = m.mesh.surfaces.find(s->name);
+  return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
+}
 
 std::vector<ResolvedInteraction> resolve_interactions(const model::Model& m, const InteractionTable& table,
                                                       std::size_t step) {

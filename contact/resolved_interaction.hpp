@@ -22,6 +22,7 @@
 ///      (friction.hpp) with γ_crit from the same length, the gap offsets (*CLEARANCE, or
 ///      CalculiX's TIED law binding each node where it starts).
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -54,9 +55,7 @@ enum class GapOffsets : std::uint8_t {
 /// One row of the interaction table as step `step` enforces it.
 struct ResolvedInteraction {
   std::size_t row = 0;    ///< into InteractionTable::rows
-  std::size_t step = 0;   ///< 0-based
   std::string name;       ///< "SLAVE/MASTER"
-  const model::ContactPair* pair = nullptr;  ///< the table row's pair (deck data or general contact's)
   bool general = false, self_contact = false, surface_to_surface = false, finite_sliding = true;
   /// False for the second row of a balanced interaction enforced with multipliers (its first
   /// row carries the whole weight).
@@ -81,10 +80,6 @@ struct ResolvedInteraction {
   double weight = 1.0;          ///< balanced master-slave or self-contact: ½
   double thickness = 1.0;       ///< out-of-plane thickness of a 2-D interaction
   bool smoothed = false;        ///< geometric correction of either surface
-
-  bool uses_multipliers() const {
-    return enforcement == EnforcementKind::DirectMultipliers || enforcement == EnforcementKind::LawWithMultipliers;
-  }
 };
 
 /// Contact data that contradicts the mesh or asks for what the analysis cannot give (a default
@@ -101,6 +96,15 @@ struct InteractionError : std::runtime_error {
 /// The rows of `table` in force in step `step` (0-based), resolved. Throws InteractionError.
 std::vector<ResolvedInteraction> resolve_interactions(const model::Model& model, const InteractionTable& table,
                                                       std::size_t step);
+
+/// Does *CLEARANCE `c` name `pair` (its slave and master)?
+inline bool clearance_names(const model::Clearance& c, const model::ContactPair& pair) {
+  return c.slave == pair.slave && c.master == pair.master;
+}
+
+/// The name a surface has in the deck ("" for a body exterior general contact made): what the
+/// smoothing lines are matched with (geometric_correction.hpp corrections_for).
+std::string deck_surface_name(const model::Model& model, const model::Surface* surface);
 
 /// The records of every step, index = step.
 std::vector<std::vector<ResolvedInteraction>> resolve_all_steps(const model::Model& model,

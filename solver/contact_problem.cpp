@@ -33,7 +33,7 @@ std::vector<double> clearance_offsets(const model::Model& m, const model::Contac
   std::vector<double> wanted(geometry.slave().nodes().size(), std::numeric_limits<double>::quiet_NaN());
   bool any = false;
   for (const model::Clearance& c : m.clearances) {
-    if (c.slave != pair.slave || c.master != pair.master) continue;
+    if (!contact::clearance_names(c, pair)) continue;
     any = true;
     if (c.value) std::fill(wanted.begin(), wanted.end(), *c.value);
     for (const auto& [row, value] : c.node_values)
@@ -152,14 +152,11 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
   std::unique_ptr<contact::PairKinematics> geometry;
   if (r.surface_to_surface) {
     auto s2s = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
-    auto deck_name = [&](const model::Surface* s) {
-      const auto it = m.mesh.surfaces.find(s->name);
-      return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
-    };
-    const model::ContactPair* named = entry.general ? nullptr : &entry.pair;
-    auto master_c = contact::build_corrections(m, deck_name(entry.master), named);
-    auto slave_c = contact::build_corrections(m, deck_name(entry.slave), named);
-    if (!master_c.empty() || !slave_c.empty()) s2s->set_geometric_correction(std::move(master_c), std::move(slave_c));
+    if (r.smoothed) {
+      const model::ContactPair* named = entry.general ? nullptr : &entry.pair;
+      s2s->set_geometric_correction(contact::build_corrections(m, contact::deck_surface_name(m, entry.master), named),
+                                    contact::build_corrections(m, contact::deck_surface_name(m, entry.slave), named));
+    }
     geometry = std::move(s2s);
   } else {
     geometry = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
@@ -262,8 +259,11 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
   }
 }
 
+void ContactProblem::set_user_adaptive_scale(double scale) {
+  for (auto& p : pairs_) p->enforcement->set_adaptive_scale(scale);
+}
+
 void ContactProblem::evaluate(std::span<const double> u) {
-  for (auto& p : pairs_) p->enforcement->set_adaptive_scale(adaptive_scale_);
   if (evaluated_ && std::equal(u.begin(), u.end(), evaluated_u_.begin(), evaluated_u_.end())) return;
   evaluated_u_.assign(u.begin(), u.end());
   evaluated_ = true;

@@ -142,7 +142,7 @@ class ContactProblem {
   bool has_user_adaptive() const;
   /// The factor on the penalty law of USER ADAPTIVE pairs (pressure and slope): kUserAdaptiveScale
   /// while the first increment finds its contact status, 1 for its final iterations.
-  void set_user_adaptive_scale(double scale) { adaptive_scale_ = scale; }
+  void set_user_adaptive_scale(double scale);
 
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
@@ -186,7 +186,6 @@ class ContactProblem {
   std::vector<double> friction_k_;
   SparseMatrix full_;
   std::int64_t friction_evaluations_ = 0;
-  double adaptive_scale_ = 1.0;
   std::vector<double> evaluated_u_;  ///< the u of the last evaluate()
   bool evaluated_ = false;
 };

@@ -12,19 +12,21 @@ PressureValue PenaltyLaw::law_pressure(const SlaveState& s, const NodeGap& g) co
   return v;
 }
 
+bool PenaltyLaw::closed(const PressureValue& pv) const {
+  return options_.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
+}
+
 StatusUpdate PenaltyLaw::update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const {
   const PressureValue pv = law_pressure(s, g);
-  const bool closed = options_.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
-  // Damping an augmented-Lagrange node that keeps crossing the law's kink: after two crossings
-  // in this attempt its stiffness stays in the tangent while it is open (the force is still the
-  // law's), so Newton stops bouncing between the branches at 1000 k_e (the interference fit's
-  // faceting noise). Not for plain penalty: there the modified tangent turned Hertz's quadratic
-  // convergence linear (22 → 77 iterations).
+  // An augmented-Lagrange node that keeps crossing the law's kink is damped: after two
+  // crossings in this attempt its stiffness stays in the tangent while it is open (the force
+  // is still the law's), so Newton stops bouncing between the branches at 1000 k_e. Plain
+  // penalty keeps the exact tangent, which its quadratic convergence needs.
   // A node touching within round-off brings the law's first slope too: a penalty law acts only
-  // from h + c0 ≥ 0, and a gap of +1e-12 would otherwise leave a body that rests on its contact
-  // with no stiffness at all (bench/contact_extremes).
+  // from h + c0 ≥ 0, and a body resting on its contact at a gap of +1e-12 would otherwise have
+  // no stiffness at all.
   const bool touching = g.found && g.gap < limits.close_below;
-  return {closed, pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
+  return {closed(pv), pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
 }
 
 NormalForce PenaltyLaw::normal_force(const SlaveState& s, const NodeGap& g) const {
@@ -35,7 +37,7 @@ NormalForce PenaltyLaw::normal_force(const SlaveState& s, const NodeGap& g) cons
 
 NodePressure PenaltyLaw::output(const SlaveState& s, const NodeGap& g) const {
   const PressureValue pv = law_pressure(s, g);
-  return {pv.p, options_.tied_law ? pv.active : pv.p > 0.0};
+  return {pv.p, closed(pv)};
 }
 
 }  // namespace inpact::contact

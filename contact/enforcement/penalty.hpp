@@ -28,6 +28,8 @@ class PenaltyLaw final : public Enforcement {
  private:
   /// The law at the node's overclosure (λ: augmented Lagrange only), times USER ADAPTIVE's factor.
   PressureValue law_pressure(const SlaveState& s, const NodeGap& g) const;
+  /// The contact status the law gives: pressure (the TIED law: where it acts, tension too).
+  bool closed(const PressureValue& pv) const;
   PressureOverclosure law_;
   PenaltyOptions options_;
   double adaptive_scale_ = 1.0;
