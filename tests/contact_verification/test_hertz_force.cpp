@@ -138,7 +138,6 @@ TEST(HertzUnderAForce, EveryMethodStartsFromTheTouchingNodeAndGivesHertz) {
     // h²/(48 R_interface²) with R_interface = 2R: 8e-7 (1.15e-6 measured with the tolerance at 1e-9).
     EXPECT_NEAR(f.foundation, 0.5 * kLoad, 1e-9 * kLoad) << label;
     EXPECT_NEAR(f.cfn, 0.5 * kLoad, 3e-6 * 0.5 * kLoad) << label;
-    EXPECT_LT(r->seconds, 5.0) << label;
   }
 }
 
