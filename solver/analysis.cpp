@@ -166,10 +166,13 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       trial = state;
       outcome = run_attempt(am, run, inc, force, trial, observer);
       if (outcome.converged) break;
-      const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}",
+      // A singular first solve with a contact pair that touched nowhere at its start: a free body
+      // that no cutback can hold.
+      const std::string untouched = outcome.singular && run.contact ? run.contact->untouched_at_start() : "";
+      const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}{}",
                                             run.number, run.step.name, inc.increment(), inc.attempt(), inc.start(),
-                                            inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof));
-      const Cutback cutback = inc.attempt_failed(outcome.singular, run.contact != nullptr);
+                                            inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof), untouched);
+      const Cutback cutback = inc.attempt_failed(outcome.singular, run.contact != nullptr && untouched.empty());
       if (!cutback.retry) return {false, where + cutback.note};
       observer.message(where + cutback.note);
       run.states.discard();  // the next attempt starts from the same committed history

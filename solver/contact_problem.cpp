@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -61,6 +62,17 @@ std::vector<double> tied_offsets(const model::Model& m, contact::PairKinematics&
 
 }  // namespace
 
+/// A gap below this fraction of the characteristic length is contact within round-off: every
+/// method closes (or, penalty-type, stiffens) such a node at every update (status_limits).
+constexpr double kTouchingTolerance = 1e-9;
+
+/// The initial contact status: a slave node within this fraction of the pair's characteristic
+/// length of its master (or overclosed) when the pair comes into force starts closed
+/// (ContactProblem::Pair::starts_closed). Round-off of the mesh's coordinates, not a clearance:
+/// a deck that writes its nodes with 8 significant digits misplaces a node on a surface by
+/// about 1e-8 of the model's size, which is up to 1e-6 l_char for a model of 100 facets across.
+constexpr double kStartClosedTolerance = 1e-6;
+
 /// One contact pair in force: its geometry, enforcement and the last kinematics.
 struct ContactProblem::Pair {
   std::int32_t row = 0;
@@ -77,10 +89,42 @@ struct ContactProblem::Pair {
   std::vector<contact::FrictionPoint> fric;  ///< frictional pairs: per slave node, at the last update
   /// *CLEARANCE or the TIED law: per slave node, what is added to the measured gap (empty: none).
   std::vector<double> gap_offset;
+  /// Per slave node: starts_closed() when the pair came into force (at the step's start).
+  std::vector<char> closed_at_start;
+  /// The next update() is the first of an attempt of the pair's first increment: the nodes of
+  /// closed_at_start start closed there.
+  bool start_pending = false;
+  /// The last update() was that one: node_gap() says which nodes start closed until the next.
+  bool starting = false;
 
   bool uses_multipliers() const { return enforcement->uses_multipliers(); }
+
+  /// The initial contact status (Abaqus's): slave i starts the pair's first increment closed when
+  /// it touches or overcloses its master at the start, its gap g0 <= kStartClosedTolerance l_char.
+  /// g0 is the gap (with the pair's offsets), and for surface to surface without offsets also the
+  /// node's own closest-point gap: the weighted gap of a node touching at the edge of the contact
+  /// to be is positive (the open facets around it), yet the bodies touch there. A node that
+  /// starts closed brings its constraint (multipliers) or its law's first slope and the force
+  /// that closes its gap (penalty-type) into the first system, so a body held only by that
+  /// contact and driven by a force is not free in it; after that first update its status is the
+  /// method's own (a multiplier opens in tension, a penalty node acts only where it penetrates).
+  /// Evaluated on `x`, the coordinates at the start, after update() of the kinematics there.
+  /// Nodes touching within round-off (g < kTouchingTolerance l_char) are left to the methods,
+  /// which close them anyway: this rule extends theirs, it does not change it.
+  bool starts_closed(std::size_t i, std::span<const contact::Vec3> x) const {
+    const contact::SlaveKinematics& k = kin[i];
+    if (!k.found || k.projection.gap < kTouchingTolerance * l_char) return false;
+    const double tolerance = kStartClosedTolerance * l_char;
+    if (k.projection.gap <= tolerance) return true;
+    if (!surface_to_surface || !gap_offset.empty() || !k.friction_found) return false;
+    const contact::Vec3& xs = x[static_cast<std::size_t>(k.node)];
+    const contact::Vec3 r{xs[0] - k.projection.x_master[0], xs[1] - k.projection.x_master[1],
+                          xs[2] - k.projection.x_master[2]};
+    return r[0] * k.projection.facet_normal[0] + r[1] * k.projection.facet_normal[1] +
+               r[2] * k.projection.facet_normal[2] <= tolerance;
+  }
   double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
-  contact::NodeGap node_gap(std::size_t i) const { return {kin[i].found, gap(i)}; }
+  contact::NodeGap node_gap(std::size_t i) const { return {kin[i].found, gap(i), starting && closed_at_start[i]}; }
   /// The contact pressure of slave i as the enforcement gives it (never tensile).
   double node_pressure(std::size_t i, const SlaveState& s) const { return enforcement->pressure(s, node_gap(i)); }
 
@@ -237,9 +281,18 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
   evaluate(u_start);
   const bool new_increment = state.friction_increment != std::array<int, 2>{step, increment};
   state.friction_increment = {step, increment};
+  std::vector<contact::Vec3> x_start;
   for (const auto& p : pairs_) {
     auto& s = state.pairs[p->row];
+    // A pair without slave states has not converged an increment yet: it has just come into
+    // force (each attempt of its first increment starts from the state before it).
+    p->start_pending = s.empty();
     s.resize(p->geometry->slave().nodes().size());
+    if (p->start_pending) {
+      if (x_start.empty()) x_start = contact::current_coordinates(am_.model->mesh.nodes, u_start, am_.dim);
+      p->closed_at_start.assign(s.size(), 0);
+      for (std::size_t i = 0; i < s.size(); ++i) p->closed_at_start[i] = p->starts_closed(i, x_start);
+    }
     for (std::size_t i = 0; i < s.size(); ++i) {
       s[i].flips = 0;
       s[i].start_penetration = p->kin[i].found ? std::max(0.0, -p->gap(i)) : 0.0;
@@ -289,7 +342,7 @@ contact::StatusLimits status_limits(const contact::Enforcement& e, std::span<con
   for (const SlaveState& s : slaves)
     if (s.closed) p_scale = std::max(p_scale, std::abs(s.*field));
   p_scale = std::max(p_scale, e.pressure_round_off());
-  return {-1e-8 * p_scale, 1e-9 * l_char};
+  return {-1e-8 * p_scale, kTouchingTolerance * l_char};
 }
 
 }  // namespace
@@ -379,6 +432,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     p.multiplier.assign(n, -1);
     if (p.friction) p.fric.resize(n);
     const contact::StatusLimits limits = status_limits(*p.enforcement, slaves, p.l_char);
+    p.starting = std::exchange(p.start_pending, false);
     for (std::size_t i = 0; i < n; ++i) {
       SlaveState& s = slaves[i];
       update_node(p, i, s, limits, x, it);
@@ -504,6 +558,25 @@ const SparseMatrix& ContactProblem::unsymmetric_tangent(const SparseMatrix& a) {
   for (const Assembler::SkewEntry& e : skew_)
     if (const std::int64_t pos = full_.find(e.row, e.col); pos >= 0) full_.values[pos] += e.value;
   return full_;
+}
+
+std::string ContactProblem::untouched_at_start() const {
+  std::string out;
+  for (const auto& p : pairs_) {
+    if (!p->starting || std::any_of(p->contributes.begin(), p->contributes.end(), [](char c) { return c != 0; }))
+      continue;
+    std::size_t nearest = p->kin.size();
+    for (std::size_t i = 0; i < p->kin.size(); ++i)
+      if (p->kin[i].found && (nearest == p->kin.size() || p->gap(i) < p->gap(nearest))) nearest = i;
+    out += fmt::format("; contact pair {}/{} touches nowhere at the start (no slave node within {:.3g} of {}", p->deck->slave,
+                       p->deck->master, kStartClosedTolerance * p->l_char, p->deck->master);
+    out += nearest < p->kin.size()
+               ? fmt::format("; the nearest, node {}, is {:.4g} away)", am_.model->mesh.nodes.labels[p->kin[nearest].node],
+                             p->gap(nearest))
+               : fmt::format("; none faces it)");
+    out += ": a body only this contact holds is free; close the gap (ADJUST, *CLEARANCE) or hold the body until it touches";
+  }
+  return out;
 }
 
 // --- Augmentations -----------------------------------------------------------------------

@@ -129,6 +129,12 @@ class ContactProblem {
   void constraint_residual(const ContactState& state, std::span<double> rows) const;
   /// λ += Δλ from the solution's multiplier rows.
   void apply_correction(std::span<const double> rows, ContactState& state) const;
+  /// For a singular first solve: the pairs whose first update of their first increment found
+  /// no slave node touching (nothing closed, nothing stiffened), each with its nearest slave
+  /// node and gap, as "; contact pair S/M touches nowhere ..." — a body that only such a pair
+  /// was to hold is free, and no smaller increment changes that. Empty when every pair just
+  /// started holds something, or none just started.
+  std::string untouched_at_start() const;
   /// Did the last assemble() leave an unsymmetric part (friction with a pressure coupling)?
   bool unsymmetric() const { return !skew_.empty(); }
   /// The full (both triangles) tangent: the assembler's symmetric upper triangle `upper`

@@ -24,15 +24,24 @@ StatusUpdate PenaltyLaw::update_status(SlaveState& s, const NodeGap& g, const St
   // penalty keeps the exact tangent, which its quadratic convergence needs.
   // A node touching within round-off brings the law's first slope too: a penalty law acts only
   // from h + c0 ≥ 0, and a body resting on its contact at a gap of +1e-12 would otherwise have
-  // no stiffness at all.
-  const bool touching = g.found && g.gap < limits.close_below;
+  // no stiffness at all. So does a node that starts closed (it touched when the pair came into
+  // force): the first system of a body resting on it is regular.
+  const bool touching = g.found && (g.gap < limits.close_below || g.starts_closed);
   return {closed(pv), pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
 }
 
 NormalForce PenaltyLaw::normal_force(const SlaveState& s, const NodeGap& g) const {
   const PressureValue pv = law_pressure(s, g);
+  if (g.starts_closed && !pv.active) return start_closed_force(g);
   // An open node kept for damping or touching (update_status) brings the law's first slope.
   return {-pv.p, pv.active ? pv.dp : law_.max_slope(0.0)};
+}
+
+NormalForce PenaltyLaw::start_closed_force(const NodeGap& g) const {
+  // p = k (h − h_zero) continued below h_zero (tensile): the force that closes the node's gap
+  // in the first solve, where the law's stiffness alone would let it close by only P/(k A).
+  const double k = law_.max_slope(0.0) * (options_.user_adaptive ? adaptive_scale_ : 1.0);
+  return {k * (g.gap + law_.h_zero()), k};
 }
 
 NodePressure PenaltyLaw::output(const SlaveState& s, const NodeGap& g) const {
