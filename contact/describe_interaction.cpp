@@ -62,6 +62,15 @@ const char* offsets_text(GapOffsets o) {
   return "";
 }
 
+/// *CHANGE FRICTION's transition over the step: where μ and γ_crit start.
+std::string ramp_text(const FrictionRamp& ramp) {
+  const std::string from = ramp.from ? fmt::format("mu = {:g}, elastic slip {:.6g}", ramp.from->mu, ramp.from->gamma_crit)
+                                     : std::string("frictionless");
+  const std::string by = ramp.amplitude.empty() ? std::string("linearly over the step (step amplitude RAMP)")
+                                                : fmt::format("by amplitude {}", ramp.amplitude);
+  return fmt::format(" (*CHANGE FRICTION: from {} at the step start, {})", from, by);
+}
+
 }  // namespace
 
 std::string describe(const ResolvedInteraction& r) {
@@ -81,6 +90,7 @@ std::string describe(const ResolvedInteraction& r) {
   out += offsets_text(r.offsets);
   if (r.thickness != 1.0) out += fmt::format("; out-of-plane thickness {:g}", r.thickness);
   out += r.friction ? "; " + describe(*r.friction) : std::string("; frictionless");
+  if (r.friction_ramp) out += ramp_text(*r.friction_ramp);
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include "assembler.hpp"
 #include "augmentation.hpp"
 #include "blas_info.hpp"
+#include "contact/step_changes.hpp"
 #include "contact_problem.hpp"
 #include "dof_map.hpp"
 #include "field_output.hpp"
@@ -228,6 +229,10 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
       return outcome;
     }
     history = run.conditions.end_state(reactions(run.dofs, state));
+    // *MODEL CHANGE, REMOVE in the next step releases the contact forces of the pairs it removes.
+    const std::vector<std::size_t> removed = contact::rows_removed_in(model, *am.contact, s + 1);
+    if (run.contact && !removed.empty() && s + 1 < model.steps.size())
+      history.released_contact = run.contact->pair_forces(removed, state.contact);
     total_time += step.static_procedure->time_period;
   }
   return {true, "", output_seconds};

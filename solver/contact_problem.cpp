@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "step_conditions.hpp"
 #include "contact/enforcement.hpp"
 #include "contact/friction.hpp"
 #include "contact/geometric_correction.hpp"
@@ -96,6 +97,12 @@ struct ContactProblem::Pair {
   bool start_pending = false;
   /// The last update() was that one: node_gap() says which nodes start closed until the next.
   bool starting = false;
+  /// Not in force in the previous step (a *MODEL CHANGE, ADD, or a pair entering): its nodes
+  /// start open, without friction history.
+  bool enters = false;
+  /// In force in the previous step with another enforcement: its multipliers start from zero
+  /// (direct's λ is −p, augmented Lagrange's λ is +p).
+  bool new_enforcement = false;
 
   bool uses_multipliers() const { return enforcement->uses_multipliers(); }
 
@@ -212,6 +219,24 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
 
 }  // namespace
 
+namespace {
+
+/// Pair p's record in the previous step, or null when it was not in force there.
+const contact::ResolvedInteraction* previous_record(const AnalysisModel& am, std::size_t step_index, std::size_t row) {
+  if (step_index == 0) return nullptr;
+  for (const contact::ResolvedInteraction& r : am.interactions.at(step_index - 1))
+    if (r.row == row && r.in_force) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
+void ContactProblem::mark_step_change(Pair& p, const AnalysisModel& am, std::size_t step_index) {
+  const contact::ResolvedInteraction* prev = previous_record(am, step_index, static_cast<std::size_t>(p.row));
+  p.enters = step_index > 0 && !prev;
+  p.new_enforcement = prev && (prev->enforcement != p.resolved->enforcement || prev->augmented != p.resolved->augmented);
+}
+
 ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) : am_(am) {
   const model::Model& m = *am.model;
   n_pairs_total_ = am.contact->rows.size();
@@ -224,7 +249,8 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     p->resolved = &r;
     p->geometry = pair_geometry(am, entry, r);
     p->enforcement = contact::make_enforcement(r);
-    p->friction = r.friction;
+    p->friction = r.friction_at(0.0);  // a *CHANGE FRICTION ramp moves it (set_step_time)
+    mark_step_change(*p, am, step_index);
     p->finite_sliding = r.finite_sliding;
     p->surface_to_surface = r.surface_to_surface;
     p->l_char = r.l_char;
@@ -284,6 +310,8 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
   std::vector<contact::Vec3> x_start;
   for (const auto& p : pairs_) {
     auto& s = state.pairs[p->row];
+    // Once per attempt of a step's first increment (not again at its augmentations).
+    if (increment == 1 && new_increment) start_step(*p, state);
     // A pair without slave states has not converged an increment yet: it has just come into
     // force (each attempt of its first increment starts from the state before it).
     p->start_pending = s.empty();
@@ -297,19 +325,70 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
       s[i].flips = 0;
       s[i].start_penetration = p->kin[i].found ? std::max(0.0, -p->gap(i)) : 0.0;
     }
-    if (!p->friction) continue;
+    if (!p->friction) {
+      // A frictionless step (*CHANGE FRICTION): its slip is not tracked, so a later friction
+      // starts a new history.
+      if (static_cast<std::size_t>(p->row) < state.friction.size()) state.friction[p->row].clear();
+      continue;
+    }
     if (state.friction.size() < n_pairs_total_) state.friction.resize(n_pairs_total_);
     auto& fs = state.friction[p->row];
+    const std::size_t had = fs.size();
     fs.resize(s.size());
-    if (!new_increment) continue;
-    // Commit the converged trial state as the start of the new increment.
-    for (FrictionNodeState& f : fs) {
-      f.anchor_facet = f.active ? f.facet : -1;
-      f.anchor_xi = f.xi;
-      f.e0 = f.active ? f.e : std::array<double, 3>{0, 0, 0};
-      f.slip0 = f.slip;
+    if (new_increment)  // commit the converged trial state as the start of the new increment
+      for (FrictionNodeState& f : fs) {
+        f.anchor_facet = f.active ? f.facet : -1;
+        f.anchor_xi = f.xi;
+        f.e0 = f.active ? f.e : std::array<double, 3>{0, 0, 0};
+        f.slip0 = f.slip;
+      }
+    // Friction that begins on a node already closed (a pair frictionless until this step): its
+    // zero-shear point is where the node is at the start of the increment.
+    for (std::size_t i = had; i < fs.size(); ++i)
+      if (s[i].closed && p->friction_found(i)) {
+        fs[i].anchor_facet = p->kin[i].projection.facet;
+        fs[i].anchor_xi = p->kin[i].projection.xi;
+      }
+  }
+}
+
+void ContactProblem::start_step(const Pair& p, ContactState& state) const {
+  auto& s = state.pairs[p.row];
+  if (p.enters) {  // reactivated: open nodes, no friction history [IG ctc_contactpair_std]
+    s.clear();
+    if (static_cast<std::size_t>(p.row) < state.friction.size()) state.friction[p.row].clear();
+  } else if (p.new_enforcement) {
+    for (SlaveState& n : s) n.lambda = n.multiplier = 0.0;
+  }
+}
+
+void ContactProblem::set_step_time(const StepConditions& conditions, double t) {
+  for (auto& p : pairs_)
+    if (const auto& ramp = p->resolved->friction_ramp)
+      p->friction = p->resolved->friction_at(conditions.amplitude_value(ramp->amplitude, t));
+}
+
+std::vector<double> ContactProblem::pair_forces(std::span<const std::size_t> rows, const ContactState& state) const {
+  std::vector<double> f(static_cast<std::size_t>(am_.n_dof()), 0.0);
+  for (const auto& p : pairs_) {
+    if (std::find(rows.begin(), rows.end(), static_cast<std::size_t>(p->row)) == rows.end()) continue;
+    const auto& slaves = state.pairs[p->row];
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      if (!p->contributes[i]) continue;
+      // As assemble(): f_c = A c ∇g, and friction's A Bᵀ τ over its own kinematics.
+      const contact::GapLinearization& lin = p->kin[i].lin;
+      const double area = p->kin[i].area;
+      const double c = p->enforcement->normal_force(slaves[i], p->node_gap(i)).coefficient * area;
+      std::size_t a = 0;
+      for (std::int32_t node : lin.nodes)
+        for (int d = 0; d < am_.dim; ++d, ++a) f[static_cast<std::size_t>(node) * am_.dim + d] += c * lin.gradient[a];
+      if (!p->friction_acts(i)) continue;
+      a = 0;
+      for (std::int32_t node : p->friction_lin(i).nodes)
+        for (int d = 0; d < am_.dim; ++d, ++a) f[static_cast<std::size_t>(node) * am_.dim + d] += area * p->fric[i].force[a];
     }
   }
+  return f;
 }
 
 void ContactProblem::set_user_adaptive_scale(double scale) {

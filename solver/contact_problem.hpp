@@ -36,6 +36,8 @@
 
 namespace inpact::solver {
 
+class StepConditions;
+
 /// Severe discontinuity iterations allowed in one increment attempt (Abaqus's I_S default, 50:
 /// parser/KEYWORDS.md *CONTROLS; *CONTROLS does not change it in inpact yet).
 inline constexpr int kMaxSevereIterations = 50;
@@ -116,7 +118,17 @@ class ContactProblem {
   /// from the converged state: the friction history is committed from its trial values.
   /// `u_start`: the converged displacements the attempt starts from (penetrations there are
   /// the baseline of the HCRIT check).
+  /// The first increment of a step also resets what a step change leaves behind: a pair not in
+  /// force in the previous step (*MODEL CHANGE, ADD) starts with every node open and no friction
+  /// history; a pair whose enforcement changed (*CHANGE SURFACE BEHAVIOR) starts its multipliers
+  /// from zero. A pair whose friction changed keeps its slip history.
   void begin_attempt(ContactState& state, int step, int increment, std::span<const double> u_start);
+  /// *CHANGE FRICTION's ramp: the friction law of each changed pair at step time t (the end of
+  /// the increment about to be solved), from `conditions`' amplitudes.
+  void set_step_time(const StepConditions& conditions, double t);
+  /// The contact forces (their part of f_int, per global DOF) of the pairs in force whose rows are
+  /// in `rows`, at the last update (a converged state): what *MODEL CHANGE, REMOVE releases.
+  std::vector<double> pair_forces(std::span<const std::size_t> rows, const ContactState& state) const;
   /// Search, projection and contact status at displacement u; rebuilds the assembler's pattern
   /// when the contact couplings or the multipliers changed.
   ContactIteration update(std::span<const double> u, ContactState& state, Assembler& assembler);
@@ -164,6 +176,8 @@ class ContactProblem {
   /// (the output of a converged state, whose last iteration evaluated it) keeps its results.
   void evaluate(std::span<const double> u);
   /// update() of slave i: its status, and the checks every method shares (chattering, HCRIT).
+  void mark_step_change(Pair& p, const AnalysisModel& am, std::size_t step_index);
+  void start_step(const Pair& p, ContactState& state) const;
   void update_node(Pair& p, std::size_t i, SlaveState& s, const contact::StatusLimits& limits,
                    std::span<const contact::Vec3> x, ContactIteration& it) const;
   /// A closed node that lost its master: did it go through it by more than HCRIT?
