@@ -1,0 +1,76 @@
+// *STATIC, STABILIZE on the 3D contact patch test (tests/contact_verification/decks): the upper
+// block is held vertically by nothing but the contact. The stabilised run must complete, dissipate
+// under 1 % of its strain energy, and give CPRESS = p = 10 (the load over the area) within 1 %,
+// as the unstabilised run does; a large damping factor must say that its answer may be wrong.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "solver/stabilization.hpp"
+#include "verification/verification_fixture.hpp"
+
+namespace {
+
+using inpact::verification::run_deck;
+
+std::string stabilize_deck(const std::string& name) {
+  return std::string(INPACT_SOURCE_DIR) + "/tests/contact_verification/decks/" + name + ".inp";
+}
+
+double history(const inpact::solver::Frame& f, const std::string& key) {
+  for (const auto& h : f.history)
+    if (h.key == key) return h.value;
+  ADD_FAILURE() << "no history value " << key;
+  return NAN;
+}
+
+const std::vector<double>& cpress(const inpact::solver::Frame& f) {
+  const auto* field = inpact::verification::field(f, "CPRESS");
+  EXPECT_NE(field, nullptr);
+  static const std::vector<double> none;
+  return field ? field->values : none;
+}
+
+bool warned(const inpact::verification::Run& r) {
+  return std::any_of(r.capture.messages.begin(), r.capture.messages.end(), [](const std::string& m) {
+    return m.find("the stabilised answer may be wrong") != std::string::npos;
+  });
+}
+
+TEST(StabilizePatch, CompletesWithSmallDissipationAndTheExactPressure) {
+  const auto plain = run_deck(stabilize_deck("stabilize_patch_3d_unstabilized"));
+  const auto stab = run_deck(stabilize_deck("stabilize_patch_3d"));
+  ASSERT_TRUE(plain->outcome.completed) << plain->outcome.message;
+  ASSERT_TRUE(stab->outcome.completed) << stab->outcome.message;
+  const auto& last = stab->capture.last();
+  const double allse = history(last, "ALLSE"), allsd = history(last, "ALLSD");
+  EXPECT_GT(allse, 0.0);
+  EXPECT_GT(allsd, 0.0);  // increments 2-4 are damped
+  EXPECT_LT(allsd, 0.01 * allse);
+  std::printf("[ figures ] ALLSE %.6g ALLSD %.6g ALLSD/ALLSE %.3g\n", allse, allsd, allsd / allse);
+  EXPECT_FALSE(warned(*stab));
+
+  const auto& p_stab = cpress(last);
+  const auto& p_plain = cpress(plain->capture.last());
+  ASSERT_EQ(p_stab.size(), p_plain.size());
+  double worst_load = 0.0, worst_plain = 0.0;
+  for (std::size_t i = 0; i < p_stab.size(); ++i) {
+    worst_load = std::max(worst_load, std::abs(p_stab[i] - 10.0) / 10.0);
+    worst_plain = std::max(worst_plain, std::abs(p_stab[i] - p_plain[i]) / std::abs(p_plain[i]));
+  }
+  EXPECT_LT(worst_load, 0.01);   // p = F/A
+  EXPECT_LT(worst_plain, 0.01);  // the unstabilised direct answer
+  std::printf("[ figures ] CPRESS error vs F/A %.3g, vs unstabilised %.3g\n", worst_load, worst_plain);
+}
+
+TEST(StabilizePatch, ALargeDampingFactorWarns) {
+  const auto r = run_deck(stabilize_deck("stabilize_patch_3d_large_factor"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& last = r->capture.last();
+  EXPECT_GT(history(last, "ALLSD"), inpact::solver::kAllsdWarningRatio * history(last, "ALLSE"));
+  EXPECT_TRUE(warned(*r));
+}
+
+}  // namespace
