@@ -187,12 +187,10 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       // A stabilized step's first increment is tried without damping; when it fails (a body
       // held only by contact: a rigid-body mode), damping starts and the singularity is no reason to stop.
       const bool damping_starts = run.stabilization && run.stabilization->attempt_failed(run.assembler);
-      if (damping_starts)
-        observer.message(fmt::format("step {} ({}): automatic stabilization starts with damping factor {:.4g}",
-                                     run.number, run.step.name, run.stabilization->factor()));
-      const Cutback cutback = inc.attempt_failed(outcome.singular && !damping_starts, run.contact != nullptr);
+      const Cutback cutback = damping_starts ? inc.retry_same_size() : inc.attempt_failed(outcome.singular, run.contact != nullptr);
       if (!cutback.retry) return {false, where + cutback.note};
-      observer.message(where + cutback.note);
+      observer.message(where + cutback.note +
+                       (damping_starts ? fmt::format(" (damping factor {:.4g})", run.stabilization->factor()) : ""));
       run.states.discard();  // the next attempt starts from the same committed history
     }
     const int increment = inc.increment();

@@ -96,3 +96,22 @@ TEST(StabilizePatch, ABodyHeldOnlyByContactStarts) {
 }
 
 }  // namespace
+
+namespace {
+
+// ALLSDTOL (inpact's adaptive scheme): the same large FACTOR, but c is lowered after each
+// increment whose ALLSD passes tol·ALLSE, so the step ends with less dissipation than with the
+// constant factor, and the last increments dissipate little.
+TEST(StabilizePatch, AllsdtolLowersALargeFactor) {
+  const auto constant = run_deck(stabilize_deck("stabilize_patch_3d_large_factor"));
+  const auto adaptive = run_deck(stabilize_deck("stabilize_patch_3d_adaptive"));
+  ASSERT_TRUE(adaptive->outcome.completed) << adaptive->outcome.message;
+  const auto ratio = [](const inpact::verification::Run& r) {
+    return history(r.capture.last(), "ALLSD") / history(r.capture.last(), "ALLSE");
+  };
+  EXPECT_LT(ratio(*adaptive), ratio(*constant));
+  std::printf("[ figures ] FACTOR=2000: ALLSD/ALLSE %.3g constant, %.3g with ALLSDTOL=0.05\n", ratio(*constant),
+              ratio(*adaptive));
+}
+
+}  // namespace
