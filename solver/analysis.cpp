@@ -159,7 +159,7 @@ NewtonOutcome run_attempt(const AnalysisModel& am, StepRun& run, const Increment
                     .force_history = force,
                     .at = {run.number, inc.increment(), inc.attempt()},
                     .keep_points = run.output.points_due(inc.increment(), inc.end(), inc.ends_step()),
-                    .stabilization = run.stabilization ? run.stabilization->for_attempt(inc.size()) : nullptr};
+                    .stabilization = run.stabilization ? run.stabilization->for_attempt(inc.size(), trial.u) : nullptr};
   int augmentations = 0;
   NewtonOutcome outcome = solve_with_augmentations(ctx, inc.end(), trial, augmentations);
   observer.attempt_finished(status_row(run, inc, outcome, augmentations));

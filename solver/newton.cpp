@@ -133,7 +133,7 @@ Residual NewtonIterations::assemble_residual(int k) {
         ++contact_force_count;
       }
   }
-  if (ctx_.stabilization) ctx_.stabilization->add_force(state_.u, u_start_, state_.f_int);
+  if (ctx_.stabilization) ctx_.stabilization->add_force(state_.u, state_.f_int);
   for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d];
   ctx_.assembler.reduce(r_full_, std::span(r_).first(n_eq_));
   if (ctx_.contact) ctx_.contact->constraint_residual(state_.contact, std::span(r_).subspan(n_eq_));

@@ -32,11 +32,10 @@ double strain_energy(const ElementPoints& points) {
   return energy;
 }
 
-void ViscousForces::add_force(std::span<const double> u, std::span<const double> u_start,
-                              std::span<double> f_int) const {
+void ViscousForces::add_force(std::span<const double> u, std::span<double> f_int) const {
   const double scale = factor_ / dt_;
   for (std::int64_t d = 0; d < dofs_->n_dof(); ++d)
-    if (dofs_->kind(d) == DofMap::Kind::Free) f_int[d] += scale * mass_[d] * (u[d] - u_start[d]);
+    if (dofs_->kind(d) == DofMap::Kind::Free) f_int[d] += scale * mass_[d] * (u[d] - u_start_[d]);
 }
 
 void ViscousForces::add_tangent(Assembler& assembler) const {
@@ -103,9 +102,10 @@ StepStabilization::StepStabilization(const AnalysisModel& am, const model::Stabi
   else if (spec.continue_previous && previous_factor > 0.0) factor_ = previous_factor;
 }
 
-const ViscousForces* StepStabilization::for_attempt(double dt) {
+const ViscousForces* StepStabilization::for_attempt(double dt, std::span<const double> u_start) {
   if (factor_ <= 0.0) return nullptr;
   forces_.set(factor_, dt);
+  forces_.set_start(u_start);
   return &forces_;
 }
 

@@ -35,9 +35,12 @@ class ViscousForces {
  public:
   ViscousForces(const DofMap& dofs, std::span<const double> mass) : dofs_(&dofs), mass_(mass) {}
   void set(double factor, double dt) { factor_ = factor, dt_ = dt; }
+  /// The displacements at the increment's start (Δu = u − u_start), copied: augmentations
+  /// restart Newton from intermediate states, the increment's start stays.
+  void set_start(std::span<const double> u_start) { u_start_.assign(u_start.begin(), u_start.end()); }
   double factor() const { return factor_; }
   /// f_int += c M* (u − u_start)/Δt on the free DOFs.
-  void add_force(std::span<const double> u, std::span<const double> u_start, std::span<double> f_int) const;
+  void add_force(std::span<const double> u, std::span<double> f_int) const;
   /// The reduced tangent += c M*/Δt (through the DOF map's masters, as the elements').
   void add_tangent(Assembler& assembler) const;
   /// F_v·Δu = c Δuᵀ M* Δu / Δt over the same DOFs.
@@ -46,6 +49,7 @@ class ViscousForces {
  private:
   const DofMap* dofs_;
   std::span<const double> mass_;
+  std::vector<double> u_start_;
   double factor_ = 0.0, dt_ = 1.0;
 };
 
@@ -66,9 +70,9 @@ class StepStabilization {
   StepStabilization(const AnalysisModel& am, const model::Stabilization& spec, double time_period,
                     const DofMap& dofs, Assembler& assembler, std::span<const double> u, double previous_factor);
 
-  /// The forces for an attempt of size dt, or null while c is unknown (the first increment
+  /// The forces for an attempt of size dt from u_start, or null while c is unknown (the first increment
   /// is tried without damping, as Abaqus does).
-  const ViscousForces* for_attempt(double dt);
+  const ViscousForces* for_attempt(double dt, std::span<const double> u_start);
   /// An attempt failed. While c is unknown it is set from the tangent's diagonal: true (retry
   /// the increment with damping, a rigid-body mode is no reason to stop now).
   bool attempt_failed(Assembler& assembler);

@@ -99,7 +99,8 @@ TEST(Stabilization, DampingForceTangentAndDissipationByHand) {
     u_start[d] = 0.01 * static_cast<double>(d);
     u[d] = u_start[d] + 1e-3 * static_cast<double>(d % 5 + 1);
   }
-  forces.add_force(u, u_start, f);
+  forces.set_start(u_start);
+  forces.add_force(u, f);
   double dissipated = 0.0;
   for (std::size_t d = 0; d < 24; ++d) {
     const double du = u[d] - u_start[d];
