@@ -90,7 +90,7 @@ std::optional<double> positive_param(KeywordContext& ctx, std::string_view name)
 // STABILIZE[=f], FACTOR=c, ALLSDTOL=tol, CONTINUE=YES|NO [K16 *STATIC] (Abaqus "Automatic
 // stabilization of static problems"): f is the dissipated energy fraction (default 2e-4); FACTOR
 // gives the damping factor c itself and needs STABILIZE; ALLSDTOL makes it adaptive (inpact:
-// only when given, and only lowering c; 0 = constant). CONTINUE=YES carries c over from the
+// only when given, and only lowering c; bare ALLSDTOL = 0.05; 0 = constant). CONTINUE=YES carries c over from the
 // previous step. Returns nothing when STABILIZE is absent.
 std::optional<model::Stabilization> stabilization(KeywordContext& ctx) {
   const bool continued = ctx.choice_value("CONTINUE") == "YES";
@@ -103,6 +103,8 @@ std::optional<model::Stabilization> stabilization(KeywordContext& ctx) {
   model::Stabilization s;
   if (auto f = positive_param(ctx, "STABILIZE")) s.energy_fraction = *f;
   s.damping_factor = positive_param(ctx, "FACTOR");
+  // ALLSDTOL without a value: the accuracy tolerance 0.05 of Abaqus's adaptive stabilization.
+  if (ctx.has("ALLSDTOL") && !ctx.param("ALLSDTOL")->value) s.allsdtol = 0.05;
   if (auto tol = ctx.real_value("ALLSDTOL")) {
     if (*tol < 0) ctx.error_param("ALLSDTOL", fmt::format("ALLSDTOL cannot be negative, found {}", *tol));
     else if (*tol > 0) s.allsdtol = tol;

@@ -229,6 +229,7 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
   double total_time = 0.0;
   double output_seconds = 0.0;
   double previous_factor = 0.0;  // the damping factor the last step ended with (CONTINUE=YES)
+  double allsd = 0.0;            // ALLSD over the steps so far
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
@@ -243,10 +244,12 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
                                    step.name, v));
     if (const auto& stabilize = step.static_procedure->stabilize)
       run.stabilization = std::make_unique<StepStabilization>(am, *stabilize, step.static_procedure->time_period,
-                                                              run.dofs, run.assembler, state.u, previous_factor);
+                                                              run.dofs, run.assembler, state.u, previous_factor,
+                                                              allsd);
     AnalysisOutcome outcome = run_increments(am, run, state, observer);
     output_seconds += run.output_seconds;
     previous_factor = run.stabilization ? run.stabilization->factor() : 0.0;
+    if (run.stabilization) allsd = run.stabilization->allsd();
     if (auto warning = run.stabilization ? run.stabilization->end_of_step_warning() : std::nullopt) {
       const std::string line = fmt::format("step {} ({}): {}", s + 1, step.name, *warning);
       observer.message(line);

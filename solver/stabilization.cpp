@@ -90,8 +90,9 @@ double factor_from_diagonals(double fraction, const SparseMatrix& tangent, const
 
 StepStabilization::StepStabilization(const AnalysisModel& am, const model::Stabilization& spec, double time_period,
                                      const DofMap& dofs, Assembler& assembler, std::span<const double> u,
-                                     double previous_factor)
-    : dofs_(dofs), spec_(spec), time_period_(time_period), forces_(dofs, {}), f_scratch_(am.n_dof()) {
+                                     double previous_factor, double allsd_before)
+    : dofs_(dofs), spec_(spec), time_period_(time_period), forces_(dofs, {}), allsd_(allsd_before),
+      f_scratch_(am.n_dof()) {
   // The element volumes: the points' reference volumes, whatever u is.
   AssemblyRequest volumes{.tangent = false, .nlgeom = false, .delta_t = {}, .points = true};
   assembler.assemble(u, volumes, f_scratch_);

@@ -12,7 +12,7 @@
 ///
 /// Energies: ALLSE = Σ_points ½ σ·ε dV (the strain energy of linear elasticity, engineering
 /// shears with their Voigt stresses; for NLGEOM or inelastic materials an approximation) and
-/// ALLSD = Σ_increments F_v·Δu = Σ c Δuᵀ M* Δu / Δt.
+/// ALLSD = Σ_increments F_v·Δu = Σ c Δuᵀ M* Δu / Δt, accumulated from the analysis's start.
 #include <optional>
 #include <span>
 #include <string>
@@ -66,9 +66,11 @@ double factor_from_diagonals(double fraction, const SparseMatrix& tangent, const
 class StepStabilization {
  public:
   StepStabilization(const StepStabilization&) = delete;
-  /// `previous_factor`: the damping factor the previous step ended with (CONTINUE=YES), or 0.
+  /// `previous_factor`: the damping factor the previous step ended with (CONTINUE=YES), or 0;
+  /// `allsd_before`: ALLSD of the earlier steps (it accumulates over the analysis, as Abaqus's).
   StepStabilization(const AnalysisModel& am, const model::Stabilization& spec, double time_period,
-                    const DofMap& dofs, Assembler& assembler, std::span<const double> u, double previous_factor);
+                    const DofMap& dofs, Assembler& assembler, std::span<const double> u, double previous_factor,
+                    double allsd_before);
 
   /// The forces for an attempt of size dt from u_start, or null while c is unknown (the first increment
   /// is tried without damping, as Abaqus does).

@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <string>
 
+#include "fixtures/deck_fixture.hpp"
 #include "solver/stabilization.hpp"
 #include "verification/verification_fixture.hpp"
 
@@ -112,6 +115,36 @@ TEST(StabilizePatch, AllsdtolLowersALargeFactor) {
   EXPECT_LT(ratio(*adaptive), ratio(*constant));
   std::printf("[ figures ] FACTOR=2000: ALLSD/ALLSE %.3g constant, %.3g with ALLSDTOL=0.05\n", ratio(*constant),
               ratio(*adaptive));
+}
+
+}  // namespace
+
+namespace {
+
+// CONTINUE=YES: a second step starts with the damping factor the first ended with, so its first
+// increment is damped already (ALLSD grows in it); without it the second step's first increment
+// is undamped again and sets its own factor.
+TEST(StabilizePatch, ContinueCarriesTheFactorIntoTheNextStep) {
+  std::ifstream in(stabilize_deck("stabilize_patch_3d"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string step2 = "*STEP, NAME=MORE\n*STATIC, STABILIZE{}\n0.25, 1.0\n*DSLOAD\nTOP_S, P, 20\n*END STEP\n";
+  inpact::test::DeckDir dir;
+  const auto run_with = [&](const std::string& extra) {
+    std::string deck = text.str() + step2;
+    deck.replace(deck.find("{}"), 2, extra);
+    return run_deck(dir.write(extra.empty() ? "fresh.inp" : "continued.inp", deck));
+  };
+  const auto continued = run_with(", CONTINUE=YES");
+  const auto fresh = run_with("");
+  ASSERT_TRUE(continued->outcome.completed) << continued->outcome.message;
+  ASSERT_TRUE(fresh->outcome.completed) << fresh->outcome.message;
+  // ALLSD accumulates over the steps: the fresh step's undamped first increment adds nothing.
+  const auto first_of_step2 = [](const inpact::verification::Run& r) {
+    return history(*r.capture.of_step(2).front(), "ALLSD") - history(*r.capture.of_step(1).back(), "ALLSD");
+  };
+  EXPECT_GT(first_of_step2(*continued), 0.0);
+  EXPECT_EQ(first_of_step2(*fresh), 0.0);
 }
 
 }  // namespace

@@ -46,6 +46,13 @@ TEST(StabilizeKeyword, DefaultsAndValues) {
   ASSERT_TRUE(factor.ok()) << factor.report();
   EXPECT_DOUBLE_EQ(*factor.model.steps[0].static_procedure->stabilize->damping_factor, 3.5);
 
+  auto bare = dir.read(one_cube_deck(static_step("*STATIC, STABILIZE, ALLSDTOL")));
+  ASSERT_TRUE(bare.ok()) << bare.report();
+  EXPECT_DOUBLE_EQ(*bare.model.steps[0].static_procedure->stabilize->allsdtol, 0.05);
+  auto off = dir.read(one_cube_deck(static_step("*STATIC, STABILIZE, ALLSDTOL=0")));
+  ASSERT_TRUE(off.ok()) << off.report();
+  EXPECT_FALSE(off.model.steps[0].static_procedure->stabilize->allsdtol);
+
   auto none = dir.read(one_cube_deck(static_step("*STATIC")));
   ASSERT_TRUE(none.ok());
   EXPECT_FALSE(none.model.steps[0].static_procedure->stabilize);
