@@ -25,10 +25,14 @@ std::string enforcement_text(const ResolvedInteraction& r) {
   switch (r.enforcement) {
     case EnforcementKind::DirectMultipliers:
       return r.tied_pair ? "Lagrange multipliers (TIED: bonded once adjusted, no slip)" : "Lagrange multipliers";
-    case EnforcementKind::PenaltyLaw: return "no Lagrange multipliers (slope <= 1000 k_e)";
+    case EnforcementKind::PenaltyLaw:
+      return r.scales_from_mesh ? "no Lagrange multipliers (slope <= 1000 k_e)"
+                                : "no Lagrange multipliers (no k_e to compare the slope with)";
     case EnforcementKind::LawWithMultipliers:
       return "Lagrange multipliers (slope > 1000 k_e), the law's compliance on their diagonal";
-    case EnforcementKind::AugmentedLagrange: return "augmented Lagrange multipliers (slope <= 1000 k_e)";
+    case EnforcementKind::AugmentedLagrange:
+      return r.scales_from_mesh ? "augmented Lagrange multipliers (slope <= 1000 k_e)"
+                                : "augmented Lagrange multipliers (no k_e to compare the slope with)";
   }
   return "";
 }
@@ -58,6 +62,15 @@ const char* offsets_text(GapOffsets o) {
   return "";
 }
 
+/// *CHANGE FRICTION's transition over the step: where μ and γ_crit start.
+std::string ramp_text(const FrictionRamp& ramp) {
+  const std::string from = ramp.from ? fmt::format("mu = {:g}, elastic slip {:.6g}", ramp.from->mu, ramp.from->gamma_crit)
+                                     : std::string("frictionless");
+  const std::string by = ramp.amplitude.empty() ? std::string("linearly over the step (step amplitude RAMP)")
+                                                : fmt::format("by amplitude {}", ramp.amplitude);
+  return fmt::format(" (*CHANGE FRICTION: from {} at the step start, {})", from, by);
+}
+
 }  // namespace
 
 std::string describe(const ResolvedInteraction& r) {
@@ -77,6 +90,7 @@ std::string describe(const ResolvedInteraction& r) {
   out += offsets_text(r.offsets);
   if (r.thickness != 1.0) out += fmt::format("; out-of-plane thickness {:g}", r.thickness);
   out += r.friction ? "; " + describe(*r.friction) : std::string("; frictionless");
+  if (r.friction_ramp) out += ramp_text(*r.friction_ramp);
   return out;
 }
 

@@ -45,6 +45,10 @@ struct SlaveState {
 struct NodeGap {
   bool found = false;  ///< the node faces the master
   double gap = 0.0;    ///< with the pair's offsets; meaningful only when found
+  /// The node starts closed whatever its gap now: it touched (or overclosed) its master when
+  /// the pair came into force (solver/contact_problem.cpp, starts_closed); set in the first
+  /// status update of the pair's first increment only.
+  bool starts_closed = false;
 };
 
 /// Status thresholds of a pair at one update (round-off of its pressures and lengths).

@@ -10,6 +10,7 @@
 #include "contact/contact_surface.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact/pair_kinematics.hpp"
+#include "contact/step_changes.hpp"
 
 namespace inpact::contact {
 
@@ -36,17 +37,6 @@ const model::ContactControls* controls_for(const model::Model& m, std::size_t st
   return specific ? specific : global;
 }
 
-const model::SurfaceInteraction* interaction_of(const model::Model& m, const model::ContactPair& p) {
-  auto it = m.interactions.find(p.interaction);
-  return it == m.interactions.end() ? nullptr : &it->second;
-}
-
-/// The name a surface has in the deck ("" for a body exterior general contact made).
-std::string deck_name(const model::Model& m, const model::Surface* s) {
-  const auto it = m.mesh.surfaces.find(s->name);
-  return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
-}
-
 /// surface_scales() once per surface (it visits every element).
 class ScaleCache {
  public:
@@ -68,7 +58,7 @@ void resolve_scales(const model::Model& m, const ContactInteraction& entry, Scal
   if (!scales) scales = cache.of(entry.master);
   // A balanced two-row interaction (general contact): both rows take the mean of the two
   // surfaces' scales, so they hold one law, see the same gap, and each reports the pressure
-  // that acts (with a row's own k_e one surface showed 2/3 p and the other 4/3 p).
+  // that acts (with its own k_e each row would carry a different share of the load).
   if (entry.general && entry.weight != 1.0 && entry.slave != entry.master) {
     const auto other = cache.of(entry.master);
     if (scales && other) {
@@ -117,10 +107,28 @@ void resolve_enforcement(const ContactInteraction& entry, ResolvedInteraction& r
   r.user_adaptive = b.user_adaptive_stiffness && !stiff;
 }
 
+/// A *CHANGE FRICTION of step `step` that moves μ or γ_crit: the ramp from the previous step's law
+/// (FrictionRamp). None with *STEP, AMPLITUDE=STEP (and no AMPLITUDE=), or when ROUGH is involved.
+std::optional<FrictionRamp> friction_ramp(const model::Model& m, const std::string& name, std::size_t step,
+                                          const ResolvedInteraction& r) {
+  const model::FrictionChange* c = friction_change_in(m, name, step);
+  if (!c || (c->amplitude.empty() && m.steps[step].amplitude == model::Step::DefaultAmplitude::Step)) return std::nullopt;
+  const std::optional<model::SurfaceInteraction> before =
+      step == 0 ? std::optional<model::SurfaceInteraction>(m.interactions.at(name)) : interaction_in_step(m, name, step - 1);
+  FrictionRamp ramp{resolve_friction(before && before->friction ? &*before->friction : nullptr, r.l_char, r.ke),
+                    c->amplitude};
+  const std::optional<FrictionLaw>& to = r.friction;
+  if ((ramp.from && ramp.from->rough) || (to && to->rough)) return std::nullopt;
+  const double mu0 = ramp.from ? ramp.from->mu : 0.0, mu1 = to ? to->mu : 0.0;
+  const bool same_slip = !ramp.from || !to || ramp.from->gamma_crit == to->gamma_crit;
+  if (mu0 == mu1 && same_slip) return std::nullopt;
+  return ramp;
+}
+
 /// Step 5: HCRIT, friction and the gap offsets.
-void resolve_limits_and_friction(const model::Model& m, const ContactInteraction& entry, ResolvedInteraction& r) {
+void resolve_limits_and_friction(const model::Model& m, const ContactInteraction& entry,
+                                 const model::SurfaceInteraction* inter, ResolvedInteraction& r) {
   const model::ContactPair& deck = entry.pair;
-  const model::SurfaceInteraction* inter = interaction_of(m, deck);
   const bool softened = r.behavior.law != Law::Hard && !deck.tied;
   if (r.augmented) r.tolerance = *penetration_tolerance(r.behavior, r.l_char);
   r.hcrit = softened ? std::numeric_limits<double>::infinity() : deck.hcrit.value_or(0.5 * r.l_char);
@@ -131,12 +139,13 @@ void resolve_limits_and_friction(const model::Model& m, const ContactInteraction
   const bool tied = deck.tied || r.tied_law;
   r.friction = resolve_friction(tied ? &tie : inter && inter->friction ? &*inter->friction : nullptr, r.l_char, r.ke);
   if (r.tied_law && tie.stick_slope) r.friction->fixed_stiffness = *tie.stick_slope;  // CalculiX's λ
+  if (!tied && inter) r.friction_ramp = friction_ramp(m, deck.interaction, r.step, r);
   if (r.friction && r.friction->rough && !(r.ke > 0.0))
-    refuse(inter->friction->loc, "*FRICTION",
+    refuse(inter && inter->friction ? inter->friction->loc : deck.loc, inter && inter->friction ? "*FRICTION" : "*CONTACT PAIR",
            fmt::format("pair {}: ROUGH friction needs the element stiffness k_e of an element-based surface with an "
                        "elastic material", r.name));
   const bool has_clearance = !entry.general && std::any_of(m.clearances.begin(), m.clearances.end(), [&](const auto& c) {
-    return c.slave == deck.slave && c.master == deck.master;
+    return clearance_names(c, deck);
   });
   r.offsets = r.tied_law ? GapOffsets::InitialGap : has_clearance ? GapOffsets::Clearance : GapOffsets::None;
 }
@@ -157,16 +166,54 @@ void refuse_unsupported(const ContactInteraction& entry, const model::SurfaceInt
            "turn tensile); add DIRECT or drop the penalty or softened law");
 }
 
+/// Is CalculiX's TIED law in force for `name` in step `step` (the model data's, or a change's)?
+bool tied_law_in(const model::Model& m, const std::string& name, std::size_t step) {
+  const std::optional<model::SurfaceInteraction> inter = interaction_in_step(m, name, step);
+  return inter && inter->behavior && inter->behavior->pressure_overclosure == Law::Tied;
+}
+
+/// What *CHANGE SURFACE BEHAVIOR cannot do in inpact: bond the surfaces in a later step (the TIED
+/// law bonds each slave node at its initial gap, so it must hold from the model data on), or
+/// switch general contact between multipliers and a penalty-type method (which decides whether
+/// the interaction is one row or two, interaction_table.hpp).
+void refuse_behavior_change(const model::Model& m, const ContactInteraction& entry, std::size_t step,
+                            const ResolvedInteraction& r) {
+  const model::SurfaceBehaviorChange* c = behavior_change_for(m, entry.pair.interaction, step);
+  if (!c) return;
+  const model::SourceLoc& loc = c->behavior->loc;
+  if (c->behavior->pressure_overclosure == Law::Tied) {
+    const auto& data = m.interactions.at(entry.pair.interaction).behavior;
+    bool tied_before = data && data->pressure_overclosure == Law::Tied;
+    for (std::size_t s = 0; s < step && tied_before; ++s) tied_before = tied_law_in(m, entry.pair.interaction, s);
+    if (!tied_before)
+      refuse(loc, "*SURFACE BEHAVIOR",
+             fmt::format("*CHANGE SURFACE BEHAVIOR to PRESSURE-OVERCLOSURE=TIED: inpact bonds each slave node at its "
+                         "initial gap, so the TIED law of '{}' must be in force from the model data on",
+                         entry.pair.interaction));
+  }
+  if (entry.general) {
+    const auto it = m.interactions.find(entry.pair.interaction);
+    const ResolvedNormalBehavior data =
+        resolve_normal_behavior(&it->second, model::ContactDiscretization::SurfaceToSurface, false, true);
+    if ((data.method == EnforcementMethod::Direct) != (r.behavior.method == EnforcementMethod::Direct))
+      refuse(loc, "*SURFACE BEHAVIOR",
+             fmt::format("*CHANGE SURFACE BEHAVIOR of '{}', which general contact uses: switching between direct "
+                         "enforcement and a penalty-type method within the analysis is not supported",
+                         entry.pair.interaction));
+  }
+}
+
 ResolvedInteraction resolve_row(const model::Model& m, const InteractionTable& table, std::size_t row,
                                 std::size_t step, ScaleCache& cache) {
   const ContactInteraction& entry = table.rows[row];
   const model::ContactPair& deck = entry.pair;
-  const model::SurfaceInteraction* inter = interaction_of(m, deck);
+  // The interaction as this step has it (the model data's with the step changes up to it).
+  const std::optional<model::SurfaceInteraction> in_step = interaction_in_step(m, deck.interaction, step);
+  const model::SurfaceInteraction* inter = in_step ? &*in_step : nullptr;
   ResolvedInteraction r;
   r.row = row;
   r.step = step;
   r.name = entry.name();
-  r.pair = &entry.pair;
   r.general = entry.general;
   r.self_contact = deck.slave == deck.master;
   r.surface_to_surface = deck.type == model::ContactDiscretization::SurfaceToSurface;
@@ -180,13 +227,14 @@ ResolvedInteraction resolve_row(const model::Model& m, const InteractionTable& t
   options.self_contact_3d = r.self_contact;
   r.behavior = resolve_normal_behavior(inter, deck.type, deck.small_sliding, entry.general, options);
   refuse_unsupported(entry, inter, r);
+  refuse_behavior_change(m, entry, step, r);
   resolve_scales(m, entry, cache, r);
   resolve_enforcement(entry, r);
-  resolve_limits_and_friction(m, entry, r);
+  resolve_limits_and_friction(m, entry, inter, r);
   if (r.surface_to_surface) {
     const model::ContactPair* named = entry.general ? nullptr : &deck;
-    r.smoothed = !corrections_for(m, deck_name(m, entry.master), named).empty() ||
-                 !corrections_for(m, deck_name(m, entry.slave), named).empty();
+    r.smoothed = !corrections_for(m, deck_surface_name(m, entry.master), named).empty() ||
+                 !corrections_for(m, deck_surface_name(m, entry.slave), named).empty();
   }
   return r;
 }
@@ -209,14 +257,36 @@ void merge_balanced_multiplier_rows(const InteractionTable& table, std::vector<R
 
 }  // namespace
 
+std::string deck_surface_name(const model::Model& m, const model::Surface* s) {
+  const auto it = m.mesh.surfaces.find(s->name);
+  return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
+}
+
 std::vector<ResolvedInteraction> resolve_interactions(const model::Model& m, const InteractionTable& table,
                                                       std::size_t step) {
   ScaleCache cache(m);
   std::vector<ResolvedInteraction> out;
-  for (std::size_t row = 0; row < table.rows.size(); ++row)
-    if (table.rows[row].first_step <= step) out.push_back(resolve_row(m, table, row, step, cache));
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    const ContactInteraction& e = table.rows[row];
+    if (e.first_step > step) continue;
+    if (!e.general && pair_removed(m, e.pair.slave, e.pair.master, step)) continue;  // *MODEL CHANGE, REMOVE
+    out.push_back(resolve_row(m, table, row, step, cache));
+  }
   merge_balanced_multiplier_rows(table, out);
   return out;
+}
+
+std::optional<FrictionLaw> ResolvedInteraction::friction_at(double a) const {
+  if (!friction_ramp) return friction;
+  const std::optional<FrictionLaw>& from = friction_ramp->from;
+  a = std::clamp(a, 0.0, 1.0);
+  // Every property but μ and γ_crit is the new law's at once [K16 *CHANGE FRICTION].
+  FrictionLaw now = friction ? *friction : *from;
+  const double mu0 = from ? from->mu : 0.0, mu1 = friction ? friction->mu : 0.0;
+  const double g1 = friction ? friction->gamma_crit : from->gamma_crit, g0 = from ? from->gamma_crit : g1;
+  now.mu = mu0 + a * (mu1 - mu0);
+  now.gamma_crit = g0 + a * (g1 - g0);
+  return now;
 }
 
 std::vector<std::vector<ResolvedInteraction>> resolve_all_steps(const model::Model& m, const InteractionTable& table) {

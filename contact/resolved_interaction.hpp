@@ -21,7 +21,11 @@
 ///   5. HCRIT (half the characteristic length unless given; none for softened laws), friction
 ///      (friction.hpp) with γ_crit from the same length, the gap offsets (*CLEARANCE, or
 ///      CalculiX's TIED law binding each node where it starts).
+/// The interaction a row refers to is the one in force in the step (step_changes.hpp: the latest
+/// *CHANGE FRICTION and *CHANGE SURFACE BEHAVIOR up to it); a *CONTACT PAIR that *MODEL CHANGE
+/// removed has no record in that step.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -51,12 +55,22 @@ enum class GapOffsets : std::uint8_t {
   InitialGap,  ///< CalculiX's TIED law: the reference gap becomes zero
 };
 
+/// *CHANGE FRICTION in this step, Abaqus's transition [K16 *CHANGE FRICTION]: μ and the allowable
+/// elastic slip go from the previous step's values to the new ones as the step's amplitude (RAMP:
+/// t/T; or AMPLITUDE=) goes from 0 to 1, a(t): μ(t) = μ₀ + a(t) (μ₁ − μ₀), the same for γ_crit
+/// (inpact's reading of "transitions ... occur according to the amplitude", UNCONFIRMED for a
+/// named amplitude). Every other property changes at once. With *STEP, AMPLITUDE=STEP, or when
+/// μ and γ_crit do not change, there is no ramp (CalculiX changes at once too).
+struct FrictionRamp {
+  std::optional<FrictionLaw> from;  ///< the law at the end of the previous step (unset: frictionless)
+  std::string amplitude;            ///< AMPLITUDE= of *CHANGE FRICTION; empty: the step's ramp t/T
+};
+
 /// One row of the interaction table as step `step` enforces it.
 struct ResolvedInteraction {
   std::size_t row = 0;    ///< into InteractionTable::rows
   std::size_t step = 0;   ///< 0-based
   std::string name;       ///< "SLAVE/MASTER"
-  const model::ContactPair* pair = nullptr;  ///< the table row's pair (deck data or general contact's)
   bool general = false, self_contact = false, surface_to_surface = false, finite_sliding = true;
   /// False for the second row of a balanced interaction enforced with multipliers (its first
   /// row carries the whole weight).
@@ -76,15 +90,16 @@ struct ResolvedInteraction {
   bool scales_from_mesh = false;  ///< k_e and l_char from element faces (else l_char is the search radius)
   double tolerance = 0.0;       ///< augmented Lagrange: the penetration tolerance (a length)
   double hcrit = 0.0;           ///< largest penetration one attempt may add (∞: softened laws)
-  std::optional<FrictionLaw> friction;  ///< unset: frictionless
+  std::optional<FrictionLaw> friction;  ///< unset: frictionless (at the end of the step, with a ramp)
+  std::optional<FrictionRamp> friction_ramp;  ///< set when a *CHANGE FRICTION of this step ramps μ, γ_crit
   GapOffsets offsets = GapOffsets::None;
   double weight = 1.0;          ///< balanced master-slave or self-contact: ½
   double thickness = 1.0;       ///< out-of-plane thickness of a 2-D interaction
   bool smoothed = false;        ///< geometric correction of either surface
 
-  bool uses_multipliers() const {
-    return enforcement == EnforcementKind::DirectMultipliers || enforcement == EnforcementKind::LawWithMultipliers;
-  }
+  /// The friction law at amplitude value a (0: the step start, 1: the new values): `friction`
+  /// without a ramp.
+  std::optional<FrictionLaw> friction_at(double a) const;
 };
 
 /// Contact data that contradicts the mesh or asks for what the analysis cannot give (a default
@@ -101,6 +116,15 @@ struct InteractionError : std::runtime_error {
 /// The rows of `table` in force in step `step` (0-based), resolved. Throws InteractionError.
 std::vector<ResolvedInteraction> resolve_interactions(const model::Model& model, const InteractionTable& table,
                                                       std::size_t step);
+
+/// Does *CLEARANCE `c` name `pair` (its slave and master)?
+inline bool clearance_names(const model::Clearance& c, const model::ContactPair& pair) {
+  return c.slave == pair.slave && c.master == pair.master;
+}
+
+/// The name a surface has in the deck ("" for a body exterior general contact made): what the
+/// smoothing lines are matched with (geometric_correction.hpp corrections_for).
+std::string deck_surface_name(const model::Model& model, const model::Surface* surface);
 
 /// The records of every step, index = step.
 std::vector<std::vector<ResolvedInteraction>> resolve_all_steps(const model::Model& model,

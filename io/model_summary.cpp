@@ -173,6 +173,9 @@ void write_steps(std::ostream& out, const model::Model& m,
     for (const auto& b : s.temperatures) n_t += b.entries.size();
     print(out, "    {} boundary, {} concentrated load, {} distributed load, {} temperature lines; {} output requests\n",
           n_bc, n_cl, n_dl, n_t, s.output.size());
+    for (const auto& c : s.pair_changes)
+      print(out, "    *MODEL CHANGE: contact pair {}/{} {}\n", c.slave, c.master,
+            c.add ? "reactivated (its slave nodes start open)" : "removed (its contact forces ramp to zero over the step)");
     if (k >= interactions.size()) continue;
     const std::vector<std::string> lines = contact::describe(interactions[k]);
     if (!lines.empty()) print(out, "    contact, as the analysis enforces it:\n");

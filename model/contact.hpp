@@ -158,6 +158,36 @@ struct Clearance {
   SourceLoc loc;
 };
 
+/// *CHANGE FRICTION, INTERACTION= in a step, with the *FRICTION that follows it: the friction of
+/// the interaction from this step on [K16 *CHANGE FRICTION], [CCX]. RESET returns the model data's.
+struct FrictionChange {
+  std::string interaction;           ///< upper case
+  bool reset = false;                ///< RESET: the model data's *FRICTION again (no *FRICTION follows)
+  std::optional<Friction> friction;  ///< the *FRICTION that follows; unset with RESET or when none follows
+  /// AMPLITUDE=: how μ and the allowable elastic slip move from their old values to the new ones
+  /// over the step; empty: the step's AMPLITUDE (RAMP by default for *STATIC, STEP: at once).
+  std::string amplitude;
+  SourceLoc loc;              ///< the keyword line
+  SourceLoc interaction_loc;  ///< the value of INTERACTION=
+  SourceLoc amplitude_loc;    ///< the value of AMPLITUDE=
+};
+
+/// *CHANGE SURFACE BEHAVIOR, INTERACTION= (CalculiX) in a step, with the *SURFACE BEHAVIOR that
+/// follows it: the normal behaviour of the interaction from this step on [CCX].
+struct SurfaceBehaviorChange {
+  std::string interaction;                  ///< upper case
+  std::optional<SurfaceBehavior> behavior;  ///< unset when no *SURFACE BEHAVIOR follows
+  SourceLoc loc, interaction_loc;
+};
+
+/// One data line of *MODEL CHANGE, TYPE=CONTACT PAIR, ADD | REMOVE: a *CONTACT PAIR removed from
+/// this step on, or reactivated [K16 *MODEL CHANGE], [IG ctc_contactpair_std].
+struct ContactPairChange {
+  std::string slave, master;  ///< upper case
+  bool add = false;           ///< ADD (reactivate); else REMOVE
+  SourceLoc loc;              ///< the data line's slave surface
+};
+
 /// *CONTACT CONTROLS within a step (applies to one pair, or to all when master/slave empty).
 struct ContactControls {
   std::string master, slave;

@@ -140,6 +140,10 @@ struct Step {
   Controls controls;
   std::vector<OutputRequest> output;
   std::vector<ContactPair> contact_pairs;  ///< pairs added in this step (*CONTACT PAIR in a step)
+  // Contact changes from this step on (contact/step_changes.hpp applies them).
+  std::vector<FrictionChange> friction_changes;         ///< *CHANGE FRICTION
+  std::vector<SurfaceBehaviorChange> behavior_changes;  ///< *CHANGE SURFACE BEHAVIOR
+  std::vector<ContactPairChange> pair_changes;          ///< *MODEL CHANGE, TYPE=CONTACT PAIR
   SourceLoc loc;
 };
 

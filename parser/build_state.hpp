@@ -73,6 +73,10 @@ struct BuildState {
   std::string open_parent;
   model::Material* material = nullptr;
   model::SurfaceInteraction* interaction = nullptr;
+  /// The open *CHANGE FRICTION / *CHANGE SURFACE BEHAVIOR of the step (its *FRICTION or
+  /// *SURFACE BEHAVIOR sub-option fills it).
+  model::FrictionChange* friction_change = nullptr;
+  model::SurfaceBehaviorChange* behavior_change = nullptr;
   bool output_is_history = false;  ///< the open *OUTPUT is HISTORY
   int output_frequency = 1;
   std::optional<int> output_number_interval;

@@ -167,6 +167,21 @@ void check_gravity_density(const model::Model& m, Diagnostics& diags) {
       }
 }
 
+/// *CHANGE FRICTION / *CHANGE SURFACE BEHAVIOR take effect through the option that follows them
+/// ("must be followed by a *FRICTION card to become effective" [CCX]): without it nothing changes.
+void check_contact_changes(const model::Model& m, Diagnostics& diags, const model::Step& step) {
+  for (const auto& c : step.friction_changes) {
+    check_amplitude(m, diags, c.amplitude, c.amplitude_loc, "*CHANGE FRICTION");
+    if (!c.reset && !c.friction)
+      diags.warning(c.loc, "*CHANGE FRICTION",
+                    fmt::format("no *FRICTION follows (nor RESET): the friction of '{}' is not changed", c.interaction));
+  }
+  for (const auto& c : step.behavior_changes)
+    if (!c.behavior)
+      diags.warning(c.loc, "*CHANGE SURFACE BEHAVIOR",
+                    fmt::format("no *SURFACE BEHAVIOR follows: the surface behavior of '{}' is not changed", c.interaction));
+}
+
 void check_steps(model::Model& m, Diagnostics& diags) {
   for (const auto& b : m.boundaries) check_amplitude(m, diags, b.amplitude, b.loc, "*BOUNDARY");
   for (const auto& step : m.steps) {
@@ -177,6 +192,7 @@ void check_steps(model::Model& m, Diagnostics& diags) {
     for (const auto& b : step.dloads)
       check_amplitude(m, diags, b.amplitude, b.loc, b.surface_load ? "*DSLOAD" : "*DLOAD");
     for (const auto& b : step.temperatures) check_amplitude(m, diags, b.amplitude, b.loc, "*TEMPERATURE");
+    check_contact_changes(m, diags, step);
   }
   check_gravity_density(m, diags);
 }

@@ -17,6 +17,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_step_keywords(t);
     add_output_keywords(t);
     add_contact_keywords(t);
+    add_step_contact_keywords(t);
     return t;
   }();
   return table;

@@ -47,7 +47,9 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
   using VK = ValueKind;
   using VT = ValueType;
   const std::vector<std::string_view> yes_no{"YES", "NO"};
-  const std::vector<std::string_view> interaction_parent{kSurfaceInteraction};
+  // In a step they follow *CHANGE SURFACE BEHAVIOR / *CHANGE FRICTION (kw_step_contact.cpp).
+  const std::vector<std::string_view> behavior_parents{kSurfaceInteraction, kChangeSurfaceBehavior};
+  const std::vector<std::string_view> friction_parents{kSurfaceInteraction, kChangeFriction};
   const std::vector<std::string_view> contact_parent{kContact};
 
   // Model data in Abaqus/Standard [K16 §18.50]; part-level interactions are not supported.
@@ -64,18 +66,18 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
 
   // [K16 §18.48], [K17]; TIED is CalculiX's; HERTZ/JKR/LKM are newer discrete-element laws and
   // SCALE FACTOR is Abaqus/Explicit's: listed so that they get "not supported", not "unknown".
-  t.push_back({"*SURFACE BEHAVIOR", kModelDataScopes,
+  t.push_back({"*SURFACE BEHAVIOR", kModelDataScopes | kStepScope,
                {{"PRESSURE-OVERCLOSURE", VK::Required, VT::Choice,
                  {"HARD", "EXPONENTIAL", "LINEAR", "TABULAR", "TIED", "SCALE FACTOR", "HERTZ", "JKR", "LKM"}},
                 {"AUGMENTED LAGRANGE", VK::None},
                 {"DIRECT", VK::None},
                 {"PENALTY", VK::Optional, VT::Choice, {"LINEAR", "NONLINEAR"}},
                 {"NO SEPARATION", VK::None}},
-               DataLines::Optional, surface_behavior, interaction_parent});
+               DataLines::Optional, surface_behavior, behavior_parents});
   t.back().numbers_from = 0;
 
   // [K16 §6.36], [IG ctc_friction]; CalculiX takes no parameters.
-  t.push_back({"*FRICTION", kModelDataScopes,
+  t.push_back({"*FRICTION", kModelDataScopes | kStepScope,
                {{"ROUGH", VK::None},
                 {"LAGRANGE", VK::None},
                 {"ELASTIC SLIP", VK::Required, VT::Real},
@@ -90,7 +92,7 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                 {"TEST DATA", VK::None},
                 {"TAUMAX", VK::Required, VT::Real},
                 {"SHEAR TRACTION SLOPE", VK::Required, VT::Text}},
-               DataLines::Optional, friction, interaction_parent});
+               DataLines::Optional, friction, friction_parents});
   t.back().numbers_from = 0;
 
   // Model data [K16 §3.68]; the brief lets a step add pairs too (they go to Step::contact_pairs).

@@ -12,6 +12,8 @@ namespace inpact::parser::contact_kw {
 
 inline constexpr std::string_view kSurfaceInteraction = "*SURFACE INTERACTION";
 inline constexpr std::string_view kContact = "*CONTACT";
+inline constexpr std::string_view kChangeFriction = "*CHANGE FRICTION";
+inline constexpr std::string_view kChangeSurfaceBehavior = "*CHANGE SURFACE BEHAVIOR";
 
 // kw_surface_interaction.cpp
 void surface_interaction(KeywordContext& ctx);
@@ -22,6 +24,11 @@ void friction(KeywordContext& ctx);
 void contact_pair(KeywordContext& ctx);
 void clearance(KeywordContext& ctx);
 void contact_controls(KeywordContext& ctx);
+
+// kw_step_contact.cpp (history data: the step-wise changes of contact)
+void change_friction(KeywordContext& ctx);
+void change_surface_behavior(KeywordContext& ctx);
+void model_change(KeywordContext& ctx);
 
 // kw_general_contact.cpp
 void contact(KeywordContext& ctx);

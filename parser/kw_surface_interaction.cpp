@@ -20,6 +20,37 @@ const Line* at_most_one_line(KeywordContext& ctx, std::string_view layout) {
   return ctx.data.empty() ? nullptr : &ctx.data[0];
 }
 
+/// Where a *SURFACE BEHAVIOR goes: its *SURFACE INTERACTION's, or the open *CHANGE SURFACE
+/// BEHAVIOR's; null (reported) when that already has one.
+std::optional<model::SurfaceBehavior>* behavior_target(KeywordContext& ctx) {
+  const bool change = ctx.state.open_parent == kChangeSurfaceBehavior;
+  auto& target = change ? ctx.state.behavior_change->behavior : ctx.state.interaction->behavior;
+  if (!target) return &target;
+  ctx.error(ctx.keyword.loc, change ? fmt::format("this *CHANGE SURFACE BEHAVIOR of '{}' already has a *SURFACE BEHAVIOR",
+                                                  ctx.state.behavior_change->interaction)
+                                    : fmt::format("surface interaction '{}' already has a *SURFACE BEHAVIOR",
+                                                  ctx.state.interaction->name));
+  return nullptr;
+}
+
+/// Where a *FRICTION goes: its *SURFACE INTERACTION's, or the open *CHANGE FRICTION's; null
+/// (reported) when that already has one, or is a RESET.
+std::optional<model::Friction>* friction_target(KeywordContext& ctx) {
+  const bool change = ctx.state.open_parent == kChangeFriction;
+  auto& target = change ? ctx.state.friction_change->friction : ctx.state.interaction->friction;
+  if (change && ctx.state.friction_change->reset) {
+    ctx.error(ctx.keyword.loc, "*CHANGE FRICTION, RESET returns the model data's friction: no *FRICTION follows it "
+                               "(drop RESET to give new values)");
+    return nullptr;
+  }
+  if (!target) return &target;
+  ctx.error(ctx.keyword.loc, change ? fmt::format("this *CHANGE FRICTION of '{}' already has a *FRICTION",
+                                                  ctx.state.friction_change->interaction)
+                                    : fmt::format("surface interaction '{}' already has a *FRICTION",
+                                                  ctx.state.interaction->name));
+  return nullptr;
+}
+
 }  // namespace
 
 // *SURFACE INTERACTION, NAME=: an optional data line with the out-of-plane thickness (2D) or
@@ -185,12 +216,10 @@ void read_tabular(KeywordContext& ctx, model::SurfaceBehavior& b) {
 // *SURFACE BEHAVIOR [K16 §18.48], [IG], [AX]. Defaults: PRESSURE-OVERCLOSURE=HARD; no
 // enforcement flag = the method Abaqus picks for the formulation (EnforcementMethod::Default,
 // resolved in contact/normal_behavior.cpp); bare PENALTY = PENALTY=LINEAR.
+// Under *CHANGE SURFACE BEHAVIOR (a step) it is read the same way into the step's change.
 void surface_behavior(KeywordContext& ctx) {
-  model::SurfaceInteraction& inter = *ctx.state.interaction;
-  if (inter.behavior) {
-    ctx.error(ctx.keyword.loc, fmt::format("surface interaction '{}' already has a *SURFACE BEHAVIOR", inter.name));
-    return;
-  }
+  std::optional<model::SurfaceBehavior>* target = behavior_target(ctx);
+  if (!target) return;
   model::SurfaceBehavior b;
   b.loc = ctx.keyword.loc;
 
@@ -294,7 +323,7 @@ void surface_behavior(KeywordContext& ctx) {
       break;
     }
   }
-  inter.behavior = std::move(b);
+  *target = std::move(b);
 }
 
 // *FRICTION [K16 §6.36], [IG ctc_friction]. Defaults: isotropic Coulomb friction enforced by
@@ -304,12 +333,10 @@ void surface_behavior(KeywordContext& ctx) {
 // constant μ, whatever the other fields say); CalculiX `μ, stick slope λ`. The second field is
 // read as CalculiX's λ: on a single Abaqus line it has no effect, so that reading is the only
 // one that can matter. More lines would be a rate/pressure/temperature table: not supported.
+// Under *CHANGE FRICTION (a step) it is read the same way into the step's change.
 void friction(KeywordContext& ctx) {
-  model::SurfaceInteraction& inter = *ctx.state.interaction;
-  if (inter.friction) {
-    ctx.error(ctx.keyword.loc, fmt::format("surface interaction '{}' already has a *FRICTION", inter.name));
-    return;
-  }
+  std::optional<model::Friction>* target = friction_target(ctx);
+  if (!target) return;
   model::Friction fr;
   fr.loc = ctx.keyword.loc;
   reject_param(ctx, "USER", "user subroutine FRIC");
@@ -345,7 +372,7 @@ void friction(KeywordContext& ctx) {
 
   if (fr.rough) {
     if (!ctx.data.empty()) ctx.error(line_start(ctx.data[0]), "ROUGH friction takes no data lines");
-    inter.friction = fr;
+    *target = fr;
     return;
   }
   if (ctx.data.empty()) {
@@ -372,7 +399,7 @@ void friction(KeywordContext& ctx) {
   fr.mu = *mu;
   // CalculiX replaces λ ≤ 0 by a default; so does inpact (unset), so only a positive λ is kept.
   if (lambda && *lambda > 0) fr.stick_slope = *lambda;
-  inter.friction = fr;
+  *target = fr;
 }
 
 }  // namespace inpact::parser::contact_kw

@@ -11,6 +11,7 @@
 #include "assembler.hpp"
 #include "augmentation.hpp"
 #include "blas_info.hpp"
+#include "contact/step_changes.hpp"
 #include "contact_problem.hpp"
 #include "dof_map.hpp"
 #include "field_output.hpp"
@@ -181,13 +182,18 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       trial = state;
       outcome = run_attempt(am, run, inc, force, trial, observer);
       if (outcome.converged) break;
-      const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}",
-                                            run.number, run.step.name, inc.increment(), inc.attempt(), inc.start(),
-                                            inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof));
       // A stabilized step's first increment is tried without damping; when it fails (a body
       // held only by contact: a rigid-body mode), damping starts and the singularity is no reason to stop.
       const bool damping_starts = run.stabilization && run.stabilization->attempt_failed(run.assembler);
-      const Cutback cutback = damping_starts ? inc.retry_same_size() : inc.attempt_failed(outcome.singular, run.contact != nullptr);
+      // A singular first solve with a contact pair that touched nowhere at its start: a free body
+      // that no cutback can hold (unless damping starts now).
+      const std::string untouched =
+          outcome.singular && run.contact && !damping_starts ? run.contact->untouched_at_start() : "";
+      const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}{}",
+                                            run.number, run.step.name, inc.increment(), inc.attempt(), inc.start(),
+                                            inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof), untouched);
+      const Cutback cutback = damping_starts ? inc.retry_same_size()
+                                             : inc.attempt_failed(outcome.singular, run.contact != nullptr && untouched.empty());
       if (!cutback.retry) return {false, where + cutback.note};
       observer.message(where + cutback.note +
                        (damping_starts ? fmt::format(" (damping factor {:.4g})", run.stabilization->factor()) : ""));
@@ -260,6 +266,10 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
       return outcome;
     }
     history = run.conditions.end_state(reactions(run.dofs, state));
+    // *MODEL CHANGE, REMOVE in the next step releases the contact forces of the pairs it removes.
+    const std::vector<std::size_t> removed = contact::rows_removed_in(model, *am.contact, s + 1);
+    if (run.contact && !removed.empty() && s + 1 < model.steps.size())
+      history.released_contact = run.contact->pair_forces(removed, state.contact);
     total_time += step.static_procedure->time_period;
   }
   return {true, "", output_seconds};

@@ -39,6 +39,9 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
   for (std::size_t k = 0; k < m.mesh.sections.size(); ++k) {
     const auto& sec = m.mesh.sections[k];
     const model::Material& mat = m.materials.at(sec.material);
+    if (!mat.elastic)
+      throw AnalysisError(fmt::format("{}: error: *MATERIAL: material '{}' has no *ELASTIC definition, which a static "
+                                      "analysis needs", m.sources.describe(mat.loc), mat.name));
     elements::ElasticConstants c;
     c.youngs_modulus = mat.elastic->youngs_modulus;
     c.poissons_ratio = mat.elastic->poissons_ratio;

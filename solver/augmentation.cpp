@@ -8,6 +8,7 @@ namespace inpact::solver {
 
 NewtonOutcome solve_with_augmentations(NewtonContext& ctx, double t, IncrementState& state, int& augmentations) {
   NewtonOutcome total;
+  if (ctx.contact) ctx.contact->set_step_time(ctx.conditions, t);  // *CHANGE FRICTION ramps
   // USER ADAPTIVE: the first increment's early iterations with a reduced penalty stiffness, to
   // find the contact status; then its final iterations (below) with the full stiffness.
   if (ctx.contact && ctx.contact->has_user_adaptive() && ctx.at.increment == 1) {

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "step_conditions.hpp"
 #include "contact/enforcement.hpp"
 #include "contact/friction.hpp"
 #include "contact/geometric_correction.hpp"
@@ -33,7 +35,7 @@ std::vector<double> clearance_offsets(const model::Model& m, const model::Contac
   std::vector<double> wanted(geometry.slave().nodes().size(), std::numeric_limits<double>::quiet_NaN());
   bool any = false;
   for (const model::Clearance& c : m.clearances) {
-    if (c.slave != pair.slave || c.master != pair.master) continue;
+    if (!contact::clearance_names(c, pair)) continue;
     any = true;
     if (c.value) std::fill(wanted.begin(), wanted.end(), *c.value);
     for (const auto& [row, value] : c.node_values)
@@ -61,6 +63,17 @@ std::vector<double> tied_offsets(const model::Model& m, contact::PairKinematics&
 
 }  // namespace
 
+/// A gap below this fraction of the characteristic length is contact within round-off: every
+/// method closes (or, penalty-type, stiffens) such a node at every update (status_limits).
+constexpr double kTouchingTolerance = 1e-9;
+
+/// The initial contact status: a slave node within this fraction of the pair's characteristic
+/// length of its master (or overclosed) when the pair comes into force starts closed
+/// (ContactProblem::Pair::starts_closed). Round-off of the mesh's coordinates, not a clearance:
+/// a deck that writes its nodes with 8 significant digits misplaces a node on a surface by
+/// about 1e-8 of the model's size, which is up to 1e-6 l_char for a model of 100 facets across.
+constexpr double kStartClosedTolerance = 1e-6;
+
 /// One contact pair in force: its geometry, enforcement and the last kinematics.
 struct ContactProblem::Pair {
   std::int32_t row = 0;
@@ -77,10 +90,48 @@ struct ContactProblem::Pair {
   std::vector<contact::FrictionPoint> fric;  ///< frictional pairs: per slave node, at the last update
   /// *CLEARANCE or the TIED law: per slave node, what is added to the measured gap (empty: none).
   std::vector<double> gap_offset;
+  /// Per slave node: starts_closed() when the pair came into force (at the step's start).
+  std::vector<char> closed_at_start;
+  /// The next update() is the first of an attempt of the pair's first increment: the nodes of
+  /// closed_at_start start closed there.
+  bool start_pending = false;
+  /// The last update() was that one: node_gap() says which nodes start closed until the next.
+  bool starting = false;
+  /// Not in force in the previous step (a *MODEL CHANGE, ADD, or a pair entering): its nodes
+  /// start open, without friction history.
+  bool enters = false;
+  /// In force in the previous step with another enforcement: its multipliers start from zero
+  /// (direct's λ is −p, augmented Lagrange's λ is +p).
+  bool new_enforcement = false;
 
   bool uses_multipliers() const { return enforcement->uses_multipliers(); }
+
+  /// The initial contact status (Abaqus's): slave i starts the pair's first increment closed when
+  /// it touches or overcloses its master at the start, its gap g0 <= kStartClosedTolerance l_char.
+  /// g0 is the gap (with the pair's offsets), and for surface to surface without offsets also the
+  /// node's own closest-point gap: the weighted gap of a node touching at the edge of the contact
+  /// to be is positive (the open facets around it), yet the bodies touch there. A node that
+  /// starts closed brings its constraint (multipliers) or its law's first slope and the force
+  /// that closes its gap (penalty-type) into the first system, so a body held only by that
+  /// contact and driven by a force is not free in it; after that first update its status is the
+  /// method's own (a multiplier opens in tension, a penalty node acts only where it penetrates).
+  /// Evaluated on `x`, the coordinates at the start, after update() of the kinematics there.
+  /// Nodes touching within round-off (g < kTouchingTolerance l_char) are left to the methods,
+  /// which close them anyway: this rule extends theirs, it does not change it.
+  bool starts_closed(std::size_t i, std::span<const contact::Vec3> x) const {
+    const contact::SlaveKinematics& k = kin[i];
+    if (!k.found || k.projection.gap < kTouchingTolerance * l_char) return false;
+    const double tolerance = kStartClosedTolerance * l_char;
+    if (k.projection.gap <= tolerance) return true;
+    if (!surface_to_surface || !gap_offset.empty() || !k.friction_found) return false;
+    const contact::Vec3& xs = x[static_cast<std::size_t>(k.node)];
+    const contact::Vec3 r{xs[0] - k.projection.x_master[0], xs[1] - k.projection.x_master[1],
+                          xs[2] - k.projection.x_master[2]};
+    return r[0] * k.projection.facet_normal[0] + r[1] * k.projection.facet_normal[1] +
+               r[2] * k.projection.facet_normal[2] <= tolerance;
+  }
   double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
-  contact::NodeGap node_gap(std::size_t i) const { return {kin[i].found, gap(i)}; }
+  contact::NodeGap node_gap(std::size_t i) const { return {kin[i].found, gap(i), starting && closed_at_start[i]}; }
   /// The contact pressure of slave i as the enforcement gives it (never tensile).
   double node_pressure(std::size_t i, const SlaveState& s) const { return enforcement->pressure(s, node_gap(i)); }
 
@@ -152,14 +203,11 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
   std::unique_ptr<contact::PairKinematics> geometry;
   if (r.surface_to_surface) {
     auto s2s = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
-    auto deck_name = [&](const model::Surface* s) {
-      const auto it = m.mesh.surfaces.find(s->name);
-      return it != m.mesh.surfaces.end() && &it->second == s ? s->name : std::string();
-    };
-    const model::ContactPair* named = entry.general ? nullptr : &entry.pair;
-    auto master_c = contact::build_corrections(m, deck_name(entry.master), named);
-    auto slave_c = contact::build_corrections(m, deck_name(entry.slave), named);
-    if (!master_c.empty() || !slave_c.empty()) s2s->set_geometric_correction(std::move(master_c), std::move(slave_c));
+    if (r.smoothed) {
+      const model::ContactPair* named = entry.general ? nullptr : &entry.pair;
+      s2s->set_geometric_correction(contact::build_corrections(m, contact::deck_surface_name(m, entry.master), named),
+                                    contact::build_corrections(m, contact::deck_surface_name(m, entry.slave), named));
+    }
     geometry = std::move(s2s);
   } else {
     geometry = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
@@ -170,6 +218,24 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
 }
 
 }  // namespace
+
+namespace {
+
+/// Pair p's record in the previous step, or null when it was not in force there.
+const contact::ResolvedInteraction* previous_record(const AnalysisModel& am, std::size_t step_index, std::size_t row) {
+  if (step_index == 0) return nullptr;
+  for (const contact::ResolvedInteraction& r : am.interactions.at(step_index - 1))
+    if (r.row == row && r.in_force) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
+void ContactProblem::mark_step_change(Pair& p, const AnalysisModel& am, std::size_t step_index) {
+  const contact::ResolvedInteraction* prev = previous_record(am, step_index, static_cast<std::size_t>(p.row));
+  p.enters = step_index > 0 && !prev;
+  p.new_enforcement = prev && (prev->enforcement != p.resolved->enforcement || prev->augmented != p.resolved->augmented);
+}
 
 ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) : am_(am) {
   const model::Model& m = *am.model;
@@ -183,7 +249,8 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     p->resolved = &r;
     p->geometry = pair_geometry(am, entry, r);
     p->enforcement = contact::make_enforcement(r);
-    p->friction = r.friction;
+    p->friction = r.friction_at(0.0);  // a *CHANGE FRICTION ramp moves it (set_step_time)
+    mark_step_change(*p, am, step_index);
     p->finite_sliding = r.finite_sliding;
     p->surface_to_surface = r.surface_to_surface;
     p->l_char = r.l_char;
@@ -240,30 +307,95 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
   evaluate(u_start);
   const bool new_increment = state.friction_increment != std::array<int, 2>{step, increment};
   state.friction_increment = {step, increment};
+  std::vector<contact::Vec3> x_start;
   for (const auto& p : pairs_) {
     auto& s = state.pairs[p->row];
+    // Once per attempt of a step's first increment (not again at its augmentations).
+    if (increment == 1 && new_increment) start_step(*p, state);
+    // A pair without slave states has not converged an increment yet: it has just come into
+    // force (each attempt of its first increment starts from the state before it).
+    p->start_pending = s.empty();
     s.resize(p->geometry->slave().nodes().size());
+    if (p->start_pending) {
+      if (x_start.empty()) x_start = contact::current_coordinates(am_.model->mesh.nodes, u_start, am_.dim);
+      p->closed_at_start.assign(s.size(), 0);
+      for (std::size_t i = 0; i < s.size(); ++i) p->closed_at_start[i] = p->starts_closed(i, x_start);
+    }
     for (std::size_t i = 0; i < s.size(); ++i) {
       s[i].flips = 0;
       s[i].start_penetration = p->kin[i].found ? std::max(0.0, -p->gap(i)) : 0.0;
     }
-    if (!p->friction) continue;
+    if (!p->friction) {
+      // A frictionless step (*CHANGE FRICTION): its slip is not tracked, so a later friction
+      // starts a new history.
+      if (static_cast<std::size_t>(p->row) < state.friction.size()) state.friction[p->row].clear();
+      continue;
+    }
     if (state.friction.size() < n_pairs_total_) state.friction.resize(n_pairs_total_);
     auto& fs = state.friction[p->row];
+    const std::size_t had = fs.size();
     fs.resize(s.size());
-    if (!new_increment) continue;
-    // Commit the converged trial state as the start of the new increment.
-    for (FrictionNodeState& f : fs) {
-      f.anchor_facet = f.active ? f.facet : -1;
-      f.anchor_xi = f.xi;
-      f.e0 = f.active ? f.e : std::array<double, 3>{0, 0, 0};
-      f.slip0 = f.slip;
-    }
+    if (new_increment)  // commit the converged trial state as the start of the new increment
+      for (FrictionNodeState& f : fs) {
+        f.anchor_facet = f.active ? f.facet : -1;
+        f.anchor_xi = f.xi;
+        f.e0 = f.active ? f.e : std::array<double, 3>{0, 0, 0};
+        f.slip0 = f.slip;
+      }
+    // Friction that begins on a node already closed (a pair frictionless until this step): its
+    // zero-shear point is where the node is at the start of the increment.
+    for (std::size_t i = had; i < fs.size(); ++i)
+      if (s[i].closed && p->friction_found(i)) {
+        fs[i].anchor_facet = p->kin[i].projection.facet;
+        fs[i].anchor_xi = p->kin[i].projection.xi;
+      }
   }
 }
 
+void ContactProblem::start_step(const Pair& p, ContactState& state) const {
+  auto& s = state.pairs[p.row];
+  if (p.enters) {  // reactivated: open nodes, no friction history [IG ctc_contactpair_std]
+    s.clear();
+    if (static_cast<std::size_t>(p.row) < state.friction.size()) state.friction[p.row].clear();
+  } else if (p.new_enforcement) {
+    for (SlaveState& n : s) n.lambda = n.multiplier = 0.0;
+  }
+}
+
+void ContactProblem::set_step_time(const StepConditions& conditions, double t) {
+  for (auto& p : pairs_)
+    if (const auto& ramp = p->resolved->friction_ramp)
+      p->friction = p->resolved->friction_at(conditions.amplitude_value(ramp->amplitude, t));
+}
+
+std::vector<double> ContactProblem::pair_forces(std::span<const std::size_t> rows, const ContactState& state) const {
+  std::vector<double> f(static_cast<std::size_t>(am_.n_dof()), 0.0);
+  for (const auto& p : pairs_) {
+    if (std::find(rows.begin(), rows.end(), static_cast<std::size_t>(p->row)) == rows.end()) continue;
+    const auto& slaves = state.pairs[p->row];
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      if (!p->contributes[i]) continue;
+      // As assemble(): f_c = A c ∇g, and friction's A Bᵀ τ over its own kinematics.
+      const contact::GapLinearization& lin = p->kin[i].lin;
+      const double area = p->kin[i].area;
+      const double c = p->enforcement->normal_force(slaves[i], p->node_gap(i)).coefficient * area;
+      std::size_t a = 0;
+      for (std::int32_t node : lin.nodes)
+        for (int d = 0; d < am_.dim; ++d, ++a) f[static_cast<std::size_t>(node) * am_.dim + d] += c * lin.gradient[a];
+      if (!p->friction_acts(i)) continue;
+      a = 0;
+      for (std::int32_t node : p->friction_lin(i).nodes)
+        for (int d = 0; d < am_.dim; ++d, ++a) f[static_cast<std::size_t>(node) * am_.dim + d] += area * p->fric[i].force[a];
+    }
+  }
+  return f;
+}
+
+void ContactProblem::set_user_adaptive_scale(double scale) {
+  for (auto& p : pairs_) p->enforcement->set_adaptive_scale(scale);
+}
+
 void ContactProblem::evaluate(std::span<const double> u) {
-  for (auto& p : pairs_) p->enforcement->set_adaptive_scale(adaptive_scale_);
   if (evaluated_ && std::equal(u.begin(), u.end(), evaluated_u_.begin(), evaluated_u_.end())) return;
   evaluated_u_.assign(u.begin(), u.end());
   evaluated_ = true;
@@ -289,7 +421,7 @@ contact::StatusLimits status_limits(const contact::Enforcement& e, std::span<con
   for (const SlaveState& s : slaves)
     if (s.closed) p_scale = std::max(p_scale, std::abs(s.*field));
   p_scale = std::max(p_scale, e.pressure_round_off());
-  return {-1e-8 * p_scale, 1e-9 * l_char};
+  return {-1e-8 * p_scale, kTouchingTolerance * l_char};
 }
 
 }  // namespace
@@ -379,6 +511,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     p.multiplier.assign(n, -1);
     if (p.friction) p.fric.resize(n);
     const contact::StatusLimits limits = status_limits(*p.enforcement, slaves, p.l_char);
+    p.starting = std::exchange(p.start_pending, false);
     for (std::size_t i = 0; i < n; ++i) {
       SlaveState& s = slaves[i];
       update_node(p, i, s, limits, x, it);
@@ -504,6 +637,25 @@ const SparseMatrix& ContactProblem::unsymmetric_tangent(const SparseMatrix& a) {
   for (const Assembler::SkewEntry& e : skew_)
     if (const std::int64_t pos = full_.find(e.row, e.col); pos >= 0) full_.values[pos] += e.value;
   return full_;
+}
+
+std::string ContactProblem::untouched_at_start() const {
+  std::string out;
+  for (const auto& p : pairs_) {
+    if (!p->starting || std::any_of(p->contributes.begin(), p->contributes.end(), [](char c) { return c != 0; }))
+      continue;
+    std::size_t nearest = p->kin.size();
+    for (std::size_t i = 0; i < p->kin.size(); ++i)
+      if (p->kin[i].found && (nearest == p->kin.size() || p->gap(i) < p->gap(nearest))) nearest = i;
+    out += fmt::format("; contact pair {}/{} touches nowhere at the start (no slave node within {:.3g} of {}", p->deck->slave,
+                       p->deck->master, kStartClosedTolerance * p->l_char, p->deck->master);
+    out += nearest < p->kin.size()
+               ? fmt::format("; the nearest, node {}, is {:.4g} away)", am_.model->mesh.nodes.labels[p->kin[nearest].node],
+                             p->gap(nearest))
+               : fmt::format("; none faces it)");
+    out += ": a body only this contact holds is free; close the gap (ADJUST, *CLEARANCE) or hold the body until it touches";
+  }
+  return out;
 }
 
 // --- Augmentations -----------------------------------------------------------------------

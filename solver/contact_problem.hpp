@@ -36,6 +36,8 @@
 
 namespace inpact::solver {
 
+class StepConditions;
+
 /// Severe discontinuity iterations allowed in one increment attempt (Abaqus's I_S default, 50:
 /// parser/KEYWORDS.md *CONTROLS; *CONTROLS does not change it in inpact yet).
 inline constexpr int kMaxSevereIterations = 50;
@@ -116,7 +118,17 @@ class ContactProblem {
   /// from the converged state: the friction history is committed from its trial values.
   /// `u_start`: the converged displacements the attempt starts from (penetrations there are
   /// the baseline of the HCRIT check).
+  /// The first increment of a step also resets what a step change leaves behind: a pair not in
+  /// force in the previous step (*MODEL CHANGE, ADD) starts with every node open and no friction
+  /// history; a pair whose enforcement changed (*CHANGE SURFACE BEHAVIOR) starts its multipliers
+  /// from zero. A pair whose friction changed keeps its slip history.
   void begin_attempt(ContactState& state, int step, int increment, std::span<const double> u_start);
+  /// *CHANGE FRICTION's ramp: the friction law of each changed pair at step time t (the end of
+  /// the increment about to be solved), from `conditions`' amplitudes.
+  void set_step_time(const StepConditions& conditions, double t);
+  /// The contact forces (their part of f_int, per global DOF) of the pairs in force whose rows are
+  /// in `rows`, at the last update (a converged state): what *MODEL CHANGE, REMOVE releases.
+  std::vector<double> pair_forces(std::span<const std::size_t> rows, const ContactState& state) const;
   /// Search, projection and contact status at displacement u; rebuilds the assembler's pattern
   /// when the contact couplings or the multipliers changed.
   ContactIteration update(std::span<const double> u, ContactState& state, Assembler& assembler);
@@ -129,6 +141,12 @@ class ContactProblem {
   void constraint_residual(const ContactState& state, std::span<double> rows) const;
   /// λ += Δλ from the solution's multiplier rows.
   void apply_correction(std::span<const double> rows, ContactState& state) const;
+  /// For a singular first solve: the pairs whose first update of their first increment found
+  /// no slave node touching (nothing closed, nothing stiffened), each with its nearest slave
+  /// node and gap, as "; contact pair S/M touches nowhere ..." — a body that only such a pair
+  /// was to hold is free, and no smaller increment changes that. Empty when every pair just
+  /// started holds something, or none just started.
+  std::string untouched_at_start() const;
   /// Did the last assemble() leave an unsymmetric part (friction with a pressure coupling)?
   bool unsymmetric() const { return !skew_.empty(); }
   /// The full (both triangles) tangent: the assembler's symmetric upper triangle `upper`
@@ -142,7 +160,7 @@ class ContactProblem {
   bool has_user_adaptive() const;
   /// The factor on the penalty law of USER ADAPTIVE pairs (pressure and slope): kUserAdaptiveScale
   /// while the first increment finds its contact status, 1 for its final iterations.
-  void set_user_adaptive_scale(double scale) { adaptive_scale_ = scale; }
+  void set_user_adaptive_scale(double scale);
 
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
@@ -158,6 +176,8 @@ class ContactProblem {
   /// (the output of a converged state, whose last iteration evaluated it) keeps its results.
   void evaluate(std::span<const double> u);
   /// update() of slave i: its status, and the checks every method shares (chattering, HCRIT).
+  void mark_step_change(Pair& p, const AnalysisModel& am, std::size_t step_index);
+  void start_step(const Pair& p, ContactState& state) const;
   void update_node(Pair& p, std::size_t i, SlaveState& s, const contact::StatusLimits& limits,
                    std::span<const contact::Vec3> x, ContactIteration& it) const;
   /// A closed node that lost its master: did it go through it by more than HCRIT?
@@ -186,7 +206,6 @@ class ContactProblem {
   std::vector<double> friction_k_;
   SparseMatrix full_;
   std::int64_t friction_evaluations_ = 0;
-  double adaptive_scale_ = 1.0;
   std::vector<double> evaluated_u_;  ///< the u of the last evaluate()
   bool evaluated_ = false;
 };

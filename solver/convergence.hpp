@@ -5,8 +5,9 @@
 ///  - linear:     r_max ≤ R_l q̃ is accepted outright (no correction test), and so is any
 ///                residual when nothing loads the model (q̃ = 0);
 ///  - correction: c_max ≤ C_n Δu_max, the largest correction against the largest increment of u;
-///  - contact:    no contact status change, and every closed direct node on the surface,
-///                |g| ≤ C_ε Δu_max + 1e-14 (C_ε = 1e-3, the contact compatibility tolerance).
+///  - contact:    no contact status change, and every closed multiplier node on its constraint,
+///                |g + h(p)| ≤ C_ε Δu_max + 1e-14 (direct: |g|; C_ε = 1e-3, the contact
+///                compatibility tolerance).
 /// The residual and correction tests need a correction, so they pass only from iteration 1 on.
 #include <algorithm>
 #include <array>
@@ -86,7 +87,7 @@ struct IterationMeasures {
   double max_correction = 0.0;  ///< c_max, |largest correction| of the last solve
   double max_increment = 0.0;   ///< Δu_max
   bool contact_status_changed = false;  ///< a contact status changed (or chatters) this iteration
-  double max_gap_error = 0.0;           ///< largest |g| of a closed direct contact node
+  double max_gap_error = 0.0;           ///< largest |g + h(p)| of a closed multiplier node (direct: |g|)
 };
 
 struct ConvergenceCheck {

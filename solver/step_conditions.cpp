@@ -196,6 +196,13 @@ void StepConditions::external_force(double t, std::span<double> f) const {
     }
   });
   for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
+  if (!previous_.released_contact.empty()) {
+    // The removed pairs' contact forces, linearly to zero whatever the step's amplitude [IG]: as
+    // loads they act against f_int's contact part, f_ext = −(1 − t/T) f_c.
+    const double period = step_.static_procedure ? step_.static_procedure->time_period : 1.0;
+    const double left = 1.0 - std::clamp(t / period, 0.0, 1.0);
+    for (std::size_t d = 0; d < f.size(); ++d) f[d] -= left * previous_.released_contact[d];
+  }
 }
 
 std::vector<double> StepConditions::temperature_change(double t) const {
@@ -223,6 +230,7 @@ ConditionHistory StepConditions::end_state(std::span<const double> reactions) co
   for (auto& [k, v] : h.dload) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   for (auto& [n, v] : h.temperature) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   h.reactions.assign(reactions.begin(), reactions.end());
+  h.released_contact.clear();  // released over this step only
   return h;
 }
 

@@ -48,6 +48,10 @@ struct ConditionHistory {
   std::map<DloadKey, DloadValue> dload;
   std::map<std::int32_t, Value> temperature;  ///< key: node row
   std::vector<double> reactions;              ///< per global DOF, at the end of the step
+  /// The contact forces (f_int's part, per global DOF; empty: none) of the pairs the next step
+  /// removes (*MODEL CHANGE, REMOVE), at the end of this step: the next step applies them as
+  /// loads that ramp linearly down to zero [IG ctc_contactpair_std].
+  std::vector<double> released_contact;
 };
 
 /// The state before the first step: the model-level boundary conditions (in force from the
@@ -73,6 +77,9 @@ class StepConditions {
   std::vector<double> temperature_change(double t) const;
   /// The definitions in force at the end of the step, for the next one.
   ConditionHistory end_state(std::span<const double> reactions) const;
+  /// a(t) of an amplitude `name` at step time t; empty name: the step's own (RAMP t/T, or 1 for
+  /// AMPLITUDE=STEP).
+  double amplitude_value(const std::string& name, double t) const { return name.empty() ? ramp(t) : amplitude(name, t); }
 
  private:
   double ramp(double t) const;

@@ -7,22 +7,15 @@ namespace inpact::contact {
 
 StatusUpdate LawWithMultipliers::update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const {
   // As direct, with the law deciding closure: closed while the multiplier's pressure is
-  // compressive, closing where the law acts (touching included), from the law's pressure.
+  // compressive, closing where the law acts (touching included) or where it starts closed,
+  // from the law's pressure (0 for a node that starts closed at a small gap).
   PressureValue law;
   if (g.found) law = law_.eval(-g.gap, augmented_ ? s.lambda : 0.0);
-  const bool closed = g.found && (s.closed ? (no_separation_ || -s.multiplier >= limits.open_below) : law.active);
+  const bool closed =
+      g.found && (s.closed ? (no_separation_ || -s.multiplier >= limits.open_below) : law.active || g.starts_closed);
   if (closed && !s.closed) s.multiplier = -law.p;
   if (!closed) s.multiplier = 0.0;
   return {closed, closed};
-}
-
-double LawWithMultipliers::pressure(const SlaveState& s, const NodeGap& g) const {
-  return s.closed && g.found ? std::max(-s.multiplier, 0.0) : 0.0;
-}
-
-NodePressure LawWithMultipliers::output(const SlaveState& s, const NodeGap& g) const {
-  const bool closed = s.closed && g.found;
-  return {closed ? -s.multiplier : 0.0, closed};
 }
 
 LawWithMultipliers::LawPoint LawWithMultipliers::law_point(const SlaveState& s) const {

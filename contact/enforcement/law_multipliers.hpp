@@ -4,24 +4,20 @@
 /// A (g + h(p)) = 0 with h(p) the law's inverse and p = −multiplier, and its compliance
 /// −A / p'(h) on the multiplier's diagonal, so the stiffness never enters K and its
 /// conditioning (a perturbed Lagrangian). At convergence the pressure is the law's exactly.
-#include "contact/enforcement.hpp"
+#include "contact/enforcement/multiplier_method.hpp"
 
 namespace inpact::contact {
 
-class LawWithMultipliers final : public Enforcement {
+class LawWithMultipliers final : public MultiplierMethod {
  public:
   /// k_e × l_char: the pressure scale below which an inverse of the law is taken linearly.
   LawWithMultipliers(PressureOverclosure law, bool no_separation, bool augmented, double l_char, double ke)
       : law_(std::move(law)), no_separation_(no_separation), augmented_(augmented), l_char_(l_char), ke_(ke) {}
-  bool uses_multipliers() const override { return true; }
   double SlaveState::*multiplier() const override { return &SlaveState::multiplier; }
   /// A node touching at zero pressure carries round-off of the slope × length: not a reason to
   /// open it (it would close again at once: chattering).
   double pressure_round_off() const override { return 1e-4 * law_.max_slope(0.0) * l_char_; }
   StatusUpdate update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const override;
-  NormalForce normal_force(const SlaveState& s, const NodeGap&) const override { return {s.multiplier, 0.0}; }
-  double pressure(const SlaveState& s, const NodeGap& g) const override;
-  NodePressure output(const SlaveState& s, const NodeGap& g) const override;
   double constraint_overclosure(const SlaveState& s) const override { return law_point(s).h; }
   double compliance_slope(const SlaveState& s) const override { return law_point(s).dp; }
   bool augmented() const override { return augmented_; }

@@ -12,30 +12,41 @@ PressureValue PenaltyLaw::law_pressure(const SlaveState& s, const NodeGap& g) co
   return v;
 }
 
+bool PenaltyLaw::closed(const PressureValue& pv) const {
+  return options_.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
+}
+
 StatusUpdate PenaltyLaw::update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const {
   const PressureValue pv = law_pressure(s, g);
-  const bool closed = options_.tied_law ? pv.active : pv.p > 0.0;  // a tied node is closed in tension too
-  // Damping an augmented-Lagrange node that keeps crossing the law's kink: after two crossings
-  // in this attempt its stiffness stays in the tangent while it is open (the force is still the
-  // law's), so Newton stops bouncing between the branches at 1000 k_e (the interference fit's
-  // faceting noise). Not for plain penalty: there the modified tangent turned Hertz's quadratic
-  // convergence linear (22 → 77 iterations).
+  // An augmented-Lagrange node that keeps crossing the law's kink is damped: after two
+  // crossings in this attempt its stiffness stays in the tangent while it is open (the force
+  // is still the law's), so Newton stops bouncing between the branches at 1000 k_e. Plain
+  // penalty keeps the exact tangent, which its quadratic convergence needs.
   // A node touching within round-off brings the law's first slope too: a penalty law acts only
-  // from h + c0 ≥ 0, and a gap of +1e-12 would otherwise leave a body that rests on its contact
-  // with no stiffness at all (bench/contact_extremes).
-  const bool touching = g.found && g.gap < limits.close_below;
-  return {closed, pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
+  // from h + c0 ≥ 0, and a body resting on its contact at a gap of +1e-12 would otherwise have
+  // no stiffness at all. So does a node that starts closed (it touched when the pair came into
+  // force): the first system of a body resting on it is regular.
+  const bool touching = g.found && (g.gap < limits.close_below || g.starts_closed);
+  return {closed(pv), pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
 }
 
 NormalForce PenaltyLaw::normal_force(const SlaveState& s, const NodeGap& g) const {
   const PressureValue pv = law_pressure(s, g);
+  if (g.starts_closed && !pv.active) return start_closed_force(g);
   // An open node kept for damping or touching (update_status) brings the law's first slope.
   return {-pv.p, pv.active ? pv.dp : law_.max_slope(0.0)};
 }
 
+NormalForce PenaltyLaw::start_closed_force(const NodeGap& g) const {
+  // p = k (h − h_zero) continued below h_zero (tensile): the force that closes the node's gap
+  // in the first solve, where the law's stiffness alone would let it close by only P/(k A).
+  const double k = law_.max_slope(0.0) * (options_.user_adaptive ? adaptive_scale_ : 1.0);
+  return {k * (g.gap + law_.h_zero()), k};
+}
+
 NodePressure PenaltyLaw::output(const SlaveState& s, const NodeGap& g) const {
   const PressureValue pv = law_pressure(s, g);
-  return {pv.p, options_.tied_law ? pv.active : pv.p > 0.0};
+  return {pv.p, closed(pv)};
 }
 
 }  // namespace inpact::contact

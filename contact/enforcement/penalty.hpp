@@ -28,6 +28,12 @@ class PenaltyLaw final : public Enforcement {
  private:
   /// The law at the node's overclosure (λ: augmented Lagrange only), times USER ADAPTIVE's factor.
   PressureValue law_pressure(const SlaveState& s, const NodeGap& g) const;
+  /// The contact status the law gives: pressure (the TIED law: where it acts, tension too).
+  bool closed(const PressureValue& pv) const;
+  /// A node that starts closed short of the law's range (NodeGap::starts_closed): the law's
+  /// first slope k, and the pressure k (h − h_zero) continued into tension, as a closed node of
+  /// a status-based penalty method carries until its status is checked (its first update).
+  NormalForce start_closed_force(const NodeGap& g) const;
   PressureOverclosure law_;
   PenaltyOptions options_;
   double adaptive_scale_ = 1.0;

@@ -8,7 +8,7 @@
 namespace inpact::contact {
 
 struct PressureValue {
-  double p = 0.0;   ///< pressure (≥ 0)
+  double p = 0.0;   ///< pressure (≥ 0; negative only for the TIED law's tension)
   double dp = 0.0;  ///< dp/dh (0 where the law gives no pressure)
   bool active = false;  ///< h lies where the law acts (the stiffness enters the tangent)
 };

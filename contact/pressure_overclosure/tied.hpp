@@ -11,8 +11,8 @@ class TiedLaw final : public PressureLaw {
 
   PressureValue eval(double h, double lambda) const override { return {k_ * h, k_, true}; }
   double max_slope(double h_max) const override { return k_; }
-  /// Where the spring is unstressed (it acts on both sides). −0.0, the −c0 (c0 = 0) of the
-  /// single-class law this replaced, so that sums with it keep their sign of zero.
+  /// Where the spring is unstressed (it acts on both sides): −c0 with c0 = 0, as the other laws
+  /// give it, so that sums with it keep their sign of zero (−0.0).
   double h_zero() const override { return -0.0; }
   double stiffness() const override { return k_; }
   std::string describe() const override;

@@ -12,6 +12,9 @@ every variant of it:
                     block (same material), quarter-symmetric (x = 0 plane), Johnson §4.2; the
                     two meshes have the same node positions along the contact before loading
   hertz_2d_nonmatching  the same with master (block) elements 1.25 × the slave's
+  hertz_2d_force    the same cylinder held only by its contact (touching the block at one node)
+                    and pushed down by a force, surface to surface (issue 14: the first system
+                    of a force-driven contact problem); parameters method, type, inc0
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
   interference_2d   thick-cylinder interference fit, plane strain, quarter model, non-matching
                     ring meshes, interference δ set up by the geometry (Lamé)
@@ -174,6 +177,78 @@ def hertz_2d(level, master_ratio=1.0):
     out += contact_block("INDENTER_S", "BLOCK_S")
     out += ["*BOUNDARY", "SYMMETRY, 1", "BLOCK_BOTTOM, 2"]
     out += ["*STEP, NAME=PRESS", "*STATIC", "0.25, 1.0", "*BOUNDARY", f"INDENTER_TOP, 2, 2, {-D_2D:g}", STEP_CONTROLS]
+    out += OUTPUT + ["*END STEP"]
+    return out
+
+
+# --------------------------------------------------------------------------- Hertz under a force
+
+A_FORCE = 1.0  # the design half-width of hertz_2d_force: the load is chosen to give it exactly
+
+
+def hertz_force_load(a=A_FORCE):
+    """P per unit length (the whole cylinder) giving the half-width a: a = √(4PR/(πE*))."""
+    e_star = E / (2.0 * (1.0 - NU * NU))
+    return math.pi * e_star * a * a / (4.0 * R_HERTZ)
+
+
+def hertz_2d_force(level):
+    """The cylinder of hertz_2d held only by its contact and pushed down by a force. The same
+    geometry: the indenter's bottom nodes lie exactly on the circle, so the lowest one (x = 0)
+    touches the block with zero gap and every other is open (by x²/2R). The indenter is free but
+    for the x-rollers on x = 0 (both bodies); the block's bottom is fixed. The load: P/2 on this
+    half model, as the consistent nodal forces of a uniform pressure on the indenter's top flat
+    (concentrated loads, so that the applied force is exactly P/2 whatever the deformation).
+    Surface to surface, finite sliding; the method is a parameter (PENALTY by default, Abaqus's
+    for finite-sliding surface-to-surface pairs), and so is the type. Level L: h = a / 2^(L+2)
+    (level 1: a/h = 8)."""
+    h = A_FORCE / 2 ** (level + 2)
+    xs = graded(h, 2.0, HERTZ_W)
+    ys = graded(h, 2.0, HERTZ_H)
+    load = hertz_force_load()
+    out = header(f"Hertz line contact under a force, plane strain: cylinder R = {R_HERTZ:g} resting on a block "
+                 f"(touching at one node), E = {E:g}, nu = {NU:g} (both); half model, surface to surface",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a), "
+                 f"E* = E/(2(1-nu^2)); P = {load:.10g} per unit length (this half model carries P/2): "
+                 f"a = {A_FORCE:g}, p0 = {2 * load / (math.pi * A_FORCE):.10g}.", level, h)
+    out[-1] = "** tolerances in tests/contact_verification/test_hertz_force.cpp."
+    # inc0: the first increment (a fraction of the load). Augmented Lagrange at its 1000 k_e
+    # converges the first one from 0.01 (tests/contact_verification/test_hertz_force.cpp).
+    out += ["*PARAMETER", 'method = "PENALTY"', 'type = "SURFACE TO SURFACE"', "inc0 = 0.25"]
+    nx, ny = len(xs), len(ys)
+    sid = lambda i, j: 1 + j * nx + i
+    mid = lambda i, j: 100001 + j * nx + i
+    nodes = []
+    for j, s in enumerate(ys):
+        for i, x in enumerate(xs):
+            yb = R_HERTZ - math.sqrt(R_HERTZ ** 2 - x * x)
+            nodes.append((sid(i, j), x, yb + (HERTZ_H - yb) * s / HERTZ_H))
+    for j, d in enumerate(reversed(ys)):  # block: bottom (−H) to top (0)
+        for i, x in enumerate(xs):
+            nodes.append((mid(i, j), x, -d))
+    quad = lambda first, ids, i, j: (first + j * (nx - 1) + i, ids(i, j), ids(i + 1, j), ids(i + 1, j + 1),
+                                     ids(i, j + 1))
+    slave = [quad(1, sid, i, j) for j in range(ny - 1) for i in range(nx - 1)]
+    master = [quad(100001, mid, i, j) for j in range(ny - 1) for i in range(nx - 1)]
+    out += ["*NODE, NSET=ALL"] + [f"{n}, {x:.15g}, {y:.15g}" for n, x, y in nodes]
+    out += ["*ELEMENT, TYPE=CPE4, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in slave]
+    out += ["*ELEMENT, TYPE=CPE4, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in master]
+    out += ["*ELSET, ELSET=INDENTER_BOTTOM"] + lines_of([e[0] for e in slave[:nx - 1]])
+    out += ["*ELSET, ELSET=BLOCK_TOP"] + lines_of([e[0] for e in master[-(nx - 1):]])
+    out += ["*SURFACE, NAME=INDENTER_S", "INDENTER_BOTTOM, S1", "*SURFACE, NAME=BLOCK_S", "BLOCK_TOP, S3"]
+    out += ["*NSET, NSET=SYMMETRY"] + lines_of([sid(0, j) for j in range(ny)] + [mid(0, j) for j in range(ny)])
+    out += ["*NSET, NSET=INDENTER_TOP"] + lines_of([sid(i, ny - 1) for i in range(nx)])
+    out += ["*NSET, NSET=BLOCK_BOTTOM"] + lines_of([mid(i, 0) for i in range(nx)])
+    out += ["*SOLID SECTION, ELSET=INDENTER, MATERIAL=STEEL", "*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL",
+            "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
+    out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>",
+            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>", "INDENTER_S, BLOCK_S"]
+    out += ["*BOUNDARY", "SYMMETRY, 1", "BLOCK_BOTTOM, 1, 2"]
+    # The top's nodal forces: q × (half the lengths of the top edges on either side), q = (P/2)/W.
+    q = 0.5 * load / HERTZ_W
+    forces = [0.5 * q * ((xs[min(i + 1, nx - 1)] - xs[i]) + (xs[i] - xs[max(i - 1, 0)])) for i in range(nx)]
+    out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD"]
+    out += [f"{sid(i, ny - 1)}, 2, {-f:.17g}" for i, f in enumerate(forces)]
     out += OUTPUT + ["*END STEP"]
     return out
 
@@ -593,7 +668,8 @@ def oring_axi(level, smoothed=False):
                           f"TOROIDAL, 0., 0., 0., 0., 1., 0., {TORUS_R:g}", ["RING_PLANE, 2", "SLEEVE_PLANE, 2"], sets)
 
 
-DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25), "sphere_3d": sphere_3d,
+DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25),
+         "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
          "spherical_seat_axi": spherical_seat_axi,

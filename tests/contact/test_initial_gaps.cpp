@@ -20,11 +20,18 @@ bool has_message(const Run& r, const std::string& needle) {
 }
 
 // The upper block starts 0.001 above the lower one under a pressure load: nothing holds it
-// until contact closes, so the direct method (a node closes when it touches) stops at once.
+// until contact closes, so the direct method (a node closes when it touches) stops at once —
+// in the first attempt (no cutback holds a body its contact never touched), naming the pair
+// and its nearest slave node.
 TEST(InitialGap, WithoutAdjustAFloatingBlockStopsWithTheRigidBodyDiagnostic) {
   auto r = verification::run_deck(contact_deck("patch_2d_gap_direct.inp"));
   EXPECT_FALSE(r->outcome.completed);
   EXPECT_NE(r->outcome.message.find("rigid body"), std::string::npos) << r->outcome.message;
+  EXPECT_NE(r->outcome.message.find("contact pair SLAVE_S/MASTER_S touches nowhere at the start"), std::string::npos)
+      << r->outcome.message;
+  EXPECT_NE(r->outcome.message.find("the nearest, node 101, is 0.001 away"), std::string::npos) << r->outcome.message;
+  ASSERT_EQ(r->capture.rows.size(), 1u);
+  EXPECT_EQ(r->capture.rows.front().total_iters, 0);
 }
 
 // ADJUST=0.002 moves the five slave nodes down by 0.001 onto the master (and ADJUST=YES the

@@ -105,10 +105,40 @@ TEST(ResolvedInteraction, StepContactControlsChangeTheLawOfThatStepOnly) {
   EXPECT_NE(contact::describe(r.steps[0][0]), contact::describe(r.steps[1][0]));
 }
 
-TEST(ResolvedInteraction, ResetControlsReturnToTheDefaults) {
+TEST(ResolvedInteraction, ControlsCarryOverToLaterStepsUntilReset) {
   const DeckDir dir;
-  const Resolved r = resolve_text(dir, two_step_deck("*CONTACT CONTROLS, RESET\n"));
-  EXPECT_EQ(contact::describe(r.steps[0][0]), contact::describe(r.steps[1][0]));
+  std::string text = two_step_deck("*CONTACT CONTROLS, STIFFNESS SCALE FACTOR=1000\n");
+  text += "*STEP, NAME=KEEP\n*STATIC\n1.0, 1.0\n*END STEP\n";
+  text += "*STEP, NAME=RESET\n*STATIC\n1.0, 1.0\n*CONTACT CONTROLS, RESET\n*END STEP\n";
+  const Resolved r = resolve_text(dir, text);
+  ASSERT_EQ(r.steps.size(), 4u);
+  EXPECT_EQ(r.steps[2][0].enforcement, contact::EnforcementKind::LawWithMultipliers);  // carried over
+  EXPECT_EQ(contact::describe(r.steps[2][0]), contact::describe(r.steps[1][0]));
+  EXPECT_EQ(r.steps[3][0].enforcement, contact::EnforcementKind::PenaltyLaw);  // back to the defaults
+  EXPECT_EQ(contact::describe(r.steps[3][0]), contact::describe(r.steps[0][0]));
+}
+
+TEST(ResolvedInteraction, RoughFrictionWithoutElementStiffnessNamesThePair) {
+  // A TIED pair brings ROUGH friction of its own (no *FRICTION in the deck): without k_e the
+  // error cites the pair's line instead of a friction line that does not exist.
+  const DeckDir dir;
+  std::string text = read_text(contact_deck("patch_2d_direct.inp"));
+  const std::string pair = "*CONTACT PAIR, INTERACTION=SMOOTH";
+  ASSERT_NE(text.find(pair), std::string::npos);
+  text.insert(text.find(pair) + pair.size(), ", ADJUST=0., TIED");
+  auto deck = dir.read(text);
+  ASSERT_TRUE(deck.ok()) << deck.report();
+  contact::apply_adjust(deck.model);
+  deck.model.materials.begin()->second.elastic.reset();
+  try {
+    solver::build_analysis_model(deck.model);
+    ADD_FAILURE() << "expected a deck error";
+  } catch (const solver::AnalysisError& e) {
+    EXPECT_NE(std::string(e.what()).find("error: *CONTACT PAIR: pair SLAVE_S/MASTER_S: ROUGH friction needs the element "
+                                         "stiffness k_e"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ResolvedInteraction, DefaultPenaltyWithoutElasticSurfaceIsADeckError) {

@@ -4,6 +4,8 @@
 // run stopped with a singular matrix); this is the deck that showed it.
 #include <gtest/gtest.h>
 
+#include "solver/analysis_model.hpp"
+
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -49,6 +51,9 @@ TEST(ContactStiffSoftened, ExponentialAbove1000KeRunsWithMultipliers) {
     ASSERT_TRUE(scales.has_value()) << surface;
     EXPECT_GT(slope_at_zero, 1000.0 * scales->element_stiffness) << surface;
   }
+  // ... and the analysis resolved it so (the slave's k_e decides).
+  const auto am = solver::build_analysis_model(r->model());
+  EXPECT_EQ(am.interactions.at(0).at(0).enforcement, contact::EnforcementKind::LawWithMultipliers);
   int pressed = 0;
   for (const auto& sf : r->capture.frames) {
     const auto& cp = contact_field(sf.frame, "CPRESS");
