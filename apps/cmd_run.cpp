@@ -79,6 +79,7 @@ class RunObserver final : public solver::AnalysisObserver {
     if (tty_) std::printf("\n");
     std::fprintf(stderr, "%.*s\n", static_cast<int>(text.size()), text.data());
   }
+  void status_note(std::string_view text) override { status_.note(std::string(text)); }
   void end_line() {
     if (tty_ && !options_.quiet) std::printf("\n");
   }

@@ -159,6 +159,12 @@ void write_steps(std::ostream& out, const model::Model& m,
         print(out, "    automatic: initial {:g}, period {:g}, min {:g}, max {:g}\n", p->initial_increment,
               p->time_period, p->min_increment.value_or(std::min(p->initial_increment, 1e-5 * p->time_period)),
               p->max_increment.value_or(p->time_period));
+      if (const auto& st = p->stabilize)
+        print(out, "    automatic stabilization: {}{}{}\n",
+              st->damping_factor ? fmt::format("damping factor {:g}", *st->damping_factor)
+                                 : fmt::format("dissipated energy fraction {:g}", st->energy_fraction),
+              st->allsdtol ? fmt::format(", adaptive (ALLSDTOL {:g})", *st->allsdtol) : "",
+              st->continue_previous ? ", continued from the previous step" : "");
     }
     std::size_t n_bc = 0, n_cl = 0, n_dl = 0, n_t = 0;
     for (const auto& b : s.boundaries) n_bc += b.entries.size();

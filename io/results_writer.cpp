@@ -112,6 +112,7 @@ struct ResultsWriter::Impl {
     Id step_time, total_time, increment;
     hsize_t n_frames = 0;
     std::map<std::string, FieldState> fields;
+    std::map<std::string, Id> history;  ///< frames/<KEY>: whole-model history values (ALLSE, ALLSD)
   };
 
   Impl(fs::path h5, const model::Model& m)
@@ -137,6 +138,7 @@ struct ResultsWriter::Impl {
   void write_model(const std::vector<std::string>& pair_names);
   void write_view_geometry();
   void write_view_frame(const Frame& frame, const std::vector<ViewArray>& arrays);
+  void write_history(const Frame& frame, hsize_t row);
   FieldState& field_state(const FieldData& f, hsize_t n_comp, hsize_t nloc);
   void flush();
   void close();
@@ -259,6 +261,19 @@ void ResultsWriter::Impl::write_view_geometry() {
     ctx.write(x, "topology", topo.vtk_connectivity, model::element_type(types[0]).n_nodes);
   }
   view_frames = ctx.create_group(x, "frames", true);
+}
+
+/// The frame's history values as /steps/<STEP>/frames/<KEY> (nf,), created at their first frame
+/// (earlier rows NaN); keys absent from this frame get NaN in its row.
+void ResultsWriter::Impl::write_history(const Frame& frame, hsize_t row) {
+  for (const solver::HistoryValue& h : frame.history) {
+    auto it = step->history.find(h.key);
+    if (it == step->history.end())
+      it = step->history.emplace(h.key, ctx.create_extendable(step->frames, h.key, H5T_NATIVE_DOUBLE, {0}, {256}, &kNaN))
+               .first;
+    ctx.write_rows(it->second, H5T_NATIVE_DOUBLE, row, 1, &h.value);
+  }
+  for (auto& [key, id] : step->history) ctx.extend(id, row + 1);
 }
 
 void ResultsWriter::Impl::write_view_frame(const Frame& frame, const std::vector<ViewArray>& arrays) {
@@ -484,6 +499,7 @@ void ResultsWriter::write_frame(const Frame& frame) {
   }
   // Fields absent from this frame still get its row (NaN), so data rows match frames.
   for (auto& [key, s] : st.fields) w.ctx.extend(s.data, st.n_frames);
+  w.write_history(frame, row);
 
   w.write_view_frame(frame, arrays);
   if (w.flush_each_frame) w.flush();

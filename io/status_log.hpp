@@ -2,6 +2,9 @@
 /// The `.sta` status file: one row per increment attempt, Abaqus's columns and layout
 /// (STEP INC ATT SEVERE-DISCON-ITERS EQUIL-ITERS TOTAL-ITERS TOTAL-TIME STEP-TIME INC-OF-TIME),
 /// plus inpact's AUGMENTATIONS column; a `U` after ATT marks an attempt that was cut back.
+/// Note lines go between the rows: "STEP n BEGINS", and in a *STATIC, STABILIZE step one
+/// "     STABILIZATION ALLSE=… ALLSD=… ALLSD/ALLSE=… FACTOR=…" line below each converged row
+/// (the columns stay Abaqus's).
 /// Each row is flushed as it is written, so `tail -f JOB.sta` follows a run. The same rows go
 /// to the results file's /status table (ResultsWriter::append_status).
 #include <cstdint>

@@ -11,6 +11,16 @@
 
 namespace inpact::model {
 
+/// *STATIC, STABILIZE[=fraction][, FACTOR=c][, ALLSDTOL=tol][, CONTINUE=YES|NO]: automatic
+/// stabilization with viscous forces c M* Δu/Δt (solver/stabilization.hpp) [K16 *STATIC].
+struct Stabilization {
+  /// STABILIZE=: the dissipated energy fraction that sets c from the first increment (2e-4).
+  double energy_fraction = 2e-4;
+  std::optional<double> damping_factor;  ///< FACTOR=: c given directly (the fraction is then unused)
+  std::optional<double> allsdtol;  ///< ALLSDTOL=: adaptive, c lowered to keep ALLSD ≤ tol·ALLSE
+  bool continue_previous = false;  ///< CONTINUE=YES: start from the previous step's damping factor
+};
+
 /// *STATIC: its data line (initial increment, time period, minimum, maximum increment).
 /// The parser always fills every field, blanks with the Abaqus defaults (parser/kw_step.cpp).
 struct StaticProcedure {
@@ -20,6 +30,7 @@ struct StaticProcedure {
   double time_period = 1.0;
   std::optional<double> min_increment;  ///< default min(initial, 1e-5 × period)
   std::optional<double> max_increment;  ///< default the time period (no upper limit)
+  std::optional<Stabilization> stabilize;  ///< STABILIZE: automatic stabilization
   SourceLoc loc;
 };
 

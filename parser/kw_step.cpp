@@ -77,9 +77,45 @@ std::optional<double> positive_field(KeywordContext& ctx, const std::vector<Fiel
   return v;
 }
 
+/// A positive real parameter value, or an error naming it.
+std::optional<double> positive_param(KeywordContext& ctx, std::string_view name) {
+  const std::optional<double> v = ctx.real_value(name);
+  if (v && *v <= 0) {
+    ctx.error_param(name, fmt::format("{} must be positive, found {}", name, *v));
+    return std::nullopt;
+  }
+  return v;
+}
+
+// STABILIZE[=f], FACTOR=c, ALLSDTOL=tol, CONTINUE=YES|NO [K16 *STATIC] (Abaqus "Automatic
+// stabilization of static problems"): f is the dissipated energy fraction (default 2e-4); FACTOR
+// gives the damping factor c itself and needs STABILIZE; ALLSDTOL makes it adaptive (inpact:
+// only when given, and only lowering c; bare ALLSDTOL = 0.05; 0 = constant). CONTINUE=YES carries c over from the
+// previous step. Returns nothing when STABILIZE is absent.
+std::optional<model::Stabilization> stabilization(KeywordContext& ctx) {
+  const bool continued = ctx.choice_value("CONTINUE") == "YES";
+  if (!ctx.has("STABILIZE")) {
+    for (std::string_view p : {"FACTOR", "ALLSDTOL"})
+      if (ctx.has(p)) ctx.error_param(p, fmt::format("{} needs STABILIZE", p));
+    if (continued) ctx.error_param("CONTINUE", "CONTINUE=YES needs STABILIZE");
+    return std::nullopt;
+  }
+  model::Stabilization s;
+  if (auto f = positive_param(ctx, "STABILIZE")) s.energy_fraction = *f;
+  s.damping_factor = positive_param(ctx, "FACTOR");
+  // ALLSDTOL without a value: the accuracy tolerance 0.05 of Abaqus's adaptive stabilization.
+  if (ctx.has("ALLSDTOL") && !ctx.param("ALLSDTOL")->value) s.allsdtol = 0.05;
+  if (auto tol = ctx.real_value("ALLSDTOL")) {
+    if (*tol < 0) ctx.error_param("ALLSDTOL", fmt::format("ALLSDTOL cannot be negative, found {}", *tol));
+    else if (*tol > 0) s.allsdtol = tol;
+  }
+  s.continue_previous = continued;
+  return s;
+}
+
 /// Parameters of *STATIC that select analyses inpact does not have (stabilization, Riks,
 /// viscoelastic long-term response, ...): each is an error rather than a silent plain solve.
-constexpr std::string_view kStaticUnsupported[] = {"STABILIZE", "ALLSDTOL", "FACTOR", "RIKS", "LONG TERM",
+constexpr std::string_view kStaticUnsupported[] = {"RIKS", "LONG TERM",
                                                    "ADIABATIC", "FULLY PLASTIC", "TIME RESET",
                                                    "TOTAL TIME AT START", "EXPLICIT"};
 
@@ -97,7 +133,6 @@ void static_step(KeywordContext& ctx) {
   }
   for (std::string_view p : kStaticUnsupported)
     if (ctx.has(p)) ctx.error_param(p, fmt::format("{} is not supported yet", p));
-  if (ctx.choice_value("CONTINUE") == "YES") ctx.error_param("CONTINUE", "CONTINUE=YES (carried-over stabilization) is not supported");
   if (ctx.has("SOLVER"))
     ctx.warning(ctx.param("SOLVER")->loc, "SOLVER is ignored: inpact chooses its own sparse solver (CHOLMOD or UMFPACK)");
 
@@ -105,6 +140,7 @@ void static_step(KeywordContext& ctx) {
   proc.loc = ctx.keyword.loc;
   proc.direct = ctx.has("DIRECT");
   proc.direct_no_stop = ctx.choice_value("DIRECT") == "NOSTOP";
+  proc.stabilize = stabilization(ctx);
   std::vector<Field> f;
   bool ok = true;
   std::optional<double> initial, period, min, max;

@@ -20,6 +20,7 @@
 #include "material_states.hpp"
 #include "newton.hpp"
 #include "solution_controls.hpp"
+#include "stabilization.hpp"
 #include "step_conditions.hpp"
 
 namespace inpact::solver {
@@ -55,6 +56,7 @@ struct StepRun {
   LinearSolvers solvers;  ///< their symbolic analyses last the step
   StepOutput output;
   std::unique_ptr<ContactProblem> contact;  ///< null when no contact pair is in force
+  std::unique_ptr<StepStabilization> stabilization;  ///< *STATIC, STABILIZE, else null
   MaterialStates& states;                   ///< the points' material history (the analysis's)
   double output_seconds = 0.0;              ///< wall time in write_output this step
 };
@@ -81,7 +83,7 @@ std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
 
 /// The output due at a converged increment: a results frame and/or the printed tables.
 void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
-                  double dt, const OutputDue& due, AnalysisObserver& observer) {
+                  double dt, const OutputDue& due, AnalysisObserver& observer, std::vector<HistoryValue> history) {
   if (!due.any_field() && !due.any_print()) return;
   const auto started = std::chrono::steady_clock::now();
   ContactResults contact;
@@ -97,6 +99,7 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
     frame.step_time = t;
     frame.total_time = run.start_time + t;
     frame.fields = std::move(values.fields);
+    frame.history = std::move(history);
     observer.frame(frame);
   }
   if (due.any_print()) {
@@ -132,6 +135,17 @@ StatusRow status_row(const StepRun& run, const IncrementController& inc, const N
   return row;
 }
 
+/// ALLSE and ALLSD of a stabilized step at a converged increment: a .sta note and the frame's
+/// history values.
+std::vector<HistoryValue> stabilization_energies(StepRun& run, std::span<const double> u_start,
+                                                 std::span<const double> u, double t, double dt,
+                                                 AnalysisObserver& observer) {
+  StepStabilization& stab = *run.stabilization;
+  const std::vector<double> delta_t = run.conditions.temperature_change(t);
+  observer.status_note(stab.increment_converged(u_start, u, dt, run.assembler, delta_t, run.step.nlgeom));
+  return {{"ALLSE", stab.allse()}, {"ALLSD", stab.allsd()}};
+}
+
 /// One attempt of the current increment: the augmentation level, then its .sta row.
 NewtonOutcome run_attempt(const AnalysisModel& am, StepRun& run, const IncrementController& inc,
                           const TimeAveragedForce& force, IncrementState& trial, AnalysisObserver& observer) {
@@ -145,7 +159,8 @@ NewtonOutcome run_attempt(const AnalysisModel& am, StepRun& run, const Increment
                     .nlgeom = run.step.nlgeom,
                     .force_history = force,
                     .at = {run.number, inc.increment(), inc.attempt()},
-                    .keep_points = run.output.points_due(inc.increment(), inc.end(), inc.ends_step())};
+                    .keep_points = run.output.points_due(inc.increment(), inc.end(), inc.ends_step()),
+                    .stabilization = run.stabilization ? run.stabilization->for_attempt(inc.size(), trial.u) : nullptr};
   int augmentations = 0;
   NewtonOutcome outcome = solve_with_augmentations(ctx, inc.end(), trial, augmentations);
   observer.attempt_finished(status_row(run, inc, outcome, augmentations));
@@ -167,23 +182,32 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
       trial = state;
       outcome = run_attempt(am, run, inc, force, trial, observer);
       if (outcome.converged) break;
+      // A stabilized step's first increment is tried without damping; when it fails (a body
+      // held only by contact: a rigid-body mode), damping starts and the singularity is no reason to stop.
+      const bool damping_starts = run.stabilization && run.stabilization->attempt_failed(run.assembler);
       // A singular first solve with a contact pair that touched nowhere at its start: a free body
-      // that no cutback can hold.
-      const std::string untouched = outcome.singular && run.contact ? run.contact->untouched_at_start() : "";
+      // that no cutback can hold (unless damping starts now).
+      const std::string untouched =
+          outcome.singular && run.contact && !damping_starts ? run.contact->untouched_at_start() : "";
       const std::string where = fmt::format("step {} ({}), increment {}, attempt {}, step time {:.6g} + {:.3g}: {}{}{}",
                                             run.number, run.step.name, inc.increment(), inc.attempt(), inc.start(),
                                             inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof), untouched);
-      const Cutback cutback = inc.attempt_failed(outcome.singular, run.contact != nullptr && untouched.empty());
+      const Cutback cutback = damping_starts ? inc.retry_same_size()
+                                             : inc.attempt_failed(outcome.singular, run.contact != nullptr && untouched.empty());
       if (!cutback.retry) return {false, where + cutback.note};
-      observer.message(where + cutback.note);
+      observer.message(where + cutback.note +
+                       (damping_starts ? fmt::format(" (damping factor {:.4g})", run.stabilization->factor()) : ""));
       run.states.discard();  // the next attempt starts from the same committed history
     }
     const int increment = inc.increment();
     const double t = inc.end(), dt = inc.size();
     inc.attempt_converged(outcome.iterations - outcome.severe_iterations);
+    std::vector<HistoryValue> history;
+    if (run.stabilization) history = stabilization_energies(run, state.u, trial.u, t, dt, observer);
     state = std::move(trial);
     force.add(outcome.average_force);
-    write_output(am, run, state, increment, t, dt, run.output.due(increment, t, inc.step_complete()), observer);
+    write_output(am, run, state, increment, t, dt, run.output.due(increment, t, inc.step_complete()), observer,
+                 std::move(history));
     run.states.commit();  // after the output, which evaluates from the committed history
   }
   return {true, ""};
@@ -210,6 +234,8 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
   state.f_ext.assign(am.n_dof(), 0.0);
   double total_time = 0.0;
   double output_seconds = 0.0;
+  double previous_factor = 0.0;  // the damping factor the last step ended with (CONTINUE=YES)
+  double allsd = 0.0;            // ALLSD over the steps so far
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
@@ -222,8 +248,19 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
     for (const auto& v : run.output.not_computed())
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));
+    if (const auto& stabilize = step.static_procedure->stabilize)
+      run.stabilization = std::make_unique<StepStabilization>(am, *stabilize, step.static_procedure->time_period,
+                                                              run.dofs, run.assembler, state.u, previous_factor,
+                                                              allsd);
     AnalysisOutcome outcome = run_increments(am, run, state, observer);
     output_seconds += run.output_seconds;
+    previous_factor = run.stabilization ? run.stabilization->factor() : 0.0;
+    if (run.stabilization) allsd = run.stabilization->allsd();
+    if (auto warning = run.stabilization ? run.stabilization->end_of_step_warning() : std::nullopt) {
+      const std::string line = fmt::format("step {} ({}): {}", s + 1, step.name, *warning);
+      observer.message(line);
+      observer.status_note("     " + line);
+    }
     if (!outcome.completed) {
       outcome.output_seconds = output_seconds;
       return outcome;

@@ -55,6 +55,12 @@ Cutback IncrementController::attempt_failed(bool singular, bool contact) {
   return {true, note};
 }
 
+Cutback IncrementController::retry_same_size() {
+  if (attempt_ > limits_.max_cutbacks) return {false, fmt::format(" — gave up after {} attempts", attempt_)};
+  ++attempt_;
+  return {true, fmt::format("; trying {:.3g} again with automatic stabilization", dt_)};
+}
+
 void IncrementController::attempt_converged(int equilibrium_iterations) {
   t_ += dt_;
   // After an increment cut short by a time mark, go on with the size the controller chose.

@@ -66,6 +66,9 @@ class IncrementController {
   /// The attempt failed. `singular`: a rigid-body mode; `contact`: contact pairs are in force
   /// (they may hold the body once a smaller increment stops an overshooting iteration).
   Cutback attempt_failed(bool singular, bool contact);
+  /// The attempt failed for a reason the size does not cure (automatic stabilization had not
+  /// started yet): try again with the same size, as one more attempt.
+  Cutback retry_same_size();
   /// The attempt converged in `equilibrium_iterations`: time advances, the next size is chosen.
   void attempt_converged(int equilibrium_iterations);
 

@@ -133,6 +133,7 @@ Residual NewtonIterations::assemble_residual(int k) {
         ++contact_force_count;
       }
   }
+  if (ctx_.stabilization) ctx_.stabilization->add_force(state_.u, state_.f_int);
   for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d];
   ctx_.assembler.reduce(r_full_, std::span(r_).first(n_eq_));
   if (ctx_.contact) ctx_.contact->constraint_residual(state_.contact, std::span(r_).subspan(n_eq_));
@@ -200,6 +201,7 @@ bool NewtonIterations::solve_correction(Residual& res) {
     res.request.points = false;  // the points kept above are at this u already
     ctx_.assembler.assemble(state_.u, res.request, state_.f_int);
   }
+  if (ctx_.stabilization) ctx_.stabilization->add_tangent(ctx_.assembler);
   const SparseMatrix* tangent = &ctx_.assembler.tangent();
   if (ctx_.contact && ctx_.contact->unsymmetric()) tangent = &ctx_.contact->unsymmetric_tangent(*tangent);
   const std::size_t n_sys = static_cast<std::size_t>(ctx_.assembler.n_equations());

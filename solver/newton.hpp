@@ -21,6 +21,7 @@
 #include "linear_solve.hpp"
 #include "observer.hpp"
 #include "solution_controls.hpp"
+#include "stabilization.hpp"
 #include "step_conditions.hpp"
 
 namespace inpact::solver {
@@ -65,6 +66,8 @@ struct NewtonContext {
   /// The increment writes element output (S, E) if it converges: every assembly keeps its
   /// point results, so that the output reads those of the converged state.
   bool keep_points = false;
+  /// *STATIC, STABILIZE: the viscous forces c M* Δu/Δt of this attempt, or null.
+  const ViscousForces* stabilization = nullptr;
 };
 
 /// Runs the iterations from `state.u` (the converged state at the increment start) to step

@@ -32,6 +32,8 @@ class AnalysisObserver {
   /// The *NODE PRINT / *EL PRINT tables due at a converged increment (the .dat file).
   virtual void print_frame(const PrintFrame& frame) {}
   virtual void message(std::string_view text) {}
+  /// A note line for the status (.sta) file, below the rows (stabilization energies).
+  virtual void status_note(std::string_view text) {}
 };
 
 }  // namespace inpact::solver

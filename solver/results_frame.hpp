@@ -30,12 +30,20 @@ struct FieldData {
   std::vector<double> values;  ///< nloc × ncomp, row-major
 };
 
+/// One whole-model scalar of a frame (Abaqus history output: ALLSE, ALLSD).
+struct HistoryValue {
+  std::string key;
+  double value = 0.0;
+};
+
 /// One converged increment's output.
 struct Frame {
   double step_time = 0.0;
   double total_time = 0.0;
   int increment = 0;
   std::vector<FieldData> fields;
+  /// Written as /steps/<STEP>/frames/<KEY> (nf,), beside step_time (NaN in frames without it).
+  std::vector<HistoryValue> history;
 };
 
 /// One printed table of a *NODE PRINT or *EL PRINT request at one increment: the values the
