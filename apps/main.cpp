@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
   run_cmd->add_flag("-v,--verbose", run.verbose, "Print every Newton iteration");
   run_cmd->add_option("--timings", run.timings,
-                      "Write the wall time of each phase (read, create, solve, output, finish) to this file");
+                      "Write the wall time of each phase (read, create, solve, output, finish) and of the Newton "
+                      "iterations' parts (contact update, element assembly, factorisation) to this file");
 
   CheckOptions check;
   std::vector<std::string> check_params;

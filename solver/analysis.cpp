@@ -112,6 +112,13 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   run.output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
+/// The outcome of an analysis that stopped, saying why.
+AnalysisOutcome stopped(std::string message) {
+  AnalysisOutcome out;
+  out.message = std::move(message);
+  return out;
+}
+
 /// The .sta row of an attempt. A cut-back attempt shows the time at the start of the increment,
 /// as Abaqus does.
 StatusRow status_row(const StepRun& run, const IncrementController& inc, const NewtonOutcome& outcome,
@@ -159,7 +166,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
   const auto time_mark = [&run](double t, double dt) { return run.output.limit_increment(t, dt); };
   while (!inc.step_complete()) {
     if (auto stop = inc.begin_increment(time_mark))
-      return {false, fmt::format("step {} ({}): {}", run.number, run.step.name, *stop)};
+      return stopped(fmt::format("step {} ({}): {}", run.number, run.step.name, *stop));
     IncrementState trial;
     NewtonOutcome outcome;
     for (;;) {
@@ -170,7 +177,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
                                             run.number, run.step.name, inc.increment(), inc.attempt(), inc.start(),
                                             inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof));
       const Cutback cutback = inc.attempt_failed(outcome.singular, run.contact != nullptr);
-      if (!cutback.retry) return {false, where + cutback.note};
+      if (!cutback.retry) return stopped(where + cutback.note);
       observer.message(where + cutback.note);
       run.states.discard();  // the next attempt starts from the same committed history
     }
@@ -182,7 +189,9 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
     write_output(am, run, state, increment, t, dt, run.output.due(increment, t, inc.step_complete()), observer);
     run.states.commit();  // after the output, which evaluates from the committed history
   }
-  return {true, ""};
+  AnalysisOutcome completed;
+  completed.completed = true;
+  return completed;
 }
 
 }  // namespace
@@ -206,6 +215,7 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
   state.f_ext.assign(am.n_dof(), 0.0);
   double total_time = 0.0;
   double output_seconds = 0.0;
+  IterationSeconds iteration_seconds;
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
@@ -220,14 +230,22 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
                                    step.name, v));
     AnalysisOutcome outcome = run_increments(am, run, state, observer);
     output_seconds += run.output_seconds;
+    iteration_seconds += run.assembler.seconds();
+    iteration_seconds += run.solvers.seconds;
+    if (run.contact) iteration_seconds += run.contact->seconds();
     if (!outcome.completed) {
       outcome.output_seconds = output_seconds;
+      outcome.iteration_seconds = iteration_seconds;
       return outcome;
     }
     history = run.conditions.end_state(reactions(run.dofs, state));
     total_time += step.static_procedure->time_period;
   }
-  return {true, "", output_seconds};
+  AnalysisOutcome outcome;
+  outcome.completed = true;
+  outcome.output_seconds = output_seconds;
+  outcome.iteration_seconds = iteration_seconds;
+  return outcome;
 }
 
 }  // namespace inpact::solver

@@ -265,6 +265,7 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
 void ContactProblem::evaluate(std::span<const double> u) {
   for (auto& p : pairs_) p->enforcement->set_adaptive_scale(adaptive_scale_);
   if (evaluated_ && std::equal(u.begin(), u.end(), evaluated_u_.begin(), evaluated_u_.end())) return;
+  const ScopedSeconds clock(seconds_.contact_geometry);
   evaluated_u_.assign(u.begin(), u.end());
   evaluated_ = true;
   const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
@@ -366,6 +367,7 @@ void ContactProblem::set_pattern(std::vector<std::int64_t> signature, Assembler&
 }
 
 ContactIteration ContactProblem::update(std::span<const double> u, ContactState& state, Assembler& assembler) {
+  const ScopedSeconds clock(seconds_.contact_update, &seconds_.contact_updates);
   evaluate(u);
   const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
   ContactIteration it;
@@ -402,6 +404,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
 }
 
 void ContactProblem::assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler) {
+  const ScopedSeconds clock(seconds_.contact_assembly);
   std::vector<std::int64_t> dofs;
   std::vector<double> k;
   skew_.clear();

@@ -33,6 +33,7 @@
 #include "assembler.hpp"
 #include "contact/enforcement.hpp"
 #include "contact_results.hpp"
+#include "iteration_seconds.hpp"
 
 namespace inpact::solver {
 
@@ -152,6 +153,9 @@ class ContactProblem {
   /// Output values at displacement u (a converged state).
   ContactResults results(std::span<const double> u, const ContactState& state);
 
+  /// Wall time in update(), evaluate() and assemble() so far (their fields of IterationSeconds).
+  const IterationSeconds& seconds() const { return seconds_; }
+
  private:
   struct Pair;
   /// Search, projection and gap of every slave node at u; a call at the u of the last one
@@ -189,6 +193,7 @@ class ContactProblem {
   double adaptive_scale_ = 1.0;
   std::vector<double> evaluated_u_;  ///< the u of the last evaluate()
   bool evaluated_ = false;
+  IterationSeconds seconds_;
 };
 
 }  // namespace inpact::solver
