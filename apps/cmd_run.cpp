@@ -117,6 +117,7 @@ class PhaseClock {
   /// The Newton iterations' parts (inside "analysis"), and how often each ran.
   void add_iterations(const solver::IterationSeconds& it) {
     add("contact_update", it.contact_update);
+    add("contact_begin", it.contact_begin);
     add("contact_geometry", it.contact_geometry);
     add("contact_assembly", it.contact_assembly);
     add("element_assembly", it.element_assembly);

@@ -236,6 +236,7 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
 // --- Iterations --------------------------------------------------------------------------
 
 void ContactProblem::begin_attempt(ContactState& state, int step, int increment, std::span<const double> u_start) {
+  const ScopedSeconds clock(seconds_.contact_begin);
   state.pairs.resize(n_pairs_total_);
   evaluate(u_start);
   const bool new_increment = state.friction_increment != std::array<int, 2>{step, increment};

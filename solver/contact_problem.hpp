@@ -153,7 +153,7 @@ class ContactProblem {
   /// Output values at displacement u (a converged state).
   ContactResults results(std::span<const double> u, const ContactState& state);
 
-  /// Wall time in update(), evaluate() and assemble() so far (their fields of IterationSeconds).
+  /// Wall time in begin_attempt(), update(), evaluate() and assemble() so far (their fields of IterationSeconds).
   const IterationSeconds& seconds() const { return seconds_; }
 
  private:

@@ -9,7 +9,8 @@ namespace inpact::solver {
 
 struct IterationSeconds {
   double contact_update = 0.0;     ///< ContactProblem::update: search, projection, status, linearisation
-  double contact_geometry = 0.0;   ///< of which (and of begin_attempt) the surfaces' update (search, projection)
+  double contact_begin = 0.0;      ///< ContactProblem::begin_attempt (the surfaces at the attempt's start)
+  double contact_geometry = 0.0;   ///< of update's and begin_attempt's: the surfaces' update (search, projection)
   double contact_assembly = 0.0;   ///< ContactProblem::assemble: contact forces and tangent
   double element_assembly = 0.0;   ///< Assembler::assemble: element forces (and tangent)
   double factorization = 0.0;      ///< LinearSolver::factorize
@@ -18,6 +19,7 @@ struct IterationSeconds {
 
   IterationSeconds& operator+=(const IterationSeconds& o) {
     contact_update += o.contact_update;
+    contact_begin += o.contact_begin;
     contact_geometry += o.contact_geometry;
     contact_assembly += o.contact_assembly;
     element_assembly += o.element_assembly;
