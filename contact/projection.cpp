@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "projection_tolerance.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -20,12 +21,11 @@ struct Local {
 struct FacetNodes {
   FacetShape shape;
   int n = 0;
-  std::array<Vec3, 8> X{};
   double size = 0.0;  ///< largest corner distance from node 0
+  std::array<Vec3, 8> X{};
 
-  FacetNodes(const Facet& f, std::span<const Vec3> x) : shape(f.shape), n(f.n_nodes) {
+  FacetNodes(const Facet& f, std::span<const Vec3> x) : shape(f.shape), n(f.n_nodes), size(facet_size(f, x)) {
     for (int a = 0; a < n; ++a) X[a] = x[static_cast<std::size_t>(f.nodes[a])];
-    for (int a = 1; a < n; ++a) size = std::max(size, norm(sub(X[a], X[0])));
   }
 
   Local eval(double xi, double eta) const {
@@ -43,9 +43,10 @@ struct FacetNodes {
   }
 
   double phi(const Vec3& xs, double xi, double eta) const {
-    const ShapeEval e = eval_shape(shape, xi, eta);
+    std::array<double, 8> N;
+    shape_values(shape, xi, eta, N);
     Vec3 x{};
-    for (int a = 0; a < n; ++a) x = axpy(e.N[a], X[a], x);
+    for (int a = 0; a < n; ++a) x = axpy(N[a], X[a], x);
     const Vec3 r = sub(xs, x);
     return 0.5 * dot(r, r);
   }
@@ -226,12 +227,6 @@ ProjectionRegion region_of(FacetShape s, const std::array<double, 2>& xi) {
   return on == 0 ? ProjectionRegion::Interior : on == 1 ? ProjectionRegion::Edge : ProjectionRegion::Vertex;
 }
 
-/// Distance below which a slave point counts as lying on the facet.
-// Points closer than this to a facet are on it (gap 0, shared-point normal averaged). Far below
-// any penetration tolerance (1e-3 of the interface length), far above the round-off of the
-// local Newton projection, which differs between optimisation levels near facet edges.
-double on_surface_tol(double size) { return 1e-8 * size; }
-
 }  // namespace
 
 void tangent_basis(const Vec3& n, int dim, Vec3& t1, Vec3& t2) {
@@ -303,55 +298,6 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
   }
   tangent_basis(p.normal, pd == 1 ? 2 : 3, p.t1, p.t2);
   return p;
-}
-
-Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs) {
-  Projection best;
-  if (candidates.empty()) return best;
-  std::vector<Projection> all;
-  all.reserve(candidates.size());
-  double size = 0.0;
-  for (std::int32_t c : candidates) {
-    const Facet& f = facets[static_cast<std::size_t>(c)];
-    all.push_back(project_to_facet(f, x, xs, c));
-    size = std::max(size, FacetNodes(f, x).size);
-  }
-  const double tol = on_surface_tol(size);
-  // Closest facet; among ties at the same point: interior before edge before vertex, then the
-  // lowest facet index.
-  auto better = [&](const Projection& a, const Projection& b) {
-    if (a.distance < b.distance - tol) return true;
-    if (a.distance > b.distance + tol) return false;
-    if (a.region != b.region) return a.region < b.region;
-    return a.facet < b.facet;
-  };
-  std::size_t ib = 0;
-  for (std::size_t i = 1; i < all.size(); ++i)
-    if (better(all[i], all[ib])) ib = i;
-  best = all[ib];
-
-  // n̄: the facet normals of every candidate sharing the closest point.
-  Vec3 nbar{};
-  for (const Projection& q : all)
-    if (std::abs(q.distance - best.distance) <= tol && norm(sub(q.x_master, best.x_master)) <= tol)
-      nbar = add(nbar, q.facet_normal);
-  const double len = norm(nbar);
-  const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
-  const Vec3 r = sub(xs, best.x_master);
-  if (best.distance <= tol) {
-    // On the surface to round-off at an edge or vertex: the averaged normal, and the signed
-    // distance along it (not 0: under a stiff penalty p/k can be below this tolerance, and a
-    // node on a vertex must still carry its force).
-    if (len > 0) best.normal = scale(1.0 / len, nbar);
-    best.gap = dot(r, best.normal);
-  } else if (best.region != ProjectionRegion::Interior) {
-    const double s = dot(r, nbar) < 0 ? -1.0 : 1.0;
-    best.normal = scale(s / best.distance, r);
-    best.gap = s * best.distance;
-  }
-  tangent_basis(best.normal, dim, best.t1, best.t2);
-  return best;
 }
 
 namespace {
