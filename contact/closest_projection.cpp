@@ -10,6 +10,7 @@
 // order, and skipping only facets that could not change a comparison keeps the chosen facet,
 // and every number, exactly what projecting every candidate gives.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -29,82 +30,172 @@ struct Candidate {
   Projection p;
 };
 
+/// How far the points P lie from xs along the unit vector u, on the side they lie: no point of
+/// their convex hull is closer to xs than this along u (0 when xs is between them).
+double separation(std::span<const Vec3> P, const Vec3& xs, const Vec3& u) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Vec3& p : P) {
+    const double s = dot(u, sub(p, xs));
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  }
+  return std::max({lo, -hi, 0.0});
+}
+
+/// The facet's normal direction from its corners (unit; zero when they are degenerate).
+Vec3 corner_normal(const Facet& f, std::span<const Vec3> c) {
+  const int nc = facet_n_corners(f.shape);
+  Vec3 n{};
+  if (nc == 2) n = {c[1][1] - c[0][1], c[0][0] - c[1][0], 0.0};  // 2D: the edge turned in its plane
+  else if (nc == 3) n = cross(sub(c[1], c[0]), sub(c[2], c[0]));
+  else n = cross(sub(c[2], c[0]), sub(c[3], c[1]));
+  const double len = norm(n);
+  return len > 0 ? scale(1.0 / len, n) : Vec3{};
+}
+
+/// Separating axes: the facet's normal n and, perpendicular to it, the in-plane normal of each
+/// corner edge (the edge itself for a 2D facet); with b_n and b_e the separations along n and
+/// along the edge axis, |x − xs|² ≥ b_n² + b_e² (the axes are orthonormal).
+double axis_bound(const Facet& f, std::span<const Vec3> P, const Vec3& xs) {
+  const Vec3 n = corner_normal(f, P);
+  if (dot(n, n) == 0.0) return 0.0;
+  const int nc = facet_n_corners(f.shape);
+  const double b_n = separation(P, xs, n);
+  double b_e = 0.0;
+  for (int i = 0; i < (nc == 2 ? 1 : nc); ++i) {
+    const Vec3 edge = sub(P[static_cast<std::size_t>((i + 1) % nc)], P[static_cast<std::size_t>(i)]);
+    const Vec3 w = nc == 2 ? edge : cross(edge, n);
+    const double len = norm(w);
+    if (len > 0) b_e = std::max(b_e, separation(P, xs, scale(1.0 / len, w)));
+  }
+  return std::sqrt(b_n * b_n + b_e * b_e);
+}
+
 /// A lower bound of |x − xs| over every point x of facet f, which lies in the convex hull of its
-/// control points P_a: the distance from xs to their bounding box, and min_a v·(P_a − xs) with v
-/// the unit vector from xs towards their centroid. `magnitude` grows to the largest coordinate
-/// met (the scale of the round-off in the bound and in the projected distance).
+/// control points P_a (their corners first): the larger of the distance from xs to their
+/// bounding box and axis_bound(). `magnitude` grows to the largest coordinate met (the scale of
+/// the round-off in the bound and in the projected distance).
 double distance_bound(const Facet& f, std::span<const Vec3> x, const Vec3& xs, double& magnitude) {
   std::array<Vec3, 9> cp;
-  const int m = facet_control_points(f, x, cp);
-  Vec3 lo = cp[0], hi = cp[0], centre{};
-  for (int a = 0; a < m; ++a) {
+  const std::span<const Vec3> P(cp.data(), static_cast<std::size_t>(facet_control_points(f, x, cp)));
+  Vec3 lo = P[0], hi = P[0];
+  for (const Vec3& p : P)
     for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], cp[a][k]);
-      hi[k] = std::max(hi[k], cp[a][k]);
-      magnitude = std::max({magnitude, std::abs(cp[a][k]), std::abs(xs[k])});
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+      magnitude = std::max({magnitude, std::abs(p[k]), std::abs(xs[k])});
     }
-    centre = axpy(1.0 / m, cp[a], centre);
-  }
   Vec3 outside{};
   for (int k = 0; k < 3; ++k) outside[k] = std::max({lo[k] - xs[k], 0.0, xs[k] - hi[k]});
-  double bound = norm(outside);
-  const Vec3 v = sub(centre, xs);
-  const double len = norm(v);
-  if (len > 0) {
-    double along = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < m; ++a) along = std::min(along, dot(v, sub(cp[a], xs)) / len);
-    bound = std::max(bound, along);
+  return std::max(norm(outside), axis_bound(f, P, xs));
+}
+
+/// The candidates of one slave point, projected on demand.
+class CandidateSet {
+ public:
+  CandidateSet(std::span<const Facet> facets, std::span<const std::int32_t> candidates, std::span<const Vec3> x,
+               const Vec3& xs)
+      : facets_(facets), x_(x), xs_(xs), all_(candidates.size()) {
+    double size = 0.0, magnitude = 0.0;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const Facet& f = facets[static_cast<std::size_t>(candidates[i])];
+      all_[i].index = candidates[i];
+      const double bound = distance_bound(f, x, xs, magnitude);
+      all_[i].bound = std::isnan(bound) ? -std::numeric_limits<double>::infinity() : bound;  // (then projected)
+      size = std::max(size, facet_size(f, x));
+    }
+    tol_ = on_surface_tol(size);
+    // (the bound and the projected distance each carry round-off of the coordinates' size;
+    // 1e-12 of it is thousands of times that)
+    slack_ = tol_ + 1e-12 * magnitude;
   }
-  return bound;
+  double tol() const { return tol_; }
+  std::size_t size() const { return all_.size(); }
+
+  const Projection& projected(std::size_t i) {
+    Candidate& c = all_[i];
+    if (!c.projected) c.p = project_to_facet(facets_[static_cast<std::size_t>(c.index)], x_, xs_, c.index);
+    c.projected = true;
+    return c.p;
+  }
+  /// Candidate i is farther than distance d + tol for certain (never for a NaN bound or d).
+  bool beyond(std::size_t i, double d) const { return all_[i].bound - slack_ > d + tol_; }
+  /// Closest facet; among ties at the same point: interior before edge before vertex, then the
+  /// lowest facet index.
+  bool better(const Projection& a, const Projection& b) const {
+    if (a.distance < b.distance - tol_) return true;
+    if (a.distance > b.distance + tol_) return false;
+    if (a.region != b.region) return a.region < b.region;
+    return a.facet < b.facet;
+  }
+  std::size_t select();
+  /// n̄: the facet normals of every candidate sharing the closest point `best`, in candidate order.
+  Vec3 shared_normal(const Projection& best);
+
+ private:
+  std::size_t select_from(std::size_t ib, std::size_t begin, std::size_t end);
+  std::span<const Facet> facets_;
+  std::span<const Vec3> x_;
+  Vec3 xs_;
+  std::vector<Candidate> all_;
+  double tol_ = 0.0, slack_ = 0.0;
+};
+
+/// The winner of the comparisons "candidate i against the best so far" for i in [begin, end),
+/// starting from the best `ib` (projected): a candidate beyond the best's distance cannot win.
+std::size_t CandidateSet::select_from(std::size_t ib, std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i)
+    if (!beyond(i, all_[ib].p.distance) && better(projected(i), all_[ib].p)) ib = i;
+  return ib;
+}
+
+/// The candidate the comparisons in candidate order choose, as if every one were projected.
+/// First the candidates are projected in the order of their bounds until the next bound rules
+/// out coming within 3 tol of the closest distance D found: the rest are farther than D + 3 tol.
+/// Then in candidate order: the unprojected candidates before the first projected one (the
+/// head) need not be projected when that one is closer than all of them by more than tol (it
+/// then beats whichever of them would have been the best); otherwise the head is compared too.
+std::size_t CandidateSet::select() {
+  std::vector<std::size_t> by_bound(all_.size());
+  for (std::size_t i = 0; i < by_bound.size(); ++i) by_bound[i] = i;
+  std::sort(by_bound.begin(), by_bound.end(), [&](std::size_t a, std::size_t b) { return all_[a].bound < all_[b].bound; });
+  double closest = std::numeric_limits<double>::infinity();
+  for (std::size_t i : by_bound) {
+    if (beyond(i, closest + 2 * tol_)) break;
+    closest = std::min(closest, projected(i).distance);
+  }
+  std::size_t first = 0;  // the first projected candidate
+  double head_bound = std::numeric_limits<double>::infinity();
+  while (!all_[first].projected) head_bound = std::min(head_bound, all_[first++].bound);
+  std::size_t ib = first;
+  if (first > 0 && !(all_[first].p.distance < head_bound - slack_ - tol_)) {
+    projected(0);
+    ib = select_from(0, 1, first);
+    if (better(all_[first].p, all_[ib].p)) ib = first;
+  }
+  return select_from(ib, first + 1, all_.size());
+}
+
+Vec3 CandidateSet::shared_normal(const Projection& best) {
+  Vec3 nbar{};
+  for (std::size_t i = 0; i < all_.size(); ++i) {
+    if (beyond(i, best.distance)) continue;
+    const Projection& q = projected(i);
+    if (std::abs(q.distance - best.distance) <= tol_ && norm(sub(q.x_master, best.x_master)) <= tol_)
+      nbar = add(nbar, q.facet_normal);
+  }
+  return nbar;
 }
 
 }  // namespace
 
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                               std::span<const Vec3> x, const Vec3& xs) {
-  Projection best;
-  if (candidates.empty()) return best;
-  std::vector<Candidate> all(candidates.size());
-  double size = 0.0, magnitude = 0.0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const Facet& f = facets[static_cast<std::size_t>(candidates[i])];
-    all[i].index = candidates[i];
-    all[i].bound = distance_bound(f, x, xs, magnitude);
-    size = std::max(size, facet_size(f, x));
-  }
-  const double tol = on_surface_tol(size);
-  // (the bound and the projected distance each carry round-off of the coordinates' size; 1e-12
-  // of it is thousands of times that)
-  const double slack = tol + 1e-12 * magnitude;
-  auto projected = [&](Candidate& c) -> const Projection& {
-    if (!c.projected) c.p = project_to_facet(facets[static_cast<std::size_t>(c.index)], x, xs, c.index);
-    c.projected = true;
-    return c.p;
-  };
-  // Farther than distance d + tol for certain (false for a NaN bound or distance: projected then).
-  auto beyond = [&](const Candidate& c, double d) { return c.bound - slack > d + tol; };
-  // Closest facet; among ties at the same point: interior before edge before vertex, then the
-  // lowest facet index.
-  auto better = [&](const Projection& a, const Projection& b) {
-    if (a.distance < b.distance - tol) return true;
-    if (a.distance > b.distance + tol) return false;
-    if (a.region != b.region) return a.region < b.region;
-    return a.facet < b.facet;
-  };
-  std::size_t ib = 0;
-  projected(all[0]);
-  for (std::size_t i = 1; i < all.size(); ++i)
-    if (!beyond(all[i], all[ib].p.distance) && better(projected(all[i]), all[ib].p)) ib = i;
-  best = all[ib].p;
-
-  // n̄: the facet normals of every candidate sharing the closest point.
-  Vec3 nbar{};
-  for (Candidate& c : all) {
-    if (beyond(c, best.distance)) continue;
-    const Projection& q = projected(c);
-    if (std::abs(q.distance - best.distance) <= tol && norm(sub(q.x_master, best.x_master)) <= tol)
-      nbar = add(nbar, q.facet_normal);
-  }
+  if (candidates.empty()) return {};
+  CandidateSet set(facets, candidates, x, xs);
+  Projection best = set.projected(set.select());
+  const double tol = set.tol();
+  const Vec3 nbar = set.shared_normal(best);
   const double len = norm(nbar);
   const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
   const Vec3 r = sub(xs, best.x_master);
