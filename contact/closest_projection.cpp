@@ -25,7 +25,9 @@ namespace {
 /// A candidate facet, projected when its distance bound does not rule it out.
 struct Candidate {
   std::int32_t index = -1;
+  double box = 0.0;    ///< the distance to the box of its control points (the first bound)
   double bound = 0.0;  ///< no point of the facet is closer to the slave point than this
+  bool refined = false;  ///< bound includes axis_bound()
   bool projected = false;
   Projection p;
 };
@@ -71,11 +73,10 @@ double axis_bound(const Facet& f, std::span<const Vec3> P, const Vec3& xs) {
   return std::sqrt(b_n * b_n + b_e * b_e);
 }
 
-/// A lower bound of |x − xs| over every point x of facet f, which lies in the convex hull of its
-/// control points P_a (their corners first): the larger of the distance from xs to their
-/// bounding box and axis_bound(). `magnitude` grows to the largest coordinate met (the scale of
-/// the round-off in the bound and in the projected distance).
-double distance_bound(const Facet& f, std::span<const Vec3> x, const Vec3& xs, double& magnitude) {
+/// The distance from xs to the bounding box of the facet's control points P_a (a lower bound of
+/// |x − xs| over the facet, which lies in their convex hull). `magnitude` grows to the largest
+/// coordinate met (the scale of the round-off in the bound and in the projected distance).
+double box_bound(const Facet& f, std::span<const Vec3> x, const Vec3& xs, double& magnitude) {
   std::array<Vec3, 9> cp;
   const std::span<const Vec3> P(cp.data(), static_cast<std::size_t>(facet_control_points(f, x, cp)));
   Vec3 lo = P[0], hi = P[0];
@@ -87,21 +88,26 @@ double distance_bound(const Facet& f, std::span<const Vec3> x, const Vec3& xs, d
     }
   Vec3 outside{};
   for (int k = 0; k < 3; ++k) outside[k] = std::max({lo[k] - xs[k], 0.0, xs[k] - hi[k]});
-  return std::max(norm(outside), axis_bound(f, P, xs));
+  return norm(outside);
 }
+
+/// A bound never NaN: a NaN one is −∞ (the candidate is then projected).
+double usable(double bound) { return std::isnan(bound) ? -std::numeric_limits<double>::infinity() : bound; }
 
 /// The candidates of one slave point, projected on demand.
 class CandidateSet {
  public:
   CandidateSet(std::span<const Facet> facets, std::span<const std::int32_t> candidates, std::span<const Vec3> x,
-               const Vec3& xs)
-      : facets_(facets), x_(x), xs_(xs), all_(candidates.size()) {
+               const Vec3& xs, std::vector<Candidate>& storage)
+      : facets_(facets), x_(x), xs_(xs), all_(storage) {
+    all_.resize(candidates.size());
     double size = 0.0, magnitude = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const Facet& f = facets[static_cast<std::size_t>(candidates[i])];
-      all_[i].index = candidates[i];
-      const double bound = distance_bound(f, x, xs, magnitude);
-      all_[i].bound = std::isnan(bound) ? -std::numeric_limits<double>::infinity() : bound;  // (then projected)
+      Candidate& c = all_[i];
+      c.index = candidates[i];
+      c.box = c.bound = usable(box_bound(f, x, xs, magnitude));
+      c.refined = c.projected = false;
       size = std::max(size, facet_size(f, x));
     }
     tol_ = on_surface_tol(size);
@@ -118,8 +124,19 @@ class CandidateSet {
     c.projected = true;
     return c.p;
   }
-  /// Candidate i is farther than distance d + tol for certain (never for a NaN bound or d).
-  bool beyond(std::size_t i, double d) const { return all_[i].bound - slack_ > d + tol_; }
+  /// Candidate i is farther than distance d + tol for certain (never for a NaN d). The box
+  /// bound first, the separating axes when it does not decide.
+  bool beyond(std::size_t i, double d) {
+    Candidate& c = all_[i];
+    if (c.bound - slack_ > d + tol_) return true;
+    if (c.refined) return false;
+    c.refined = true;
+    std::array<Vec3, 9> cp;
+    const Facet& f = facets_[static_cast<std::size_t>(c.index)];
+    const std::size_t m = static_cast<std::size_t>(facet_control_points(f, x_, cp));
+    c.bound = std::max(c.bound, usable(axis_bound(f, std::span<const Vec3>(cp.data(), m), xs_)));
+    return c.bound - slack_ > d + tol_;
+  }
   /// Closest facet; among ties at the same point: interior before edge before vertex, then the
   /// lowest facet index.
   bool better(const Projection& a, const Projection& b) const {
@@ -137,7 +154,7 @@ class CandidateSet {
   std::span<const Facet> facets_;
   std::span<const Vec3> x_;
   Vec3 xs_;
-  std::vector<Candidate> all_;
+  std::vector<Candidate>& all_;
   double tol_ = 0.0, slack_ = 0.0;
 };
 
@@ -150,19 +167,20 @@ std::size_t CandidateSet::select_from(std::size_t ib, std::size_t begin, std::si
 }
 
 /// The candidate the comparisons in candidate order choose, as if every one were projected.
-/// First the candidates are projected in the order of their bounds until the next bound rules
+/// First the candidates are projected in the order of their box bounds until the bounds rule
 /// out coming within 3 tol of the closest distance D found: the rest are farther than D + 3 tol.
 /// Then in candidate order: the unprojected candidates before the first projected one (the
 /// head) need not be projected when that one is closer than all of them by more than tol (it
 /// then beats whichever of them would have been the best); otherwise the head is compared too.
 std::size_t CandidateSet::select() {
-  std::vector<std::size_t> by_bound(all_.size());
-  for (std::size_t i = 0; i < by_bound.size(); ++i) by_bound[i] = i;
-  std::sort(by_bound.begin(), by_bound.end(), [&](std::size_t a, std::size_t b) { return all_[a].bound < all_[b].bound; });
+  thread_local std::vector<std::size_t> by_box;
+  by_box.resize(all_.size());
+  for (std::size_t i = 0; i < by_box.size(); ++i) by_box[i] = i;
+  std::sort(by_box.begin(), by_box.end(), [&](std::size_t a, std::size_t b) { return all_[a].box < all_[b].box; });
   double closest = std::numeric_limits<double>::infinity();
-  for (std::size_t i : by_bound) {
-    if (beyond(i, closest + 2 * tol_)) break;
-    closest = std::min(closest, projected(i).distance);
+  for (std::size_t i : by_box) {
+    if (all_[i].box - slack_ > closest + 3 * tol_) break;  // and so are all that follow
+    if (!beyond(i, closest + 2 * tol_)) closest = std::min(closest, projected(i).distance);
   }
   std::size_t first = 0;  // the first projected candidate
   double head_bound = std::numeric_limits<double>::infinity();
@@ -192,7 +210,8 @@ Vec3 CandidateSet::shared_normal(const Projection& best) {
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                               std::span<const Vec3> x, const Vec3& xs) {
   if (candidates.empty()) return {};
-  CandidateSet set(facets, candidates, x, xs);
+  thread_local std::vector<Candidate> storage;  // (no allocation per point)
+  CandidateSet set(facets, candidates, x, xs, storage);
   Projection best = set.projected(set.select());
   const double tol = set.tol();
   const Vec3 nbar = set.shared_normal(best);

@@ -156,9 +156,11 @@ class SurfaceCorrection {
   void set_facets(const ContactSurface& surface, std::span<const Vec3> X);
   /// Sets sign_[f] (the sign of ∫ e·n over facet f) and returns the facet's reference area.
   double orient_facet(std::size_t f);
-  /// Reference offset d(ξ) and normal ñ(ξ) of facet `i`; false where the point has no radial
-  /// direction.
-  bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal) const;
+  /// Reference offset d(ξ) and normal ñ(ξ) of facet `i`, and its reference geometry gX there;
+  /// false where the point has no radial direction.
+  bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
+  /// correct(facet, xi, x), with the facet's current geometry at ξ in `gx`.
+  CorrectedPoint correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x, FacetGeometry& gx) const;
 
   model::GeometricCorrection data_;
   Mode mode_ = Mode::Axis;
