@@ -80,7 +80,13 @@ class SurfaceToSurfacePair final : public PairKinematics {
     Vec3 x{};
     Projection projection;
     bool overlaps = false;
+    /// The point's gap linearised against its master facet: computed by the first linearize()
+    /// of a slave node that needs it after an update(), and kept for the other nodes of the
+    /// facet (linearize() runs on one thread, on the coordinates of the last update()).
+    mutable GapLinearization lin;
+    mutable bool lin_valid = false;
   };
+  const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt) const;
   void project_node(std::span<const Vec3> x, SlaveKinematics& k);
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   SurfaceCorrections master_correction_, slave_correction_;
