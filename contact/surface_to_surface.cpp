@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "parallel_for.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -56,49 +57,25 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   const auto facets = slave_.facets();
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});
+  parallel_for(facets.size(), threads_, [&](std::size_t fi) { measure_facet(x, fi); });
+  // The sums over each node's points, facet after facet and point after point: the same order
+  // whatever the thread count, so the same bits.
   std::vector<double> weighted_gap(nodes.size(), 0.0);
   std::vector<Vec3> weighted_normal(nodes.size(), Vec3{});
   for (std::size_t fi = 0; fi < facets.size(); ++fi) {
     const Facet& f = facets[fi];
-    const auto rule = facet_rule(f.shape, kRulePoints);
-    auto& pts = points_[fi];
-    pts.resize(rule.size());
-    for (std::size_t q = 0; q < rule.size(); ++q) {
-      Point& pt = pts[q];
-      FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
-      const ShapeEval e = eval_shape(f.shape, rule[q].xi, rule[q].eta);
-      pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
-      if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
-        const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x);
-        g.x = c.x;
-        g.n = c.normal;
-      }
-      pt.x = g.x;
-      pt.lin_valid = false;
-      pt.N = e.N;
-      pt.W = weighting_functions(f.shape, e.N);
-      candidates_.clear();
-      search_.query(g.x, candidates_);
-      if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates_);
-      pt.projection = closest_projection(master_.facets(), candidates_, x, g.x);
-      const Projection& pr = pt.projection;
-      // (judged on the faceted projection: beyond the master's free edge the idealised one
-      // would look orthogonal too)
-      pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
-                    (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
-                     std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+    for (const Point& pt : points_[fi]) {
       if (!pt.overlaps) continue;
-      correct_master(x, g.x, pt.projection);
       for (int a = 0; a < f.n_nodes; ++a) {
         const auto i = static_cast<std::size_t>(slave_.local_index(f.nodes[a]));
         const double w = pt.W[static_cast<std::size_t>(a)] * pt.da;
         out[i].area += w;
-        weighted_gap[i] += w * pr.gap;
-        weighted_normal[i] = axpy(w, pr.normal, weighted_normal[i]);
+        weighted_gap[i] += w * pt.projection.gap;
+        weighted_normal[i] = axpy(w, pt.projection.normal, weighted_normal[i]);
       }
     }
   }
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
+  parallel_for(nodes.size(), threads_, [&](std::size_t i) {
     SlaveKinematics& k = out[i];
     k.node = nodes[i];
     project_node(x, k);
@@ -106,23 +83,61 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
     k.found = k.area > 0.0 && len > 0.0;
     if (!k.found) {
       k.area = 0.0;
-      continue;
+      return;
     }
     k.projection.gap = weighted_gap[i] / k.area;
     k.area *= area_weight_;
     k.projection.normal = scale(1.0 / len, weighted_normal[i]);
     tangent_basis(k.projection.normal, dim_, k.projection.t1, k.projection.t2);
+  });
+}
+
+void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi) {
+  const Facet& f = slave_.facets()[fi];
+  const auto rule = facet_rule(f.shape, kRulePoints);
+  auto& pts = points_[fi];
+  if (pts.size() != rule.size()) {  // the first update: the shape and weighting functions
+    pts.resize(rule.size());
+    for (std::size_t q = 0; q < rule.size(); ++q) {
+      pts[q].N = eval_shape(f.shape, rule[q].xi, rule[q].eta).N;
+      pts[q].W = weighting_functions(f.shape, pts[q].N);
+    }
+  }
+  thread_local std::vector<std::int32_t> candidates;
+  for (std::size_t q = 0; q < rule.size(); ++q) {
+    Point& pt = pts[q];
+    FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
+    pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
+    if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
+      const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x);
+      g.x = c.x;
+      g.n = c.normal;
+    }
+    pt.x = g.x;
+    pt.lin_valid = false;
+    candidates.clear();
+    search_.query(g.x, candidates);
+    if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
+    pt.projection = closest_projection(master_.facets(), candidates, x, g.x);
+    const Projection& pr = pt.projection;
+    // (judged on the faceted projection: beyond the master's free edge the idealised one
+    // would look orthogonal too)
+    pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
+                  (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
+                   std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+    if (pt.overlaps) correct_master(x, g.x, pt.projection);
   }
 }
 
 /// The slave node's own closest-point projection (for friction), kept in k.projection's facet,
 /// ξ and master point; the gap and normal are overwritten with the weighted ones by update().
-void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics& k) {
-  candidates_.clear();
-  search_.query(x[static_cast<std::size_t>(k.node)], candidates_);
+void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics& k) const {
+  thread_local std::vector<std::int32_t> candidates;
+  candidates.clear();
+  search_.query(x[static_cast<std::size_t>(k.node)], candidates);
   const std::int32_t own[1] = {k.node};
-  if (self_contact_) drop_neighbours(master_.facets(), own, candidates_);
-  k.projection = closest_projection(master_.facets(), candidates_, x, x[static_cast<std::size_t>(k.node)]);
+  if (self_contact_) drop_neighbours(master_.facets(), own, candidates);
+  k.projection = closest_projection(master_.facets(), candidates, x, x[static_cast<std::size_t>(k.node)]);
   k.friction_found = k.projection.facet >= 0;
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
 }

@@ -87,7 +87,9 @@ class SurfaceToSurfacePair final : public PairKinematics {
     mutable bool lin_valid = false;
   };
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt) const;
-  void project_node(std::span<const Vec3> x, SlaveKinematics& k);
+  /// Projects the integration points of slave facet fi (points_[fi]; one thread per facet).
+  void measure_facet(std::span<const Vec3> x, std::size_t fi);
+  void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs (when corrected).

@@ -41,6 +41,7 @@ struct StepRun {
         contact(std::make_unique<ContactProblem>(am, index)),
         states(material_states) {
     if (contact->empty()) contact.reset();
+    else contact->set_threads(threads);
   }
   StepRun(const StepRun&) = delete;
 

@@ -198,6 +198,10 @@ ContactProblem::~ContactProblem() = default;
 
 bool ContactProblem::empty() const { return pairs_.empty(); }
 
+void ContactProblem::set_threads(int threads) {
+  for (auto& p : pairs_) p->geometry->set_threads(threads);
+}
+
 bool ContactProblem::has_friction() const {
   return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->friction.has_value(); });
 }

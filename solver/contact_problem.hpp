@@ -111,6 +111,10 @@ class ContactProblem {
   /// One line per pair in force: contact::describe() of its resolved record (the step's messages).
   std::vector<std::string> describe() const;
 
+  /// Threads the surfaces' update may run on (surface to surface: across slave facets); the
+  /// results do not depend on how many.
+  void set_threads(int threads);
+
   bool has_friction() const;
   /// Sizes `state` for the pairs in force and resets the status-change counters. When
   /// (step, increment) differs from the one `state` was last begun for, a new increment starts
