@@ -215,6 +215,67 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
   return res;
 }
 
+/// A lower bound of φ = ½|x_s − x|² over edge i of a face (corners i and i + 1 of `nc`, and
+/// midside node nc + i when quadratic): the edge lies on the segment between its corners, or in
+/// the box of its Bézier control points. Less the round-off of the coordinates' size.
+double edge_phi_bound(const FacetNodes& fn, const Vec3& xs, int i, int nc) {
+  const Vec3& A = fn.X[static_cast<std::size_t>(i)];
+  const Vec3& B = fn.X[static_cast<std::size_t>((i + 1) % nc)];
+  double magnitude = 0.0, d = 0.0;
+  for (int k = 0; k < 3; ++k) magnitude = std::max({magnitude, std::abs(xs[k]), std::abs(A[k]), std::abs(B[k])});
+  if (!facet_is_quadratic(fn.shape)) {
+    const Vec3 e = sub(B, A);
+    const double ee = dot(e, e);
+    const double t = ee > 0 ? std::clamp(dot(sub(xs, A), e) / ee, 0.0, 1.0) : 0.0;
+    d = norm(sub(xs, axpy(t, e, A)));
+  } else {
+    const Vec3& M = fn.X[static_cast<std::size_t>(nc + i)];
+    Vec3 outside{};
+    for (int k = 0; k < 3; ++k) {
+      const double C = 2 * M[k] - 0.5 * (A[k] + B[k]);
+      const double lo = std::min({A[k], B[k], C}), hi = std::max({A[k], B[k], C});
+      outside[k] = std::max({lo - xs[k], 0.0, xs[k] - hi});
+      magnitude = std::max({magnitude, std::abs(C)});
+    }
+    d = norm(outside);
+  }
+  const double slack = 1e-10 * magnitude;
+  if (!(d > slack)) return 0.0;  // (NaN too)
+  return 0.5 * (d - slack) * (d - slack) * (1 - 1e-12);
+}
+
+/// ξ of the closest point of the domain's boundary: the least φ over its edges, the first edge
+/// in order among equal ones. The edges are searched in the order of their bounds, and those
+/// whose bound exceeds the least φ found cannot hold it (nor tie) and are not searched.
+std::array<double, 2> closest_on_boundary(const FacetNodes& fn, const Vec3& xs) {
+  std::array<std::array<double, 2>, 4> c;
+  const int nc = domain_corners(fn.shape, c);
+  const int n_edges = facet_param_dim(fn.shape) == 1 ? 1 : nc;
+  const int samples = facet_is_quadratic(fn.shape) ? 8 : 1;
+  std::array<double, 4> bound{};
+  std::array<int, 4> order{0, 1, 2, 3};
+  if (n_edges > 1) {
+    for (int i = 0; i < n_edges; ++i) bound[static_cast<std::size_t>(i)] = edge_phi_bound(fn, xs, i, nc);
+    std::sort(order.begin(), order.begin() + n_edges, [&](int a, int b) { return bound[a] < bound[b]; });
+  }
+  LineMin best;
+  int best_edge = n_edges;
+  std::array<double, 2> best_xi{0, 0};
+  for (int k = 0; k < n_edges; ++k) {
+    const int i = order[static_cast<std::size_t>(k)];
+    if (bound[static_cast<std::size_t>(i)] > best.phi) break;  // and so are the edges after it
+    const auto& P0 = c[static_cast<std::size_t>(i)];
+    const auto& P1 = c[static_cast<std::size_t>((i + 1) % nc)];
+    const LineMin m = minimize_on_segment(fn, xs, P0, P1, samples);
+    if (m.phi < best.phi || (best_edge < n_edges && m.phi == best.phi && i < best_edge)) {
+      best = m;
+      best_edge = i;
+      best_xi = {P0[0] + m.t * (P1[0] - P0[0]), P0[1] + m.t * (P1[1] - P0[1])};
+    }
+  }
+  return best_xi;
+}
+
 ProjectionRegion region_of(FacetShape s, const std::array<double, 2>& xi) {
   constexpr double tol = 1e-10;
   if (facet_param_dim(s) == 1) return std::abs(std::abs(xi[0]) - 1) <= tol ? ProjectionRegion::Vertex : ProjectionRegion::Interior;
@@ -250,7 +311,6 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
   Projection p;
   p.facet = facet_index;
   const int pd = facet_param_dim(f.shape);
-  const int samples = facet_is_quadratic(f.shape) ? 8 : 1;
 
   bool done = false;
   if (pd == 2) {
@@ -262,21 +322,7 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
     p.converged = in.converged;
   }
   if (!done) {  // the closest point of the domain's boundary (for edges: of the whole edge)
-    std::array<std::array<double, 2>, 4> c;
-    const int nc = domain_corners(f.shape, c);
-    LineMin best;
-    std::array<double, 2> best_xi{0, 0};
-    const int n_edges = pd == 1 ? 1 : nc;
-    for (int i = 0; i < n_edges; ++i) {
-      const auto& P0 = c[i];
-      const auto& P1 = c[(i + 1) % nc];
-      const LineMin m = minimize_on_segment(fn, xs, P0, P1, samples);
-      if (m.phi < best.phi) {
-        best = m;
-        best_xi = {P0[0] + m.t * (P1[0] - P0[0]), P0[1] + m.t * (P1[1] - P0[1])};
-      }
-    }
-    p.xi = clamp_inside(f.shape, best_xi);
+    p.xi = clamp_inside(f.shape, closest_on_boundary(fn, xs));
     if (pd == 1) p.converged = true;
   }
   p.region = region_of(f.shape, p.xi);
