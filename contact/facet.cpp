@@ -200,7 +200,10 @@ std::array<double, 2> facet_node_param(FacetShape s, int a) {
 }
 
 FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, double xi, double eta) {
-  const ShapeEval e = eval_shape(f.shape, xi, eta);
+  return facet_geometry(f, x, eval_shape(f.shape, xi, eta));
+}
+
+FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, const ShapeEval& e) {
   FacetGeometry g;
   for (int a = 0; a < e.n; ++a) {
     const Vec3& xa = x[static_cast<std::size_t>(f.nodes[a])];

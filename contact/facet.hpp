@@ -64,6 +64,8 @@ struct FacetGeometry {
   double jacobian = 0.0;    ///< |a_1 × a_2| (faces) or |a_1| (edges): dA = jacobian dξ dη
 };
 FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, double xi, double eta = 0.0);
+/// The same from the shape functions at the point, e = eval_shape(f.shape, ξ, η).
+FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, const ShapeEval& e);
 
 /// A quadrature rule over the facet's parametric domain.
 struct QuadPoint {

@@ -298,9 +298,14 @@ double SurfaceCorrection::nodal_radius(std::int32_t row) const {
 
 bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal,
                                         FacetGeometry& gX) const {
+  return reference_ideal(i, eval_shape(facets_[i].shape, xi[0], xi[1]), offset, normal, gX);
+}
+
+bool SurfaceCorrection::reference_ideal(std::size_t i, const ShapeEval& sh, Vec3& offset, Vec3& normal,
+                                        FacetGeometry& gX) const {
   const Facet& f = facets_[i];
   const Facet lf = local_facet(f);
-  gX = facet_geometry(lf, std::span<const Vec3>(X_[i].data(), f.n_nodes), xi[0], xi[1]);
+  gX = facet_geometry(lf, std::span<const Vec3>(X_[i].data(), f.n_nodes), sh);
   const FacetGeometry& g = gX;
   if (mode_ == Mode::Identity) {
     offset = {0, 0, 0};
@@ -309,7 +314,6 @@ bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi,
   }
   const Radial rd = radial(g.x);
   if (!rd.ok) return false;
-  const ShapeEval sh = eval_shape(f.shape, xi[0], xi[1]);
   double r = 0.0;
   std::array<double, 2> dr{0, 0};
   for (int a = 0; a < sh.n; ++a) {
@@ -353,11 +357,12 @@ CorrectedPoint SurfaceCorrection::correct(std::int32_t facet, std::array<double,
 
 CorrectedPoint SurfaceCorrection::correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
                                              FacetGeometry& gx) const {
-  gx = facet_geometry(facets_[i], x, xi[0], xi[1]);
+  const ShapeEval sh = eval_shape(facets_[i].shape, xi[0], xi[1]);
+  gx = facet_geometry(facets_[i], x, sh);
   CorrectedPoint out{gx.x, gx.n, false};
   Vec3 d, n;
   FacetGeometry gX;
-  if (!reference_ideal(i, xi, d, n, gX)) return out;
+  if (!reference_ideal(i, sh, d, n, gX)) return out;
   if (mode_ == Mode::Identity) {
     out.corrected = true;
     return out;

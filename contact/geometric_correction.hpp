@@ -159,6 +159,8 @@ class SurfaceCorrection {
   /// Reference offset d(ξ) and normal ñ(ξ) of facet `i`, and its reference geometry gX there;
   /// false where the point has no radial direction.
   bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
+  /// The same from the shape functions at ξ, sh = eval_shape(facet's shape, ξ).
+  bool reference_ideal(std::size_t i, const ShapeEval& sh, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
   /// correct(facet, xi, x), with the facet's current geometry at ξ in `gx`.
   CorrectedPoint correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x, FacetGeometry& gx) const;
 
