@@ -84,10 +84,12 @@ double box_bound(const Facet& f, std::span<const Vec3> x, const Vec3& xs, double
     for (int k = 0; k < 3; ++k) {
       lo[k] = std::min(lo[k], p[k]);
       hi[k] = std::max(hi[k], p[k]);
-      magnitude = std::max({magnitude, std::abs(p[k]), std::abs(xs[k])});
     }
   Vec3 outside{};
-  for (int k = 0; k < 3; ++k) outside[k] = std::max({lo[k] - xs[k], 0.0, xs[k] - hi[k]});
+  for (int k = 0; k < 3; ++k) {
+    outside[k] = std::max({lo[k] - xs[k], 0.0, xs[k] - hi[k]});
+    magnitude = std::max({magnitude, std::abs(lo[k]), std::abs(hi[k]), std::abs(xs[k])});
+  }
   return norm(outside);
 }
 
@@ -101,16 +103,16 @@ class CandidateSet {
                const Vec3& xs, std::vector<Candidate>& storage)
       : facets_(facets), x_(x), xs_(xs), all_(storage) {
     all_.resize(candidates.size());
-    double size = 0.0, magnitude = 0.0;
+    double size2 = 0.0, magnitude = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const Facet& f = facets[static_cast<std::size_t>(candidates[i])];
       Candidate& c = all_[i];
       c.index = candidates[i];
       c.box = c.bound = usable(box_bound(f, x, xs, magnitude));
       c.refined = c.projected = false;
-      size = std::max(size, facet_size(f, x));
+      size2 = std::max(size2, facet_size_squared(f, x));
     }
-    tol_ = on_surface_tol(size);
+    tol_ = on_surface_tol(std::sqrt(size2));  // (the largest facet_size())
     // (the bound and the projected distance each carry round-off of the coordinates' size;
     // 1e-12 of it is thousands of times that)
     slack_ = tol_ + 1e-12 * magnitude;

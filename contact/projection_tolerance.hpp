@@ -2,6 +2,7 @@
 /// What projection.cpp and closest_projection.cpp share (internal to contact/; not its API):
 /// a facet's size and the distance below which a point lies on it.
 #include <algorithm>
+#include <cmath>
 #include <span>
 
 #include "contact/facet.hpp"
@@ -9,13 +10,20 @@
 
 namespace inpact::contact {
 
-/// The largest distance of a facet node from its node 0, on coordinates `x` (all node rows).
-inline double facet_size(const Facet& f, std::span<const Vec3> x) {
+/// The square of the largest distance of a facet node from its node 0, on coordinates `x`.
+inline double facet_size_squared(const Facet& f, std::span<const Vec3> x) {
   const Vec3& x0 = x[static_cast<std::size_t>(f.nodes[0])];
-  double size = 0.0;
-  for (int a = 1; a < f.n_nodes; ++a) size = std::max(size, norm(sub(x[static_cast<std::size_t>(f.nodes[a])], x0)));
-  return size;
+  double size2 = 0.0;
+  for (int a = 1; a < f.n_nodes; ++a) {
+    const Vec3 d = sub(x[static_cast<std::size_t>(f.nodes[a])], x0);
+    size2 = std::max(size2, dot(d, d));
+  }
+  return size2;
 }
+
+/// The largest distance of a facet node from its node 0 (√ is monotonic and correctly rounded,
+/// so this is the largest of the distances themselves, to the bit).
+inline double facet_size(const Facet& f, std::span<const Vec3> x) { return std::sqrt(facet_size_squared(f, x)); }
 
 /// Distance below which a slave point counts as lying on a facet of this size.
 // Points closer than this to a facet are on it (gap 0, shared-point normal averaged). Far below
