@@ -29,6 +29,9 @@
 ///     count: one slave node, one projection).
 /// Inside a concave corner two facets can be equally close with different normals; the normal
 /// jumps there, as it does for any faceted surface without smoothing.
+/// Only the candidates a distance bound cannot rule out are projected (closest_projection.cpp:
+/// the bound from the facet's control points; the comparisons keep the candidates' order, so the
+/// result is the one projecting every candidate gives, to the bit).
 #include <array>
 #include <cstdint>
 #include <span>

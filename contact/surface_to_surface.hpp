@@ -28,6 +28,10 @@
 ///   The contact direction is the master's normal at each point (Abaqus uses the slave normal;
 ///   the two agree where the surfaces touch and the difference is of the order of the gap).
 ///
+/// The slave facets' points are projected on PairKinematics::set_threads() threads (each facet
+/// on one thread); the sums over a node's points then run facet after facet on one thread, so
+/// the results do not depend on the thread count.
+///
 /// Friction acts at the slave node's own closest-point projection (node to surface) with the
 /// pressure of its weighted gap: SlaveKinematics::friction_lin.
 ///
