@@ -551,4 +551,21 @@ GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Ve
   return L;
 }
 
+GapLinearization gap_gradient(const Facet& f, const Projection& p, int dim,
+                              std::int32_t slave_row) {
+  GapLinearization L;
+  L.dim = dim;
+  L.n_dof = dim * (f.n_nodes + 1);
+  L.nodes.push_back(slave_row);
+  for (int a = 0; a < f.n_nodes; ++a) L.nodes.push_back(f.nodes[a]);
+  L.gradient.assign(static_cast<std::size_t>(L.n_dof), 0.0);
+  std::array<double, 8> N;
+  shape_values(f.shape, p.xi[0], p.xi[1], N);
+  for (int c = 0; c < dim; ++c) {
+    L.gradient[static_cast<std::size_t>(c)] = p.normal[c];
+    for (int a = 0; a < f.n_nodes; ++a) L.gradient[static_cast<std::size_t>((a + 1) * dim + c)] = -N[a] * p.normal[c];
+  }
+  return L;
+}
+
 }  // namespace inpact::contact

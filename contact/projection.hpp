@@ -98,5 +98,9 @@ struct GapLinearization {
 };
 GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Vec3& xs, const Projection& p, int dim,
                                std::int32_t slave_row = -1);
+/// Only the gradient of linearize_gap() (the same numbers; hessian and dxi left empty): what a
+/// linearisation without finite sliding reads.
+GapLinearization gap_gradient(const Facet& f, const Projection& p, int dim,
+                              std::int32_t slave_row = -1);
 
 }  // namespace inpact::contact

@@ -151,11 +151,13 @@ void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& x
   correct_projection(master_correction_, master_.facets(), x, xs, dim_, p);
 }
 
-const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt) const {
-  if (!pt.lin_valid) {
+const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt,
+                                                                   bool hessian) const {
+  if (!pt.lin_valid || (hessian && !pt.lin_hessian)) {
     const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
-    pt.lin = linearize_gap(mf, x, pt.x, pt.projection, dim_, -1);
+    pt.lin = hessian ? linearize_gap(mf, x, pt.x, pt.projection, dim_, -1) : gap_gradient(mf, pt.projection, dim_, -1);
     pt.lin_valid = true;
+    pt.lin_hessian = hessian;
   }
   return pt.lin;
 }
@@ -198,7 +200,7 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
       const double c = pt.W[static_cast<std::size_t>(a_local)] * pt.da * area_weight_ / k.area;
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
-      const GapLinearization& q = point_linearization(x, pt);
+      const GapLinearization& q = point_linearization(x, pt, finite_sliding && !smoothed());
       // The point's unknowns: x_q (slot 0, = Σ_b N_b x_b over the slave facet), then mf's nodes.
       const std::size_t nq = static_cast<std::size_t>(mf.n_nodes) + 1;
       map.assign(nq, 0);

@@ -89,8 +89,10 @@ class SurfaceToSurfacePair final : public PairKinematics {
     /// facet (linearize() runs on one thread, on the coordinates of the last update()).
     mutable GapLinearization lin;
     mutable bool lin_valid = false;
+    mutable bool lin_hessian = false;  ///< lin has the Hessian (else the gradient only)
   };
-  const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt) const;
+  /// The point's linearisation; with the Hessian when `hessian`.
+  const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
   /// Projects the integration points of slave facet fi (points_[fi]; one thread per facet).
   void measure_facet(std::span<const Vec3> x, std::size_t fi);
   void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
