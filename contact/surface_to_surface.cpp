@@ -57,7 +57,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   const auto facets = slave_.facets();
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});
-  parallel_for(facets.size(), threads_, [&](std::size_t fi) { measure_facet(x, fi); });
+  parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
   // The sums over each node's points, facet after facet and point after point: the same order
   // whatever the thread count, so the same bits.
   std::vector<double> weighted_gap(nodes.size(), 0.0);
@@ -75,7 +75,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
       }
     }
   }
-  parallel_for(nodes.size(), threads_, [&](std::size_t i) {
+  parallel_for(nodes.size(), threads_, 32, [&](std::size_t i) {
     SlaveKinematics& k = out[i];
     k.node = nodes[i];
     project_node(x, k);
