@@ -100,8 +100,8 @@ double usable(double bound) { return std::isnan(bound) ? -std::numeric_limits<do
 class CandidateSet {
  public:
   CandidateSet(std::span<const Facet> facets, std::span<const std::int32_t> candidates, std::span<const Vec3> x,
-               const Vec3& xs, std::vector<Candidate>& storage)
-      : facets_(facets), x_(x), xs_(xs), all_(storage) {
+               const Vec3& xs, const ProjectionHint* hint, std::vector<Candidate>& storage)
+      : facets_(facets), x_(x), xs_(xs), hint_(hint), all_(storage) {
     all_.resize(candidates.size());
     double size2 = 0.0, magnitude = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -122,7 +122,9 @@ class CandidateSet {
 
   const Projection& projected(std::size_t i) {
     Candidate& c = all_[i];
-    if (!c.projected) c.p = project_to_facet(facets_[static_cast<std::size_t>(c.index)], x_, xs_, c.index);
+    if (!c.projected)
+      c.p = project_to_facet(facets_[static_cast<std::size_t>(c.index)], x_, xs_, c.index,
+                             hint_ && hint_->facet == c.index ? &hint_->xi : nullptr);
     c.projected = true;
     return c.p;
   }
@@ -156,6 +158,7 @@ class CandidateSet {
   std::span<const Facet> facets_;
   std::span<const Vec3> x_;
   Vec3 xs_;
+  const ProjectionHint* hint_;
   std::vector<Candidate>& all_;
   double tol_ = 0.0, slack_ = 0.0;
 };
@@ -210,10 +213,10 @@ Vec3 CandidateSet::shared_normal(const Projection& best) {
 }  // namespace
 
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs) {
+                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint) {
   if (candidates.empty()) return {};
   thread_local std::vector<Candidate> storage;  // (no allocation per point)
-  CandidateSet set(facets, candidates, x, xs, storage);
+  CandidateSet set(facets, candidates, x, xs, hint, storage);
   Projection best = set.projected(set.select());
   const double tol = set.tol();
   const Vec3 nbar = set.shared_normal(best);

@@ -157,7 +157,7 @@ struct InteriorResult {
 };
 
 /// Newton on ∇φ(ξ) = 0 for a face, from the best sample of a small grid.
-InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
+InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::array<double, 2>* start) {
   InteriorResult res;
   if (fn.shape == FacetShape::Tri3) {  // x(ξ) is affine: one exact step from (0, 0)
     const Vec3 a0 = sub(fn.X[1], fn.X[0]), a1 = sub(fn.X[2], fn.X[0]), r = sub(xs, fn.X[0]);
@@ -168,11 +168,11 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
     res.converged = true;
     return res;
   }
-  // Start: the best point of a 5 × 5 grid (triangles: the grid points inside).
+  // Start: the given point, or the best point of a 5 × 5 grid (triangles: the grid points inside).
   double best = std::numeric_limits<double>::infinity();
-  std::array<double, 2> xi{0, 0};
+  std::array<double, 2> xi = start ? *start : std::array<double, 2>{0, 0};
   const bool tri = is_tri(fn.shape);
-  for (int i = 0; i <= 4; ++i)
+  for (int i = 0; i <= (start ? -1 : 4); ++i)
     for (int j = 0; j <= 4; ++j) {
       const std::array<double, 2> p = tri ? std::array<double, 2>{i / 4.0, j / 4.0}
                                           : std::array<double, 2>{-1 + i / 2.0, -1 + j / 2.0};
@@ -306,7 +306,8 @@ void tangent_basis(const Vec3& n, int dim, Vec3& t1, Vec3& t2) {
   t2 = cross(n, t1);
 }
 
-Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index) {
+Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index,
+                            const std::array<double, 2>* start) {
   const FacetNodes fn(f, x);
   Projection p;
   p.facet = facet_index;
@@ -314,7 +315,7 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
 
   bool done = false;
   if (pd == 2) {
-    const InteriorResult in = newton_interior(fn, xs);
+    const InteriorResult in = newton_interior(fn, xs, start);
     if (in.converged && inside(f.shape, in.xi)) {
       p.xi = clamp_inside(f.shape, in.xi);
       done = true;

@@ -62,12 +62,20 @@ struct Projection {
 
 /// Closest point of `xs` on facet `f` on coordinates `x` (all node rows); `facet_index` is
 /// copied into the result.
-Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index = 0);
+/// `start`: where a face's Newton iteration starts (the last ξ of the same point, say) instead of
+/// the best point of a 5 × 5 grid; it converges to the same ξ to round-off when that is inside.
+Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index = 0,
+                            const std::array<double, 2>* start = nullptr);
 
 /// The projection of `xs` onto the closest of the `candidates` (indices into `facets`), with the
 /// continuous normal described above. facet = −1 when there is no candidate.
+/// A start for the projection onto one facet (project_to_facet's `start`).
+struct ProjectionHint {
+  std::int32_t facet = -1;  ///< −1: none
+  std::array<double, 2> xi{0, 0};
+};
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs);
+                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr);
 
 /// The tangent basis for a unit normal `n` (dim 3: Abaqus's surface convention; dim 2: t1 = n
 /// rotated counter-clockwise, t2 = 0).

@@ -118,8 +118,9 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     candidates.clear();
     search_.query(g.x, candidates);
     if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
-    pt.projection = closest_projection(master_.facets(), candidates, x, g.x);
+    pt.projection = closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr);
     const Projection& pr = pt.projection;
+    pt.hint = {pr.region == ProjectionRegion::Interior && pr.converged ? pr.facet : -1, pr.xi};
     // (judged on the faceted projection: beyond the master's free edge the idealised one
     // would look orthogonal too)
     pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&

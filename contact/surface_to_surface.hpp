@@ -28,6 +28,10 @@
 ///   The contact direction is the master's normal at each point (Abaqus uses the slave normal;
 ///   the two agree where the surfaces touch and the difference is of the order of the gap).
 ///
+/// Each point's projection onto the master facet it projected into at the last update starts
+/// from the ξ found then (ProjectionHint) instead of a grid search: the same point to round-off
+/// (on the contact decks: CPRESS within 1e-12 of its largest value, U within 4e-14, the same
+/// iterations; the rest of the projection is bit-identical to projecting from the grid).
 /// The slave facets' points are projected on PairKinematics::set_threads() threads (each facet
 /// on one thread); the sums over a node's points then run facet after facet on one thread, so
 /// the results do not depend on the thread count.
@@ -83,6 +87,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
     std::array<double, 8> N{}, W{};  ///< shape and weighting functions of the slave facet
     Vec3 x{};
     Projection projection;
+    ProjectionHint hint;  ///< the faceted projection's facet and ξ when inside it: the next start
     bool overlaps = false;
     /// The point's gap linearised against its master facet: computed by the first linearize()
     /// of a slave node that needs it after an update(), and kept for the other nodes of the

@@ -170,3 +170,26 @@ TEST(GapGradient, IsLinearizeGapsGradientToTheBit) {
     }
   }
 }
+
+TEST(ProjectionHint, AStartNearTheLastPointConvergesToTheSamePointToRoundOff) {
+  std::mt19937 rng(5);
+  for (FacetShape shape : {FacetShape::Tri6, FacetShape::Quad4, FacetShape::Quad8}) {
+    const Mesh mesh = make_mesh(shape, 3);
+    std::vector<std::int32_t> candidates(mesh.facets.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i) candidates[i] = static_cast<std::int32_t>(i);
+    std::uniform_real_distribution<double> along(0.2, 2.8), height(-0.3, 0.3), nudge(-0.01, 0.01);
+    for (int k = 0; k < 100; ++k) {
+      Vec3 p = surface(along(rng), along(rng), false);
+      p[2] += height(rng);
+      const Projection cold = contact::closest_projection(mesh.facets, candidates, mesh.x, p);
+      if (cold.region != contact::ProjectionRegion::Interior) continue;
+      // The last iteration's ξ: the point has moved a little since.
+      const contact::ProjectionHint hint{cold.facet, {cold.xi[0] + nudge(rng), cold.xi[1] + nudge(rng)}};
+      const Projection warm = contact::closest_projection(mesh.facets, candidates, mesh.x, p, &hint);
+      EXPECT_EQ(warm.facet, cold.facet);
+      EXPECT_NEAR(warm.xi[0], cold.xi[0], 1e-12);
+      EXPECT_NEAR(warm.xi[1], cold.xi[1], 1e-12);
+      EXPECT_NEAR(warm.gap, cold.gap, 1e-13);
+    }
+  }
+}
