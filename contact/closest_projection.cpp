@@ -73,22 +73,35 @@ double axis_bound(const Facet& f, std::span<const Vec3> P, const Vec3& xs) {
   return std::sqrt(b_n * b_n + b_e * b_e);
 }
 
-/// The distance from xs to the bounding box of the facet's control points P_a (a lower bound of
-/// |x − xs| over the facet, which lies in their convex hull). `magnitude` grows to the largest
-/// coordinate met (the scale of the round-off in the bound and in the projected distance).
-double box_bound(const Facet& f, std::span<const Vec3> x, const Vec3& xs, double& magnitude) {
+}  // namespace
+
+FacetBox facet_box(const Facet& f, std::span<const Vec3> x) {
   std::array<Vec3, 9> cp;
   const std::span<const Vec3> P(cp.data(), static_cast<std::size_t>(facet_control_points(f, x, cp)));
-  Vec3 lo = P[0], hi = P[0];
+  FacetBox b{P[0], P[0], facet_size_squared(f, x)};
   for (const Vec3& p : P)
     for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
+      b.lo[k] = std::min(b.lo[k], p[k]);
+      b.hi[k] = std::max(b.hi[k], p[k]);
     }
+  return b;
+}
+
+void facet_boxes(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<FacetBox>& out) {
+  out.resize(facets.size());
+  for (std::size_t i = 0; i < facets.size(); ++i) out[i] = facet_box(facets[i], x);
+}
+
+namespace {
+
+/// The distance from xs to the box (a lower bound of |x − xs| over the facet, which lies in the
+/// convex hull of the control points it boxes). `magnitude` grows to the largest coordinate met
+/// (the scale of the round-off in the bound and in the projected distance).
+double box_bound(const FacetBox& b, const Vec3& xs, double& magnitude) {
   Vec3 outside{};
   for (int k = 0; k < 3; ++k) {
-    outside[k] = std::max({lo[k] - xs[k], 0.0, xs[k] - hi[k]});
-    magnitude = std::max({magnitude, std::abs(lo[k]), std::abs(hi[k]), std::abs(xs[k])});
+    outside[k] = std::max({b.lo[k] - xs[k], 0.0, xs[k] - b.hi[k]});
+    magnitude = std::max({magnitude, std::abs(b.lo[k]), std::abs(b.hi[k]), std::abs(xs[k])});
   }
   return norm(outside);
 }
@@ -100,17 +113,19 @@ double usable(double bound) { return std::isnan(bound) ? -std::numeric_limits<do
 class CandidateSet {
  public:
   CandidateSet(std::span<const Facet> facets, std::span<const std::int32_t> candidates, std::span<const Vec3> x,
-               const Vec3& xs, const ProjectionHint* hint, std::vector<Candidate>& storage)
+               const Vec3& xs, const ProjectionHint* hint, std::span<const FacetBox> boxes,
+               std::vector<Candidate>& storage)
       : facets_(facets), x_(x), xs_(xs), hint_(hint), all_(storage) {
     all_.resize(candidates.size());
     double size2 = 0.0, magnitude = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-      const Facet& f = facets[static_cast<std::size_t>(candidates[i])];
+      const auto fi = static_cast<std::size_t>(candidates[i]);
+      const FacetBox b = boxes.empty() ? facet_box(facets[fi], x) : boxes[fi];
       Candidate& c = all_[i];
       c.index = candidates[i];
-      c.box = c.bound = usable(box_bound(f, x, xs, magnitude));
+      c.box = c.bound = usable(box_bound(b, xs, magnitude));
       c.refined = c.projected = false;
-      size2 = std::max(size2, facet_size_squared(f, x));
+      size2 = std::max(size2, b.size2);
     }
     tol_ = on_surface_tol(std::sqrt(size2));  // (the largest facet_size())
     // (the bound and the projected distance each carry round-off of the coordinates' size;
@@ -213,10 +228,11 @@ Vec3 CandidateSet::shared_normal(const Projection& best) {
 }  // namespace
 
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint) {
+                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint,
+                              std::span<const FacetBox> boxes) {
   if (candidates.empty()) return {};
   thread_local std::vector<Candidate> storage;  // (no allocation per point)
-  CandidateSet set(facets, candidates, x, xs, hint, storage);
+  CandidateSet set(facets, candidates, x, xs, hint, boxes, storage);
   Projection best = set.projected(set.select());
   const double tol = set.tol();
   const Vec3 nbar = set.shared_normal(best);

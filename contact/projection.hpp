@@ -74,8 +74,22 @@ struct ProjectionHint {
   std::int32_t facet = -1;  ///< −1: none
   std::array<double, 2> xi{0, 0};
 };
+/// The box of a facet's control points (its convex hull holds the facet) and its size squared
+/// (the largest squared distance of a node from node 0): what closest_projection bounds
+/// distances and tolerances with.
+struct FacetBox {
+  Vec3 lo, hi;
+  double size2 = 0.0;
+};
+FacetBox facet_box(const Facet& f, std::span<const Vec3> x);
+/// facet_box() of every facet, into `out` (resized).
+void facet_boxes(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<FacetBox>& out);
+
+/// `boxes`: facet_boxes() of `facets` on `x`, when the caller has them (many points against the
+/// same facets); otherwise each candidate's box is computed here.
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr);
+                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr,
+                              std::span<const FacetBox> boxes = {});
 
 /// The tangent basis for a unit normal `n` (dim 3: Abaqus's surface convention; dim 2: t1 = n
 /// rotated counter-clockwise, t2 = 0).

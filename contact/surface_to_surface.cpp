@@ -57,6 +57,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   const auto facets = slave_.facets();
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});
+  facet_boxes(master_.facets(), x, master_boxes_);
   parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
   // The sums over each node's points, facet after facet and point after point: the same order
   // whatever the thread count, so the same bits.
@@ -118,7 +119,8 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     candidates.clear();
     search_.query(g.x, candidates);
     if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
-    pt.projection = closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr);
+    pt.projection =
+        closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, master_boxes_);
     const Projection& pr = pt.projection;
     pt.hint = {pr.region == ProjectionRegion::Interior && pr.converged ? pr.facet : -1, pr.xi};
     // (judged on the faceted projection: beyond the master's free edge the idealised one
@@ -138,7 +140,8 @@ void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics
   search_.query(x[static_cast<std::size_t>(k.node)], candidates);
   const std::int32_t own[1] = {k.node};
   if (self_contact_) drop_neighbours(master_.facets(), own, candidates);
-  k.projection = closest_projection(master_.facets(), candidates, x, x[static_cast<std::size_t>(k.node)]);
+  k.projection = closest_projection(master_.facets(), candidates, x, x[static_cast<std::size_t>(k.node)], nullptr,
+                                    master_boxes_);
   k.friction_found = k.projection.facet >= 0;
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
 }

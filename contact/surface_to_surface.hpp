@@ -102,6 +102,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
   void measure_facet(std::span<const Vec3> x, std::size_t fi);
   void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
+  std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs (when corrected).
   void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const;
