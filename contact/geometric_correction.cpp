@@ -446,9 +446,9 @@ CorrectedPoint SurfaceCorrections::project(const Facet& f, std::array<double, 2>
 }
 
 void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
-                        const Vec3& xs, int dim, Projection& p) {
+                        const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start) {
   if (master.empty() || p.facet < 0) return;
-  std::array<double, 2> xi = p.xi;
+  std::array<double, 2> xi = start ? *start : p.xi;
   const CorrectedPoint m = master.project(facets[static_cast<std::size_t>(p.facet)], xi, x, xs);
   if (!m.corrected) return;
   p.xi = xi;

@@ -207,8 +207,9 @@ class SurfaceCorrections {
 /// `facets[p.facet]`) onto the master's idealised surface: ξ refined by `master.project()`, the
 /// idealised point, normal and tangents, gap = (xs − x̃_m)·ñ. Unchanged where no correction
 /// applies. `dim`: 2 or 3 (the tangent basis). Both discretisations measure this way.
+/// `start`: where the refinement of ξ starts instead of p.xi (the corrected ξ of the last update).
 void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
-                        const Vec3& xs, int dim, Projection& p);
+                        const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start = nullptr);
 
 /// The geometric-correction data lines that apply to the contact surface `surface` (a surface
 /// of `m`; empty: general contact's all-inclusive exterior surface, to which every assignment

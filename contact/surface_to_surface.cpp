@@ -128,7 +128,10 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
                   (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
                    std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
-    if (pt.overlaps) correct_master(x, g.x, pt.projection);
+    if (!pt.overlaps) continue;
+    const bool warm = pt.corrected_hint.facet == pt.projection.facet;
+    correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
+    pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
   }
 }
 
@@ -151,8 +154,9 @@ void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, S
   slave_correction_ = std::move(slave);
 }
 
-void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const {
-  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p);
+void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
+                                          const std::array<double, 2>* start) const {
+  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
 }
 
 const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt,

@@ -29,9 +29,10 @@
 ///   the two agree where the surfaces touch and the difference is of the order of the gap).
 ///
 /// Each point's projection onto the master facet it projected into at the last update starts
-/// from the ξ found then (ProjectionHint) instead of a grid search: the same point to round-off
-/// (on the contact decks: CPRESS within 1e-12 of its largest value, U within 4e-14, the same
-/// iterations; the rest of the projection is bit-identical to projecting from the grid).
+/// from the ξ found then (ProjectionHint) instead of a grid search, and its geometric correction
+/// on the same facet from the corrected ξ of then: the same points to round-off (on every
+/// contact deck: CPRESS within 1.2e-11 of its largest value, U within 1.2e-13 of its largest, the
+/// same iterations).
 /// The slave facets' points are projected on PairKinematics::set_threads() threads (each facet
 /// on one thread); the sums over a node's points then run facet after facet on one thread, so
 /// the results do not depend on the thread count.
@@ -88,6 +89,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
     Vec3 x{};
     Projection projection;
     ProjectionHint hint;  ///< the faceted projection's facet and ξ when inside it: the next start
+    ProjectionHint corrected_hint;  ///< the corrected projection's facet and ξ: the next correction's start
     bool overlaps = false;
     /// The point's gap linearised against its master facet: computed by the first linearize()
     /// of a slave node that needs it after an update(), and kept for the other nodes of the
@@ -105,7 +107,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs (when corrected).
-  void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const;
+  void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
+                      const std::array<double, 2>* start = nullptr) const;
 };
 
 }  // namespace inpact::contact
