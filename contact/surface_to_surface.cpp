@@ -27,6 +27,34 @@ std::size_t slot(std::vector<std::int32_t>& nodes, std::int32_t row) {
   return nodes.size() - 1;
 }
 
+/// A point's unknowns expanded onto the union's nodes: (union slot, factor, point-local unknown).
+struct ExpandedTerms {
+  struct Term {
+    std::size_t slot, local;
+    double factor;
+  };
+  std::array<Term, 17> t;  // (at most 8 slave nodes for x_q, then 8 master nodes)
+  std::size_t n = 0;
+  void add(std::size_t slot, double factor, std::size_t local) { t[n++] = {slot, local, factor}; }
+};
+
+/// L.hessian += c Eᵀ ∂²g_q E for one point, E its expansion `terms`: every entry gets
+/// ((c f1) f2) ∂²g_q, terms in expansion order (row, then column, then components).
+void add_point_hessian(const ExpandedTerms& terms, double c, const GapLinearization& q, GapLinearization& L) {
+  const std::size_t d = static_cast<std::size_t>(L.dim), nd = static_cast<std::size_t>(L.n_dof);
+  const std::size_t qn = q.gradient.size();
+  for (std::size_t a = 0; a < terms.n; ++a)
+    for (std::size_t b = 0; b < terms.n; ++b) {
+      const auto& t1 = terms.t[a];
+      const auto& t2 = terms.t[b];
+      const double cf = c * t1.factor * t2.factor;
+      double* H = &L.hessian[t1.slot * d * nd + t2.slot * d];
+      const double* Q = &q.hessian[t1.local * d * qn + t2.local * d];
+      for (std::size_t i = 0; i < d; ++i)
+        for (std::size_t j = 0; j < d; ++j) H[i * nd + j] += cf * Q[i * qn + j];
+    }
+}
+
 }  // namespace
 
 std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N) {
@@ -228,16 +256,9 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
         });
       const bool corner = pt.projection.region != ProjectionRegion::Interior && pt.projection.distance < 1e-3 * radius_;
       if (!finite_sliding || corner || !q.hessian_defined || smoothed()) continue;
-      const std::size_t qn = q.gradient.size();
-      for (std::size_t m1 = 0; m1 < nq; ++m1)
-        expand(m1, [&](std::size_t s1, double f1) {
-          for (std::size_t m2 = 0; m2 < nq; ++m2)
-            expand(m2, [&](std::size_t s2, double f2) {
-              for (std::size_t i = 0; i < d; ++i)
-                for (std::size_t j = 0; j < d; ++j)
-                  L.hessian[(s1 * d + i) * nd + s2 * d + j] += c * f1 * f2 * q.hessian[(m1 * d + i) * qn + m2 * d + j];
-            });
-        });
+      ExpandedTerms terms;
+      for (std::size_t m = 0; m < nq; ++m) expand(m, [&](std::size_t s, double f) { terms.add(s, f, m); });
+      add_point_hessian(terms, c, q, L);
     }
   }
 }
