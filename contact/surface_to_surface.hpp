@@ -32,7 +32,8 @@
 /// from the ξ found then (ProjectionHint) instead of a grid search, and its geometric correction
 /// on the same facet from the corrected ξ of then: the same points to round-off (on every
 /// contact deck: CPRESS within 1.2e-11 of its largest value, U within 1.2e-13 of its largest, the
-/// same iterations).
+/// same iterations; COPEN of closed nodes within 1e-15, of open ones far from the master — where
+/// the correction stops at its 10 iterations — within 4e-9 of the gap).
 /// The slave facets' points are projected on PairKinematics::set_threads() threads (each facet
 /// on one thread); the sums over a node's points then run facet after facet on one thread, so
 /// the results do not depend on the thread count.
