@@ -115,11 +115,25 @@ class PhaseClock {
     last_ = now;
   }
   void add(const char* phase, double s) { seconds_.emplace_back(phase, s); }
+  /// The Newton iterations' parts (inside "analysis"), and how often each ran.
+  void add_iterations(const solver::IterationSeconds& it) {
+    add("contact_update", it.contact_update);
+    add("contact_begin", it.contact_begin);
+    add("contact_geometry", it.contact_geometry);
+    add("contact_assembly", it.contact_assembly);
+    add("element_assembly", it.element_assembly);
+    add("factorization", it.factorization);
+    add("back_solve", it.back_solve);
+    counts_ = {{"contact_updates", it.contact_updates},
+               {"element_assemblies", it.element_assemblies},
+               {"factorizations", it.factorizations}};
+  }
   /// key=value lines: one per phase and total_s (first mark's start to the last mark).
   void write(const std::string& path) const {
     if (path.empty()) return;
     std::ofstream out(path);
     for (const auto& [phase, s] : seconds_) out << phase << "_s=" << fmt::format("{:.6f}", s) << "\n";
+    for (const auto& [name, n] : counts_) out << name << "=" << n << "\n";
     out << "total_s=" << fmt::format("{:.6f}", std::chrono::duration<double>(last_ - start_).count()) << "\n";
     out.flush();
     if (!out) std::fprintf(stderr, "inpact: warning: cannot write the timings to %s\n", path.c_str());
@@ -128,6 +142,7 @@ class PhaseClock {
  private:
   Clock::time_point start_ = Clock::now(), last_ = start_;
   std::vector<std::pair<const char*, double>> seconds_;
+  std::vector<std::pair<const char*, long>> counts_;
 };
 
 /// SHA-256 over the deck and every file it included, in reading order.
@@ -170,6 +185,7 @@ int run_analysis(const RunOptions& options) {
     }
     clock.mark("analysis");
     clock.add("output", outcome.output_seconds);
+    clock.add_iterations(outcome.iteration_seconds);
     observer.end_line();
     results.finish(outcome.completed ? io::RunStatus::Completed : io::RunStatus::Aborted);
     status.finish(outcome.completed);

@@ -60,12 +60,13 @@ int main(int argc, char** argv) {
   run_cmd->add_option("deck", run.deck, "Input deck (.inp)")->required()->check(CLI::ExistingFile);
   run_cmd->add_option("-j,--job", run.job, "Job name (default: the deck's name)");
   run_cmd->add_option("-o,--output-dir", run.output_dir, "Folder for the results (default: .)");
-  run_cmd->add_option("--threads", run.threads, "Threads for assembly and factorisation")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--threads", run.threads, "Threads for assembly, factorisation and surface-to-surface contact")->check(CLI::PositiveNumber);
   run_cmd->add_option("-P", run_params, "Override a *PARAMETER: -P name=value");
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
   run_cmd->add_flag("-v,--verbose", run.verbose, "Print every Newton iteration");
   run_cmd->add_option("--timings", run.timings,
-                      "Write the wall time of each phase (read, create, solve, output, finish) to this file");
+                      "Write the wall time of each phase (read, create, solve, output, finish) and of the Newton "
+                      "iterations' parts (contact update, element assembly, factorisation) to this file");
 
   CheckOptions check;
   std::vector<std::string> check_params;

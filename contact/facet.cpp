@@ -55,58 +55,82 @@ namespace {
 
 constexpr double kQuadCorner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
-void tri_linear(ShapeEval& e, double xi, double eta) {
-  e.N = {1 - xi - eta, xi, eta};
+// Each shape's functions N (shape_values) and their derivatives (eval_shape) are written apart so
+// that a caller needing only x(ξ) (the distance φ of a projection) pays for N alone; eval_shape
+// takes its N from the same functions, so both give the same bits.
+
+void tri_linear_values(std::array<double, 8>& N, double xi, double eta) {
+  N[0] = 1 - xi - eta;
+  N[1] = xi;
+  N[2] = eta;
+}
+
+void tri_linear(ShapeEval& e) {
   e.dN[0] = {-1, -1};
   e.dN[1] = {1, 0};
   e.dN[2] = {0, 1};
+}
+
+void tri_quadratic_values(std::array<double, 8>& N, double xi, double eta) {
+  const double L[3] = {1 - xi - eta, xi, eta};
+  for (int i = 0; i < 3; ++i) N[i] = L[i] * (2 * L[i] - 1);
+  for (int m = 0; m < 3; ++m) N[3 + m] = 4 * L[m] * L[(m + 1) % 3];
 }
 
 void tri_quadratic(ShapeEval& e, double xi, double eta) {
   const double L[3] = {1 - xi - eta, xi, eta};
   const double dL[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
   for (int i = 0; i < 3; ++i) {
-    e.N[i] = L[i] * (2 * L[i] - 1);
     for (int k = 0; k < 2; ++k) e.dN[i][k] = (4 * L[i] - 1) * dL[i][k];
     e.d2N[i] = {4 * dL[i][0] * dL[i][0], 4 * dL[i][0] * dL[i][1], 4 * dL[i][1] * dL[i][1]};
   }
   for (int m = 0; m < 3; ++m) {
     const int i = m, j = (m + 1) % 3, a = 3 + m;
-    e.N[a] = 4 * L[i] * L[j];
     for (int k = 0; k < 2; ++k) e.dN[a][k] = 4 * (L[j] * dL[i][k] + L[i] * dL[j][k]);
     e.d2N[a] = {8 * dL[i][0] * dL[j][0], 4 * (dL[i][0] * dL[j][1] + dL[j][0] * dL[i][1]), 8 * dL[i][1] * dL[j][1]};
   }
 }
 
+void quad_linear_values(std::array<double, 8>& N, double xi, double eta) {
+  for (int a = 0; a < 4; ++a) N[a] = 0.25 * (1 + kQuadCorner[a][0] * xi) * (1 + kQuadCorner[a][1] * eta);
+}
+
 void quad_linear(ShapeEval& e, double xi, double eta) {
   for (int a = 0; a < 4; ++a) {
     const double xa = kQuadCorner[a][0], ya = kQuadCorner[a][1];
-    e.N[a] = 0.25 * (1 + xa * xi) * (1 + ya * eta);
     e.dN[a] = {0.25 * xa * (1 + ya * eta), 0.25 * ya * (1 + xa * xi)};
     e.d2N[a] = {0, 0.25 * xa * ya, 0};
   }
 }
 
+void quad_serendipity_values(std::array<double, 8>& N, double xi, double eta) {
+  for (int a = 0; a < 4; ++a) {
+    const double xa = kQuadCorner[a][0], ya = kQuadCorner[a][1];
+    N[a] = 0.25 * (1 + xa * xi) * (1 + ya * eta) * (xa * xi + ya * eta - 1);
+  }
+  // Midside nodes: m0 at (0,−1), m1 at (1,0), m2 at (0,1), m3 at (−1,0).
+  N[4] = 0.5 * (1 - xi * xi) * (1 + -1.0 * eta);
+  N[6] = 0.5 * (1 - xi * xi) * (1 + 1.0 * eta);
+  N[5] = 0.5 * (1 + 1.0 * xi) * (1 - eta * eta);
+  N[7] = 0.5 * (1 + -1.0 * xi) * (1 - eta * eta);
+}
+
 void quad_serendipity(ShapeEval& e, double xi, double eta) {
   for (int a = 0; a < 4; ++a) {
     const double xa = kQuadCorner[a][0], ya = kQuadCorner[a][1];
-    const double A = 1 + xa * xi, B = 1 + ya * eta, C = xa * xi + ya * eta - 1;
-    e.N[a] = 0.25 * A * B * C;
+    const double A = 1 + xa * xi, B = 1 + ya * eta;
     e.dN[a] = {0.25 * xa * B * (2 * xa * xi + ya * eta), 0.25 * ya * A * (xa * xi + 2 * ya * eta)};
     e.d2N[a] = {0.5 * B, 0.25 * xa * ya * (2 * xa * xi + 2 * ya * eta + 1), 0.5 * A};
   }
-  // Midside nodes: m0 at (0,−1), m1 at (1,0), m2 at (0,1), m3 at (−1,0).
   for (int m : {0, 2}) {
     const double ya = m == 0 ? -1.0 : 1.0;
     const int a = 4 + m;
-    e.N[a] = 0.5 * (1 - xi * xi) * (1 + ya * eta);
     e.dN[a] = {-xi * (1 + ya * eta), 0.5 * ya * (1 - xi * xi)};
     e.d2N[a] = {-(1 + ya * eta), -xi * ya, 0};
   }
   for (int m : {1, 3}) {
     const double xa = m == 1 ? 1.0 : -1.0;
     const int a = 4 + m;
-    e.N[a] = 0.5 * (1 + xa * xi) * (1 - eta * eta);
     e.dN[a] = {0.5 * xa * (1 - eta * eta), -eta * (1 + xa * xi)};
     e.d2N[a] = {0, -xa * eta, -(1 + xa * xi)};
   }
@@ -114,20 +138,34 @@ void quad_serendipity(ShapeEval& e, double xi, double eta) {
 
 }  // namespace
 
+void shape_values(FacetShape s, double xi, double eta, std::array<double, 8>& N) {
+  switch (s) {
+    case FacetShape::Line2:
+      N[0] = 0.5 * (1 - xi);
+      N[1] = 0.5 * (1 + xi);
+      break;
+    case FacetShape::Line3:
+      N[0] = 0.5 * xi * (xi - 1);
+      N[1] = 0.5 * xi * (xi + 1);
+      N[2] = 1 - xi * xi;
+      break;
+    case FacetShape::Tri3: tri_linear_values(N, xi, eta); break;
+    case FacetShape::Tri6: tri_quadratic_values(N, xi, eta); break;
+    case FacetShape::Quad4: quad_linear_values(N, xi, eta); break;
+    case FacetShape::Quad8: quad_serendipity_values(N, xi, eta); break;
+  }
+}
+
 ShapeEval eval_shape(FacetShape s, double xi, double eta) {
   ShapeEval e;
   e.n = facet_n_nodes(s);
+  shape_values(s, xi, eta, e.N);
   switch (s) {
     case FacetShape::Line2:
-      e.N[0] = 0.5 * (1 - xi);
-      e.N[1] = 0.5 * (1 + xi);
       e.dN[0] = {-0.5, 0};
       e.dN[1] = {0.5, 0};
       break;
     case FacetShape::Line3:
-      e.N[0] = 0.5 * xi * (xi - 1);
-      e.N[1] = 0.5 * xi * (xi + 1);
-      e.N[2] = 1 - xi * xi;
       e.dN[0] = {xi - 0.5, 0};
       e.dN[1] = {xi + 0.5, 0};
       e.dN[2] = {-2 * xi, 0};
@@ -135,7 +173,7 @@ ShapeEval eval_shape(FacetShape s, double xi, double eta) {
       e.d2N[1] = {1, 0, 0};
       e.d2N[2] = {-2, 0, 0};
       break;
-    case FacetShape::Tri3: tri_linear(e, xi, eta); break;
+    case FacetShape::Tri3: tri_linear(e); break;
     case FacetShape::Tri6: tri_quadratic(e, xi, eta); break;
     case FacetShape::Quad4: quad_linear(e, xi, eta); break;
     case FacetShape::Quad8: quad_serendipity(e, xi, eta); break;
@@ -162,7 +200,10 @@ std::array<double, 2> facet_node_param(FacetShape s, int a) {
 }
 
 FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, double xi, double eta) {
-  const ShapeEval e = eval_shape(f.shape, xi, eta);
+  return facet_geometry(f, x, eval_shape(f.shape, xi, eta));
+}
+
+FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, const ShapeEval& e) {
   FacetGeometry g;
   for (int a = 0; a < e.n; ++a) {
     const Vec3& xa = x[static_cast<std::size_t>(f.nodes[a])];

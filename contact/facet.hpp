@@ -50,6 +50,8 @@ struct ShapeEval {
   std::array<std::array<double, 3>, 8> d2N{};  ///< ∂²N_a/∂ξ², ∂²N_a/∂ξ∂η, ∂²N_a/∂η²
 };
 ShapeEval eval_shape(FacetShape s, double xi, double eta = 0.0);
+/// The shape functions alone (the first facet_n_nodes(s) entries of N; the same bits as eval_shape's).
+void shape_values(FacetShape s, double xi, double eta, std::array<double, 8>& N);
 
 /// Parametric coordinates of node a of the shape (its corners and midside nodes).
 std::array<double, 2> facet_node_param(FacetShape s, int a);
@@ -62,6 +64,8 @@ struct FacetGeometry {
   double jacobian = 0.0;    ///< |a_1 × a_2| (faces) or |a_1| (edges): dA = jacobian dξ dη
 };
 FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, double xi, double eta = 0.0);
+/// The same from the shape functions at the point, e = eval_shape(f.shape, ξ, η).
+FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, const ShapeEval& e);
 
 /// A quadrature rule over the facet's parametric domain.
 struct QuadPoint {

@@ -296,10 +296,17 @@ double SurfaceCorrection::nodal_radius(std::int32_t row) const {
   return node_radius_[static_cast<std::size_t>(it - node_rows_.begin())];
 }
 
-bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal) const {
+bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal,
+                                        FacetGeometry& gX) const {
+  return reference_ideal(i, eval_shape(facets_[i].shape, xi[0], xi[1]), offset, normal, gX);
+}
+
+bool SurfaceCorrection::reference_ideal(std::size_t i, const ShapeEval& sh, Vec3& offset, Vec3& normal,
+                                        FacetGeometry& gX) const {
   const Facet& f = facets_[i];
   const Facet lf = local_facet(f);
-  const FacetGeometry g = facet_geometry(lf, std::span<const Vec3>(X_[i].data(), f.n_nodes), xi[0], xi[1]);
+  gX = facet_geometry(lf, std::span<const Vec3>(X_[i].data(), f.n_nodes), sh);
+  const FacetGeometry& g = gX;
   if (mode_ == Mode::Identity) {
     offset = {0, 0, 0};
     normal = g.n;
@@ -307,7 +314,6 @@ bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi,
   }
   const Radial rd = radial(g.x);
   if (!rd.ok) return false;
-  const ShapeEval sh = eval_shape(f.shape, xi[0], xi[1]);
   double r = 0.0;
   std::array<double, 2> dr{0, 0};
   for (int a = 0; a < sh.n; ++a) {
@@ -345,17 +351,22 @@ bool SurfaceCorrection::reference_ideal(std::size_t i, std::array<double, 2> xi,
 CorrectedPoint SurfaceCorrection::correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x) const {
   if (facet < 0 || static_cast<std::size_t>(facet) >= facets_.size())
     throw std::invalid_argument("SurfaceCorrection::correct: facet index out of range");
-  const auto i = static_cast<std::size_t>(facet);
-  const Facet& f = facets_[i];
-  const FacetGeometry gx = facet_geometry(f, x, xi[0], xi[1]);
+  FacetGeometry gx;
+  return correct_at(static_cast<std::size_t>(facet), xi, x, gx);
+}
+
+CorrectedPoint SurfaceCorrection::correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
+                                             FacetGeometry& gx) const {
+  const ShapeEval sh = eval_shape(facets_[i].shape, xi[0], xi[1]);
+  gx = facet_geometry(facets_[i], x, sh);
   CorrectedPoint out{gx.x, gx.n, false};
   Vec3 d, n;
-  if (!reference_ideal(i, xi, d, n)) return out;
+  FacetGeometry gX;
+  if (!reference_ideal(i, sh, d, n, gX)) return out;
   if (mode_ == Mode::Identity) {
     out.corrected = true;
     return out;
   }
-  const FacetGeometry gX = facet_geometry(local_facet(f), std::span<const Vec3>(X_[i].data(), f.n_nodes), xi[0], xi[1]);
   std::array<Vec3, 3> qX, qx;
   if (!facet_frame(gX, qX) || !facet_frame(gx, qx)) return out;
   out.x = add(gx.x, rotate(qX, qx, d));
@@ -377,10 +388,10 @@ CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>&
   if (i < 0)
     throw std::invalid_argument(fmt::format("SurfaceCorrection::project: the facet is not a face of surface {}", data_.surface));
   const int pd = facet_param_dim(f.shape);
-  CorrectedPoint p = correct(i, xi, x);
+  FacetGeometry g;  // the facet's geometry at ξ (f has facets_[i]'s node rows, facet_key)
+  CorrectedPoint p = correct_at(static_cast<std::size_t>(i), xi, x, g);
   for (int it = 0; it < 10 && p.corrected; ++it) {
     // Tangential part of x_s − x̃ (relative to ñ), in the facet's parameters.
-    const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
     const Vec3 d = sub(xs, p.x);
     const Vec3 r = axpy(-dot(d, p.normal), p.normal, d);
     std::array<double, 2> step{0, 0};
@@ -398,7 +409,7 @@ CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>&
     const std::array<double, 2> next = clamp_to_domain(f.shape, {xi[0] + step[0], xi[1] + step[1]});
     const double moved = std::hypot(next[0] - xi[0], next[1] - xi[1]);
     xi = next;
-    p = correct(i, xi, x);
+    p = correct_at(static_cast<std::size_t>(i), xi, x, g);
     if (moved < 1e-13) break;
   }
   return p;
@@ -409,7 +420,8 @@ double SurfaceCorrection::max_deviation() const {
   for (std::size_t i = 0; i < facets_.size(); ++i)
     for (const auto& p : sample_points(facets_[i].shape)) {
       Vec3 d, n;
-      if (reference_ideal(i, p, d, n)) worst = std::max(worst, norm(d));
+      FacetGeometry gX;
+      if (reference_ideal(i, p, d, n, gX)) worst = std::max(worst, norm(d));
     }
   return worst;
 }
@@ -434,9 +446,9 @@ CorrectedPoint SurfaceCorrections::project(const Facet& f, std::array<double, 2>
 }
 
 void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
-                        const Vec3& xs, int dim, Projection& p) {
+                        const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start) {
   if (master.empty() || p.facet < 0) return;
-  std::array<double, 2> xi = p.xi;
+  std::array<double, 2> xi = start ? *start : p.xi;
   const CorrectedPoint m = master.project(facets[static_cast<std::size_t>(p.facet)], xi, x, xs);
   if (!m.corrected) return;
   p.xi = xi;

@@ -156,9 +156,13 @@ class SurfaceCorrection {
   void set_facets(const ContactSurface& surface, std::span<const Vec3> X);
   /// Sets sign_[f] (the sign of ∫ e·n over facet f) and returns the facet's reference area.
   double orient_facet(std::size_t f);
-  /// Reference offset d(ξ) and normal ñ(ξ) of facet `i`; false where the point has no radial
-  /// direction.
-  bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal) const;
+  /// Reference offset d(ξ) and normal ñ(ξ) of facet `i`, and its reference geometry gX there;
+  /// false where the point has no radial direction.
+  bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
+  /// The same from the shape functions at ξ, sh = eval_shape(facet's shape, ξ).
+  bool reference_ideal(std::size_t i, const ShapeEval& sh, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
+  /// correct(facet, xi, x), with the facet's current geometry at ξ in `gx`.
+  CorrectedPoint correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x, FacetGeometry& gx) const;
 
   model::GeometricCorrection data_;
   Mode mode_ = Mode::Axis;
@@ -203,8 +207,9 @@ class SurfaceCorrections {
 /// `facets[p.facet]`) onto the master's idealised surface: ξ refined by `master.project()`, the
 /// idealised point, normal and tangents, gap = (xs − x̃_m)·ñ. Unchanged where no correction
 /// applies. `dim`: 2 or 3 (the tangent basis). Both discretisations measure this way.
+/// `start`: where the refinement of ξ starts instead of p.xi (the corrected ξ of the last update).
 void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
-                        const Vec3& xs, int dim, Projection& p);
+                        const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start = nullptr);
 
 /// The geometric-correction data lines that apply to the contact surface `surface` (a surface
 /// of `m`; empty: general contact's all-inclusive exterior surface, to which every assignment

@@ -67,6 +67,9 @@ class PairKinematics {
   /// faces the master (normals within 45° of opposite) and projects orthogonally (within 45°).
   void set_self_contact(bool self) { self_contact_ = self; }
 
+  /// Threads update() may run on (its results do not depend on how many).
+  void set_threads(int threads) { threads_ = threads; }
+
  protected:
   /// The pair's surfaces from `model`, and their search_radius().
   PairKinematics(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
@@ -82,6 +85,7 @@ class PairKinematics {
   std::vector<std::int32_t> candidates_;  ///< scratch for search queries
   double area_weight_ = 1.0;
   bool self_contact_ = false;
+  int threads_ = 1;
 };
 
 /// Self-contact: drops from `candidates` every facet that has a node of `own` (a facet's rows).

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "projection_tolerance.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -20,12 +21,11 @@ struct Local {
 struct FacetNodes {
   FacetShape shape;
   int n = 0;
-  std::array<Vec3, 8> X{};
   double size = 0.0;  ///< largest corner distance from node 0
+  std::array<Vec3, 8> X{};
 
-  FacetNodes(const Facet& f, std::span<const Vec3> x) : shape(f.shape), n(f.n_nodes) {
+  FacetNodes(const Facet& f, std::span<const Vec3> x) : shape(f.shape), n(f.n_nodes), size(facet_size(f, x)) {
     for (int a = 0; a < n; ++a) X[a] = x[static_cast<std::size_t>(f.nodes[a])];
-    for (int a = 1; a < n; ++a) size = std::max(size, norm(sub(X[a], X[0])));
   }
 
   Local eval(double xi, double eta) const {
@@ -43,9 +43,10 @@ struct FacetNodes {
   }
 
   double phi(const Vec3& xs, double xi, double eta) const {
-    const ShapeEval e = eval_shape(shape, xi, eta);
+    std::array<double, 8> N;
+    shape_values(shape, xi, eta, N);
     Vec3 x{};
-    for (int a = 0; a < n; ++a) x = axpy(e.N[a], X[a], x);
+    for (int a = 0; a < n; ++a) x = axpy(N[a], X[a], x);
     const Vec3 r = sub(xs, x);
     return 0.5 * dot(r, r);
   }
@@ -156,7 +157,7 @@ struct InteriorResult {
 };
 
 /// Newton on ∇φ(ξ) = 0 for a face, from the best sample of a small grid.
-InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
+InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::array<double, 2>* start) {
   InteriorResult res;
   if (fn.shape == FacetShape::Tri3) {  // x(ξ) is affine: one exact step from (0, 0)
     const Vec3 a0 = sub(fn.X[1], fn.X[0]), a1 = sub(fn.X[2], fn.X[0]), r = sub(xs, fn.X[0]);
@@ -167,11 +168,11 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
     res.converged = true;
     return res;
   }
-  // Start: the best point of a 5 × 5 grid (triangles: the grid points inside).
+  // Start: the given point, or the best point of a 5 × 5 grid (triangles: the grid points inside).
   double best = std::numeric_limits<double>::infinity();
-  std::array<double, 2> xi{0, 0};
+  std::array<double, 2> xi = start ? *start : std::array<double, 2>{0, 0};
   const bool tri = is_tri(fn.shape);
-  for (int i = 0; i <= 4; ++i)
+  for (int i = 0; i <= (start ? -1 : 4); ++i)
     for (int j = 0; j <= 4; ++j) {
       const std::array<double, 2> p = tri ? std::array<double, 2>{i / 4.0, j / 4.0}
                                           : std::array<double, 2>{-1 + i / 2.0, -1 + j / 2.0};
@@ -214,6 +215,67 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs) {
   return res;
 }
 
+/// A lower bound of φ = ½|x_s − x|² over edge i of a face (corners i and i + 1 of `nc`, and
+/// midside node nc + i when quadratic): the edge lies on the segment between its corners, or in
+/// the box of its Bézier control points. Less the round-off of the coordinates' size.
+double edge_phi_bound(const FacetNodes& fn, const Vec3& xs, int i, int nc) {
+  const Vec3& A = fn.X[static_cast<std::size_t>(i)];
+  const Vec3& B = fn.X[static_cast<std::size_t>((i + 1) % nc)];
+  double magnitude = 0.0, d = 0.0;
+  for (int k = 0; k < 3; ++k) magnitude = std::max({magnitude, std::abs(xs[k]), std::abs(A[k]), std::abs(B[k])});
+  if (!facet_is_quadratic(fn.shape)) {
+    const Vec3 e = sub(B, A);
+    const double ee = dot(e, e);
+    const double t = ee > 0 ? std::clamp(dot(sub(xs, A), e) / ee, 0.0, 1.0) : 0.0;
+    d = norm(sub(xs, axpy(t, e, A)));
+  } else {
+    const Vec3& M = fn.X[static_cast<std::size_t>(nc + i)];
+    Vec3 outside{};
+    for (int k = 0; k < 3; ++k) {
+      const double C = 2 * M[k] - 0.5 * (A[k] + B[k]);
+      const double lo = std::min({A[k], B[k], C}), hi = std::max({A[k], B[k], C});
+      outside[k] = std::max({lo - xs[k], 0.0, xs[k] - hi});
+      magnitude = std::max({magnitude, std::abs(C)});
+    }
+    d = norm(outside);
+  }
+  const double slack = 1e-10 * magnitude;
+  if (!(d > slack)) return 0.0;  // (NaN too)
+  return 0.5 * (d - slack) * (d - slack) * (1 - 1e-12);
+}
+
+/// ξ of the closest point of the domain's boundary: the least φ over its edges, the first edge
+/// in order among equal ones. The edges are searched in the order of their bounds, and those
+/// whose bound exceeds the least φ found cannot hold it (nor tie) and are not searched.
+std::array<double, 2> closest_on_boundary(const FacetNodes& fn, const Vec3& xs) {
+  std::array<std::array<double, 2>, 4> c;
+  const int nc = domain_corners(fn.shape, c);
+  const int n_edges = facet_param_dim(fn.shape) == 1 ? 1 : nc;
+  const int samples = facet_is_quadratic(fn.shape) ? 8 : 1;
+  std::array<double, 4> bound{};
+  std::array<int, 4> order{0, 1, 2, 3};
+  if (n_edges > 1) {
+    for (int i = 0; i < n_edges; ++i) bound[static_cast<std::size_t>(i)] = edge_phi_bound(fn, xs, i, nc);
+    std::sort(order.begin(), order.begin() + n_edges, [&](int a, int b) { return bound[a] < bound[b]; });
+  }
+  LineMin best;
+  int best_edge = n_edges;
+  std::array<double, 2> best_xi{0, 0};
+  for (int k = 0; k < n_edges; ++k) {
+    const int i = order[static_cast<std::size_t>(k)];
+    if (bound[static_cast<std::size_t>(i)] > best.phi) break;  // and so are the edges after it
+    const auto& P0 = c[static_cast<std::size_t>(i)];
+    const auto& P1 = c[static_cast<std::size_t>((i + 1) % nc)];
+    const LineMin m = minimize_on_segment(fn, xs, P0, P1, samples);
+    if (m.phi < best.phi || (best_edge < n_edges && m.phi == best.phi && i < best_edge)) {
+      best = m;
+      best_edge = i;
+      best_xi = {P0[0] + m.t * (P1[0] - P0[0]), P0[1] + m.t * (P1[1] - P0[1])};
+    }
+  }
+  return best_xi;
+}
+
 ProjectionRegion region_of(FacetShape s, const std::array<double, 2>& xi) {
   constexpr double tol = 1e-10;
   if (facet_param_dim(s) == 1) return std::abs(std::abs(xi[0]) - 1) <= tol ? ProjectionRegion::Vertex : ProjectionRegion::Interior;
@@ -225,12 +287,6 @@ ProjectionRegion region_of(FacetShape s, const std::array<double, 2>& xi) {
   }
   return on == 0 ? ProjectionRegion::Interior : on == 1 ? ProjectionRegion::Edge : ProjectionRegion::Vertex;
 }
-
-/// Distance below which a slave point counts as lying on the facet.
-// Points closer than this to a facet are on it (gap 0, shared-point normal averaged). Far below
-// any penetration tolerance (1e-3 of the interface length), far above the round-off of the
-// local Newton projection, which differs between optimisation levels near facet edges.
-double on_surface_tol(double size) { return 1e-8 * size; }
 
 }  // namespace
 
@@ -250,16 +306,16 @@ void tangent_basis(const Vec3& n, int dim, Vec3& t1, Vec3& t2) {
   t2 = cross(n, t1);
 }
 
-Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index) {
+Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index,
+                            const std::array<double, 2>* start) {
   const FacetNodes fn(f, x);
   Projection p;
   p.facet = facet_index;
   const int pd = facet_param_dim(f.shape);
-  const int samples = facet_is_quadratic(f.shape) ? 8 : 1;
 
   bool done = false;
   if (pd == 2) {
-    const InteriorResult in = newton_interior(fn, xs);
+    const InteriorResult in = newton_interior(fn, xs, start);
     if (in.converged && inside(f.shape, in.xi)) {
       p.xi = clamp_inside(f.shape, in.xi);
       done = true;
@@ -267,21 +323,7 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
     p.converged = in.converged;
   }
   if (!done) {  // the closest point of the domain's boundary (for edges: of the whole edge)
-    std::array<std::array<double, 2>, 4> c;
-    const int nc = domain_corners(f.shape, c);
-    LineMin best;
-    std::array<double, 2> best_xi{0, 0};
-    const int n_edges = pd == 1 ? 1 : nc;
-    for (int i = 0; i < n_edges; ++i) {
-      const auto& P0 = c[i];
-      const auto& P1 = c[(i + 1) % nc];
-      const LineMin m = minimize_on_segment(fn, xs, P0, P1, samples);
-      if (m.phi < best.phi) {
-        best = m;
-        best_xi = {P0[0] + m.t * (P1[0] - P0[0]), P0[1] + m.t * (P1[1] - P0[1])};
-      }
-    }
-    p.xi = clamp_inside(f.shape, best_xi);
+    p.xi = clamp_inside(f.shape, closest_on_boundary(fn, xs));
     if (pd == 1) p.converged = true;
   }
   p.region = region_of(f.shape, p.xi);
@@ -303,55 +345,6 @@ Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3&
   }
   tangent_basis(p.normal, pd == 1 ? 2 : 3, p.t1, p.t2);
   return p;
-}
-
-Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs) {
-  Projection best;
-  if (candidates.empty()) return best;
-  std::vector<Projection> all;
-  all.reserve(candidates.size());
-  double size = 0.0;
-  for (std::int32_t c : candidates) {
-    const Facet& f = facets[static_cast<std::size_t>(c)];
-    all.push_back(project_to_facet(f, x, xs, c));
-    size = std::max(size, FacetNodes(f, x).size);
-  }
-  const double tol = on_surface_tol(size);
-  // Closest facet; among ties at the same point: interior before edge before vertex, then the
-  // lowest facet index.
-  auto better = [&](const Projection& a, const Projection& b) {
-    if (a.distance < b.distance - tol) return true;
-    if (a.distance > b.distance + tol) return false;
-    if (a.region != b.region) return a.region < b.region;
-    return a.facet < b.facet;
-  };
-  std::size_t ib = 0;
-  for (std::size_t i = 1; i < all.size(); ++i)
-    if (better(all[i], all[ib])) ib = i;
-  best = all[ib];
-
-  // n̄: the facet normals of every candidate sharing the closest point.
-  Vec3 nbar{};
-  for (const Projection& q : all)
-    if (std::abs(q.distance - best.distance) <= tol && norm(sub(q.x_master, best.x_master)) <= tol)
-      nbar = add(nbar, q.facet_normal);
-  const double len = norm(nbar);
-  const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
-  const Vec3 r = sub(xs, best.x_master);
-  if (best.distance <= tol) {
-    // On the surface to round-off at an edge or vertex: the averaged normal, and the signed
-    // distance along it (not 0: under a stiff penalty p/k can be below this tolerance, and a
-    // node on a vertex must still carry its force).
-    if (len > 0) best.normal = scale(1.0 / len, nbar);
-    best.gap = dot(r, best.normal);
-  } else if (best.region != ProjectionRegion::Interior) {
-    const double s = dot(r, nbar) < 0 ? -1.0 : 1.0;
-    best.normal = scale(s / best.distance, r);
-    best.gap = s * best.distance;
-  }
-  tangent_basis(best.normal, dim, best.t1, best.t2);
-  return best;
 }
 
 namespace {
@@ -556,6 +549,23 @@ GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Ve
     return L;
   }
   linearize_distance(u, f.shape, p, L);
+  return L;
+}
+
+GapLinearization gap_gradient(const Facet& f, const Projection& p, int dim,
+                              std::int32_t slave_row) {
+  GapLinearization L;
+  L.dim = dim;
+  L.n_dof = dim * (f.n_nodes + 1);
+  L.nodes.push_back(slave_row);
+  for (int a = 0; a < f.n_nodes; ++a) L.nodes.push_back(f.nodes[a]);
+  L.gradient.assign(static_cast<std::size_t>(L.n_dof), 0.0);
+  std::array<double, 8> N;
+  shape_values(f.shape, p.xi[0], p.xi[1], N);
+  for (int c = 0; c < dim; ++c) {
+    L.gradient[static_cast<std::size_t>(c)] = p.normal[c];
+    for (int a = 0; a < f.n_nodes; ++a) L.gradient[static_cast<std::size_t>((a + 1) * dim + c)] = -N[a] * p.normal[c];
+  }
   return L;
 }
 

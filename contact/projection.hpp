@@ -29,6 +29,9 @@
 ///     count: one slave node, one projection).
 /// Inside a concave corner two facets can be equally close with different normals; the normal
 /// jumps there, as it does for any faceted surface without smoothing.
+/// Only the candidates a distance bound cannot rule out are projected (closest_projection.cpp:
+/// the bound from the facet's control points; the comparisons keep the candidates' order, so the
+/// result is the one projecting every candidate gives, to the bit).
 #include <array>
 #include <cstdint>
 #include <span>
@@ -59,12 +62,34 @@ struct Projection {
 
 /// Closest point of `xs` on facet `f` on coordinates `x` (all node rows); `facet_index` is
 /// copied into the result.
-Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index = 0);
+/// `start`: where a face's Newton iteration starts (the last ξ of the same point, say) instead of
+/// the best point of a 5 × 5 grid; it converges to the same ξ to round-off when that is inside.
+Projection project_to_facet(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t facet_index = 0,
+                            const std::array<double, 2>* start = nullptr);
 
 /// The projection of `xs` onto the closest of the `candidates` (indices into `facets`), with the
 /// continuous normal described above. facet = −1 when there is no candidate.
+/// A start for the projection onto one facet (project_to_facet's `start`).
+struct ProjectionHint {
+  std::int32_t facet = -1;  ///< −1: none
+  std::array<double, 2> xi{0, 0};
+};
+/// The box of a facet's control points (its convex hull holds the facet) and its size squared
+/// (the largest squared distance of a node from node 0): what closest_projection bounds
+/// distances and tolerances with.
+struct FacetBox {
+  Vec3 lo, hi;
+  double size2 = 0.0;
+};
+FacetBox facet_box(const Facet& f, std::span<const Vec3> x);
+/// facet_box() of every facet, into `out` (resized).
+void facet_boxes(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<FacetBox>& out);
+
+/// `boxes`: facet_boxes() of `facets` on `x`, when the caller has them (many points against the
+/// same facets); otherwise each candidate's box is computed here.
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs);
+                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr,
+                              std::span<const FacetBox> boxes = {});
 
 /// The tangent basis for a unit normal `n` (dim 3: Abaqus's surface convention; dim 2: t1 = n
 /// rotated counter-clockwise, t2 = 0).
@@ -95,5 +120,9 @@ struct GapLinearization {
 };
 GapLinearization linearize_gap(const Facet& f, std::span<const Vec3> x, const Vec3& xs, const Projection& p, int dim,
                                std::int32_t slave_row = -1);
+/// Only the gradient of linearize_gap() (the same numbers; hessian and dxi left empty): what a
+/// linearisation without finite sliding reads.
+GapLinearization gap_gradient(const Facet& f, const Projection& p, int dim,
+                              std::int32_t slave_row = -1);
 
 }  // namespace inpact::contact

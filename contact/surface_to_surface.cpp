@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "parallel_for.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -24,6 +25,34 @@ std::size_t slot(std::vector<std::int32_t>& nodes, std::int32_t row) {
     if (nodes[i] == row) return i;
   nodes.push_back(row);
   return nodes.size() - 1;
+}
+
+/// A point's unknowns expanded onto the union's nodes: (union slot, factor, point-local unknown).
+struct ExpandedTerms {
+  struct Term {
+    std::size_t slot, local;
+    double factor;
+  };
+  std::array<Term, 17> t;  // (at most 8 slave nodes for x_q, then 8 master nodes)
+  std::size_t n = 0;
+  void add(std::size_t slot, double factor, std::size_t local) { t[n++] = {slot, local, factor}; }
+};
+
+/// L.hessian += c Eᵀ ∂²g_q E for one point, E its expansion `terms`: every entry gets
+/// ((c f1) f2) ∂²g_q, terms in expansion order (row, then column, then components).
+void add_point_hessian(const ExpandedTerms& terms, double c, const GapLinearization& q, GapLinearization& L) {
+  const std::size_t d = static_cast<std::size_t>(L.dim), nd = static_cast<std::size_t>(L.n_dof);
+  const std::size_t qn = q.gradient.size();
+  for (std::size_t a = 0; a < terms.n; ++a)
+    for (std::size_t b = 0; b < terms.n; ++b) {
+      const auto& t1 = terms.t[a];
+      const auto& t2 = terms.t[b];
+      const double cf = c * t1.factor * t2.factor;
+      double* H = &L.hessian[t1.slot * d * nd + t2.slot * d];
+      const double* Q = &q.hessian[t1.local * d * qn + t2.local * d];
+      for (std::size_t i = 0; i < d; ++i)
+        for (std::size_t j = 0; j < d; ++j) H[i * nd + j] += cf * Q[i * qn + j];
+    }
 }
 
 }  // namespace
@@ -56,48 +85,26 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   const auto facets = slave_.facets();
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});
+  facet_boxes(master_.facets(), x, master_boxes_);
+  parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
+  // The sums over each node's points, facet after facet and point after point: the same order
+  // whatever the thread count, so the same bits.
   std::vector<double> weighted_gap(nodes.size(), 0.0);
   std::vector<Vec3> weighted_normal(nodes.size(), Vec3{});
   for (std::size_t fi = 0; fi < facets.size(); ++fi) {
     const Facet& f = facets[fi];
-    const auto rule = facet_rule(f.shape, kRulePoints);
-    auto& pts = points_[fi];
-    pts.resize(rule.size());
-    for (std::size_t q = 0; q < rule.size(); ++q) {
-      Point& pt = pts[q];
-      FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
-      const ShapeEval e = eval_shape(f.shape, rule[q].xi, rule[q].eta);
-      pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
-      if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
-        const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x);
-        g.x = c.x;
-        g.n = c.normal;
-      }
-      pt.x = g.x;
-      pt.N = e.N;
-      pt.W = weighting_functions(f.shape, e.N);
-      candidates_.clear();
-      search_.query(g.x, candidates_);
-      if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates_);
-      pt.projection = closest_projection(master_.facets(), candidates_, x, g.x);
-      const Projection& pr = pt.projection;
-      // (judged on the faceted projection: beyond the master's free edge the idealised one
-      // would look orthogonal too)
-      pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
-                    (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
-                     std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+    for (const Point& pt : points_[fi]) {
       if (!pt.overlaps) continue;
-      correct_master(x, g.x, pt.projection);
       for (int a = 0; a < f.n_nodes; ++a) {
         const auto i = static_cast<std::size_t>(slave_.local_index(f.nodes[a]));
         const double w = pt.W[static_cast<std::size_t>(a)] * pt.da;
         out[i].area += w;
-        weighted_gap[i] += w * pr.gap;
-        weighted_normal[i] = axpy(w, pr.normal, weighted_normal[i]);
+        weighted_gap[i] += w * pt.projection.gap;
+        weighted_normal[i] = axpy(w, pt.projection.normal, weighted_normal[i]);
       }
     }
   }
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
+  parallel_for(nodes.size(), threads_, 32, [&](std::size_t i) {
     SlaveKinematics& k = out[i];
     k.node = nodes[i];
     project_node(x, k);
@@ -105,23 +112,67 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
     k.found = k.area > 0.0 && len > 0.0;
     if (!k.found) {
       k.area = 0.0;
-      continue;
+      return;
     }
     k.projection.gap = weighted_gap[i] / k.area;
     k.area *= area_weight_;
     k.projection.normal = scale(1.0 / len, weighted_normal[i]);
     tangent_basis(k.projection.normal, dim_, k.projection.t1, k.projection.t2);
+  });
+}
+
+void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi) {
+  const Facet& f = slave_.facets()[fi];
+  const auto rule = facet_rule(f.shape, kRulePoints);
+  auto& pts = points_[fi];
+  if (pts.size() != rule.size()) {  // the first update: the shape and weighting functions
+    pts.resize(rule.size());
+    for (std::size_t q = 0; q < rule.size(); ++q) {
+      pts[q].N = eval_shape(f.shape, rule[q].xi, rule[q].eta).N;
+      pts[q].W = weighting_functions(f.shape, pts[q].N);
+    }
+  }
+  thread_local std::vector<std::int32_t> candidates;
+  for (std::size_t q = 0; q < rule.size(); ++q) {
+    Point& pt = pts[q];
+    FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
+    pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
+    if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
+      const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x);
+      g.x = c.x;
+      g.n = c.normal;
+    }
+    pt.x = g.x;
+    pt.lin_valid = false;
+    candidates.clear();
+    search_.query(g.x, candidates);
+    if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
+    pt.projection =
+        closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, master_boxes_);
+    const Projection& pr = pt.projection;
+    pt.hint = {pr.region == ProjectionRegion::Interior && pr.converged ? pr.facet : -1, pr.xi};
+    // (judged on the faceted projection: beyond the master's free edge the idealised one
+    // would look orthogonal too)
+    pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
+                  (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
+                   std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+    if (!pt.overlaps) continue;
+    const bool warm = pt.corrected_hint.facet == pt.projection.facet;
+    correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
+    pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
   }
 }
 
 /// The slave node's own closest-point projection (for friction), kept in k.projection's facet,
 /// ξ and master point; the gap and normal are overwritten with the weighted ones by update().
-void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics& k) {
-  candidates_.clear();
-  search_.query(x[static_cast<std::size_t>(k.node)], candidates_);
+void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics& k) const {
+  thread_local std::vector<std::int32_t> candidates;
+  candidates.clear();
+  search_.query(x[static_cast<std::size_t>(k.node)], candidates);
   const std::int32_t own[1] = {k.node};
-  if (self_contact_) drop_neighbours(master_.facets(), own, candidates_);
-  k.projection = closest_projection(master_.facets(), candidates_, x, x[static_cast<std::size_t>(k.node)]);
+  if (self_contact_) drop_neighbours(master_.facets(), own, candidates);
+  k.projection = closest_projection(master_.facets(), candidates, x, x[static_cast<std::size_t>(k.node)], nullptr,
+                                    master_boxes_);
   k.friction_found = k.projection.facet >= 0;
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
 }
@@ -131,8 +182,20 @@ void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, S
   slave_correction_ = std::move(slave);
 }
 
-void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const {
-  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p);
+void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
+                                          const std::array<double, 2>* start) const {
+  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
+}
+
+const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt,
+                                                                   bool hessian) const {
+  if (!pt.lin_valid || (hessian && !pt.lin_hessian)) {
+    const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
+    pt.lin = hessian ? linearize_gap(mf, x, pt.x, pt.projection, dim_, -1) : gap_gradient(mf, pt.projection, dim_, -1);
+    pt.lin_valid = true;
+    pt.lin_hessian = hessian;
+  }
+  return pt.lin;
 }
 
 void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {
@@ -173,7 +236,7 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
       const double c = pt.W[static_cast<std::size_t>(a_local)] * pt.da * area_weight_ / k.area;
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
-      const GapLinearization q = linearize_gap(mf, x, pt.x, pt.projection, dim_, -1);
+      const GapLinearization& q = point_linearization(x, pt, finite_sliding && !smoothed());
       // The point's unknowns: x_q (slot 0, = Σ_b N_b x_b over the slave facet), then mf's nodes.
       const std::size_t nq = static_cast<std::size_t>(mf.n_nodes) + 1;
       map.assign(nq, 0);
@@ -193,16 +256,9 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
         });
       const bool corner = pt.projection.region != ProjectionRegion::Interior && pt.projection.distance < 1e-3 * radius_;
       if (!finite_sliding || corner || !q.hessian_defined || smoothed()) continue;
-      const std::size_t qn = q.gradient.size();
-      for (std::size_t m1 = 0; m1 < nq; ++m1)
-        expand(m1, [&](std::size_t s1, double f1) {
-          for (std::size_t m2 = 0; m2 < nq; ++m2)
-            expand(m2, [&](std::size_t s2, double f2) {
-              for (std::size_t i = 0; i < d; ++i)
-                for (std::size_t j = 0; j < d; ++j)
-                  L.hessian[(s1 * d + i) * nd + s2 * d + j] += c * f1 * f2 * q.hessian[(m1 * d + i) * qn + m2 * d + j];
-            });
-        });
+      ExpandedTerms terms;
+      for (std::size_t m = 0; m < nq; ++m) expand(m, [&](std::size_t s, double f) { terms.add(s, f, m); });
+      add_point_hessian(terms, c, q, L);
     }
   }
 }

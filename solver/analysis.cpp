@@ -43,6 +43,7 @@ struct StepRun {
         contact(std::make_unique<ContactProblem>(am, index)),
         states(material_states) {
     if (contact->empty()) contact.reset();
+    else contact->set_threads(threads);
   }
   StepRun(const StepRun&) = delete;
 
@@ -116,6 +117,13 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   run.output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
+/// The outcome of an analysis that stopped, saying why.
+AnalysisOutcome stopped(std::string message) {
+  AnalysisOutcome out;
+  out.message = std::move(message);
+  return out;
+}
+
 /// The .sta row of an attempt. A cut-back attempt shows the time at the start of the increment,
 /// as Abaqus does.
 StatusRow status_row(const StepRun& run, const IncrementController& inc, const NewtonOutcome& outcome,
@@ -175,7 +183,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
   const auto time_mark = [&run](double t, double dt) { return run.output.limit_increment(t, dt); };
   while (!inc.step_complete()) {
     if (auto stop = inc.begin_increment(time_mark))
-      return {false, fmt::format("step {} ({}): {}", run.number, run.step.name, *stop)};
+      return stopped(fmt::format("step {} ({}): {}", run.number, run.step.name, *stop));
     IncrementState trial;
     NewtonOutcome outcome;
     for (;;) {
@@ -194,7 +202,7 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
                                             inc.size(), outcome.failure, describe_dof(am, outcome.worst_dof), untouched);
       const Cutback cutback = damping_starts ? inc.retry_same_size()
                                              : inc.attempt_failed(outcome.singular, run.contact != nullptr && untouched.empty());
-      if (!cutback.retry) return {false, where + cutback.note};
+      if (!cutback.retry) return stopped(where + cutback.note);
       observer.message(where + cutback.note +
                        (damping_starts ? fmt::format(" (damping factor {:.4g})", run.stabilization->factor()) : ""));
       run.states.discard();  // the next attempt starts from the same committed history
@@ -210,7 +218,9 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
                  std::move(history));
     run.states.commit();  // after the output, which evaluates from the committed history
   }
-  return {true, ""};
+  AnalysisOutcome completed;
+  completed.completed = true;
+  return completed;
 }
 
 }  // namespace
@@ -236,6 +246,7 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
   double output_seconds = 0.0;
   double previous_factor = 0.0;  // the damping factor the last step ended with (CONTINUE=YES)
   double allsd = 0.0;            // ALLSD over the steps so far
+  IterationSeconds iteration_seconds;
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
@@ -261,8 +272,12 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
       observer.message(line);
       observer.status_note("     " + line);
     }
+    iteration_seconds += run.assembler.seconds();
+    iteration_seconds += run.solvers.seconds;
+    if (run.contact) iteration_seconds += run.contact->seconds();
     if (!outcome.completed) {
       outcome.output_seconds = output_seconds;
+      outcome.iteration_seconds = iteration_seconds;
       return outcome;
     }
     history = run.conditions.end_state(reactions(run.dofs, state));
@@ -272,7 +287,11 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
       history.released_contact = run.contact->pair_forces(removed, state.contact);
     total_time += step.static_procedure->time_period;
   }
-  return {true, "", output_seconds};
+  AnalysisOutcome outcome;
+  outcome.completed = true;
+  outcome.output_seconds = output_seconds;
+  outcome.iteration_seconds = iteration_seconds;
+  return outcome;
 }
 
 }  // namespace inpact::solver

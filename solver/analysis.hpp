@@ -8,6 +8,7 @@
 ///   iteration   newton.hpp                residual, convergence.hpp, linear_solve.hpp
 #include <string>
 
+#include "iteration_seconds.hpp"
 #include "model/model.hpp"
 #include "observer.hpp"
 
@@ -24,6 +25,8 @@ struct AnalysisOutcome {
   /// Wall seconds spent computing and writing output (frames and printed tables), so that a
   /// caller can tell the solve from the output it asked for (`inpact run --timings`).
   double output_seconds = 0.0;
+  /// Wall seconds in the parts of the Newton iterations (contact, element assembly, linear solve).
+  IterationSeconds iteration_seconds;
 };
 
 /// Runs every step of `model`; progress and frames go to `observer`. Throws AnalysisError when

@@ -145,6 +145,7 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
 }
 
 AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int) {
+  const ScopedSeconds clock(seconds_.element_assembly, &seconds_.element_assemblies);
   AssemblyResult result;
   std::fill(f_int.begin(), f_int.end(), 0.0);
   if (request.tangent) tangent_.set_zero();

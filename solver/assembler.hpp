@@ -7,6 +7,7 @@
 #include "analysis_model.hpp"
 #include "dof_map.hpp"
 #include "elements/element_kernel.hpp"
+#include "iteration_seconds.hpp"
 #include "linear/sparse_matrix.hpp"
 
 namespace inpact::solver {
@@ -98,6 +99,9 @@ class Assembler {
   /// when it was made at exactly this u, temperature change and NLGEOM; otherwise null.
   const ElementPoints* points_at(std::span<const double> u, std::span<const double> delta_t, bool nlgeom) const;
 
+  /// Wall time in assemble() so far (element_assembly and its count only).
+  const IterationSeconds& seconds() const { return seconds_; }
+
  private:
   /// Global DOFs of element e, node-major.
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
@@ -117,6 +121,7 @@ class Assembler {
   ElementPoints points_;
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;
+  IterationSeconds seconds_;
 };
 
 }  // namespace inpact::solver

@@ -265,6 +265,10 @@ ContactProblem::~ContactProblem() = default;
 
 bool ContactProblem::empty() const { return pairs_.empty(); }
 
+void ContactProblem::set_threads(int threads) {
+  for (auto& p : pairs_) p->geometry->set_threads(threads);
+}
+
 bool ContactProblem::has_friction() const {
   return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->friction.has_value(); });
 }
@@ -303,6 +307,7 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
 // --- Iterations --------------------------------------------------------------------------
 
 void ContactProblem::begin_attempt(ContactState& state, int step, int increment, std::span<const double> u_start) {
+  const ScopedSeconds clock(seconds_.contact_begin);
   state.pairs.resize(n_pairs_total_);
   evaluate(u_start);
   const bool new_increment = state.friction_increment != std::array<int, 2>{step, increment};
@@ -397,6 +402,7 @@ void ContactProblem::set_user_adaptive_scale(double scale) {
 
 void ContactProblem::evaluate(std::span<const double> u) {
   if (evaluated_ && std::equal(u.begin(), u.end(), evaluated_u_.begin(), evaluated_u_.end())) return;
+  const ScopedSeconds clock(seconds_.contact_geometry);
   evaluated_u_.assign(u.begin(), u.end());
   evaluated_ = true;
   const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
@@ -498,6 +504,7 @@ void ContactProblem::set_pattern(std::vector<std::int64_t> signature, Assembler&
 }
 
 ContactIteration ContactProblem::update(std::span<const double> u, ContactState& state, Assembler& assembler) {
+  const ScopedSeconds clock(seconds_.contact_update, &seconds_.contact_updates);
   evaluate(u);
   const auto x = contact::current_coordinates(am_.model->mesh.nodes, u, am_.dim);
   ContactIteration it;
@@ -535,6 +542,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
 }
 
 void ContactProblem::assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler) {
+  const ScopedSeconds clock(seconds_.contact_assembly);
   std::vector<std::int64_t> dofs;
   std::vector<double> k;
   skew_.clear();

@@ -33,6 +33,7 @@
 #include "assembler.hpp"
 #include "contact/enforcement.hpp"
 #include "contact_results.hpp"
+#include "iteration_seconds.hpp"
 
 namespace inpact::solver {
 
@@ -112,6 +113,10 @@ class ContactProblem {
   /// One line per pair in force: contact::describe() of its resolved record (the step's messages).
   std::vector<std::string> describe() const;
 
+  /// Threads the surfaces' update may run on (surface to surface: across slave facets); the
+  /// results do not depend on how many.
+  void set_threads(int threads);
+
   bool has_friction() const;
   /// Sizes `state` for the pairs in force and resets the status-change counters. When
   /// (step, increment) differs from the one `state` was last begun for, a new increment starts
@@ -170,6 +175,9 @@ class ContactProblem {
   /// Output values at displacement u (a converged state).
   ContactResults results(std::span<const double> u, const ContactState& state);
 
+  /// Wall time in begin_attempt(), update(), evaluate() and assemble() so far (their fields of IterationSeconds).
+  const IterationSeconds& seconds() const { return seconds_; }
+
  private:
   struct Pair;
   /// Search, projection and gap of every slave node at u; a call at the u of the last one
@@ -208,6 +216,7 @@ class ContactProblem {
   std::int64_t friction_evaluations_ = 0;
   std::vector<double> evaluated_u_;  ///< the u of the last evaluate()
   bool evaluated_ = false;
+  IterationSeconds seconds_;
 };
 
 }  // namespace inpact::solver

@@ -11,10 +11,14 @@ CorrectionOutcome CorrectionSolver::solve(const SparseMatrix& tangent, bool sadd
                                           std::span<double> du, std::size_t n_displacement, double model_size) {
   CorrectionOutcome out;
   if (saddle_point || !tangent.upper_only) current_ = solvers_.umfpack.get();
-  FactorStatus status = current_->factorize(tangent);
-  if (status == FactorStatus::NotPositiveDefinite) {
-    current_ = solvers_.umfpack.get();
+  FactorStatus status;
+  {
+    const ScopedSeconds clock(solvers_.seconds.factorization, &solvers_.seconds.factorizations);
     status = current_->factorize(tangent);
+    if (status == FactorStatus::NotPositiveDefinite) {
+      current_ = solvers_.umfpack.get();
+      status = current_->factorize(tangent);
+    }
   }
   if (status == FactorStatus::Singular || status == FactorStatus::NotPositiveDefinite) {
     out.failure = "the stiffness matrix is singular: a part of the model is free to move as a rigid body "
@@ -26,7 +30,10 @@ CorrectionOutcome CorrectionSolver::solve(const SparseMatrix& tangent, bool sadd
     out.failure = "out of memory in the factorisation";
     return out;
   }
-  current_->solve(r, du);
+  {
+    const ScopedSeconds clock(solvers_.seconds.back_solve);
+    current_->solve(r, du);
+  }
   double largest_du = 0.0;  // over the displacement equations (not the contact multipliers)
   bool finite = true;
   for (std::size_t i = 0; i < n_displacement; ++i) {

@@ -12,6 +12,7 @@
 #include <span>
 #include <string>
 
+#include "iteration_seconds.hpp"
 #include "linear/linear_solver.hpp"
 
 namespace inpact::solver {
@@ -21,6 +22,7 @@ namespace inpact::solver {
 struct LinearSolvers {
   std::unique_ptr<LinearSolver> cholmod = make_cholmod_solver();
   std::unique_ptr<LinearSolver> umfpack = make_umfpack_solver();
+  IterationSeconds seconds;  ///< factorization and back_solve (with their counts) of the step
 };
 
 struct CorrectionOutcome {

@@ -1,0 +1,102 @@
+#!/usr/bin/env python3
+"""The cost of surface-to-surface contact in one Newton iteration (issue 14, "Speed"): per deck,
+the contact time of an iteration against one element assembly + one factorisation of the same
+system, from `inpact run --timings` (solver/iteration_seconds.hpp):
+
+    contact per iteration = (contact_update + contact_begin + contact_assembly) / contact_updates
+    floor                 = element_assembly / element_assemblies + factorization / factorizations
+    ratio                 = contact per iteration / floor                (the goal: ≤ 1.5)
+
+Each deck runs RUNS times per executable, the executables alternating (A B A B ...); the table
+gives medians. With --base, the base executable is run too and the table shows both (before and
+after a change). Every deck runs with TYPE=SURFACE TO SURFACE (-P type=...).
+
+    contact_iteration.py --inpact BUILD/apps/inpact [--base OTHER/inpact] [--runs 5] [--threads 1]
+                         [--decks hertz_2d ...] [--out bench/results/contact_iteration.md]
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DECKS = {
+    "hertz_2d": "decks/contact_verification/hertz_2d.inp",
+    "interference_2d_smoothed": "decks/contact_verification/interference_2d_smoothed.inp",
+    "sphere_3d": "decks/contact_verification/sphere_3d.inp",
+    "spherical_seat_3d_smoothed": "decks/contact_verification/spherical_seat_3d_smoothed.inp",
+    "pin_in_hole": "decks/pin_in_hole.inp",
+}
+# Decks whose contact is a *PARAMETER `type` (the others are surface to surface already, or
+# general contact, which is).
+TYPE_PARAMETER = {"hertz_2d", "interference_2d_smoothed", "sphere_3d", "spherical_seat_3d_smoothed"}
+
+
+def run_once(exe, name, work, threads):
+    timings = os.path.join(work, name + ".timings")
+    cmd = [exe, "run", os.path.join(ROOT, DECKS[name]), "-j", name, "-o", work, "--quiet", "--timings", timings,
+           "--threads", str(threads)]
+    if name in TYPE_PARAMETER:
+        cmd += ["-P", "type=SURFACE TO SURFACE"]
+    rc = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode
+    if rc != 0:
+        sys.exit(f"{' '.join(cmd)}: exit {rc}")
+    t = dict(line.strip().split("=") for line in open(timings))
+    t = {k: float(v) for k, v in t.items()}
+    contact = (t["contact_update_s"] + t["contact_begin_s"] + t["contact_assembly_s"]) / t["contact_updates"]
+    floor = t["element_assembly_s"] / t["element_assemblies"] + t["factorization_s"] / t["factorizations"]
+    return {"contact": contact, "floor": floor, "ratio": contact / floor, "total": t["total_s"],
+            "iterations": int(t["contact_updates"])}
+
+
+def medians(samples):
+    return {k: statistics.median(s[k] for s in samples) for k in samples[0]}
+
+
+def main():
+    cli = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    cli.add_argument("--inpact", required=True)
+    cli.add_argument("--base", help="a second executable (the state before a change)")
+    cli.add_argument("--runs", type=int, default=5)
+    cli.add_argument("--threads", type=int, default=1)
+    cli.add_argument("--decks", nargs="+", default=list(DECKS), choices=list(DECKS))
+    cli.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "contact_iteration.md"))
+    args = cli.parse_args()
+    exes = [("base", args.base)] if args.base else []
+    exes.append(("new", args.inpact))
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for name in args.decks:
+            samples = {key: [] for key, _ in exes}
+            for _ in range(args.runs):
+                for key, exe in exes:
+                    samples[key].append(run_once(exe, name, work, args.threads))
+            m = {key: medians(s) for key, s in samples.items()}
+            rows.append((name, m))
+            print(name, "  ".join(f"{k}: contact {v['contact'] * 1e3:.2f} ms, floor {v['floor'] * 1e3:.2f} ms, "
+                                  f"ratio {v['ratio']:.2f}, run {v['total']:.3f} s" for k, v in m.items()), flush=True)
+    write_table(args, exes, rows)
+    return 0
+
+
+def write_table(args, exes, rows):
+    os.makedirs(os.path.dirname(args.out), exist_ok=True)
+    with open(args.out, "w") as f:
+        f.write("# Contact time per Newton iteration against one element assembly + factorisation\n\n")
+        f.write(f"Medians of {args.runs} runs, --threads {args.threads}; surface to surface on every deck. ")
+        f.write(" ".join(f"{k} = `{e}`." for k, e in exes) + "\n\n")
+        head = "| deck | iterations |" + "".join(f" {k}: contact (ms) | {k}: floor (ms) | {k}: ratio | {k}: run (s) |"
+                                                   for k, _ in exes)
+        f.write(head + "\n|" + "---|" * (head.count("|") - 1) + "\n")
+        for name, m in rows:
+            first = next(iter(m.values()))
+            f.write(f"| {name} | {first['iterations']} |" +
+                    "".join(f" {v['contact'] * 1e3:.2f} | {v['floor'] * 1e3:.2f} | {v['ratio']:.2f} | {v['total']:.3f} |"
+                            for v in m.values()) + "\n")
+    print("wrote", args.out)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
