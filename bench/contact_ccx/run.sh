@@ -14,7 +14,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build}
 source "$root/bench/bench_setup.sh"
 bench_build "$root" "$build" apps/inpact bench/solver_floor
-command -v ccx >/dev/null || { echo "ccx (CalculiX) is not installed: apt-get install calculix-ccx" >&2; exit 2; }
+command -v ccx >/dev/null || bench_need calculix-ccx  # Debian's CalculiX (2.20 on bookworm)
 bench_need_python h5py numpy
 bench_install_needed
 exec /usr/bin/python3 "$root/bench/contact_ccx/ccx_bench.py" --inpact "$build/apps/inpact" \
