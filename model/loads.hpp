@@ -55,15 +55,17 @@ struct CloadBlock {
 struct DloadEntry {
   enum class Kind : std::uint8_t {
     Pressure,  ///< P (2D: on the element's faces given by `face`) / Pn on face n
-    Gravity,   ///< GRAV: magnitude × direction × density
-    BodyForce  ///< BX, BY, BZ: force per unit volume in one direction
+    Gravity,     ///< GRAV: magnitude × direction × density
+    BodyForce,   ///< BX, BY, BZ: force per unit volume in one direction
+    Centrifugal  ///< CENTRIF: density × ω² (the magnitude) × the distance vector from the axis
   };
   Kind kind = Kind::Pressure;
   std::string target;
   std::vector<std::int32_t> elements;  ///< rows
   std::vector<std::uint8_t> faces;     ///< Pressure: face per element (0 = S1)
   double magnitude = 0.0;
-  std::array<double, 3> direction{0, 0, 0};  ///< Gravity; BodyForce (unit axis)
+  std::array<double, 3> direction{0, 0, 0};  ///< Gravity; BodyForce (unit axis); Centrifugal: the rotation axis (unit)
+  std::array<double, 3> point{0, 0, 0};      ///< Centrifugal: a point on the rotation axis
   SourceLoc loc;
 };
 

@@ -141,14 +141,15 @@ void check_amplitude(const model::Model& m, Diagnostics& diags, const std::strin
   if (!name.empty()) check_defined(diags, m.amplitudes, name, loc, keyword, "amplitude");
 }
 
-/// GRAV loads act through the density: every element they load needs a material with *DENSITY
-/// (without one the load would silently be zero).
-void check_gravity_density(const model::Model& m, Diagnostics& diags) {
+/// GRAV and CENTRIF loads act through the density: every element they load needs a material
+/// with *DENSITY (without one the load would silently be zero).
+void check_density_loads(const model::Model& m, Diagnostics& diags) {
   std::vector<const model::Material*> material_of;  // element row → material, built on first need
   for (const auto& step : m.steps)
     for (const auto& b : step.dloads)
       for (const auto& e : b.entries) {
-        if (e.kind != model::DloadEntry::Kind::Gravity) continue;
+        const bool gravity = e.kind == model::DloadEntry::Kind::Gravity;
+        if (!gravity && e.kind != model::DloadEntry::Kind::Centrifugal) continue;
         if (material_of.empty()) {
           material_of.assign(m.mesh.elements.size(), nullptr);
           for (const auto& sec : m.mesh.sections) {
@@ -160,8 +161,8 @@ void check_gravity_density(const model::Model& m, Diagnostics& diags) {
         }
         for (std::int32_t row : e.elements)
           if (const model::Material* mat = material_of[row]; mat && !mat->density) {
-            diags.error(e.loc, "*DLOAD", fmt::format("GRAV needs the density of material '{}' (add *DENSITY to it)",
-                                                     mat->name));
+            diags.error(e.loc, "*DLOAD", fmt::format("{} needs the density of material '{}' (add *DENSITY to it)",
+                                                     gravity ? "GRAV" : "CENTRIF", mat->name));
             break;
           }
       }
@@ -194,7 +195,7 @@ void check_steps(model::Model& m, Diagnostics& diags) {
     for (const auto& b : step.temperatures) check_amplitude(m, diags, b.amplitude, b.loc, "*TEMPERATURE");
     check_contact_changes(m, diags, step);
   }
-  check_gravity_density(m, diags);
+  check_density_loads(m, diags);
 }
 
 }  // namespace

@@ -208,16 +208,56 @@ std::optional<std::uint8_t> pressure_face(KeywordContext& ctx, const Field& labe
   return static_cast<std::uint8_t>(n - 1);
 }
 
+/// Fields f[first..first+2] as a vector into `out`; false (errors given) when one is not a number.
+bool read_vector(KeywordContext& ctx, const std::vector<Field>& f, std::size_t first, const char* what,
+                 std::array<double, 3>& out) {
+  bool ok = true;
+  for (std::size_t i = 0; i < 3; ++i) {
+    auto v = ctx.real(f[first + i], what);
+    if (v) out[i] = *v;
+    else ok = false;
+  }
+  return ok;
+}
+
+/// Scales `v` to unit length; false (an error at `at`) for the zero vector.
+bool normalize(KeywordContext& ctx, const Field& at, const char* what, std::array<double, 3>& v) {
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (length == 0) {
+    ctx.error(at.loc, fmt::format("the {} is the zero vector", what));
+    return false;
+  }
+  for (double& c : v) c /= length;
+  return true;
+}
+
+/// An axisymmetric model can only spin about its symmetry axis, the global y-axis through the
+/// origin (r = x): any other axis would not be axisymmetric.
+bool centrifugal_axis_fits(KeywordContext& ctx, const Field& at, const model::DloadEntry& e,
+                           const std::vector<std::int32_t>& elements) {
+  const auto& el = ctx.mesh().elements;
+  const bool axisymmetric = std::any_of(elements.begin(), elements.end(), [&](std::int32_t row) {
+    return model::element_type(el.type[row]).family == model::ElementFamily::Axisymmetric;
+  });
+  const bool y_axis = e.point[0] == 0.0 && e.point[2] == 0.0 && e.direction[0] == 0.0 && e.direction[2] == 0.0;
+  if (!axisymmetric || y_axis) return true;
+  ctx.error(at.loc, "axisymmetric elements rotate about the symmetry axis: the axis must be the global y-axis "
+                    "(point 0, y, 0 and direction 0, 1, 0)");
+  return false;
+}
+
 // *DLOAD, OP=, AMPLITUDE=: `element|elset, Pn, p` (pressure on face n, positive into the
 // element), `element|elset, GRAV, g, n1, n2, n3` (gravity: g along the direction n, which is
-// normalised; needs *DENSITY), `element|elset, BX|BY|BZ, b` (force per unit volume).
+// normalised; needs *DENSITY), `element|elset, CENTRIF, ω², x0, y0, z0, n1, n2, n3` (the
+// centrifugal force ρ ω² r of a rotation about the axis through x0 along n; needs *DENSITY),
+// `element|elset, BX|BY|BZ, b` (force per unit volume).
 void dload(KeywordContext& ctx) {
   if (!data_or_new(ctx)) return;
   model::DloadBlock b = dload_block(ctx);
   std::vector<Field> f;
   for (const Line& line : ctx.data) {
     split_fields(line, f);
-    if (!ctx.check_count(f, line, 3, 6, "element or element set, load type, magnitude[, direction]")) continue;
+    if (!ctx.check_count(f, line, 3, 9, "element or element set, load type, magnitude[, direction or axis]")) continue;
     auto elements = ctx.elements(f[0]);
     const std::string label = normalize_name(f[1].text);
     auto magnitude = ctx.real(f[2], "magnitude");
@@ -238,28 +278,27 @@ void dload(KeywordContext& ctx) {
       e.faces.assign(elements->size(), *face);
     } else if (label == "GRAV") {
       if (!ctx.check_count(f, line, 6, 6, "element or element set, GRAV, magnitude, direction x, y, z")) continue;
-      double norm2 = 0;
-      bool ok = true;
-      for (int i = 0; i < 3; ++i) {
-        auto v = ctx.real(f[3 + i], "gravity direction");
-        if (!v) ok = false;
-        else e.direction[i] = *v, norm2 += *v * *v;
-      }
-      if (!ok) continue;
-      if (norm2 == 0) {
-        ctx.error(f[3].loc, "the gravity direction is the zero vector");
+      if (!read_vector(ctx, f, 3, "gravity direction", e.direction) || !normalize(ctx, f[3], "gravity direction", e.direction))
         continue;
-      }
-      for (double& c : e.direction) c /= std::sqrt(norm2);
       e.kind = model::DloadEntry::Kind::Gravity;
+    } else if (label == "CENTRIF") {
+      if (!ctx.check_count(f, line, 9, 9,
+                           "element or element set, CENTRIF, omega squared, axis point x, y, z, axis direction x, y, z"))
+        continue;
+      if (!read_vector(ctx, f, 3, "rotation axis point", e.point) ||
+          !read_vector(ctx, f, 6, "rotation axis direction", e.direction) ||
+          !normalize(ctx, f[6], "rotation axis direction", e.direction))
+        continue;
+      if (!centrifugal_axis_fits(ctx, f[6], e, *elements)) continue;
+      e.kind = model::DloadEntry::Kind::Centrifugal;
     } else if (label == "BX" || label == "BY" || label == "BZ") {
       if (!ctx.check_count(f, line, 3, 3, "element or element set, BX|BY|BZ, magnitude")) continue;
       e.kind = model::DloadEntry::Kind::BodyForce;
       e.direction[label[1] - 'X'] = 1.0;
     } else {
-      std::vector<std::string> names{"GRAV", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6"};
+      std::vector<std::string> names{"GRAV", "CENTRIF", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6"};
       const std::string guess = did_you_mean(label, names);
-      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, BX, BY, BZ){}",
+      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, CENTRIF, BX, BY, BZ){}",
                                       f[1].text, guess.empty() ? "" : fmt::format("; did you mean {}?", guess)));
       continue;
     }

@@ -20,6 +20,7 @@ int dload_key(const model::DloadEntry& e, std::size_t i) {
                                                      [](double a, double b) { return std::abs(a) < std::abs(b); }) -
                                     e.direction.begin());
     case model::DloadEntry::Kind::Gravity: return 200;
+    case model::DloadEntry::Kind::Centrifugal: return 300;
   }
   return 0;
 }
@@ -77,8 +78,9 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
       for (std::size_t i = 0; i < e.elements.size(); ++i) {
         const Key key{e.elements[i], dload_key(e, i), b.surface_load};
         double magnitude = e.magnitude;
-        if (e.kind == model::DloadEntry::Kind::Gravity) magnitude *= am.elements[e.elements[i]].density;
-        target_.dload[key] = {magnitude, e.direction, b.amplitude, magnitude};
+        if (e.kind == model::DloadEntry::Kind::Gravity || e.kind == model::DloadEntry::Kind::Centrifugal)
+          magnitude *= am.elements[e.elements[i]].density;
+        target_.dload[key] = {magnitude, e.direction, e.point, b.amplitude, magnitude};
       }
   }
   for (const auto& b : step.temperatures) {
@@ -97,9 +99,16 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
 }
 
 void StepConditions::add_dload_shape(const Key& key) {
-  if (dload_shape_.count(key)) return;
+  if (dload_shape_.count(key) || centrifugal_moments_.count(key)) return;
   const ElementSetup& setup = am_.elements[key.element];
   const auto coords = am_.coords(key.element);
+  if (key.key == 300) {
+    const auto moments = elements::volume_moments(*setup.type, coords, setup.section);
+    const auto nodes = am_.model->mesh.elements.nodes_of(key.element);
+    auto& m = centrifugal_moments_[key];
+    for (std::size_t a = 0; a < nodes.size(); ++a) m.emplace_back(nodes[a], moments[a]);
+    return;
+  }
   std::vector<double> f;
   if (key.key < 100) {
     f = elements::pressure_load(*setup.type, coords, key.key, 1.0, setup.section);
@@ -189,6 +198,11 @@ void StepConditions::external_force(double t, std::span<double> f) const {
     const double v = value_at(prev, target, t);
     if (v == 0.0) return;
     const auto& dir = (target ? target : prev)->direction;
+    if (k.key == 300) {
+      // (a CENTRIF redefined with another axis takes the new axis for the whole step)
+      add_centrifugal_force(k, v, dir, (target ? target : prev)->point, f);
+      return;
+    }
     for (const auto& [d, w] : dload_shape_.at(k)) {
       double scale = v;
       if (k.key == 200) scale *= dir[d % am_.dim];  // gravity: the axis of this DOF
@@ -202,6 +216,19 @@ void StepConditions::external_force(double t, std::span<double> f) const {
     const double period = step_.static_procedure ? step_.static_procedure->time_period : 1.0;
     const double left = 1.0 - std::clamp(t / period, 0.0, 1.0);
     for (std::size_t d = 0; d < f.size(); ++d) f[d] -= left * previous_.released_contact[d];
+  }
+}
+
+/// f_a = ρω² (I − nnᵀ)(∫N_a x dV − x0 ∫N_a dV): the centrifugal force ρω² r, r the distance
+/// vector from the axis, integrated exactly (it is linear in x). On the reference geometry: the
+/// stiffening or softening of the load by the displacement (spin softening) is not included.
+void StepConditions::add_centrifugal_force(const Key& key, double v, const std::array<double, 3>& axis,
+                                           const std::array<double, 3>& point, std::span<double> f) const {
+  for (const auto& [node, m] : centrifugal_moments_.at(key)) {
+    std::array<double, 3> r{};
+    for (int i = 0; i < 3; ++i) r[i] = m.first[i] - point[i] * m.volume;
+    const double along = r[0] * axis[0] + r[1] * axis[1] + r[2] * axis[2];
+    for (int i = 0; i < am_.dim; ++i) f[static_cast<std::int64_t>(node) * am_.dim + i] += v * (r[i] - along * axis[i]);
   }
 }
 

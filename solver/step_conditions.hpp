@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "analysis_model.hpp"
+#include "elements/face_loads.hpp"
 
 namespace inpact::solver {
 
@@ -32,7 +33,8 @@ struct ConditionHistory {
   std::map<std::int64_t, Value> boundary;  ///< key: global DOF
   std::map<std::int64_t, Value> cload;     ///< key: global DOF
   /// Distributed loads by (element row, load key): key = face (0..5) for pressure, 100 + axis
-  /// for body forces, 200 for gravity; the value holds the magnitude (with density for GRAV).
+  /// for body forces, 200 for gravity, 300 for CENTRIF; the value holds the magnitude (with the
+  /// density for GRAV and CENTRIF).
   struct DloadKey {
     std::int32_t element;
     int key;
@@ -41,7 +43,8 @@ struct ConditionHistory {
   };
   struct DloadValue {
     double value = 0.0;
-    std::array<double, 3> direction{0, 0, 0};
+    std::array<double, 3> direction{0, 0, 0};  ///< GRAV's direction, CENTRIF's axis
+    std::array<double, 3> point{0, 0, 0};      ///< CENTRIF: a point on the axis
     std::string amplitude;
     double end_value = 0.0;
   };
@@ -102,6 +105,12 @@ class StepConditions {
   std::vector<double> initial_temperature_;
   /// Global nodal forces of each distributed load at unit magnitude (reference geometry).
   std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int64_t, double>>> dload_shape_;
+  /// CENTRIF's loads per element: each node's volume moments (reference geometry), folded with
+  /// the axis when evaluated (centrifugal_force).
+  std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int32_t, elements::VolumeMoments>>> centrifugal_moments_;
+  /// Adds v × the centrifugal load of the element of `key` about `axis` through `point` to f.
+  void add_centrifugal_force(const ConditionHistory::DloadKey& key, double v, const std::array<double, 3>& axis,
+                             const std::array<double, 3>& point, std::span<double> f) const;
 };
 
 }  // namespace inpact::solver

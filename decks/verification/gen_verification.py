@@ -681,6 +681,76 @@ CANTILEVER_LEVELS = {
 }
 
 
+# --------------------------------------------------------------------------- 9. centrifugal load
+
+SPIN = dict(ri=10.0, ro=20.0, E=210000.0, nu=0.3, rho=7.8e-9, omega2=1.0e6)
+
+
+def spinning_disk_displacement(r):
+    """Radial displacement of a free annular disk spinning at ω in plane stress (Timoshenko &
+    Goodier §32): σ_r = C (a² + b² − a²b²/r² − r²), σ_θ = C (a² + b² + a²b²/r² − (1+3ν)/(3+ν) r²),
+    C = (3+ν)/8 ρω², u_r = r (σ_θ − ν σ_r)/E."""
+    a, b, E, nu = SPIN["ri"], SPIN["ro"], SPIN["E"], SPIN["nu"]
+    C = (3 + nu) / 8 * SPIN["rho"] * SPIN["omega2"]
+    s_r = C * (a * a + b * b - a * a * b * b / (r * r) - r * r)
+    s_t = C * (a * a + b * b + a * a * b * b / (r * r) - (1 + 3 * nu) / (3 + nu) * r * r)
+    return r * (s_t - nu * s_r) / E
+
+
+def spinning_disk(etype, nr, nt):
+    """A free annular disk spinning about its axis (*DLOAD CENTRIF): a quarter in plane stress
+    (CPS, about z) or a thin axisymmetric slice (CAX, about y; half the thickness H = 0.2 above a
+    symmetry plane, so plane stress holds to O((H/r)²))."""
+    ri, ro, E, nu, rho, w2 = (SPIN[k] for k in ("ri", "ro", "E", "nu", "rho", "omega2"))
+    quadratic = "8" in etype
+    eps = 1e-9
+    axisymmetric = etype.startswith("CAX")
+    if axisymmetric:
+        H = 0.1
+        coords, conn = grid_quad(nr, nt, lambda s, t: (ri + (ro - ri) * s, H * t), quadratic)
+    else:
+        coords, conn = grid_quad(nr, nt, lambda s, t: ((ri + (ro - ri) * s) * math.cos(math.pi / 2 * t),
+                                                      (ri + (ro - ri) * s) * math.sin(math.pi / 2 * t)), quadratic)
+    d = Deck(f"Free annular disk spinning at omega^2 = {w2:g} (CENTRIF), {etype} {nr}x{nt}",
+             [f"ri = {ri}, ro = {ro}, E = {E}, nu = {nu}, rho = {rho}",
+              f"plane stress (Timoshenko & Goodier 32): u_r(ri) = {spinning_disk_displacement(ri):.12g}, "
+              f"u_r(ro) = {spinning_disk_displacement(ro):.12g}",
+              "Tolerances in tests/verification/test_centrifugal_load.cpp."])
+    d.nodes(coords, 2)
+    d.elements(etype, "DISK", conn)
+    d.add("*SOLID SECTION, ELSET=DISK, MATERIAL=STEEL", "1.")
+    d.add("*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}", "*DENSITY", f"{rho}")
+    if axisymmetric:
+        d.nset("MID_PLANE", select(coords, lambda x: abs(x[1]) < eps))
+        d.add("*BOUNDARY", "MID_PLANE, 2, 2")
+        axis = "0., 0., 0., 0., 1., 0."
+    else:
+        d.nset("ON_X", select(coords, lambda x: abs(x[1]) < eps))
+        d.nset("ON_Y", select(coords, lambda x: abs(x[0]) < eps))
+        d.add("*BOUNDARY", "ON_X, YSYMM", "ON_Y, XSYMM")
+        axis = "0., 0., 0., 0., 0., 1."
+    d.add("*STEP, NAME=SPIN", "*STATIC", "*DLOAD", f"DISK, CENTRIF, {w2:g}, {axis}", *OUTPUT, "*END STEP")
+    return d
+
+
+def spinning_block():
+    """A unit cube of C3D8 at 1 ≤ x ≤ 2, built in at z = 0, spinning about the z-axis: the
+    built-in face carries the whole centrifugal force, ρω² ∫ (x, y) dV = ρω² (1.5, 0.5) exactly."""
+    rho, w2 = SPIN["rho"], SPIN["omega2"]
+    coords, conn = grid_hex(2, 2, 2, (1.0, 0.0, 0.0), (2.0, 1.0, 1.0), False)
+    d = Deck(f"Unit cube at 1 <= x <= 2 spinning about z (CENTRIF, omega^2 = {w2:g}), built in at z = 0",
+             [f"rho = {rho}: sum of RF = -rho omega^2 (1.5, 0.5, 0) = ({-rho * w2 * 1.5:.12g}, {-rho * w2 * 0.5:.12g}, 0)",
+              "Tolerances in tests/verification/test_centrifugal_load.cpp."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "CUBE", conn)
+    d.nset("BASE", select(coords, lambda x: abs(x[2]) < 1e-9))
+    d.add("*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", "210000., 0.3",
+          "*DENSITY", f"{rho}", "*BOUNDARY", "BASE, ENCASTRE")
+    d.add("*STEP, NAME=SPIN", "*STATIC", "*DLOAD", f"CUBE, CENTRIF, {w2:g}, 0., 0., 0., 0., 0., 1.", *OUTPUT,
+          "*END STEP")
+    return d
+
+
 def committed(out):
     decks = {
         "cantilever_cps8r_l1.inp": cantilever("CPS8R", 8, 2, 1),
@@ -701,6 +771,9 @@ def committed(out):
         "multistep_bar.inp": multistep(),
         "equation_tie.inp": equation_tie(),
         "rigid_mode_abort.inp": rigid_mode(),
+        "spinning_disk_cps8.inp": spinning_disk("CPS8", 8, 8),
+        "spinning_disk_cax8r.inp": spinning_disk("CAX8R", 8, 1),
+        "spinning_block_c3d8.inp": spinning_block(),
     }
     for name, d in decks.items():
         d.write(os.path.join(out, name))

@@ -75,21 +75,25 @@ double face_area(const model::ElementTypeInfo& type, std::span<const Vec3> coord
   return area;
 }
 
-std::vector<double> body_force_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
-                                    const Vec3& b, const SectionData& section) {
+namespace {
+
+/// Calls fn(N, x, dV) at every point of the element's full integration rule, x the point and dV
+/// its volume element (× thickness in 2D, × 2πr for CAX). Loads use the full rule even for
+/// reduced-integration types: the consistent load of a quadratic element needs it (Abaqus does
+/// the same for loads).
+template <class Fn>
+void integrate_volume(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const SectionData& section,
+                      Fn&& fn) {
   const int dim = type.dim, n = type.n_nodes;
-  std::vector<double> f(static_cast<std::size_t>(n) * dim, 0.0);
   const Shape shape = element_shape(type);
-  // Integrate with the full rule of the shape even for reduced-integration types: the
-  // consistent load of a quadratic element needs it (Abaqus does the same for loads).
   model::ElementTypeInfo full = type;
   full.integration = model::Integration::Full;
   for (const QuadraturePoint& q : element_rule(full)) {
     const ShapeValues sv = evaluate_shape(shape, q.xi);
     double J[3][3] = {};
-    double r = 0.0;
+    Vec3 x{0, 0, 0};
     for (int a = 0; a < n; ++a) {
-      r += sv.N[a] * coords[a][0];
+      for (int i = 0; i < 3; ++i) x[i] += sv.N[a] * coords[a][i];
       for (int i = 0; i < dim; ++i)
         for (int j = 0; j < dim; ++j) J[i][j] += coords[a][i] * sv.dN[a][j];
     }
@@ -98,12 +102,36 @@ std::vector<double> body_force_load(const model::ElementTypeInfo& type, std::spa
                                 J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
                                 J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
     double dv = q.weight * det;
-    if (type.family == ElementFamily::Axisymmetric) dv *= 2 * std::numbers::pi * r;
+    if (type.family == ElementFamily::Axisymmetric) dv *= 2 * std::numbers::pi * x[0];
     else if (dim == 2) dv *= section.thickness;
+    fn(sv, x, dv);
+  }
+}
+
+}  // namespace
+
+std::vector<double> body_force_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                                    const Vec3& b, const SectionData& section) {
+  const int dim = type.dim, n = type.n_nodes;
+  std::vector<double> f(static_cast<std::size_t>(n) * dim, 0.0);
+  integrate_volume(type, coords, section, [&](const ShapeValues& sv, const Vec3&, double dv) {
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < dim; ++i) f[static_cast<std::size_t>(a) * dim + i] += sv.N[a] * b[i] * dv;
-  }
+  });
   return f;
+}
+
+std::vector<VolumeMoments> volume_moments(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                                          const SectionData& section) {
+  std::vector<VolumeMoments> m(static_cast<std::size_t>(type.n_nodes));
+  integrate_volume(type, coords, section, [&](const ShapeValues& sv, const Vec3& x, double dv) {
+    for (int a = 0; a < type.n_nodes; ++a) {
+      auto& ma = m[static_cast<std::size_t>(a)];
+      ma.volume += sv.N[a] * dv;
+      for (int i = 0; i < 3; ++i) ma.first[i] += sv.N[a] * x[i] * dv;
+    }
+  });
+  return m;
 }
 
 }  // namespace inpact::solver::elements

@@ -1,6 +1,7 @@
 #pragma once
 /// Consistent nodal forces of element loads: uniform pressure on a face (*DLOAD Pn, *DSLOAD P)
-/// and a body force per unit volume (*DLOAD BX/BY/BZ, BR/BZ for CAX). No Eigen.
+/// and a body force per unit volume (*DLOAD BX/BY/BZ, BR/BZ for CAX; GRAV; CENTRIF through the
+/// nodes' volume moments). No Eigen.
 ///
 /// Pressure follows Abaqus's sign: a positive pressure pushes into the element, against the
 /// outward normal n:  f_a = −∫_face N_a p n dA.  With the face corner order of FaceDef (which
@@ -23,6 +24,17 @@ std::vector<double> pressure_load(const model::ElementTypeInfo& type, std::span<
 /// Nodal forces of a body force b (per unit volume; 2D elements use b[0], b[1]).
 std::vector<double> body_force_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
                                     const Vec3& b, const SectionData& section);
+
+/// ∫ N_a dV and ∫ N_a x dV of one node a: a load linear in the position, such as the
+/// centrifugal force ρω²(I − nnᵀ)(x − x0), is f_a = ρω²(I − nnᵀ)(first − x0 volume), exactly.
+struct VolumeMoments {
+  double volume = 0.0;
+  Vec3 first{0, 0, 0};
+};
+
+/// The moments of every node of the element (full integration rule, as body_force_load).
+std::vector<VolumeMoments> volume_moments(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                                          const SectionData& section);
 
 /// Area of a face (3D) or of an edge times thickness / 2πr (2D): what the pressure acts on.
 double face_area(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int face,
