@@ -55,8 +55,17 @@ void contact_pair(KeywordContext& ctx) {
 
   const std::string type = ctx.choice_value("TYPE");
   if (type == "SURFACETOSURFACE") base.type = model::ContactDiscretization::SurfaceToSurface;
-  else if (type == "MORTAR" || type == "LINMORTAR" || type == "PGLINMORTAR" || type == "MASSLESS")
-    ctx.error_param("TYPE", fmt::format("TYPE={} (CalculiX) is not supported by inpact; use SURFACE TO SURFACE or NODE TO SURFACE", type));
+  else if (type == "MORTAR" || type == "LINMORTAR" || type == "PGLINMORTAR") {
+    // CalculiX's mortar contact (dual or Petrov-Galerkin multipliers) enforces the same weighted
+    // gap as inpact's surface to surface (standard basis): the pressures agree to the
+    // discretisation error, the multiplier fields do not.
+    base.type = model::ContactDiscretization::SurfaceToSurface;
+    ctx.warning(ctx.param_loc("TYPE"), fmt::format("TYPE={} (CalculiX's mortar contact) runs as inpact's SURFACE TO "
+                                                   "SURFACE: the same weighted gap, with standard rather than dual "
+                                                   "multipliers", type));
+  } else if (type == "MASSLESS")
+    ctx.error_param("TYPE", "TYPE=MASSLESS (CalculiX's contact of explicit dynamics) is not supported by inpact; use "
+                            "SURFACE TO SURFACE or NODE TO SURFACE");
   base.small_sliding = ctx.has("SMALL SLIDING");
   base.tied = ctx.has("TIED");
   base.linear = ctx.has("LINEAR");

@@ -39,7 +39,7 @@ void read_variables(KeywordContext& ctx, OutputDomain domain, OutputRequest& r) 
     split_fields(line, f);
     for (const Field& field : f) {
       if (field.empty()) continue;
-      const std::string name = normalize_name(field.text);
+      const std::string name = canonical_output_name(domain, normalize_name(field.text));
       if (!is_output_variable(domain, name)) {
         std::string hint;
         for (OutputDomain other : {OutputDomain::Node, OutputDomain::Element, OutputDomain::Contact})

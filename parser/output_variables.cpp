@@ -40,7 +40,8 @@ constexpr Variable kNode[] = {
 // Element: stresses and their invariants, strains (total, elastic, thermal, plastic, creep,
 // logarithmic, nominal, rates), energies, volumes, state variables, temperature, heat flux,
 // nodal forces (Abaqus); ME, ZZS, ERR, HER, MAXE, MAXS, SMID/SNEG/SPOS, SVF, PHS, EMFE/EMFB,
-// ECD, HFLF, ELKE, EMAS, EBHE, CENT are CalculiX *EL FILE/*EL PRINT keys.
+// ECD, HFLF, ELKE, EMAS, EBHE, CENT are CalculiX *EL FILE/*EL PRINT keys; NOE is CalculiX's
+// "no error estimate" (it switches ZZS/ERR off and asks for nothing).
 constexpr Variable kElement[] = {
     {"S", C::Tensor},     {"SP", C::Vector},    {"MISES", C::None},   {"TRESCA", C::None},  {"PRESS", C::None},
     {"INV3", C::None},    {"TRIAX", C::None},   {"E", C::Tensor},     {"EP", C::Vector},    {"EE", C::Tensor},
@@ -55,7 +56,8 @@ constexpr Variable kElement[] = {
     {"TEMP", C::None},    {"HFL", C::Vector},   {"HFLF", C::None},    {"NFORC", C::None},   {"ZZS", C::None},
     {"ERR", C::None},     {"HER", C::None},     {"MAXE", C::None},    {"MAXS", C::None},    {"SMID", C::None},
     {"SNEG", C::None},    {"SPOS", C::None},    {"SVF", C::None},     {"PHS", C::None},     {"EMFE", C::None},
-    {"EMFB", C::None},    {"ECD", C::None},     {"EMAS", C::None},    {"EBHE", C::None},    {"CENT", C::None}};
+    {"EMFB", C::None},    {"ECD", C::None},     {"EMAS", C::None},    {"EBHE", C::None},    {"CENT", C::None},
+    {"NOE", C::None}};
 
 // Contact: stresses (CSTRESS = CPRESS + CSHEAR1/2), relative displacements (CDISP = COPEN +
 // CSLIP1/2), status, areas and resultant forces/moments and their centres (Abaqus); CDIS,
@@ -103,6 +105,12 @@ bool is_output_variable(OutputDomain domain, std::string_view name) {
   if (base_len == name.size() || base_len == 0) return false;
   auto it = find(name.substr(0, base_len));
   return it != vars.end() && component_ok(it->components, name.substr(base_len));
+}
+
+std::string canonical_output_name(OutputDomain domain, std::string_view name) {
+  const bool calculix_key = name.starts_with("CDIS") || name.starts_with("CSTR");
+  if (domain == OutputDomain::Contact && calculix_key && !is_output_variable(domain, name)) return std::string(name.substr(0, 4));
+  return std::string(name);
 }
 
 std::vector<std::string> output_variable_names(OutputDomain domain) {

@@ -16,6 +16,11 @@ enum class OutputDomain : std::uint8_t { Node, Element, Contact };
 /// S12, SDV4 (history and print requests may ask for single components).
 bool is_output_variable(OutputDomain domain, std::string_view name);
 
+/// The name an output request stores for `name` (upper case): itself, except that CalculiX
+/// reads only the first four letters of its contact keys, so CSTRE is CSTR and CDISP... is
+/// CDIS unless it is an Abaqus name (CSTRESS, CDISP stay as they are).
+std::string canonical_output_name(OutputDomain domain, std::string_view name);
+
 /// Every variable name of a domain (without components), for "did you mean" suggestions.
 std::vector<std::string> output_variable_names(OutputDomain domain);
 

@@ -339,15 +339,27 @@ TEST(ContactKeywordErrors, UnsupportedOptionsSaySo) {
   auto r = dir.read(contact_deck("*SURFACE INTERACTION, NAME=I, USER\n"
                                  "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=SCALE FACTOR\n"
                                  "*FRICTION, ANISOTROPIC\n0.1, 0.2\n"
-                                 "*CONTACT PAIR, INTERACTION=I, TYPE=MORTAR\nTOP, BOTTOM\n"
+                                 "*CONTACT PAIR, INTERACTION=I, TYPE=MASSLESS\nTOP, BOTTOM\n"
                                  "*SURFACE INTERACTION, NAME=J\n*FRICTION\n0.1, , 10.\n0.2, , 20.\n"));
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:31: error: *SURFACE INTERACTION: USER is not supported by inpact yet")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:21:41: error: *SURFACE BEHAVIOR: PRESSURE-OVERCLOSURE=SCALE FACTOR applies to "
                                 "Abaqus/Explicit general contact only"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:22:12: error: *FRICTION: ANISOTROPIC is not supported by inpact yet")) << r.report();
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:36: error: *CONTACT PAIR: TYPE=MORTAR (CalculiX) is not supported")) << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:36: error: *CONTACT PAIR: TYPE=MASSLESS (CalculiX's contact of explicit "
+                                "dynamics) is not supported"))
+      << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:29:1: error: *FRICTION: rate-, pressure- or temperature-dependent friction")) << r.report();
+}
+
+TEST(ContactKeywords, CalculixMortarRunsAsSurfaceToSurfaceWithAWarning) {
+  DeckDir dir;
+  auto r = dir.read(contact_deck("*SURFACE INTERACTION, NAME=I\n*CONTACT PAIR, INTERACTION=I, TYPE=MORTAR\nTOP, BOTTOM\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  EXPECT_EQ(r.model.contact_pairs.at(0).type, model::ContactDiscretization::SurfaceToSurface);
+  EXPECT_TRUE(has_diagnostic(r, "warning: *CONTACT PAIR: TYPE=MORTAR (CalculiX's mortar contact) runs as inpact's "
+                                "SURFACE TO SURFACE"))
+      << r.report();
 }
 
 TEST(ContactKeywordErrors, SubOptionsNeedTheirParent) {

@@ -91,6 +91,19 @@ TEST(Output, PrintAndFileRequests) {
   EXPECT_EQ(out[5].variables, (std::vector<std::string>{"CDIS", "CSTR"}));
 }
 
+// CalculiX reads the first four letters of its contact keys (its beamcontact.inp asks for CSTRE)
+// and takes NOE for "no error estimate"; Abaqus's CSTRESS and CDISP keep their names.
+TEST(Output, CalculixSpellingsOfContactAndErrorKeys) {
+  DeckDir dir;
+  auto r = dir.read(cube_step("*EL FILE\nS, NOE\n*CONTACT FILE\nCDIS, CSTRE\n*OUTPUT, FIELD\n*CONTACT OUTPUT\nCSTRESS, CDISP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& out = r.model.steps[0].output;
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_EQ(out[0].variables, (std::vector<std::string>{"S", "NOE"}));
+  EXPECT_EQ(out[1].variables, (std::vector<std::string>{"CDIS", "CSTR"}));
+  EXPECT_EQ(out[2].variables, (std::vector<std::string>{"CSTRESS", "CDISP"}));
+}
+
 TEST(Output, UnknownVariableSuggestsTheClosestName) {
   DeckDir dir;
   auto r = dir.read(cube_step("*OUTPUT, FIELD\n*CONTACT OUTPUT\nCPRESS, CPRES\n*NODE OUTPUT\nU, S\n*EL PRINT\nMISES, SXX\n"));
