@@ -228,6 +228,16 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
   return completed;
 }
 
+/// What a step keeps of its stabilization (*STATIC, STABILIZE and/or contact stabilization), or null.
+std::unique_ptr<StepStabilization> step_stabilization(const AnalysisModel& am, StepRun& run, std::span<const double> u,
+                                                      double previous_factor, double allsd) {
+  const auto& stabilize = run.step.static_procedure->stabilize;
+  const bool contact_damping = run.contact && run.contact->has_damping();
+  if (!stabilize && !contact_damping) return nullptr;
+  return std::make_unique<StepStabilization>(am, stabilize ? &*stabilize : nullptr, run.step.static_procedure->time_period,
+                                             run.dofs, run.assembler, u, previous_factor, allsd, contact_damping);
+}
+
 }  // namespace
 
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
@@ -264,13 +274,7 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
     for (const auto& v : run.output.not_computed())
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));
-    const auto& stabilize = step.static_procedure->stabilize;
-    const bool contact_damping = run.contact && run.contact->has_damping();
-    if (stabilize || contact_damping)
-      run.stabilization = std::make_unique<StepStabilization>(am, stabilize ? &*stabilize : nullptr,
-                                                              step.static_procedure->time_period, run.dofs,
-                                                              run.assembler, state.u, previous_factor, allsd,
-                                                              contact_damping);
+    run.stabilization = step_stabilization(am, run, state.u, previous_factor, allsd);
     AnalysisOutcome outcome = run_increments(am, run, state, observer);
     output_seconds += run.output_seconds;
     previous_factor = run.stabilization ? run.stabilization->factor() : 0.0;
