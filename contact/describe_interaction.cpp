@@ -91,6 +91,7 @@ std::string describe(const ResolvedInteraction& r) {
   if (r.thickness != 1.0) out += fmt::format("; out-of-plane thickness {:g}", r.thickness);
   out += r.friction ? "; " + describe(*r.friction) : std::string("; frictionless");
   if (r.friction_ramp) out += ramp_text(*r.friction_ramp);
+  if (r.stabilization) out += "; " + describe(*r.stabilization);
   return out;
 }
 

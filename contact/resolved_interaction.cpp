@@ -231,6 +231,7 @@ ResolvedInteraction resolve_row(const model::Model& m, const InteractionTable& t
   resolve_scales(m, entry, cache, r);
   resolve_enforcement(entry, r);
   resolve_limits_and_friction(m, entry, inter, r);
+  r.stabilization = resolve_stabilization(m, table, row, step, r.ke, r.l_char);
   if (r.surface_to_surface) {
     const model::ContactPair* named = entry.general ? nullptr : &deck;
     r.smoothed = !corrections_for(m, deck_surface_name(m, entry.master), named).empty() ||

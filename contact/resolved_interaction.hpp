@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_stabilization.hpp"
 #include "contact/friction.hpp"
 #include "contact/interaction_table.hpp"
 #include "contact/normal_behavior.hpp"
@@ -96,6 +97,8 @@ struct ResolvedInteraction {
   double weight = 1.0;          ///< balanced master-slave or self-contact: ½
   double thickness = 1.0;       ///< out-of-plane thickness of a 2-D interaction
   bool smoothed = false;        ///< geometric correction of either surface
+  /// *CONTACT STABILIZATION or *CONTACT CONTROLS, STABILIZE in force (contact_stabilization.hpp).
+  std::optional<StabilizationRule> stabilization;
 
   /// The friction law at amplitude value a (0: the step start, 1: the new values): `friction`
   /// without a ramp.

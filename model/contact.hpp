@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "source_loc.hpp"
@@ -198,7 +199,31 @@ struct ContactControls {
   /// the first increment, the full stiffness for its final iterations [AX p.781].
   bool user_adaptive_stiffness = false;
   bool reset = false;
+  /// STABILIZE[=factor] (the flag: 1): viscous contact damping of this step only, the pair-wise
+  /// form of *CONTACT STABILIZATION (contact/contact_stabilization.hpp) [IG ctc_contactcontrols_std].
+  std::optional<double> stabilize;
+  std::optional<double> tangent_fraction;        ///< TANGENT FRACTION (default 1 with STABILIZE)
+  std::optional<double> stabilize_coefficient;   ///< data line 1 field 1: the damping coefficient c_d
+  std::optional<double> stabilize_end_factor;    ///< field 2: the ramp's value at the step end (0)
+  std::optional<double> stabilize_range;         ///< field 3: the clearance where damping ends
   SourceLoc loc;
+};
+
+/// *CONTACT STABILIZATION (history data) [K16 *CONTACT STABILIZATION], [IG "Stabilization for
+/// general contact in Abaqus/Standard"]: viscous damping of the relative motion of nearby
+/// surfaces (contact/contact_stabilization.hpp). The parameters apply to the interactions its
+/// data lines name (no data line, or a blank first surface: every interaction).
+struct ContactStabilizationBlock {
+  std::string amplitude;                 ///< AMPLITUDE= (upper case); empty: 1 → 0 linearly over the step
+  std::optional<double> range;           ///< RANGE=: the clearance where damping ends (default l_char)
+  double reduction_per_increment = 0.1;  ///< REDUCTION PER INCREMENT=
+  double scale_factor = 1.0;             ///< SCALE FACTOR=
+  double tangent_fraction = 0.0;         ///< TANGENT FRACTION=
+  bool reset = false;                    ///< RESET: no carry-over from earlier steps
+  /// Data lines: (first, second) surface, upper case; "" first: all; "" second: the first.
+  std::vector<std::pair<std::string, std::string>> surfaces;
+  std::vector<SourceLoc> surface_locs;   ///< per data line: its first and second field
+  SourceLoc loc, amplitude_loc;
 };
 
 }  // namespace inpact::model

@@ -137,6 +137,7 @@ struct Step {
   std::vector<DloadBlock> dloads;
   std::vector<TemperatureBlock> temperatures;
   std::vector<ContactControls> contact_controls;
+  std::vector<ContactStabilizationBlock> contact_stabilizations;  ///< *CONTACT STABILIZATION
   Controls controls;
   std::vector<OutputRequest> output;
   std::vector<ContactPair> contact_pairs;  ///< pairs added in this step (*CONTACT PAIR in a step)

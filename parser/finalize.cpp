@@ -134,6 +134,13 @@ void check_contact(model::Model& m, Diagnostics& diags) {
       check_surface(m, diags, cc.slave, cc.loc, "*CONTACT CONTROLS");
       check_surface(m, diags, cc.master, cc.loc, "*CONTACT CONTROLS");
     }
+  for (const auto& step : m.steps)
+    for (const auto& cs : step.contact_stabilizations)
+      for (std::size_t i = 0; i < cs.surfaces.size(); ++i) {
+        check_surface(m, diags, cs.surfaces[i].first, cs.surface_locs[2 * i], "*CONTACT STABILIZATION");
+        if (cs.surfaces[i].second != cs.surfaces[i].first)
+          check_surface(m, diags, cs.surfaces[i].second, cs.surface_locs[2 * i + 1], "*CONTACT STABILIZATION");
+      }
 }
 
 void check_amplitude(const model::Model& m, Diagnostics& diags, const std::string& name, model::SourceLoc loc,
@@ -177,6 +184,8 @@ void check_contact_changes(const model::Model& m, Diagnostics& diags, const mode
       diags.warning(c.loc, "*CHANGE FRICTION",
                     fmt::format("no *FRICTION follows (nor RESET): the friction of '{}' is not changed", c.interaction));
   }
+  for (const auto& c : step.contact_stabilizations)
+    check_amplitude(m, diags, c.amplitude, c.amplitude_loc, "*CONTACT STABILIZATION");
   for (const auto& c : step.behavior_changes)
     if (!c.behavior)
       diags.warning(c.loc, "*CHANGE SURFACE BEHAVIOR",

@@ -167,6 +167,16 @@ void add_contact_keywords(std::vector<KeywordSpec>& t) {
                DataLines::Optional, contact_controls});
   t.back().numbers_from = 0;
 
+  // History data [K16 *CONTACT STABILIZATION]: data lines name surfaces.
+  t.push_back({"*CONTACT STABILIZATION", kStepScope,
+               {{"AMPLITUDE", VK::Required, VT::Text},
+                {"RANGE", VK::Required, VT::Real},
+                {"REDUCTION PER INCREMENT", VK::Required, VT::Real},
+                {"RESET", VK::None},
+                {"SCALE FACTOR", VK::Required, VT::RealOrChoice, {"USER ADAPTIVE"}},
+                {"TANGENT FRACTION", VK::Required, VT::Real}},
+               DataLines::Optional, contact_stabilization});
+
   // Model data [K16 §3.21]; INPUT= may hold the TABULAR lines.
   t.push_back({"*CLEARANCE", kModelDataScopes,
                {{"MASTER", VK::Required, VT::Text},

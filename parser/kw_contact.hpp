@@ -25,6 +25,11 @@ void contact_pair(KeywordContext& ctx);
 void clearance(KeywordContext& ctx);
 void contact_controls(KeywordContext& ctx);
 
+// kw_contact_stabilization.cpp
+void contact_stabilization(KeywordContext& ctx);
+/// STABILIZE, TANGENT FRACTION and the STABILIZE data line of *CONTACT CONTROLS into `c`.
+void contact_controls_stabilize(KeywordContext& ctx, model::ContactControls& c);
+
 // kw_step_contact.cpp (history data: the step-wise changes of contact)
 void change_friction(KeywordContext& ctx);
 void change_surface_behavior(KeywordContext& ctx);

@@ -180,9 +180,7 @@ void contact_controls(KeywordContext& ctx) {
     ctx.error(ctx.keyword.loc, "SLAVE= and MASTER= (SECONDARY=/MAIN=) go together: give both or neither");
     return;
   }
-  // Contact damping changes the converged answer (it is not ramped off by default).
-  reject_param(ctx, "STABILIZE", "automatic contact stabilization");
-  reject_param(ctx, "TANGENT FRACTION", "it goes with STABILIZE");
+  contact_controls_stabilize(ctx, c);  // kw_contact_stabilization.cpp
   for (std::string_view p : {"PERTURBATION TANGENT SCALE FACTOR", "PRESSURE DEPENDENT PERTURBATION"})
     warn_ignored(ctx, p, "it applies to linear perturbation steps only");
   for (std::string_view p : {"CPSET", "FASTLOCALTRK", "GLOBTRKINC", "SCALE PENALTY", "WARP CHECK PERIOD", "WARP CUT OFF"})
@@ -204,8 +202,9 @@ void contact_controls(KeywordContext& ctx) {
     if (ctx.choice_value("STIFFNESS SCALE FACTOR") == "USERADAPTIVE") {
       c.user_adaptive_stiffness = true;
       // The factor list on its data line is not published (KEYWORDS.md Part D 2).
-      if (!ctx.data.empty())
-        ctx.error(line_start(ctx.data[0]), "explicit factors for STIFFNESS SCALE FACTOR=USER ADAPTIVE are not supported yet");
+      if (ctx.data.size() > (ctx.has("STABILIZE") ? 1u : 0u))
+        ctx.error(line_start(ctx.data[ctx.has("STABILIZE") ? 1 : 0]),
+                  "explicit factors for STIFFNESS SCALE FACTOR=USER ADAPTIVE are not supported yet");
     } else if (auto f = ctx.real_value("STIFFNESS SCALE FACTOR")) {
       if (*f <= 0) ctx.error_param("STIFFNESS SCALE FACTOR", fmt::format("STIFFNESS SCALE FACTOR must be positive, found {}", *f));
       else c.stiffness_scale_factor = *f;

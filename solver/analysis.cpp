@@ -57,7 +57,7 @@ struct StepRun {
   LinearSolvers solvers;  ///< their symbolic analyses last the step
   StepOutput output;
   std::unique_ptr<ContactProblem> contact;  ///< null when no contact pair is in force
-  std::unique_ptr<StepStabilization> stabilization;  ///< *STATIC, STABILIZE, else null
+  std::unique_ptr<StepStabilization> stabilization;  ///< *STATIC, STABILIZE or contact stabilization, else null
   MaterialStates& states;                   ///< the points' material history (the analysis's)
   double output_seconds = 0.0;              ///< wall time in write_output this step
 };
@@ -150,7 +150,9 @@ std::vector<HistoryValue> stabilization_energies(StepRun& run, std::span<const d
                                                  AnalysisObserver& observer) {
   StepStabilization& stab = *run.stabilization;
   const std::vector<double> delta_t = run.conditions.temperature_change(t);
-  observer.status_note(stab.increment_converged(u_start, u, dt, run.assembler, delta_t, run.step.nlgeom));
+  const double contact_dissipated = run.contact ? run.contact->damping_dissipated() : 0.0;
+  observer.status_note(
+      stab.increment_converged(u_start, u, dt, run.assembler, delta_t, run.step.nlgeom, contact_dissipated));
   return {{"ALLSE", stab.allse()}, {"ALLSD", stab.allsd()}};
 }
 
@@ -169,6 +171,9 @@ NewtonOutcome run_attempt(const AnalysisModel& am, StepRun& run, const Increment
                     .at = {run.number, inc.increment(), inc.attempt()},
                     .keep_points = run.output.points_due(inc.increment(), inc.end(), inc.ends_step()),
                     .stabilization = run.stabilization ? run.stabilization->for_attempt(inc.size(), trial.u) : nullptr};
+  if (run.contact && run.contact->has_damping())  // contact stabilization: this attempt's damping
+    run.contact->set_damping(run.conditions, trial.u, inc.end(), inc.size(), inc.increment(),
+                             run.step.static_procedure->time_period);
   int augmentations = 0;
   NewtonOutcome outcome = solve_with_augmentations(ctx, inc.end(), trial, augmentations);
   observer.attempt_finished(status_row(run, inc, outcome, augmentations));
@@ -223,6 +228,16 @@ AnalysisOutcome run_increments(const AnalysisModel& am, StepRun& run, IncrementS
   return completed;
 }
 
+/// What a step keeps of its stabilization (*STATIC, STABILIZE and/or contact stabilization), or null.
+std::unique_ptr<StepStabilization> step_stabilization(const AnalysisModel& am, StepRun& run, std::span<const double> u,
+                                                      double previous_factor, double allsd) {
+  const auto& stabilize = run.step.static_procedure->stabilize;
+  const bool contact_damping = run.contact && run.contact->has_damping();
+  if (!stabilize && !contact_damping) return nullptr;
+  return std::make_unique<StepStabilization>(am, stabilize ? &*stabilize : nullptr, run.step.static_procedure->time_period,
+                                             run.dofs, run.assembler, u, previous_factor, allsd, contact_damping);
+}
+
 }  // namespace
 
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
@@ -259,10 +274,7 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
     for (const auto& v : run.output.not_computed())
       observer.message(fmt::format("step {} ({}): output variable {} is not computed by this version", s + 1,
                                    step.name, v));
-    if (const auto& stabilize = step.static_procedure->stabilize)
-      run.stabilization = std::make_unique<StepStabilization>(am, *stabilize, step.static_procedure->time_period,
-                                                              run.dofs, run.assembler, state.u, previous_factor,
-                                                              allsd);
+    run.stabilization = step_stabilization(am, run, state.u, previous_factor, allsd);
     AnalysisOutcome outcome = run_increments(am, run, state, observer);
     output_seconds += run.output_seconds;
     previous_factor = run.stabilization ? run.stabilization->factor() : 0.0;

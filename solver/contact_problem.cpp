@@ -103,8 +103,15 @@ struct ContactProblem::Pair {
   /// In force in the previous step with another enforcement: its multipliers start from zero
   /// (direct's λ is −p, augmented Lagrange's λ is +p).
   bool new_enforcement = false;
+  /// Contact stabilization of this attempt: k = s c_d/Δt (0: none), and per slave node whether
+  /// it damps at the last update (closed, or open within the rule's range).
+  double damping_stiffness = 0.0;
+  std::vector<char> damped;
 
   bool uses_multipliers() const { return enforcement->uses_multipliers(); }
+  bool damps(std::size_t i, const SlaveState& s) const {
+    return damping_stiffness > 0.0 && kin[i].found && (s.closed || kin[i].projection.gap < resolved->stabilization->range);
+  }
 
   /// The initial contact status (Abaqus's): slave i starts the pair's first increment closed when
   /// it touches or overcloses its master at the start, its gap g0 <= kStartClosedTolerance l_char.
@@ -483,7 +490,8 @@ void ContactProblem::add_couplings(std::size_t pi, std::size_t i, std::vector<st
   const Pair& p = *pairs_[pi];
   // The couplings this node adds: its unknowns (and whether a multiplier joins them).
   signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i),
-                                     p.uses_multipliers() ? 1 : 0, static_cast<std::int64_t>(p.kin[i].lin.nodes.size())});
+                                     p.uses_multipliers() && p.contributes[i] ? 1 : 0,
+                                     static_cast<std::int64_t>(p.kin[i].lin.nodes.size())});
   signature.insert(signature.end(), p.kin[i].lin.nodes.begin(), p.kin[i].lin.nodes.end());
   if (p.friction && p.surface_to_surface && !p.fric[i].force.empty())
     signature.insert(signature.end(), p.kin[i].friction_lin.nodes.begin(), p.kin[i].friction_lin.nodes.end());
@@ -494,7 +502,7 @@ void ContactProblem::set_pattern(std::vector<std::int64_t> signature, Assembler&
   ExtraCouplings extra;
   for (const auto& p : pairs_)
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
-      if (!p->contributes[i]) continue;
+      if (!p->contributes[i] && !p->damped[i]) continue;
       std::vector<std::int64_t> dofs = p->local_dofs(i, am_.dim);
       if (p->multiplier[i] >= 0) extra.multiplier_dofs.push_back(dofs);
       extra.dof_blocks.push_back(std::move(dofs));
@@ -515,6 +523,7 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     auto& slaves = state.pairs[p.row];
     const std::size_t n = p.kin.size();
     p.contributes.assign(n, 0);
+    p.damped.assign(n, 0);
     p.multiplier.assign(n, -1);
     if (p.friction) p.fric.resize(n);
     const contact::StatusLimits limits = status_limits(*p.enforcement, slaves, p.l_char);
@@ -524,14 +533,15 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       update_node(p, i, s, limits, x, it);
       FrictionNodeState* fs = p.friction ? &state.friction[p.row][i] : nullptr;
       if (fs) p.clear_friction(i, *fs);
-      if (!p.contributes[i]) continue;
+      p.damped[i] = p.damps(i, s);
+      if (!p.contributes[i] && !p.damped[i]) continue;
       p.geometry->linearize(x, p.kin[i], p.finite_sliding);
-      if (fs && s.closed && p.friction_found(i)) {
+      if (fs && s.closed && p.friction_found(i) && p.contributes[i]) {
         p.update_friction(i, s, *fs, x);
         ++friction_evaluations_;
       }
       add_couplings(pi, i, signature);
-      if (p.uses_multipliers()) {
+      if (p.uses_multipliers() && p.contributes[i]) {
         p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
         multipliers_.push_back({pi, i});
       }
@@ -546,9 +556,11 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
   std::vector<std::int64_t> dofs;
   std::vector<double> k;
   skew_.clear();
+  damping_dissipated_ = 0.0;
   for (const auto& p : pairs_) {
     const auto& slaves = state.pairs[p->row];
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      if (p->damped[i]) assemble_damping(*p, i, f_int, assembler);
       if (!p->contributes[i]) continue;
       const contact::GapLinearization& lin = p->kin[i].lin;
       const double area = p->kin[i].area;
@@ -650,7 +662,9 @@ const SparseMatrix& ContactProblem::unsymmetric_tangent(const SparseMatrix& a) {
 std::string ContactProblem::untouched_at_start() const {
   std::string out;
   for (const auto& p : pairs_) {
-    if (!p->starting || std::any_of(p->contributes.begin(), p->contributes.end(), [](char c) { return c != 0; }))
+    // (A stabilized pair holds the body by its damping: a smaller increment may well help.)
+    if (!p->starting || p->resolved->stabilization ||
+        std::any_of(p->contributes.begin(), p->contributes.end(), [](char c) { return c != 0; }))
       continue;
     std::size_t nearest = p->kin.size();
     for (std::size_t i = 0; i < p->kin.size(); ++i)
@@ -661,7 +675,8 @@ std::string ContactProblem::untouched_at_start() const {
                ? fmt::format("; the nearest, node {}, is {:.4g} away)", am_.model->mesh.nodes.labels[p->kin[nearest].node],
                              p->gap(nearest))
                : fmt::format("; none faces it)");
-    out += ": a body only this contact holds is free; close the gap (ADJUST, *CLEARANCE) or hold the body until it touches";
+    out += ": a body only this contact holds is free; close the gap (ADJUST, *CLEARANCE), hold the body until it "
+           "touches, or damp its motion with *CONTACT STABILIZATION";
   }
   return out;
 }
@@ -737,6 +752,50 @@ void ContactProblem::friction_results(const Pair& p, std::size_t i, const Fricti
   r.cshear[0] = -(t1[0] * f.tau[0] + t1[1] * f.tau[1] + t1[2] * f.tau[2]);
   r.cshear[1] = -(t2[0] * f.tau[0] + t2[1] * f.tau[1] + t2[2] * f.tau[2]);
   for (int c = 0; c < 3; ++c) r.cfs[c] = -k.area * f.tau[c];
+}
+
+// --- Contact stabilization ---------------------------------------------------------------
+
+bool ContactProblem::has_damping() const {
+  return std::any_of(pairs_.begin(), pairs_.end(), [](const auto& p) { return p->resolved->stabilization.has_value(); });
+}
+
+void ContactProblem::set_damping(const StepConditions& conditions, std::span<const double> u_start, double t, double dt,
+                                 int increment, double period) {
+  damping_u_start_.assign(u_start.begin(), u_start.end());
+  for (auto& p : pairs_) {
+    const auto& rule = p->resolved->stabilization;
+    if (!rule) continue;
+    const double a = rule->amplitude.empty() ? 0.0 : conditions.amplitude_value(rule->amplitude, t);
+    p->damping_stiffness = std::max(0.0, rule->scale_at(t, period, increment, a)) * rule->coefficient / dt;
+  }
+}
+
+void ContactProblem::assemble_damping(const Pair& p, std::size_t i, std::span<double> f_int, Assembler& assembler) {
+  // σ_stab = k s_gap Δu_rel on the node's gap kinematics (contact::damping_contribution); the
+  // tangent's skew part (the tangential rows' s_gap slope) is left out: the scatter is symmetric.
+  const contact::SlaveKinematics& kin = p.kin[i];
+  const contact::StabilizationRule& rule = *p.resolved->stabilization;
+  std::vector<std::int64_t> dofs;
+  for (std::int32_t node : kin.lin.nodes)
+    for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * am_.dim + c);
+  std::vector<double> du(dofs.size());
+  for (std::size_t a = 0; a < dofs.size(); ++a)
+    du[a] = evaluated_u_[dofs[a]] - damping_u_start_[dofs[a]];  // evaluated_u_: the u of this update
+  contact::DampingInput in{.gradient = kin.lin.gradient, .normal = kin.projection.normal, .t1 = kin.projection.t1,
+                           .t2 = kin.projection.t2, .dim = am_.dim, .du = du, .area = kin.area,
+                           .gap = kin.projection.gap, .range = rule.range, .stiffness = p.damping_stiffness,
+                           .tangent_fraction = rule.tangent_fraction};
+  contact::DampingContribution out;
+  contact::damping_contribution(in, out);
+  const std::size_t n = dofs.size();
+  for (std::size_t a = 0; a < n; ++a) {
+    f_int[dofs[a]] += out.force[a];
+    for (std::size_t b = a + 1; b < n; ++b) out.tangent[a * n + b] = out.tangent[b * n + a] =
+        0.5 * (out.tangent[a * n + b] + out.tangent[b * n + a]);
+  }
+  assembler.add_local_matrix(dofs, out.tangent);
+  damping_dissipated_ += out.dissipated;
 }
 
 }  // namespace inpact::solver

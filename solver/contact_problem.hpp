@@ -167,6 +167,17 @@ class ContactProblem {
   /// while the first increment finds its contact status, 1 for its final iterations.
   void set_user_adaptive_scale(double scale);
 
+  /// Contact stabilization (contact/contact_stabilization.hpp): does a pair in force damp?
+  bool has_damping() const;
+  /// The damping of one increment attempt: `u_start` the converged displacements at the
+  /// increment's start (augmentations restart Newton elsewhere, the increment's start stays),
+  /// ending at step time t (the rule's s_ampl there) after dt, the step's increment number
+  /// `increment` (s_incr) of a step of `period`.
+  void set_damping(const StepConditions& conditions, std::span<const double> u_start, double t, double dt,
+                   int increment, double period);
+  /// Σ f_stab·Δu of the last assemble() (at a converged state: the increment's share of ALLSD).
+  double damping_dissipated() const { return damping_dissipated_; }
+
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
@@ -202,6 +213,8 @@ class ContactProblem {
                                   std::span<const std::int64_t> dofs, Assembler& assembler) const;
   void friction_results(const Pair& p, std::size_t i, const FrictionNodeState& f, bool closed,
                         ContactNodeResult& r) const;
+  /// The damping of slave i into f_int and the tangent (its symmetric part).
+  void assemble_damping(const Pair& p, std::size_t i, std::span<double> f_int, Assembler& assembler);
   const AnalysisModel& am_;
   std::size_t n_pairs_total_ = 0;
   std::vector<std::unique_ptr<Pair>> pairs_;
@@ -217,6 +230,8 @@ class ContactProblem {
   std::vector<double> evaluated_u_;  ///< the u of the last evaluate()
   bool evaluated_ = false;
   IterationSeconds seconds_;
+  std::vector<double> damping_u_start_;  ///< set_damping()'s u_start
+  double damping_dissipated_ = 0.0;
 };
 
 }  // namespace inpact::solver

@@ -88,19 +88,20 @@ double factor_from_diagonals(double fraction, const SparseMatrix& tangent, const
   return fraction * 0.5 * time_period * quotient;
 }
 
-StepStabilization::StepStabilization(const AnalysisModel& am, const model::Stabilization& spec, double time_period,
+StepStabilization::StepStabilization(const AnalysisModel& am, const model::Stabilization* spec, double time_period,
                                      const DofMap& dofs, Assembler& assembler, std::span<const double> u,
-                                     double previous_factor, double allsd_before)
-    : dofs_(dofs), spec_(spec), time_period_(time_period), forces_(dofs, {}), allsd_(allsd_before),
-      f_scratch_(am.n_dof()) {
+                                     double previous_factor, double allsd_before, bool contact_damping)
+    : dofs_(dofs), spec_(spec ? *spec : model::Stabilization{}), viscous_(spec != nullptr), contact_(contact_damping),
+      time_period_(time_period), forces_(dofs, {}), allsd_(allsd_before), f_scratch_(am.n_dof()) {
+  if (!viscous_) return;
   // The element volumes: the points' reference volumes, whatever u is.
   AssemblyRequest volumes{.tangent = false, .nlgeom = false, .delta_t = {}, .points = true};
   assembler.assemble(u, volumes, f_scratch_);
   const ElementPoints* points = assembler.points_at(u, {}, false);
   mass_ = points ? unit_density_lumped_mass(am, *points) : std::vector<double>(am.n_dof(), 0.0);
   forces_ = ViscousForces(dofs, mass_);
-  if (spec.damping_factor) factor_ = *spec.damping_factor;
-  else if (spec.continue_previous && previous_factor > 0.0) factor_ = previous_factor;
+  if (spec->damping_factor) factor_ = *spec->damping_factor;
+  else if (spec->continue_previous && previous_factor > 0.0) factor_ = previous_factor;
 }
 
 const ViscousForces* StepStabilization::for_attempt(double dt, std::span<const double> u_start) {
@@ -111,7 +112,7 @@ const ViscousForces* StepStabilization::for_attempt(double dt, std::span<const d
 }
 
 bool StepStabilization::attempt_failed(Assembler& assembler) {
-  if (factor_ > 0.0) return false;
+  if (!viscous_ || factor_ > 0.0) return false;
   factor_ = factor_from_diagonals(spec_.energy_fraction, assembler.tangent(), dofs_, mass_,
                                   time_period_);
   return factor_ > 0.0;
@@ -119,7 +120,7 @@ bool StepStabilization::attempt_failed(Assembler& assembler) {
 
 std::string StepStabilization::increment_converged(std::span<const double> u_start, std::span<const double> u,
                                                    double dt, Assembler& assembler, std::span<const double> delta_t,
-                                                   bool nlgeom) {
+                                                   bool nlgeom, double contact_dissipated) {
   const ElementPoints* points = assembler.points_at(u, delta_t, nlgeom);
   if (!points) {
     AssemblyRequest request{.tangent = false, .nlgeom = nlgeom, .delta_t = delta_t, .points = true};
@@ -130,7 +131,9 @@ std::string StepStabilization::increment_converged(std::span<const double> u_sta
   std::vector<double> du(u.size());
   for (std::size_t d = 0; d < u.size(); ++d) du[d] = u[d] - u_start[d];
   std::string note;
-  if (factor_ > 0.0) {
+  if (!viscous_) {
+    // Contact stabilization only.
+  } else if (factor_ > 0.0) {
     forces_.set(factor_, dt);
     allsd_ += forces_.dissipated(du);
   } else {
@@ -144,16 +147,21 @@ std::string StepStabilization::increment_converged(std::span<const double> u_sta
   // ALLSDTOL (inpact's adaptive scheme, global): lower c when ALLSD passes tol·ALLSE.
   if (spec_.allsdtol && allse_ > 0.0 && allsd_ > *spec_.allsdtol * allse_)
     factor_ *= std::max(0.1, *spec_.allsdtol * allse_ / allsd_);
-  return fmt::format("     STABILIZATION ALLSE={:.6e} ALLSD={:.6e} ALLSD/ALLSE={:.4g} FACTOR={:.4g}{}", allse_, allsd_,
-                     allse_ > 0.0 ? allsd_ / allse_ : 0.0, factor_, note);
+  allsd_ += contact_dissipated;
+  contact_allsd_ += contact_dissipated;
+  std::string line = fmt::format("     STABILIZATION ALLSE={:.6e} ALLSD={:.6e} ALLSD/ALLSE={:.4g}", allse_, allsd_,
+                                 allse_ > 0.0 ? allsd_ / allse_ : 0.0);
+  if (viscous_) line += fmt::format(" FACTOR={:.4g}", factor_);
+  if (contact_) line += fmt::format(" CONTACT ALLSD={:.6e}", contact_allsd_);
+  return line + note;
 }
 
 std::optional<std::string> StepStabilization::end_of_step_warning() const {
   if (!(allsd_ > kAllsdWarningRatio * allse_)) return std::nullopt;
   return fmt::format(
-      "warning: the energy dissipated by automatic stabilization ALLSD = {:.4g} is {:.3g} % of the strain energy "
+      "warning: the energy dissipated by {} stabilization ALLSD = {:.4g} is {:.3g} % of the strain energy "
       "ALLSE = {:.4g} (more than {:.0f} %): the stabilised answer may be wrong",
-      allsd_, allse_ > 0.0 ? 100.0 * allsd_ / allse_ : 0.0, allse_, 100.0 * kAllsdWarningRatio);
+      viscous_ ? (contact_ ? "automatic and contact" : "automatic") : "contact", allsd_, allse_ > 0.0 ? 100.0 * allsd_ / allse_ : 0.0, allse_, 100.0 * kAllsdWarningRatio);
 }
 
 }  // namespace inpact::solver

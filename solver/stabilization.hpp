@@ -12,7 +12,9 @@
 ///
 /// Energies: ALLSE = Σ_points ½ σ·ε dV (the strain energy of linear elasticity, engineering
 /// shears with their Voigt stresses; for NLGEOM or inelastic materials an approximation) and
-/// ALLSD = Σ_increments F_v·Δu = Σ c Δuᵀ M* Δu / Δt, accumulated from the analysis's start.
+/// ALLSD = Σ_increments F_v·Δu = Σ c Δuᵀ M* Δu / Δt, accumulated from the analysis's start, plus
+/// the energy contact stabilization dissipates (Σ f_stab·Δu of its damped slave nodes,
+/// solver/contact_problem.hpp, contact/contact_stabilization.hpp) in steps that have it.
 #include <optional>
 #include <span>
 #include <string>
@@ -62,15 +64,17 @@ double factor_from_diagonals(double fraction, const SparseMatrix& tangent, const
                              std::span<const double> mass, double time_period);
 
 /// What a stabilized step keeps: M*, c (once known), ALLSE and ALLSD. Not movable (its forces
-/// point into its mass).
+/// point into its mass). A step with contact stabilization only has no viscous forces of its own
+/// (no M*, no c) and keeps the energies.
 class StepStabilization {
  public:
   StepStabilization(const StepStabilization&) = delete;
   /// `previous_factor`: the damping factor the previous step ended with (CONTINUE=YES), or 0;
   /// `allsd_before`: ALLSD of the earlier steps (it accumulates over the analysis, as Abaqus's).
-  StepStabilization(const AnalysisModel& am, const model::Stabilization& spec, double time_period,
+  /// `spec` null: no *STATIC, STABILIZE; `contact_damping`: the step has contact stabilization.
+  StepStabilization(const AnalysisModel& am, const model::Stabilization* spec, double time_period,
                     const DofMap& dofs, Assembler& assembler, std::span<const double> u, double previous_factor,
-                    double allsd_before);
+                    double allsd_before, bool contact_damping = false);
 
   /// The forces for an attempt of size dt from u_start, or null while c is unknown (the first increment
   /// is tried without damping, as Abaqus does).
@@ -78,10 +82,11 @@ class StepStabilization {
   /// An attempt failed. While c is unknown it is set from the tangent's diagonal: true (retry
   /// the increment with damping, a rigid-body mode is no reason to stop now).
   bool attempt_failed(Assembler& assembler);
-  /// A converged increment from u_start to u: ALLSE, ALLSD, c after the first. Returns the .sta
-  /// note line.
+  /// A converged increment from u_start to u: ALLSE, ALLSD (with `contact_dissipated`, the
+  /// contact damping's f·Δu of the increment), c after the first. Returns the .sta note line.
   std::string increment_converged(std::span<const double> u_start, std::span<const double> u, double dt,
-                                  Assembler& assembler, std::span<const double> delta_t, bool nlgeom);
+                                  Assembler& assembler, std::span<const double> delta_t, bool nlgeom,
+                                  double contact_dissipated = 0.0);
   /// The step's end: a warning when ALLSD exceeds 5 % of ALLSE, else nothing.
   std::optional<std::string> end_of_step_warning() const;
 
@@ -92,6 +97,9 @@ class StepStabilization {
  private:
   const DofMap& dofs_;
   model::Stabilization spec_;
+  bool viscous_ = true;   ///< *STATIC, STABILIZE (else contact stabilization only)
+  bool contact_ = false;  ///< contact stabilization in this step
+  double contact_allsd_ = 0.0;  ///< its share of ALLSD in this step
   double time_period_;
   std::vector<double> mass_;
   ViscousForces forces_;

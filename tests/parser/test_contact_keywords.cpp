@@ -437,11 +437,56 @@ TEST(ContactKeywordErrors, ContactControlsChecks) {
   DeckDir dir;
   auto r = dir.read(contact_deck(kStep +
                                  "*CONTACT CONTROLS, ABSOLUTE PENETRATION TOLERANCE=1e-4, RELATIVE PENETRATION TOLERANCE=0.01\n"
-                                 "*CONTACT CONTROLS, SLAVE=TOP\n*CONTACT CONTROLS, STABILIZE\n*CONTACT\n" + kEndStep));
+                                 "*CONTACT CONTROLS, SLAVE=TOP\n*CONTACT CONTROLS, STABILIZE=USER ADAPTIVE\n*CONTACT\n" + kEndStep));
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:22:88: error: *CONTACT CONTROLS: ABSOLUTE and RELATIVE PENETRATION TOLERANCE are "
                                 "mutually exclusive"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:1: error: *CONTACT CONTROLS: SLAVE= and MASTER=")) << r.report();
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:20: error: *CONTACT CONTROLS: STABILIZE is not supported by inpact yet")) << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:30: error: *CONTACT CONTROLS: STABILIZE=USER ADAPTIVE (a factor varying over the iterations) "
+                                "is not supported yet")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:25:1: error: *CONTACT: general contact in a step")) << r.report();
+}
+
+// *CONTACT STABILIZATION (parameters, surface lines) and *CONTACT CONTROLS, STABILIZE (factor,
+// TANGENT FRACTION, its data line) as the model keeps them; defaults where nothing is given.
+TEST(ContactKeywords, ContactStabilizationForms) {
+  DeckDir dir;
+  auto r = dir.read(contact_deck("*AMPLITUDE, NAME=A\n0, 1, 1, 0\n" + kStep +
+                                 "*CONTACT STABILIZATION\n"
+                                 "*CONTACT STABILIZATION, AMPLITUDE=A, RANGE=0.2, REDUCTION PER INCREMENT=0.5, "
+                                 "SCALE FACTOR=3, TANGENT FRACTION=0.25\nTOP, BOTTOM\n, \n"
+                                 "*CONTACT STABILIZATION, RESET\n"
+                                 "*CONTACT CONTROLS, SLAVE=TOP, MASTER=BOTTOM, STABILIZE=2, TANGENT FRACTION=0.5\n"
+                                 "0.7, 0.1, 0.3\n"
+                                 "*CONTACT CONTROLS, STABILIZE\n" +
+                                 kEndStep));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& s = r.model.steps.at(0);
+  ASSERT_EQ(s.contact_stabilizations.size(), 3u);
+  const auto& plain = s.contact_stabilizations[0];
+  EXPECT_TRUE(plain.amplitude.empty());
+  EXPECT_FALSE(plain.range);
+  EXPECT_DOUBLE_EQ(plain.reduction_per_increment, 0.1);
+  EXPECT_DOUBLE_EQ(plain.scale_factor, 1.0);
+  EXPECT_DOUBLE_EQ(plain.tangent_fraction, 0.0);
+  EXPECT_TRUE(plain.surfaces.empty());
+  const auto& full = s.contact_stabilizations[1];
+  EXPECT_EQ(full.amplitude, "A");
+  EXPECT_DOUBLE_EQ(*full.range, 0.2);
+  EXPECT_DOUBLE_EQ(full.reduction_per_increment, 0.5);
+  EXPECT_DOUBLE_EQ(full.scale_factor, 3.0);
+  EXPECT_DOUBLE_EQ(full.tangent_fraction, 0.25);
+  ASSERT_EQ(full.surfaces.size(), 2u);
+  EXPECT_EQ(full.surfaces[0], (std::pair<std::string, std::string>{"TOP", "BOTTOM"}));
+  EXPECT_EQ(full.surfaces[1], (std::pair<std::string, std::string>{"", ""}));
+  EXPECT_TRUE(s.contact_stabilizations[2].reset);
+  ASSERT_EQ(s.contact_controls.size(), 2u);
+  const auto& pair = s.contact_controls[0];
+  EXPECT_DOUBLE_EQ(*pair.stabilize, 2.0);
+  EXPECT_DOUBLE_EQ(*pair.tangent_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(*pair.stabilize_coefficient, 0.7);
+  EXPECT_DOUBLE_EQ(*pair.stabilize_end_factor, 0.1);
+  EXPECT_DOUBLE_EQ(*pair.stabilize_range, 0.3);
+  EXPECT_DOUBLE_EQ(*s.contact_controls[1].stabilize, 1.0);
+  EXPECT_FALSE(s.contact_controls[1].tangent_fraction);
 }
