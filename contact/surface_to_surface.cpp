@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "parallel_for.hpp"
+#include "smoothed_gap.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -158,7 +159,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
                    std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
     if (!pt.overlaps) continue;
     const bool warm = pt.corrected_hint.facet == pt.projection.facet;
-    correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
+    pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
     pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
   }
 }
@@ -182,9 +183,9 @@ void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, S
   slave_correction_ = std::move(slave);
 }
 
-void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
+bool SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
                                           const std::array<double, 2>* start) const {
-  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
+  return correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
 }
 
 const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt,
@@ -209,6 +210,7 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
     k.friction_lin = linearize_gap(f, x, x[static_cast<std::size_t>(k.node)], k.projection, dim_, k.node);
   }
   if (!k.found) return;
+  if (smoothed()) return linearize_smoothed(x, k);
   const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
   const auto facets = slave_.facets();
   const std::size_t d = static_cast<std::size_t>(dim_);
@@ -259,6 +261,68 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
       ExpandedTerms terms;
       for (std::size_t m = 0; m < nq; ++m) expand(m, [&](std::size_t s, double f) { terms.add(s, f, m); });
       add_point_hessian(terms, c, q, L);
+    }
+  }
+}
+
+void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKinematics& k) const {
+  // g = Σ_q c_q g_q with c_q = W_q da_q / Σ W da over the points of the node's facets:
+  //   ∂g = Σ_q c_q ∂g_q + Σ_q c_q (g_q − g) ∂(ln da_q).
+  GapLinearization& L = k.lin;
+  const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
+  const auto facets = slave_.facets();
+  const std::size_t d = static_cast<std::size_t>(dim_);
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
+      if (pt.overlaps)
+        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
+  }
+  L.n_dof = static_cast<int>(L.nodes.size() * d);
+  L.gradient.assign(static_cast<std::size_t>(L.n_dof), 0.0);
+  L.hessian.assign(static_cast<std::size_t>(L.n_dof) * static_cast<std::size_t>(L.n_dof), 0.0);
+  // The node's own weighted gap (without the pair's offsets, which update()'s caller adds).
+  double sum_w = 0.0, sum_wg = 0.0;
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    int a = 0;
+    while (sf.nodes[static_cast<std::size_t>(a)] != k.node) ++a;
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
+      if (pt.overlaps) {
+        sum_w += pt.W[static_cast<std::size_t>(a)] * pt.da;
+        sum_wg += pt.W[static_cast<std::size_t>(a)] * pt.da * pt.projection.gap;
+      }
+  }
+  if (!(sum_w > 0.0)) return;
+  const double g_node = sum_wg / sum_w;
+  std::vector<double> grad, dlnda;
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    const auto rule = facet_rule(sf.shape, kRulePoints);
+    int a = 0;
+    while (sf.nodes[static_cast<std::size_t>(a)] != k.node) ++a;
+    std::array<std::size_t, 8> slave_slot{};
+    for (int b = 0; b < sf.n_nodes; ++b) slave_slot[static_cast<std::size_t>(b)] = slot(L.nodes, sf.nodes[static_cast<std::size_t>(b)]);
+    const auto& pts = points_[static_cast<std::size_t>(fi)];
+    for (std::size_t q = 0; q < pts.size(); ++q) {
+      const Point& pt = pts[q];
+      if (!pt.overlaps) continue;
+      const double c = pt.W[static_cast<std::size_t>(a)] * pt.da / sum_w;
+      if (c == 0.0) continue;
+      const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
+      const SmoothedPoint sp{&sf, {rule[q].xi, rule[q].eta}, &mf, &pt.projection, pt.x, pt.master_corrected};
+      smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, grad);
+      area_element_log_gradient(sf, {rule[q].xi, rule[q].eta}, x, dim_, slave_.axisymmetric(), dlnda);
+      const double cw = c * (pt.projection.gap - g_node);
+      const std::size_t ns = sf.n_nodes;
+      for (std::size_t b = 0; b < ns; ++b)
+        for (std::size_t j = 0; j < d; ++j)
+          L.gradient[slave_slot[b] * d + j] += c * grad[b * d + j] + cw * dlnda[b * d + j];
+      for (std::size_t m = 0; m < static_cast<std::size_t>(mf.n_nodes); ++m) {
+        const std::size_t s = slot(L.nodes, mf.nodes[m]);
+        for (std::size_t j = 0; j < d; ++j) L.gradient[s * d + j] += c * grad[(ns + m) * d + j];
+      }
     }
   }
 }
