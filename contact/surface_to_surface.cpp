@@ -28,6 +28,13 @@ std::size_t slot(std::vector<std::int32_t>& nodes, std::int32_t row) {
   return nodes.size() - 1;
 }
 
+/// The position of node row `row` in facet `f` (it must be one of its nodes).
+std::size_t local_node(const Facet& f, std::int32_t row) {
+  std::size_t a = 0;
+  while (f.nodes[a] != row) ++a;
+  return a;
+}
+
 /// A point's unknowns expanded onto the union's nodes: (union slot, factor, point-local unknown).
 struct ExpandedTerms {
   struct Term {
@@ -214,18 +221,7 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
   const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
   const auto facets = slave_.facets();
   const std::size_t d = static_cast<std::size_t>(dim_);
-  // First pass: the nodes involved (the slave facets around the node, their points' master facets).
-  for (std::int32_t fi : slave_.facets_of_node(local)) {
-    const Facet& sf = facets[static_cast<std::size_t>(fi)];
-    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
-    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
-      if (pt.overlaps)
-        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
-  }
-  L.n_dof = static_cast<int>(L.nodes.size() * d);
-  const std::size_t nd = static_cast<std::size_t>(L.n_dof);
-  L.gradient.assign(nd, 0.0);
-  L.hessian.assign(nd * nd, 0.0);
+  gather_nodes(local, L);
   std::vector<std::size_t> map;  // point-local node (0: the point x_q, then master facet nodes) → union slot
   for (std::int32_t fi : slave_.facets_of_node(local)) {
     const Facet& sf = facets[static_cast<std::size_t>(fi)];
@@ -265,6 +261,21 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
   }
 }
 
+void SurfaceToSurfacePair::gather_nodes(std::size_t local, GapLinearization& L) const {
+  // The nodes involved: the slave facets around the node, their points' master facets.
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = slave_.facets()[static_cast<std::size_t>(fi)];
+    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
+      if (pt.overlaps)
+        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
+  }
+  L.n_dof = static_cast<int>(L.nodes.size() * static_cast<std::size_t>(dim_));
+  const std::size_t nd = static_cast<std::size_t>(L.n_dof);
+  L.gradient.assign(nd, 0.0);
+  L.hessian.assign(nd * nd, 0.0);
+}
+
 void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKinematics& k) const {
   // g = Σ_q c_q g_q with c_q = W_q da_q / Σ W da over the points of the node's facets:
   //   ∂g = Σ_q c_q ∂g_q + Σ_q c_q (g_q − g) ∂(ln da_q).
@@ -272,26 +283,16 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
   const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
   const auto facets = slave_.facets();
   const std::size_t d = static_cast<std::size_t>(dim_);
-  for (std::int32_t fi : slave_.facets_of_node(local)) {
-    const Facet& sf = facets[static_cast<std::size_t>(fi)];
-    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
-    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
-      if (pt.overlaps)
-        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
-  }
-  L.n_dof = static_cast<int>(L.nodes.size() * d);
-  L.gradient.assign(static_cast<std::size_t>(L.n_dof), 0.0);
-  L.hessian.assign(static_cast<std::size_t>(L.n_dof) * static_cast<std::size_t>(L.n_dof), 0.0);
+  gather_nodes(local, L);
   // The node's own weighted gap (without the pair's offsets, which update()'s caller adds).
   double sum_w = 0.0, sum_wg = 0.0;
   for (std::int32_t fi : slave_.facets_of_node(local)) {
     const Facet& sf = facets[static_cast<std::size_t>(fi)];
-    int a = 0;
-    while (sf.nodes[static_cast<std::size_t>(a)] != k.node) ++a;
+    const std::size_t a = local_node(sf, k.node);
     for (const Point& pt : points_[static_cast<std::size_t>(fi)])
       if (pt.overlaps) {
-        sum_w += pt.W[static_cast<std::size_t>(a)] * pt.da;
-        sum_wg += pt.W[static_cast<std::size_t>(a)] * pt.da * pt.projection.gap;
+        sum_w += pt.W[a] * pt.da;
+        sum_wg += pt.W[a] * pt.da * pt.projection.gap;
       }
   }
   if (!(sum_w > 0.0)) return;
@@ -300,15 +301,14 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
   for (std::int32_t fi : slave_.facets_of_node(local)) {
     const Facet& sf = facets[static_cast<std::size_t>(fi)];
     const auto rule = facet_rule(sf.shape, kRulePoints);
-    int a = 0;
-    while (sf.nodes[static_cast<std::size_t>(a)] != k.node) ++a;
+    const std::size_t a = local_node(sf, k.node);
     std::array<std::size_t, 8> slave_slot{};
     for (int b = 0; b < sf.n_nodes; ++b) slave_slot[static_cast<std::size_t>(b)] = slot(L.nodes, sf.nodes[static_cast<std::size_t>(b)]);
     const auto& pts = points_[static_cast<std::size_t>(fi)];
     for (std::size_t q = 0; q < pts.size(); ++q) {
       const Point& pt = pts[q];
       if (!pt.overlaps) continue;
-      const double c = pt.W[static_cast<std::size_t>(a)] * pt.da / sum_w;
+      const double c = pt.W[a] * pt.da / sum_w;
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
       const SmoothedPoint sp{&sf, {rule[q].xi, rule[q].eta}, &mf, &pt.projection, pt.x, pt.master_corrected};

@@ -117,6 +117,9 @@ class SurfaceToSurfacePair final : public PairKinematics {
   /// linearize()'s gradient for a smoothed pair: every point's exact gap gradient
   /// (smoothed_gap.hpp) and the change of its weight W da / Σ W da, into k.lin.
   void linearize_smoothed(std::span<const Vec3> x, SlaveKinematics& k) const;
+  /// k.lin's nodes (the slave facets around slave node `local`, their points' master facets), its
+  /// gradient and Hessian zeroed.
+  void gather_nodes(std::size_t local, GapLinearization& L) const;
 };
 
 }  // namespace inpact::contact
