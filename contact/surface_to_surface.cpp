@@ -151,7 +151,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
       g.n = c.normal;
     }
     pt.x = g.x;
-    pt.lin_valid = false;
+    pt.lin_valid = pt.smoothed_valid = false;
     candidates.clear();
     search_.query(g.x, candidates);
     if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
@@ -297,7 +297,6 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
   }
   if (!(sum_w > 0.0)) return;
   const double g_node = sum_wg / sum_w;
-  std::vector<double> grad, dlnda;
   for (std::int32_t fi : slave_.facets_of_node(local)) {
     const Facet& sf = facets[static_cast<std::size_t>(fi)];
     const auto rule = facet_rule(sf.shape, kRulePoints);
@@ -311,9 +310,14 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
       const double c = pt.W[a] * pt.da / sum_w;
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
-      const SmoothedPoint sp{&sf, {rule[q].xi, rule[q].eta}, &mf, &pt.projection, pt.x, pt.master_corrected};
-      smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, grad);
-      area_element_log_gradient(sf, {rule[q].xi, rule[q].eta}, x, dim_, slave_.axisymmetric(), dlnda);
+      if (!pt.smoothed_valid) {  // once per point after an update(), for every node of the facet
+        const SmoothedPoint sp{&sf, {rule[q].xi, rule[q].eta}, &mf, &pt.projection, pt.x, pt.master_corrected};
+        smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, pt.smoothed_gradient);
+        area_element_log_gradient(sf, {rule[q].xi, rule[q].eta}, x, dim_, slave_.axisymmetric(), pt.log_area_gradient);
+        pt.smoothed_valid = true;
+      }
+      const std::vector<double>& grad = pt.smoothed_gradient;
+      const std::vector<double>& dlnda = pt.log_area_gradient;
       const double cw = c * (pt.projection.gap - g_node);
       const std::size_t ns = sf.n_nodes;
       for (std::size_t b = 0; b < ns; ++b)

@@ -102,6 +102,10 @@ class SurfaceToSurfacePair final : public PairKinematics {
     mutable GapLinearization lin;
     mutable bool lin_valid = false;
     mutable bool lin_hessian = false;  ///< lin has the Hessian (else the gradient only)
+    /// Smoothed pairs: the point's exact gap gradient over [slave facet nodes; master facet nodes]
+    /// and ∂(ln da) over the slave facet's nodes, kept for the other nodes of the facet as `lin`.
+    mutable std::vector<double> smoothed_gradient, log_area_gradient;
+    mutable bool smoothed_valid = false;
   };
   /// The point's linearisation; with the Hessian when `hessian`.
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "contact/contact_surface.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact/surface_to_surface.hpp"
 #include "verification/verification_fixture.hpp"
@@ -45,13 +46,13 @@ GradientCheck check_pair(const verification::Run& run, double wobble) {
   }
   std::vector<contact::SlaveKinematics> kin, plus, minus;
   s2s.update(x, kin);
-  // h = 1e-7 of a facet: the differences' error is proportional to h on these decks (0.7–0.9 h/l,
-  // measured from h = 1e-4 to 1e-7: a second derivative that jumps, as where a point crosses a
-  // master facet's edge), 10 times under the bound here.
-  const double h = 1e-7 * s2s.search_radius();
+  // h = 1e-5 of a facet: measured from h = 1e-5 to 1e-7 the differences' error grows as 1/h (the
+  // round-off of the gap over h, 3e-10 … 1.3e-9 of the largest entry at 1e-5).
+  const double h = 1e-5 * s2s.search_radius();
   GradientCheck out;
   for (std::size_t i = 0; i < kin.size(); ++i) {
     if (!kin[i].found || kin[i].projection.gap > 0.0) continue;  // the nodes in contact
+    s2s.update(x, kin);  // (the differences below leave the pair at a perturbed state)
     s2s.linearize(x, kin[i], true);
     const auto& L = kin[i].lin;
     double largest = 0.0;
@@ -84,6 +85,50 @@ TEST_P(SmoothedGapGradient, MatchesCentralDifferencesOfTheGap) {
                 wobble, c.nodes, c.worst);
     EXPECT_GT(c.nodes, 0);
     EXPECT_LT(c.worst, 1e-6) << GetParam() << " wobble " << wobble;
+  }
+}
+
+TEST(CorrectionDerivatives, NodeDerivativesOfThe3DSphereMatchCentralDifferences) {
+  // The ball and socket of the 3D seat (SPHERICAL, Quad4 faces): ∂x̃/∂x_aj and ∂ñ/∂x_aj at an
+  // inner point of every facet, on coordinates turned and stretched by a wobble, against central
+  // differences of correct() (h = 1e-6): within 1e-7 of the largest entry.
+  auto read = parser::read_deck(deck_path("spherical_seat_3d_smoothed.inp"));
+  ASSERT_TRUE(read.ok()) << read.report();
+  const model::Model& m = read.model;
+  const model::ContactPair& pair = m.contact_pairs.at(0);
+  for (const std::string& name : {pair.master, pair.slave}) {
+    const contact::SurfaceCorrections corr = contact::build_corrections(m, name, &pair);
+    const contact::ContactSurface surface = contact::ContactSurface::build(m, m.mesh.surfaces.at(name));
+    std::vector<contact::Vec3> x(m.mesh.nodes.size());
+    for (std::size_t n = 0; n < x.size(); ++n) {
+      const auto& X = m.mesh.nodes.coords[n];
+      x[n] = {X[0] + 1e-3 * std::sin(7.0 * X[1]), X[1] + 1e-3 * std::cos(5.0 * X[2]), X[2] + 1e-3 * std::sin(4.0 * X[0])};
+    }
+    double worst = 0.0;
+    int checked = 0;
+    for (const contact::Facet& f : surface.facets()) {
+      const std::array<double, 2> xi{0.3, -0.2};
+      contact::CorrectionDerivatives d;
+      const contact::CorrectedPoint p = corr.derivatives(f, xi, x, d, false);
+      if (!p.corrected) continue;
+      ++checked;
+      const double h = 1e-6;
+      for (int a = 0; a < f.n_nodes; ++a)
+        for (int j = 0; j < 3; ++j) {
+          auto y = x;
+          y[static_cast<std::size_t>(f.nodes[a])][j] += h;
+          const contact::CorrectedPoint pp = corr.correct(f, xi, y);
+          y[static_cast<std::size_t>(f.nodes[a])][j] -= 2 * h;
+          const contact::CorrectedPoint pm = corr.correct(f, xi, y);
+          for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs((pp.x[c] - pm.x[c]) / (2 * h) - d.x_node[a][j][c]));
+            worst = std::max(worst, std::abs((pp.normal[c] - pm.normal[c]) / (2 * h) - d.n_node[a][j][c]));
+          }
+        }
+    }
+    std::printf("[correction derivatives] %s: %d facets, worst error %.3e\n", name.c_str(), checked, worst);
+    EXPECT_GT(checked, 0);
+    EXPECT_LT(worst, 1e-7) << name;  // the entries are O(1): ∂x̃/∂x ~ N_a, ∂ñ/∂x ~ 1/facet size
   }
 }
 
