@@ -22,10 +22,15 @@
 /// normal, Δs is the tangential increment of the projected point x_m(ξ) − x_anchor(ξ₀), the
 /// slip measured on the master surface. Linearisation and force distribution use
 ///   B = P_T [I; −N_1(ξ) I; …; −N_k(ξ) I]   over the slave and the current facet's nodes,
-/// i.e. the anchor taken as the material point under the slave (exact while the master facet
-/// translates; the terms of its rotation, of N_a(ξ) − N_a(ξ₀) and of ∂N_a/∂ξ are left out of
-/// the tangent). Unlike ∂ξ/∂u, B stays defined at facet edges and vertices, and the master's
-/// share of the force always acts at the contact point (action = reaction).
+/// i.e. the anchor taken as the material point under the slave, to distribute the force: the
+/// master's share always acts at the contact point (action = reaction), and B stays defined at
+/// facet edges and vertices. The tangent is the derivative of that force (checked against
+/// central differences, tests/contact/test_friction_tangent.cpp): ∂(Bᵀτ) = Dᵀ ∂τ + (∂D)ᵀ τ, with
+/// ∂e_tr = P_T ∂Δx + ∂P_T (e₀ + Δx) — the anchor's own −N_a(ξ₀) on its facet, the turn of the
+/// tangent plane with the facet's normal (at fixed ξ and as ξ slides, interior contact) — and
+/// (∂D)ᵀτ = −τ ⊗ N_a,α ∂ξ_α/∂u, the contact point sliding over the master (lin.dxi). Left out:
+/// the turn of a normal that is not the facet's own (edges, vertices, surface to surface's
+/// weighted normal, a smoothed master), and an anchor on another facet than the current one.
 ///
 /// Return mapping (backward Euler, the elastic predictor of the Theory Manual), e₀ the elastic
 /// slip at the start of the increment:
@@ -33,8 +38,9 @@
 ///   stick  k |e_tr| ≤ μ p:  e = e_tr,          τ = k e
 ///   slip   otherwise:       m = e_tr/|e_tr|,   τ = μ p m,   e = (μ p / k) m  (|e| = γ_crit)
 /// τ is the frictional stress the slave exerts on the master (it points along the slip); the
-/// slave carries −τ. Internal forces f = A Bᵀ τ; tangent, at fixed pressure,
-///   stick  A k BᵀB,   slip  A (μ p / |e_tr|) Bᵀ (P_T − m mᵀ) B,
+/// slave carries −τ. Internal forces f = A Bᵀ τ; tangent, at fixed pressure, on a master that
+/// neither moves nor turns
+///   stick  A k BᵀB,   slip  A (μ p / |e_tr|) Bᵀ (P_T − m mᵀ) B   (and the terms above),
 /// plus the pressure coupling A Bᵀ (∂τ/∂p) ⊗ ∂p/∂u with ∂τ/∂p = (μ/γ_crit) e (stick) or μ m
 /// (slip): unsymmetric (the caller adds it; ∂p/∂u depends on the normal enforcement).
 #include <array>
@@ -104,8 +110,10 @@ struct FrictionPoint {
 /// The friction of a slave node at projection `p` on master facet `facet` (with the gap's
 /// linearisation `lin`: its node list, on the same coordinates `x`), anchored at `anchor` on
 /// `anchor_facet`; `e0`: the elastic slip at the start of the increment; `pressure` ≥ 0.
+/// `facet_normal`: the contact normal is the facet's own at ξ (node to surface; surface to surface
+/// turns friction's tangent plane with the weighted normal, whose change the tangent leaves out).
 FrictionPoint friction_point(const FrictionLaw& law, const Facet& facet, const Projection& p,
                              const GapLinearization& lin, const Facet& anchor_facet, const FrictionAnchor& anchor,
-                             const Vec3& e0, double pressure, std::span<const Vec3> x);
+                             const Vec3& e0, double pressure, std::span<const Vec3> x, bool facet_normal = true);
 
 }  // namespace inpact::contact

@@ -382,35 +382,105 @@ CorrectedPoint SurfaceCorrection::correct(const Facet& f, std::array<double, 2> 
   return correct(i, xi, x);
 }
 
+namespace {
+
+/// Broyden's iteration on the ray x̃(ξ) + g ñ(ξ) = x_s for (ξ, g): the Jacobian J (columns ∂/∂ξ_α,
+/// then ∂/∂g; an edge: 2 × 2 on the x–y components, a face 3 × 3) starts from the facet's own
+/// tangents and the normal, [a_α, ñ], and learns the turn of ñ along the surface (g ñ_,ξ) and the
+/// idealised surface's own tangents from the steps taken (rank-one updates): superlinear at
+/// the cost of one correction per iteration. The facet's tangents alone (Gauss–Newton) converge
+/// linearly, at a rate of about the gap over the radius: far from the master, not in 10 steps.
+struct RayIteration {
+  int n = 3;                        ///< unknowns: param_dim + 1
+  double J[3][3] = {};              ///< rows: components (x, y[, z]); columns: ξ_α…, g
+  void start(const FacetGeometry& g, const Vec3& normal, int pd) {
+    n = pd + 1;
+    for (int r = 0; r < n; ++r) {
+      for (int al = 0; al < pd; ++al) J[r][al] = g.a[al][r];
+      J[r][pd] = normal[r];
+    }
+  }
+  /// Δ = J⁻¹ rhs (rhs the negated ray residual); false when J is singular.
+  bool solve(const Vec3& rhs, std::array<double, 3>& out) const {
+    CorrectionDerivatives d;
+    d.param_dim = n - 1;
+    Vec3 last{};
+    for (int r = 0; r < 3; ++r) {
+      for (int al = 0; al < n - 1; ++al) d.x_xi[al][r] = r < n ? J[r][al] : 0.0;
+      last[r] = r < n ? J[r][n - 1] : 0.0;
+    }
+    return ray_jacobian_solve(d, last, 0.0, rhs, out);
+  }
+  /// J += (y − J s) sᵀ / sᵀs for the step s taken and the change y of the residual it made.
+  void update(const std::array<double, 3>& s, const Vec3& y) {
+    double ss = 0.0;
+    for (int c = 0; c < n; ++c) ss += s[c] * s[c];
+    if (!(ss > 0)) return;
+    for (int r = 0; r < n; ++r) {
+      double js = 0.0;
+      for (int c = 0; c < n; ++c) js += J[r][c] * s[c];
+      const double k = (y[r] - js) / ss;
+      for (int c = 0; c < n; ++c) J[r][c] += k * s[c];
+    }
+  }
+};
+
+}  // namespace
+
+bool ray_jacobian_solve(const CorrectionDerivatives& d, const Vec3& normal, double gap, const Vec3& rhs,
+                        std::array<double, 3>& out) {
+  // Columns: ∂(x̃ + g ñ)/∂ξ_α = x̃_,α + g ñ_,α, then ∂/∂g = ñ. An edge (2D): the x–y rows.
+  const int pd = d.param_dim;
+  std::array<Vec3, 3> c{};
+  for (int al = 0; al < pd; ++al) c[al] = axpy(gap, d.n_xi[al], d.x_xi[al]);
+  c[pd] = normal;
+  if (pd == 1) {
+    const double det = c[0][0] * c[1][1] - c[1][0] * c[0][1];
+    if (!(std::abs(det) > 1e-300) || !std::isfinite(det)) return false;
+    out = {(rhs[0] * c[1][1] - c[1][0] * rhs[1]) / det, (c[0][0] * rhs[1] - rhs[0] * c[0][1]) / det, 0.0};
+    return true;
+  }
+  const double det = dot(c[0], cross(c[1], c[2]));
+  if (!(std::abs(det) > 1e-300) || !std::isfinite(det)) return false;
+  out = {dot(rhs, cross(c[1], c[2])) / det, dot(c[0], cross(rhs, c[2])) / det, dot(c[0], cross(c[1], rhs)) / det};
+  return true;
+}
+
 CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x,
                                           const Vec3& xs) const {
   const std::int32_t i = find(f);
   if (i < 0)
     throw std::invalid_argument(fmt::format("SurfaceCorrection::project: the facet is not a face of surface {}", data_.surface));
+  const std::size_t fi = static_cast<std::size_t>(i);
   const int pd = facet_param_dim(f.shape);
   FacetGeometry g;  // the facet's geometry at ξ (f has facets_[i]'s node rows, facet_key)
-  CorrectedPoint p = correct_at(static_cast<std::size_t>(i), xi, x, g);
-  for (int it = 0; it < 10 && p.corrected; ++it) {
-    // Tangential part of x_s − x̃ (relative to ñ), in the facet's parameters.
-    const Vec3 d = sub(xs, p.x);
-    const Vec3 r = axpy(-dot(d, p.normal), p.normal, d);
-    std::array<double, 2> step{0, 0};
-    if (pd == 1) {
-      const double m = dot(g.a[0], g.a[0]);
-      if (!(m > 0)) break;
-      step[0] = dot(g.a[0], r) / m;
-    } else {
-      const double m00 = dot(g.a[0], g.a[0]), m01 = dot(g.a[0], g.a[1]), m11 = dot(g.a[1], g.a[1]);
-      const double det = m00 * m11 - m01 * m01;
-      if (!(det > 0)) break;
-      const double r0 = dot(g.a[0], r), r1 = dot(g.a[1], r);
-      step = {(m11 * r0 - m01 * r1) / det, (m00 * r1 - m01 * r0) / det};
-    }
+  CorrectedPoint p = correct_at(fi, xi, x, g);
+  if (!p.corrected) return p;
+  RayIteration ray;
+  ray.start(g, p.normal, pd);
+  double gap = dot(sub(xs, p.x), p.normal);
+  Vec3 residual = sub(add(p.x, scale(gap, p.normal)), xs);  // F = x̃ + g ñ − x_s
+  bool was_clamped = false;
+  for (int it = 0; it < 10; ++it) {
+    std::array<double, 3> step{};
+    if (!ray.solve(scale(-1.0, residual), step)) break;
     const std::array<double, 2> next = clamp_to_domain(f.shape, {xi[0] + step[0], xi[1] + step[1]});
+    const bool clamped = next[0] != xi[0] + step[0] || (pd == 2 && next[1] != xi[1] + step[1]);
     const double moved = std::hypot(next[0] - xi[0], next[1] - xi[1]);
+    const std::array<double, 3> taken{next[0] - xi[0], pd == 2 ? next[1] - xi[1] : step[1], pd == 2 ? step[2] : 0.0};
     xi = next;
-    p = correct_at(static_cast<std::size_t>(i), xi, x, g);
-    if (moved < 1e-13) break;
+    const CorrectedPoint q = correct_at(fi, xi, x, g);
+    if (!q.corrected) break;
+    p = q;
+    // On the domain's boundary the ray misses the facet (it belongs to a neighbour, or to no
+    // facet): ξ there needs no more than 1e-8.
+    if (moved < 1e-13 || (clamped && was_clamped && moved < 1e-8)) break;
+    was_clamped = clamped;
+    const double next_gap = gap + taken[pd];
+    const Vec3 next_residual = sub(add(p.x, scale(next_gap, p.normal)), xs);
+    ray.update(taken, sub(next_residual, residual));
+    gap = dot(sub(xs, p.x), p.normal);
+    residual = sub(add(p.x, scale(gap, p.normal)), xs);
   }
   return p;
 }
@@ -445,12 +515,12 @@ CorrectedPoint SurfaceCorrections::project(const Facet& f, std::array<double, 2>
   return {g.x, g.n, false};
 }
 
-void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
+bool correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
                         const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start) {
-  if (master.empty() || p.facet < 0) return;
+  if (master.empty() || p.facet < 0) return false;
   std::array<double, 2> xi = start ? *start : p.xi;
   const CorrectedPoint m = master.project(facets[static_cast<std::size_t>(p.facet)], xi, x, xs);
-  if (!m.corrected) return;
+  if (!m.corrected) return false;
   p.xi = xi;
   p.x_master = m.x;
   p.normal = m.normal;
@@ -458,6 +528,7 @@ void correct_projection(const SurfaceCorrections& master, std::span<const Facet>
   p.gap = dot(d, m.normal);
   p.distance = norm(d);
   tangent_basis(p.normal, dim, p.t1, p.t2);
+  return true;
 }
 
 std::vector<const model::GeometricCorrection*> corrections_for(const model::Model& m, std::string_view surface,

@@ -103,6 +103,22 @@ struct CorrectedPoint {
   bool corrected = false; ///< false: no correction applies here; x and normal are the facet's own
 };
 
+/// Derivatives of the idealised point x̃ and normal ñ at ξ of one facet (what the gap's
+/// linearisation and the ray's Newton iteration need).
+///   x_node[a][j], n_node[a][j]: ∂x̃/∂x_aj and ∂ñ/∂x_aj at fixed ξ, for facet node a (facet order)
+///     and component j: through the facet point (N_a e_j) and the facet's rotation Q (its frame
+///     (t1, t2, n) moves with the tangents a_α, ∂a_α/∂x_aj = N_a,α e_j); exact.
+///   x_xi[α], n_xi[α]: ∂x̃/∂ξ_α and ∂ñ/∂ξ_α, central differences in ξ with step kCorrectionXiStep
+///     (the reference offset d(ξ) and normal ñ(ξ) vary with ξ too; error ~1e-10 of a facet size).
+struct CorrectionDerivatives {
+  int n_nodes = 0;
+  int param_dim = 1;
+  std::array<std::array<Vec3, 3>, 8> x_node{}, n_node{};
+  std::array<Vec3, 2> x_xi{}, n_xi{};
+};
+/// The step of the central differences in ξ of CorrectionDerivatives (the domain is O(1)).
+inline constexpr double kCorrectionXiStep = 1e-5;
+
 /// One geometric-correction data line applied to the facets of its surface.
 class SurfaceCorrection {
  public:
@@ -121,12 +137,15 @@ class SurfaceCorrection {
   /// The same for this correction's own facet number `facet`.
   CorrectedPoint correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x) const;
   /// The point of the idealised surface over facet `f` whose normal passes through `xs`: `xi`,
-  /// on entry a start (the closest point of the faceted surface), is refined by Gauss–Newton on
-  /// x_s − x̃(ξ) ∥ ñ(ξ) (steps from the facet's tangents, at most 10), kept inside the facet's
-  /// domain, and returned. On a circle this puts x̃ on the ray from the centre through x_s, so the
+  /// on entry a start (the closest point of the faceted surface), is refined by Newton on
+  /// x̃(ξ) + g ñ(ξ) = x_s for (ξ, g) (the Jacobian from CorrectionDerivatives' ξ derivatives, at
+  /// most 10 iterations), kept inside the facet's domain, and returned. On a circle this puts x̃ on the ray from the centre through x_s, so the
   /// gap (x_s − x̃)·ñ is the difference of radii; at the faceted closest point it would be off by
   /// about half the square of the angle between the two rays.
   CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs) const;
+  /// correct(f, xi, x) with its derivatives in `d` (the ξ derivatives only when `with_xi`).
+  CorrectedPoint derivatives(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
+                             CorrectionDerivatives& d, bool with_xi = true) const;
   /// The idealised radius of surface node row `row` (−1 when it is not on the surface).
   double nodal_radius(std::int32_t row) const;
 
@@ -163,6 +182,11 @@ class SurfaceCorrection {
   bool reference_ideal(std::size_t i, const ShapeEval& sh, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
   /// correct(facet, xi, x), with the facet's current geometry at ξ in `gx`.
   CorrectedPoint correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x, FacetGeometry& gx) const;
+  /// correct_at() with the node derivatives of CorrectionDerivatives (correction_derivatives.cpp).
+  CorrectedPoint node_derivatives(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
+                                  CorrectionDerivatives& d) const;
+  /// The ξ derivatives of CorrectionDerivatives by central differences around ξ.
+  void xi_derivatives(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x, CorrectionDerivatives& d) const;
 
   model::GeometricCorrection data_;
   Mode mode_ = Mode::Axis;
@@ -198,6 +222,10 @@ class SurfaceCorrections {
   /// SurfaceCorrection::project() with the correction that applies to `f`; where none does, the
   /// facet's own point and normal at `xi` (unchanged).
   CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs) const;
+  /// SurfaceCorrection::derivatives() with the correction that applies to `f`; where none does,
+  /// the facet's own point, normal and their derivatives.
+  CorrectedPoint derivatives(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
+                             CorrectionDerivatives& d, bool with_xi = true) const;
 
  private:
   std::vector<SurfaceCorrection> list_;
@@ -208,8 +236,15 @@ class SurfaceCorrections {
 /// idealised point, normal and tangents, gap = (xs − x̃_m)·ñ. Unchanged where no correction
 /// applies. `dim`: 2 or 3 (the tangent basis). Both discretisations measure this way.
 /// `start`: where the refinement of ξ starts instead of p.xi (the corrected ξ of the last update).
-void correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
+/// Returns whether it was corrected.
+bool correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
                         const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start = nullptr);
+
+/// Solves J (Δξ, Δg) = rhs for the ray x̃(ξ) + g ñ(ξ) through a point, J its Jacobian at gap g
+/// from `d`'s ξ derivatives (columns x̃_,α + g ñ_,α and ñ; an edge: the x–y rows). out = (Δξ…, Δg);
+/// false when J is singular.
+bool ray_jacobian_solve(const CorrectionDerivatives& d, const Vec3& normal, double gap, const Vec3& rhs,
+                        std::array<double, 3>& out);
 
 /// The geometric-correction data lines that apply to the contact surface `surface` (a surface
 /// of `m`; empty: general contact's all-inclusive exterior surface, to which every assignment

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "parallel_for.hpp"
+#include "smoothed_gap.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -25,6 +26,13 @@ std::size_t slot(std::vector<std::int32_t>& nodes, std::int32_t row) {
     if (nodes[i] == row) return i;
   nodes.push_back(row);
   return nodes.size() - 1;
+}
+
+/// The position of node row `row` in facet `f` (it must be one of its nodes).
+std::size_t local_node(const Facet& f, std::int32_t row) {
+  std::size_t a = 0;
+  while (f.nodes[a] != row) ++a;
+  return a;
 }
 
 /// A point's unknowns expanded onto the union's nodes: (union slot, factor, point-local unknown).
@@ -143,7 +151,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
       g.n = c.normal;
     }
     pt.x = g.x;
-    pt.lin_valid = false;
+    pt.lin_valid = pt.smoothed_valid = false;
     candidates.clear();
     search_.query(g.x, candidates);
     if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
@@ -158,7 +166,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
                    std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
     if (!pt.overlaps) continue;
     const bool warm = pt.corrected_hint.facet == pt.projection.facet;
-    correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
+    pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
     pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
   }
 }
@@ -182,9 +190,9 @@ void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, S
   slave_correction_ = std::move(slave);
 }
 
-void SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
+bool SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
                                           const std::array<double, 2>* start) const {
-  correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
+  return correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
 }
 
 const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt,
@@ -209,21 +217,11 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
     k.friction_lin = linearize_gap(f, x, x[static_cast<std::size_t>(k.node)], k.projection, dim_, k.node);
   }
   if (!k.found) return;
+  if (smoothed()) return linearize_smoothed(x, k);
   const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
   const auto facets = slave_.facets();
   const std::size_t d = static_cast<std::size_t>(dim_);
-  // First pass: the nodes involved (the slave facets around the node, their points' master facets).
-  for (std::int32_t fi : slave_.facets_of_node(local)) {
-    const Facet& sf = facets[static_cast<std::size_t>(fi)];
-    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
-    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
-      if (pt.overlaps)
-        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
-  }
-  L.n_dof = static_cast<int>(L.nodes.size() * d);
-  const std::size_t nd = static_cast<std::size_t>(L.n_dof);
-  L.gradient.assign(nd, 0.0);
-  L.hessian.assign(nd * nd, 0.0);
+  gather_nodes(local, L);
   std::vector<std::size_t> map;  // point-local node (0: the point x_q, then master facet nodes) → union slot
   for (std::int32_t fi : slave_.facets_of_node(local)) {
     const Facet& sf = facets[static_cast<std::size_t>(fi)];
@@ -259,6 +257,76 @@ void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k
       ExpandedTerms terms;
       for (std::size_t m = 0; m < nq; ++m) expand(m, [&](std::size_t s, double f) { terms.add(s, f, m); });
       add_point_hessian(terms, c, q, L);
+    }
+  }
+}
+
+void SurfaceToSurfacePair::gather_nodes(std::size_t local, GapLinearization& L) const {
+  // The nodes involved: the slave facets around the node, their points' master facets.
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = slave_.facets()[static_cast<std::size_t>(fi)];
+    for (std::int32_t r : sf.node_rows()) slot(L.nodes, r);
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
+      if (pt.overlaps)
+        for (std::int32_t r : master_.facets()[static_cast<std::size_t>(pt.projection.facet)].node_rows()) slot(L.nodes, r);
+  }
+  L.n_dof = static_cast<int>(L.nodes.size() * static_cast<std::size_t>(dim_));
+  const std::size_t nd = static_cast<std::size_t>(L.n_dof);
+  L.gradient.assign(nd, 0.0);
+  L.hessian.assign(nd * nd, 0.0);
+}
+
+void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKinematics& k) const {
+  // g = Σ_q c_q g_q with c_q = W_q da_q / Σ W da over the points of the node's facets:
+  //   ∂g = Σ_q c_q ∂g_q + Σ_q c_q (g_q − g) ∂(ln da_q).
+  GapLinearization& L = k.lin;
+  const auto local = static_cast<std::size_t>(slave_.local_index(k.node));
+  const auto facets = slave_.facets();
+  const std::size_t d = static_cast<std::size_t>(dim_);
+  gather_nodes(local, L);
+  // The node's own weighted gap (without the pair's offsets, which update()'s caller adds).
+  double sum_w = 0.0, sum_wg = 0.0;
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    const std::size_t a = local_node(sf, k.node);
+    for (const Point& pt : points_[static_cast<std::size_t>(fi)])
+      if (pt.overlaps) {
+        sum_w += pt.W[a] * pt.da;
+        sum_wg += pt.W[a] * pt.da * pt.projection.gap;
+      }
+  }
+  if (!(sum_w > 0.0)) return;
+  const double g_node = sum_wg / sum_w;
+  for (std::int32_t fi : slave_.facets_of_node(local)) {
+    const Facet& sf = facets[static_cast<std::size_t>(fi)];
+    const auto rule = facet_rule(sf.shape, kRulePoints);
+    const std::size_t a = local_node(sf, k.node);
+    std::array<std::size_t, 8> slave_slot{};
+    for (int b = 0; b < sf.n_nodes; ++b) slave_slot[static_cast<std::size_t>(b)] = slot(L.nodes, sf.nodes[static_cast<std::size_t>(b)]);
+    const auto& pts = points_[static_cast<std::size_t>(fi)];
+    for (std::size_t q = 0; q < pts.size(); ++q) {
+      const Point& pt = pts[q];
+      if (!pt.overlaps) continue;
+      const double c = pt.W[a] * pt.da / sum_w;
+      if (c == 0.0) continue;
+      const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
+      if (!pt.smoothed_valid) {  // once per point after an update(), for every node of the facet
+        const SmoothedPoint sp{&sf, {rule[q].xi, rule[q].eta}, &mf, &pt.projection, pt.x, pt.master_corrected};
+        smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, pt.smoothed_gradient);
+        area_element_log_gradient(sf, {rule[q].xi, rule[q].eta}, x, dim_, slave_.axisymmetric(), pt.log_area_gradient);
+        pt.smoothed_valid = true;
+      }
+      const std::vector<double>& grad = pt.smoothed_gradient;
+      const std::vector<double>& dlnda = pt.log_area_gradient;
+      const double cw = c * (pt.projection.gap - g_node);
+      const std::size_t ns = sf.n_nodes;
+      for (std::size_t b = 0; b < ns; ++b)
+        for (std::size_t j = 0; j < d; ++j)
+          L.gradient[slave_slot[b] * d + j] += c * grad[b * d + j] + cw * dlnda[b * d + j];
+      for (std::size_t m = 0; m < static_cast<std::size_t>(mf.n_nodes); ++m) {
+        const std::size_t s = slot(L.nodes, mf.nodes[m]);
+        for (std::size_t j = 0; j < d; ++j) L.gradient[s * d + j] += c * grad[(ns + m) * d + j];
+      }
     }
   }
 }

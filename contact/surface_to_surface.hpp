@@ -47,7 +47,10 @@
 /// is then refined onto the master's idealised surface along the idealised normal
 /// (SurfaceCorrections::project), giving x̃_m, ñ and g_q = (x̃_q − x̃_m)·ñ. The gradient keeps
 /// the form [ñ; −N ñ] (the corrections' own derivatives are left out, and so is the Hessian):
-/// the answer is the corrected one, Newton converges linearly rather than quadratically.
+/// the answer is the corrected one. The gradient of a smoothed pair's gap is exact
+/// (contact/smoothed_gap.hpp: the corrections' rotation with their facets, the slide of the
+/// ray's point over the master, the change of each point's weight W da / Σ W da); its Hessian is
+/// left out (the geometric stiffness A c ∇²g, of the order of the pressure over the facet size).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -92,12 +95,17 @@ class SurfaceToSurfacePair final : public PairKinematics {
     ProjectionHint hint;  ///< the faceted projection's facet and ξ when inside it: the next start
     ProjectionHint corrected_hint;  ///< the corrected projection's facet and ξ: the next correction's start
     bool overlaps = false;
+    bool master_corrected = false;  ///< the projection was moved onto the master's idealised surface
     /// The point's gap linearised against its master facet: computed by the first linearize()
     /// of a slave node that needs it after an update(), and kept for the other nodes of the
     /// facet (linearize() runs on one thread, on the coordinates of the last update()).
     mutable GapLinearization lin;
     mutable bool lin_valid = false;
     mutable bool lin_hessian = false;  ///< lin has the Hessian (else the gradient only)
+    /// Smoothed pairs: the point's exact gap gradient over [slave facet nodes; master facet nodes]
+    /// and ∂(ln da) over the slave facet's nodes, kept for the other nodes of the facet as `lin`.
+    mutable std::vector<double> smoothed_gradient, log_area_gradient;
+    mutable bool smoothed_valid = false;
   };
   /// The point's linearisation; with the Hessian when `hessian`.
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
@@ -107,9 +115,15 @@ class SurfaceToSurfacePair final : public PairKinematics {
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   SurfaceCorrections master_correction_, slave_correction_;
-  /// Moves p onto the master's idealised surface for the slave point xs (when corrected).
-  void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
+  /// Moves p onto the master's idealised surface for the slave point xs; whether it was corrected.
+  bool correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
                       const std::array<double, 2>* start = nullptr) const;
+  /// linearize()'s gradient for a smoothed pair: every point's exact gap gradient
+  /// (smoothed_gap.hpp) and the change of its weight W da / Σ W da, into k.lin.
+  void linearize_smoothed(std::span<const Vec3> x, SlaveKinematics& k) const;
+  /// k.lin's nodes (the slave facets around slave node `local`, their points' master facets), its
+  /// gradient and Hessian zeroed.
+  void gather_nodes(std::size_t local, GapLinearization& L) const;
 };
 
 }  // namespace inpact::contact

@@ -183,7 +183,7 @@ struct ContactProblem::Pair {
     contact::FrictionAnchor anchor{f.anchor_facet, f.anchor_xi};
     fric[i] = contact::friction_point(*friction, facets[static_cast<std::size_t>(pr.facet)], pr, friction_lin(i),
                                       facets[static_cast<std::size_t>(f.anchor_facet)], anchor, f.e0,
-                                      node_pressure(i, s), x);
+                                      node_pressure(i, s), x, !surface_to_surface && !resolved->smoothed);
     const contact::FrictionPoint& fp = fric[i];
     f.active = true;
     f.slipping = fp.slipping;

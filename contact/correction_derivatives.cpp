@@ -1,0 +1,142 @@
+// Derivatives of the geometric correction's idealised point and normal (geometric_correction.hpp,
+// CorrectionDerivatives): what the smoothed gap's linearisation and the ray's Newton iteration use.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "geometric_correction.hpp"
+#include "vec3.hpp"
+
+namespace inpact::contact {
+
+namespace {
+
+/// The orthonormal frame (t1, t2, n) of a facet point, as geometric_correction.cpp builds it.
+bool frame_of(const FacetGeometry& g, std::array<Vec3, 3>& q) {
+  const double l1 = norm(g.a[0]);
+  if (!(l1 > 0) || !(norm(g.n) > 0)) return false;
+  q[0] = scale(1.0 / l1, g.a[0]);
+  q[2] = g.n;
+  q[1] = cross(q[2], q[0]);
+  return true;
+}
+
+/// ∂(t1, t2, n) of frame q at geometry g when the tangents move by da = (∂a_1, ∂a_2): t1 = a_1/|a_1|,
+/// n = (a_2 × a_1)/|a_2 × a_1| (an edge: a_1 turned clockwise), t2 = n × t1.
+std::array<Vec3, 3> frame_change(const FacetGeometry& g, const std::array<Vec3, 3>& q, int pd,
+                                 const std::array<Vec3, 2>& da) {
+  std::array<Vec3, 3> dq;
+  const double l1 = norm(g.a[0]);
+  dq[0] = scale(1.0 / l1, axpy(-dot(q[0], da[0]), q[0], da[0]));
+  if (pd == 1) {
+    dq[2] = {dq[0][1], -dq[0][0], 0.0};
+  } else {
+    const Vec3 dc = add(cross(da[1], g.a[0]), cross(g.a[1], da[0]));
+    dq[2] = scale(1.0 / g.jacobian, axpy(-dot(q[2], dc), q[2], dc));
+  }
+  dq[1] = add(cross(dq[2], q[0]), cross(q[2], dq[0]));
+  return dq;
+}
+
+/// Σ_i (v·from_i) dq_i: the change of the rotated vector Q v when the current frame moves by dq.
+Vec3 rotated_change(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& dq, const Vec3& v) {
+  Vec3 out{0, 0, 0};
+  for (int i = 0; i < 3; ++i) out = axpy(dot(v, from[i]), dq[i], out);
+  return out;
+}
+
+/// The facet's own point and normal with their node derivatives (no correction: x̃ = x_f, ñ = n).
+void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, CorrectionDerivatives& d) {
+  std::array<Vec3, 3> q{};
+  const bool framed = frame_of(g, q);
+  for (int a = 0; a < sh.n; ++a)
+    for (int j = 0; j < 3; ++j) {
+      d.x_node[a][j] = {0, 0, 0};
+      d.x_node[a][j][j] = sh.N[a];
+      d.n_node[a][j] = {0, 0, 0};
+      if (!framed) continue;
+      std::array<Vec3, 2> da{};
+      da[0][j] = sh.dN[a][0];
+      da[1][j] = sh.dN[a][1];
+      d.n_node[a][j] = frame_change(g, q, pd, da)[2];
+    }
+}
+
+}  // namespace
+
+CorrectedPoint SurfaceCorrection::node_derivatives(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
+                                                   CorrectionDerivatives& d) const {
+  const Facet& f = facets_[i];
+  const ShapeEval sh = eval_shape(f.shape, xi[0], xi[1]);
+  const int pd = facet_param_dim(f.shape);
+  d.n_nodes = f.n_nodes;
+  d.param_dim = pd;
+  FacetGeometry gx;
+  const CorrectedPoint p = correct_at(i, xi, x, gx);
+  facet_node_derivatives(gx, sh, pd, d);
+  if (!p.corrected || mode_ == Mode::Identity) return p;
+  Vec3 off, nref;
+  FacetGeometry gX;
+  std::array<Vec3, 3> qX, qx;
+  if (!reference_ideal(i, sh, off, nref, gX) || !frame_of(gX, qX) || !frame_of(gx, qx)) return p;
+  // x̃ = x_f + Q d, ñ = unit(Q ñ_ref): Q moves with the current frame.
+  for (int a = 0; a < sh.n; ++a)
+    for (int j = 0; j < 3; ++j) {
+      std::array<Vec3, 2> da{};
+      da[0][j] = sh.dN[a][0];
+      da[1][j] = sh.dN[a][1];
+      const std::array<Vec3, 3> dq = frame_change(gx, qx, pd, da);
+      d.x_node[a][j] = add(d.x_node[a][j], rotated_change(qX, dq, off));
+      const Vec3 dn = rotated_change(qX, dq, nref);
+      d.n_node[a][j] = axpy(-dot(p.normal, dn), p.normal, dn);
+    }
+  return p;
+}
+
+void SurfaceCorrection::xi_derivatives(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
+                                       CorrectionDerivatives& d) const {
+  const int pd = facet_param_dim(facets_[i].shape);
+  for (int al = 0; al < pd; ++al) {
+    std::array<double, 2> lo = xi, hi = xi;
+    lo[al] -= kCorrectionXiStep;
+    hi[al] += kCorrectionXiStep;
+    FacetGeometry g;
+    const CorrectedPoint pl = correct_at(i, lo, x, g), ph = correct_at(i, hi, x, g);
+    d.x_xi[al] = scale(0.5 / kCorrectionXiStep, sub(ph.x, pl.x));
+    d.n_xi[al] = scale(0.5 / kCorrectionXiStep, sub(ph.normal, pl.normal));
+  }
+}
+
+CorrectedPoint SurfaceCorrection::derivatives(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
+                                              CorrectionDerivatives& d, bool with_xi) const {
+  const std::int32_t i = find(f);
+  if (i < 0)
+    throw std::invalid_argument(
+        fmt::format("SurfaceCorrection::derivatives: the facet is not a face of surface {}", data_.surface));
+  const CorrectedPoint p = node_derivatives(static_cast<std::size_t>(i), xi, x, d);
+  if (with_xi) xi_derivatives(static_cast<std::size_t>(i), xi, x, d);
+  return p;
+}
+
+CorrectedPoint SurfaceCorrections::derivatives(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
+                                               CorrectionDerivatives& d, bool with_xi) const {
+  if (const SurfaceCorrection* c = find(f)) return c->derivatives(f, xi, x, d, with_xi);
+  const ShapeEval sh = eval_shape(f.shape, xi[0], xi[1]);
+  const FacetGeometry g = facet_geometry(f, x, sh);
+  const int pd = facet_param_dim(f.shape);
+  d.n_nodes = f.n_nodes;
+  d.param_dim = pd;
+  facet_node_derivatives(g, sh, pd, d);
+  if (with_xi)
+    for (int al = 0; al < pd; ++al) {
+      d.x_xi[al] = g.a[al];
+      std::array<double, 2> lo = xi, hi = xi;
+      lo[al] -= kCorrectionXiStep;
+      hi[al] += kCorrectionXiStep;
+      const Vec3 nl = facet_geometry(f, x, lo[0], lo[1]).n, nh = facet_geometry(f, x, hi[0], hi[1]).n;
+      d.n_xi[al] = scale(0.5 / kCorrectionXiStep, sub(nh, nl));
+    }
+  return {g.x, g.n, false};
+}
+
+}  // namespace inpact::contact
