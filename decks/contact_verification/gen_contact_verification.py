@@ -16,6 +16,9 @@ every variant of it:
                     and pushed down by a force, surface to surface (issue 14: the first system
                     of a force-driven contact problem); parameters method, type, inc0
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
+  sphere_3d_force   the same sphere resting on the block (touching at the pole) and held only by its
+                    contact and the symmetry planes, pushed down by a force; parameters method,
+                    type, inc0
   interference_2d   thick-cylinder interference fit, plane strain, quarter model, non-matching
                     ring meshes, interference δ set up by the geometry (Lamé)
   interference_2d_smoothed  the same, both ring surfaces smoothed (CIRCUMFERENTIAL, [AX] 38.1.3)
@@ -255,20 +258,16 @@ def hertz_2d_force(level):
 
 # --------------------------------------------------------------------------- sphere on a block
 
-def sphere_3d(level):
-    """Quarter model (x ≥ 0, y ≥ 0): indenter bottom z_b = R − √(R² − x² − y²), top z = H; block
-    z ∈ [−H, 0]; symmetry U1 = 0 on x = 0, U2 = 0 on y = 0; block bottom U3 = 0; the indenter's
-    top moves down by d."""
-    h = 1.0 / (3 * 2 ** (level - 1))
-    hm = h  # matching meshes
+def sphere_bodies(h):
+    """The two bodies of the sphere decks, matching meshes at element size h at the contact:
+    indenter bottom z_b = R − √(R² − x² − y²), top z = H; block z ∈ [−H, 0]; quarter model
+    (x ≥ 0, y ≥ 0). Returns the mesh lines (nodes, elements, element sets, the surfaces
+    INDENTER_S and BLOCK_S, the node sets XSYM, YSYM, INDENTER_TOP, BLOCK_BOTTOM), the material,
+    and the grid (x positions) of the indenter's top with its node labels: (lines, xs, top_id)."""
     xs_s = graded(h, 1.34, SPHERE_W, 1.5)
     zs_s = graded(h, 1.34, SPHERE_H, 1.5)
-    xs_m = graded(hm, 1.34, SPHERE_W, 1.5)
-    zs_m = graded(hm, 1.34, SPHERE_H, 1.5)
-    out = header(f"Sphere on a block: R = {R_SPHERE:g}, E = {E:g}, nu = {NU:g} (both); quarter model, node to surface",
-                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), "
-                 "P = 4 x the reaction of this quarter model, E* = E/(2(1-nu^2)).", level, h)
-    out += parameter_block()
+    xs_m = graded(h, 1.34, SPHERE_W, 1.5)
+    zs_m = graded(h, 1.34, SPHERE_H, 1.5)
     nodes, se, me = [], [], []
     n, nz = len(xs_s), len(zs_s)
     sid = lambda i, j, k: 1 + k * n * n + j * n + i
@@ -294,7 +293,7 @@ def sphere_3d(level):
             for i in range(m - 1):
                 me.append((1000001 + len(me), mid(i, j, k), mid(i + 1, j, k), mid(i + 1, j + 1, k), mid(i, j + 1, k),
                            mid(i, j, k + 1), mid(i + 1, j, k + 1), mid(i + 1, j + 1, k + 1), mid(i, j + 1, k + 1)))
-    out += ["*NODE, NSET=ALL"] + [f"{a}, {x:.15g}, {y:.15g}, {z:.15g}" for a, x, y, z in nodes]
+    out = ["*NODE, NSET=ALL"] + [f"{a}, {x:.15g}, {y:.15g}, {z:.15g}" for a, x, y, z in nodes]
     out += ["*ELEMENT, TYPE=C3D8, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in se]
     out += ["*ELEMENT, TYPE=C3D8, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in me]
     out += ["*ELSET, ELSET=INDENTER_BOTTOM"] + lines_of([e[0] for e in se[:(n - 1) ** 2]])
@@ -307,9 +306,63 @@ def sphere_3d(level):
     out += ["*NSET, NSET=BLOCK_BOTTOM"] + lines_of([mid(i, j, 0) for j in range(m) for i in range(m)])
     out += ["*SOLID SECTION, ELSET=INDENTER, MATERIAL=STEEL", "*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL",
             "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
+    return out, xs_s, lambda i, j: sid(i, j, nz - 1)
+
+
+def sphere_3d(level):
+    """Quarter model (x ≥ 0, y ≥ 0): indenter bottom z_b = R − √(R² − x² − y²), top z = H; block
+    z ∈ [−H, 0]; symmetry U1 = 0 on x = 0, U2 = 0 on y = 0; block bottom U3 = 0; the indenter's
+    top moves down by d."""
+    h = 1.0 / (3 * 2 ** (level - 1))
+    out = header(f"Sphere on a block: R = {R_SPHERE:g}, E = {E:g}, nu = {NU:g} (both); quarter model, node to surface",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), "
+                 "P = 4 x the reaction of this quarter model, E* = E/(2(1-nu^2)).", level, h)
+    out += parameter_block()
+    out += sphere_bodies(h)[0]
     out += contact_block("INDENTER_S", "BLOCK_S")
     out += ["*BOUNDARY", "XSYM, 1", "YSYM, 2", "BLOCK_BOTTOM, 3"]
     out += ["*STEP, NAME=PRESS", "*STATIC", "0.5, 1.0", "*BOUNDARY", f"INDENTER_TOP, 3, 3, {-D_3D:g}", STEP_CONTROLS]
+    out += OUTPUT + ["*END STEP"]
+    return out
+
+
+def sphere_force_load(a=A_FORCE):
+    """P (the whole sphere) giving the contact radius a: a = (3PR/(4E*))^(1/3)."""
+    e_star = E / (2.0 * (1.0 - NU * NU))
+    return 4.0 * e_star * a ** 3 / (3.0 * R_SPHERE)
+
+
+def sphere_3d_force(level):
+    """The sphere of sphere_3d resting on the block and pushed down by a force: the indenter's
+    lowest node (the pole, on the axis) touches the block with zero gap, every other is open by
+    about r²/2R. The indenter is held by nothing but that contact and the symmetry planes
+    (U1 = 0 on x = 0, U2 = 0 on y = 0, which leave it only its vertical motion); the block's
+    bottom is held (U3 = 0). The load: P/4 on this quarter model, as the consistent nodal forces
+    of a uniform pressure on the indenter's flat top (concentrated loads: the applied force is
+    P/4 whatever the deformation), P chosen to give a = 1. Surface to surface, penalty by default
+    (Abaqus's for finite-sliding surface-to-surface pairs); method, type and the first increment
+    inc0 are parameters. Level L: h = a / (3·2^(L−1)), as sphere_3d."""
+    h = 1.0 / (3 * 2 ** (level - 1))
+    load = sphere_force_load()
+    p0 = 3.0 * load / (2.0 * math.pi * A_FORCE ** 2)
+    out = header(f"Sphere on a block under a force: R = {R_SPHERE:g} resting on a block (touching at the pole), "
+                 f"E = {E:g}, nu = {NU:g} (both); quarter model, surface to surface",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), "
+                 f"E* = E/(2(1-nu^2)); P = {load:.10g} (this quarter model carries P/4): "
+                 f"a = {A_FORCE:g}, p0 = {p0:.10g}.", level, h)
+    out[-1] = "** tolerances in tests/contact_verification/test_method_agreement.cpp."
+    out += ["*PARAMETER", 'method = "PENALTY"', 'type = "SURFACE TO SURFACE"', "inc0 = 0.25"]
+    mesh, xs, top = sphere_bodies(h)
+    out += mesh
+    out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>",
+            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>", "INDENTER_S, BLOCK_S"]
+    out += ["*BOUNDARY", "XSYM, 1", "YSYM, 2", "BLOCK_BOTTOM, 3"]
+    # The top's nodal forces: q × the tributary area of each node, q = (P/4)/W².
+    q = 0.25 * load / SPHERE_W ** 2
+    nx = len(xs)
+    width = [0.5 * ((xs[min(i + 1, nx - 1)] - xs[i]) + (xs[i] - xs[max(i - 1, 0)])) for i in range(nx)]
+    out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD"]
+    out += [f"{top(i, j)}, 3, {-q * width[i] * width[j]:.17g}" for j in range(nx) for i in range(nx)]
     out += OUTPUT + ["*END STEP"]
     return out
 
@@ -669,7 +722,7 @@ def oring_axi(level, smoothed=False):
 
 
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25),
-         "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d,
+         "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
          "spherical_seat_axi": spherical_seat_axi,
