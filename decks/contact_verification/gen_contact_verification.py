@@ -22,6 +22,8 @@ every variant of it:
   interference_2d   thick-cylinder interference fit, plane strain, quarter model, non-matching
                     ring meshes, interference δ set up by the geometry (Lamé)
   interference_2d_smoothed  the same, both ring surfaces smoothed (CIRCUMFERENTIAL, [AX] 38.1.3)
+  interference_2d_general   the same smoothed fit in general contact: one inclusion pair, the
+                    smoothing by *SURFACE PROPERTY ASSIGNMENT (balanced master-slave for penalty)
 
 Smoothing verification (issue 5), surface to surface by default, each deck also as *_smoothed
 (the pair's GEOMETRIC CORRECTION names a *SURFACE SMOOTHING of both surfaces):
@@ -41,9 +43,9 @@ Parameters of every deck:
            (augmented Lagrange only; RELATIVE 0.001 is Abaqus's default for node-to-surface)
 
 Mesh levels: level L has element size h = a / 2^(L+1) at the contact in hertz_2d, a / (3·2^(L−1))
-in sphere_3d (a: the contact half-width or radius of the design load, ≈ 1), and 24·2^(L−1) /
-34·2^(L−1) elements per quarter on the interference rings and the axisymmetric seat (inner / outer
-body), 12·2^(L−1) / 16·2^(L−1) per quarter great circle in the 3D seat, 48·2^(L−1) / 68·2^(L−1)
+in sphere_3d, a / (4·2^(L−1)) in sphere_3d_force (a: the contact half-width or radius of the
+design load, ≈ 1), and 24·2^(L−1) / 34·2^(L−1) elements per quarter on the interference rings and
+the axisymmetric seat (inner / outer body), 12·2^(L−1) / 16·2^(L−1) per quarter great circle in the 3D seat, 48·2^(L−1) / 68·2^(L−1)
 along the half cross-section of the O-ring and its sleeve. The tolerances and references are in tests/contact_verification/.
 
 Pure standard-library Python.
@@ -341,8 +343,9 @@ def sphere_3d_force(level):
     of a uniform pressure on the indenter's flat top (concentrated loads: the applied force is
     P/4 whatever the deformation), P chosen to give a = 1. Surface to surface, penalty by default
     (Abaqus's for finite-sliding surface-to-surface pairs); method, type and the first increment
-    inc0 are parameters. Level L: h = a / (3·2^(L−1)), as sphere_3d."""
-    h = 1.0 / (3 * 2 ** (level - 1))
+    inc0 are parameters. Level L: h = a / (4·2^(L−1)) (level 1: a/h = 4, the coarse 3D mesh of
+    issue 14; at a/h = 3, sphere_3d's, surface to surface closes the zone a node short)."""
+    h = 1.0 / (4 * 2 ** (level - 1))
     load = sphere_force_load()
     p0 = 3.0 * load / (2.0 * math.pi * A_FORCE ** 2)
     out = header(f"Sphere on a block under a force: R = {R_SPHERE:g} resting on a block (touching at the pole), "
@@ -369,11 +372,13 @@ def sphere_3d_force(level):
 
 # --------------------------------------------------------------------------- interference fit
 
-def interference_2d(level, smoothed=False):
+def interference_2d(level, smoothed=False, general=False):
     """Quarter rings, plane strain: inner ring r ∈ [A, B + δ] (n_in elements around), outer ring
     r ∈ [B, C] (n_out around, n_out ≠ n_in: non-matching). Slave: the outer ring's inner
     surface; master: the inner ring's outer surface. U2 = 0 on y = 0, U1 = 0 on x = 0. The
-    overclosure δ is there at the start and is resolved in the first increment."""
+    overclosure δ is there at the start and is resolved in the first increment. `general`:
+    general contact with the one inclusion pair (the ring surfaces) instead of the contact pair,
+    its smoothing by *SURFACE PROPERTY ASSIGNMENT."""
     scale = 2 ** (level - 1)
     n_in, n_out = 24 * scale, 34 * scale
     nr_in, nr_out = 4 * scale, 8 * scale
@@ -387,6 +392,10 @@ def interference_2d(level, smoothed=False):
     if smoothed:  # geometric correction is for surface-to-surface pairs (and general contact)
         params[params.index('type = "NODE TO SURFACE"')] = 'type = "SURFACE TO SURFACE"'
         out[1:1] = ["** Smoothed: both ring surfaces corrected toward circles about the z axis ([AX] 38.1.3)."]
+    if general:  # general contact is surface to surface: no TYPE
+        params.remove('type = "SURFACE TO SURFACE"')
+        out[1:1] = ["** General contact: one inclusion pair, the smoothing by *SURFACE PROPERTY ASSIGNMENT."]
+        out[-1] = "** tolerances in tests/contact_verification/test_method_agreement.cpp."
     out += params
     nodes, inner, outer = [], [], []
     iid = lambda i, j: 1 + j * (nr_in + 1) + i        # i radial, j around
@@ -421,9 +430,13 @@ def interference_2d(level, smoothed=False):
             "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
     # The initial overclosure δ may exceed the default HCRIT (half the slave facet) on fine
     # meshes: HCRIT limits only what an increment adds to the penetration it starts from.
-    if smoothed:
-        out += ["*SURFACE SMOOTHING, NAME=RINGS", "INNER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1.",
-                "OUTER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1."]
+    rings = ["INNER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1.", "OUTER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1."]
+    if general:
+        out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>", "*CONTACT",
+                "*CONTACT INCLUSIONS", "OUTER_S, INNER_S", "*CONTACT PROPERTY ASSIGNMENT", "OUTER_S, INNER_S, SMOOTH",
+                "*SURFACE PROPERTY ASSIGNMENT, PROPERTY=GEOMETRIC CORRECTION"] + rings
+    elif smoothed:
+        out += ["*SURFACE SMOOTHING, NAME=RINGS"] + rings
         out += contact_block("OUTER_S", "INNER_S", ", GEOMETRIC CORRECTION=RINGS")
     else:
         out += contact_block("OUTER_S", "INNER_S")
@@ -725,6 +738,7 @@ DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(le
          "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
+         "interference_2d_general": lambda level: interference_2d(level, smoothed=True, general=True),
          "spherical_seat_axi": spherical_seat_axi,
          "spherical_seat_axi_smoothed": lambda level: spherical_seat_axi(level, smoothed=True),
          "spherical_seat_3d": spherical_seat_3d,
