@@ -125,8 +125,7 @@ void add_general(const model::Model& m, InteractionTable& t, const model::Surfac
     ci.weight = weight;
     t.rows.push_back(std::move(ci));
   };
-  const bool multipliers = r.method == model::EnforcementMethod::Direct;
-  if (!multipliers) {
+  if (!general_contact_one_row(r.method)) {
     row(a, b, 0.5);
     row(b, a, 0.5);
   } else if (facet_size(m, *b) < facet_size(m, *a)) {

@@ -21,11 +21,11 @@
 ///     else none (frictionless hard contact).
 ///   - Discretisation: surface to surface, finite sliding. Enforcement by penalty (Abaqus's
 ///     default for general contact) or any method the assigned *SURFACE BEHAVIOR asks for.
-///   - Balanced master-slave: each interaction enforced by penalty-type methods is two rows,
-///     each surface the slave of one, with weight ½ (each row's areas are halved, so the
-///     two together carry the load once; CPRESS is reported on both surfaces). Direct
-///     enforcement (multipliers) would be redundant twice over: one row, the surface with the
-///     smaller facets is the slave (ties: the first named).
+///   - Balanced master-slave: each interaction enforced by a penalty law (linear or nonlinear)
+///     is two rows, each surface the slave of one, with weight ½ (each row's areas are halved,
+///     so the two together carry the load once; CPRESS is reported on both surfaces). A method
+///     with a multiplier per node (general_contact_one_row) gets one row, the surface with the
+///     smaller facets as the slave (ties: the first named).
 #include <cstddef>
 #include <deque>
 #include <memory>
@@ -55,6 +55,21 @@ struct InteractionTable {
   std::deque<model::Surface> surfaces;  ///< the body exteriors general contact made
   std::vector<std::string> notes;       ///< what general contact leaves out (for check and run)
 };
+
+/// Is a general-contact interaction enforced by `method` one row (else two balanced rows)? Direct
+/// enforcement and augmented Lagrange: both hold a multiplier per closed node (augmented
+/// Lagrange's λ, raised by each augmentation until the penetration is within its tolerance), so
+/// two rows would be two multipliers on one gap, and their split of the load is not determined:
+/// direct's system would be singular, and augmented Lagrange's two rows — two springs of
+/// 1000 k_e in parallel — share the load by the difference of the gaps the two discretisations
+/// measure (k·Δg: 2.2e9 × 5e-8 ≈ 15 % of the pressure on the smoothed interference fit, each
+/// row's CPRESS scattering −16 … +12 % while their sum is right). A penalty law is one spring
+/// whose stiffness (10 k_e) keeps that split within its own error, and two rows make it
+/// symmetric in the two surfaces. Laws stiffer than 1000 k_e go to multipliers after the rows
+/// are made: merge_balanced_multiplier_rows in resolved_interaction.cpp.
+inline bool general_contact_one_row(model::EnforcementMethod method) {
+  return method == model::EnforcementMethod::Direct || method == model::EnforcementMethod::AugmentedLagrange;
+}
 
 /// The table of `model`. General contact needs the method of its interactions to choose
 /// between one and two rows: resolved here with contact/normal_behavior.

@@ -174,8 +174,8 @@ bool tied_law_in(const model::Model& m, const std::string& name, std::size_t ste
 
 /// What *CHANGE SURFACE BEHAVIOR cannot do in inpact: bond the surfaces in a later step (the TIED
 /// law bonds each slave node at its initial gap, so it must hold from the model data on), or
-/// switch general contact between multipliers and a penalty-type method (which decides whether
-/// the interaction is one row or two, interaction_table.hpp).
+/// switch general contact between a method with multipliers and a penalty law (which decides
+/// whether the interaction is one row or two, interaction_table.hpp general_contact_one_row).
 void refuse_behavior_change(const model::Model& m, const ContactInteraction& entry, std::size_t step,
                             const ResolvedInteraction& r) {
   const model::SurfaceBehaviorChange* c = behavior_change_for(m, entry.pair.interaction, step);
@@ -195,10 +195,11 @@ void refuse_behavior_change(const model::Model& m, const ContactInteraction& ent
     const auto it = m.interactions.find(entry.pair.interaction);
     const ResolvedNormalBehavior data =
         resolve_normal_behavior(&it->second, model::ContactDiscretization::SurfaceToSurface, false, true);
-    if ((data.method == EnforcementMethod::Direct) != (r.behavior.method == EnforcementMethod::Direct))
+    if (general_contact_one_row(data.method) != general_contact_one_row(r.behavior.method))
       refuse(loc, "*SURFACE BEHAVIOR",
-             fmt::format("*CHANGE SURFACE BEHAVIOR of '{}', which general contact uses: switching between direct "
-                         "enforcement and a penalty-type method within the analysis is not supported",
+             fmt::format("*CHANGE SURFACE BEHAVIOR of '{}', which general contact uses: switching between a method "
+                         "with multipliers (direct, augmented Lagrange: one row) and a penalty law (two balanced "
+                         "rows) within the analysis is not supported",
                          entry.pair.interaction));
   }
 }

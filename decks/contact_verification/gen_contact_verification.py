@@ -16,9 +16,14 @@ every variant of it:
                     and pushed down by a force, surface to surface (issue 14: the first system
                     of a force-driven contact problem); parameters method, type, inc0
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
+  sphere_3d_force   the same sphere resting on the block (touching at the pole) and held only by its
+                    contact and the symmetry planes, pushed down by a force; parameters method,
+                    type, inc0
   interference_2d   thick-cylinder interference fit, plane strain, quarter model, non-matching
                     ring meshes, interference δ set up by the geometry (Lamé)
   interference_2d_smoothed  the same, both ring surfaces smoothed (CIRCUMFERENTIAL, [AX] 38.1.3)
+  interference_2d_general   the same smoothed fit in general contact: one inclusion pair, the
+                    smoothing by *SURFACE PROPERTY ASSIGNMENT (balanced master-slave for penalty)
 
 Smoothing verification (issue 5), surface to surface by default, each deck also as *_smoothed
 (the pair's GEOMETRIC CORRECTION names a *SURFACE SMOOTHING of both surfaces):
@@ -38,9 +43,9 @@ Parameters of every deck:
            (augmented Lagrange only; RELATIVE 0.001 is Abaqus's default for node-to-surface)
 
 Mesh levels: level L has element size h = a / 2^(L+1) at the contact in hertz_2d, a / (3·2^(L−1))
-in sphere_3d (a: the contact half-width or radius of the design load, ≈ 1), and 24·2^(L−1) /
-34·2^(L−1) elements per quarter on the interference rings and the axisymmetric seat (inner / outer
-body), 12·2^(L−1) / 16·2^(L−1) per quarter great circle in the 3D seat, 48·2^(L−1) / 68·2^(L−1)
+in sphere_3d, a / (4·2^(L−1)) in sphere_3d_force (a: the contact half-width or radius of the
+design load, ≈ 1), and 24·2^(L−1) / 34·2^(L−1) elements per quarter on the interference rings and
+the axisymmetric seat (inner / outer body), 12·2^(L−1) / 16·2^(L−1) per quarter great circle in the 3D seat, 48·2^(L−1) / 68·2^(L−1)
 along the half cross-section of the O-ring and its sleeve. The tolerances and references are in tests/contact_verification/.
 
 Pure standard-library Python.
@@ -255,20 +260,16 @@ def hertz_2d_force(level):
 
 # --------------------------------------------------------------------------- sphere on a block
 
-def sphere_3d(level):
-    """Quarter model (x ≥ 0, y ≥ 0): indenter bottom z_b = R − √(R² − x² − y²), top z = H; block
-    z ∈ [−H, 0]; symmetry U1 = 0 on x = 0, U2 = 0 on y = 0; block bottom U3 = 0; the indenter's
-    top moves down by d."""
-    h = 1.0 / (3 * 2 ** (level - 1))
-    hm = h  # matching meshes
+def sphere_bodies(h):
+    """The two bodies of the sphere decks, matching meshes at element size h at the contact:
+    indenter bottom z_b = R − √(R² − x² − y²), top z = H; block z ∈ [−H, 0]; quarter model
+    (x ≥ 0, y ≥ 0). Returns the mesh lines (nodes, elements, element sets, the surfaces
+    INDENTER_S and BLOCK_S, the node sets XSYM, YSYM, INDENTER_TOP, BLOCK_BOTTOM), the material,
+    and the grid (x positions) of the indenter's top with its node labels: (lines, xs, top_id)."""
     xs_s = graded(h, 1.34, SPHERE_W, 1.5)
     zs_s = graded(h, 1.34, SPHERE_H, 1.5)
-    xs_m = graded(hm, 1.34, SPHERE_W, 1.5)
-    zs_m = graded(hm, 1.34, SPHERE_H, 1.5)
-    out = header(f"Sphere on a block: R = {R_SPHERE:g}, E = {E:g}, nu = {NU:g} (both); quarter model, node to surface",
-                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), "
-                 "P = 4 x the reaction of this quarter model, E* = E/(2(1-nu^2)).", level, h)
-    out += parameter_block()
+    xs_m = graded(h, 1.34, SPHERE_W, 1.5)
+    zs_m = graded(h, 1.34, SPHERE_H, 1.5)
     nodes, se, me = [], [], []
     n, nz = len(xs_s), len(zs_s)
     sid = lambda i, j, k: 1 + k * n * n + j * n + i
@@ -294,7 +295,7 @@ def sphere_3d(level):
             for i in range(m - 1):
                 me.append((1000001 + len(me), mid(i, j, k), mid(i + 1, j, k), mid(i + 1, j + 1, k), mid(i, j + 1, k),
                            mid(i, j, k + 1), mid(i + 1, j, k + 1), mid(i + 1, j + 1, k + 1), mid(i, j + 1, k + 1)))
-    out += ["*NODE, NSET=ALL"] + [f"{a}, {x:.15g}, {y:.15g}, {z:.15g}" for a, x, y, z in nodes]
+    out = ["*NODE, NSET=ALL"] + [f"{a}, {x:.15g}, {y:.15g}, {z:.15g}" for a, x, y, z in nodes]
     out += ["*ELEMENT, TYPE=C3D8, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in se]
     out += ["*ELEMENT, TYPE=C3D8, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in me]
     out += ["*ELSET, ELSET=INDENTER_BOTTOM"] + lines_of([e[0] for e in se[:(n - 1) ** 2]])
@@ -307,6 +308,19 @@ def sphere_3d(level):
     out += ["*NSET, NSET=BLOCK_BOTTOM"] + lines_of([mid(i, j, 0) for j in range(m) for i in range(m)])
     out += ["*SOLID SECTION, ELSET=INDENTER, MATERIAL=STEEL", "*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL",
             "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
+    return out, xs_s, lambda i, j: sid(i, j, nz - 1)
+
+
+def sphere_3d(level):
+    """Quarter model (x ≥ 0, y ≥ 0): indenter bottom z_b = R − √(R² − x² − y²), top z = H; block
+    z ∈ [−H, 0]; symmetry U1 = 0 on x = 0, U2 = 0 on y = 0; block bottom U3 = 0; the indenter's
+    top moves down by d."""
+    h = 1.0 / (3 * 2 ** (level - 1))
+    out = header(f"Sphere on a block: R = {R_SPHERE:g}, E = {E:g}, nu = {NU:g} (both); quarter model, node to surface",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), "
+                 "P = 4 x the reaction of this quarter model, E* = E/(2(1-nu^2)).", level, h)
+    out += parameter_block()
+    out += sphere_bodies(h)[0]
     out += contact_block("INDENTER_S", "BLOCK_S")
     out += ["*BOUNDARY", "XSYM, 1", "YSYM, 2", "BLOCK_BOTTOM, 3"]
     out += ["*STEP, NAME=PRESS", "*STATIC", "0.5, 1.0", "*BOUNDARY", f"INDENTER_TOP, 3, 3, {-D_3D:g}", STEP_CONTROLS]
@@ -314,13 +328,57 @@ def sphere_3d(level):
     return out
 
 
+def sphere_force_load(a=A_FORCE):
+    """P (the whole sphere) giving the contact radius a: a = (3PR/(4E*))^(1/3)."""
+    e_star = E / (2.0 * (1.0 - NU * NU))
+    return 4.0 * e_star * a ** 3 / (3.0 * R_SPHERE)
+
+
+def sphere_3d_force(level):
+    """The sphere of sphere_3d resting on the block and pushed down by a force: the indenter's
+    lowest node (the pole, on the axis) touches the block with zero gap, every other is open by
+    about r²/2R. The indenter is held by nothing but that contact and the symmetry planes
+    (U1 = 0 on x = 0, U2 = 0 on y = 0, which leave it only its vertical motion); the block's
+    bottom is held (U3 = 0). The load: P/4 on this quarter model, as the consistent nodal forces
+    of a uniform pressure on the indenter's flat top (concentrated loads: the applied force is
+    P/4 whatever the deformation), P chosen to give a = 1. Surface to surface, penalty by default
+    (Abaqus's for finite-sliding surface-to-surface pairs); method, type and the first increment
+    inc0 are parameters. Level L: h = a / (4·2^(L−1)) (level 1: a/h = 4, the coarse 3D mesh of
+    issue 14; at a/h = 3, sphere_3d's, surface to surface closes the zone a node short)."""
+    h = 1.0 / (4 * 2 ** (level - 1))
+    load = sphere_force_load()
+    p0 = 3.0 * load / (2.0 * math.pi * A_FORCE ** 2)
+    out = header(f"Sphere on a block under a force: R = {R_SPHERE:g} resting on a block (touching at the pole), "
+                 f"E = {E:g}, nu = {NU:g} (both); quarter model, surface to surface",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2: a = (3PR/(4E*))^(1/3), p0 = 3P/(2 pi a^2), "
+                 f"E* = E/(2(1-nu^2)); P = {load:.10g} (this quarter model carries P/4): "
+                 f"a = {A_FORCE:g}, p0 = {p0:.10g}.", level, h)
+    out[-1] = "** tolerances in tests/contact_verification/test_method_agreement.cpp."
+    out += ["*PARAMETER", 'method = "PENALTY"', 'type = "SURFACE TO SURFACE"', "inc0 = 0.25"]
+    mesh, xs, top = sphere_bodies(h)
+    out += mesh
+    out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>",
+            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>", "INDENTER_S, BLOCK_S"]
+    out += ["*BOUNDARY", "XSYM, 1", "YSYM, 2", "BLOCK_BOTTOM, 3"]
+    # The top's nodal forces: q × the tributary area of each node, q = (P/4)/W².
+    q = 0.25 * load / SPHERE_W ** 2
+    nx = len(xs)
+    width = [0.5 * ((xs[min(i + 1, nx - 1)] - xs[i]) + (xs[i] - xs[max(i - 1, 0)])) for i in range(nx)]
+    out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD"]
+    out += [f"{top(i, j)}, 3, {-q * width[i] * width[j]:.17g}" for j in range(nx) for i in range(nx)]
+    out += OUTPUT + ["*END STEP"]
+    return out
+
+
 # --------------------------------------------------------------------------- interference fit
 
-def interference_2d(level, smoothed=False):
+def interference_2d(level, smoothed=False, general=False):
     """Quarter rings, plane strain: inner ring r ∈ [A, B + δ] (n_in elements around), outer ring
     r ∈ [B, C] (n_out around, n_out ≠ n_in: non-matching). Slave: the outer ring's inner
     surface; master: the inner ring's outer surface. U2 = 0 on y = 0, U1 = 0 on x = 0. The
-    overclosure δ is there at the start and is resolved in the first increment."""
+    overclosure δ is there at the start and is resolved in the first increment. `general`:
+    general contact with the one inclusion pair (the ring surfaces) instead of the contact pair,
+    its smoothing by *SURFACE PROPERTY ASSIGNMENT."""
     scale = 2 ** (level - 1)
     n_in, n_out = 24 * scale, 34 * scale
     nr_in, nr_out = 4 * scale, 8 * scale
@@ -334,6 +392,10 @@ def interference_2d(level, smoothed=False):
     if smoothed:  # geometric correction is for surface-to-surface pairs (and general contact)
         params[params.index('type = "NODE TO SURFACE"')] = 'type = "SURFACE TO SURFACE"'
         out[1:1] = ["** Smoothed: both ring surfaces corrected toward circles about the z axis ([AX] 38.1.3)."]
+    if general:  # general contact is surface to surface: no TYPE
+        params.remove('type = "SURFACE TO SURFACE"')
+        out[1:1] = ["** General contact: one inclusion pair, the smoothing by *SURFACE PROPERTY ASSIGNMENT."]
+        out[-1] = "** tolerances in tests/contact_verification/test_method_agreement.cpp."
     out += params
     nodes, inner, outer = [], [], []
     iid = lambda i, j: 1 + j * (nr_in + 1) + i        # i radial, j around
@@ -368,9 +430,13 @@ def interference_2d(level, smoothed=False):
             "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
     # The initial overclosure δ may exceed the default HCRIT (half the slave facet) on fine
     # meshes: HCRIT limits only what an increment adds to the penetration it starts from.
-    if smoothed:
-        out += ["*SURFACE SMOOTHING, NAME=RINGS", "INNER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1.",
-                "OUTER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1."]
+    rings = ["INNER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1.", "OUTER_S, CIRCUMFERENTIAL, 0., 0., 0., 0., 0., 1."]
+    if general:
+        out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>", "*CONTACT",
+                "*CONTACT INCLUSIONS", "OUTER_S, INNER_S", "*CONTACT PROPERTY ASSIGNMENT", "OUTER_S, INNER_S, SMOOTH",
+                "*SURFACE PROPERTY ASSIGNMENT, PROPERTY=GEOMETRIC CORRECTION"] + rings
+    elif smoothed:
+        out += ["*SURFACE SMOOTHING, NAME=RINGS"] + rings
         out += contact_block("OUTER_S", "INNER_S", ", GEOMETRIC CORRECTION=RINGS")
     else:
         out += contact_block("OUTER_S", "INNER_S")
@@ -669,9 +735,10 @@ def oring_axi(level, smoothed=False):
 
 
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25),
-         "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d,
+         "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
+         "interference_2d_general": lambda level: interference_2d(level, smoothed=True, general=True),
          "spherical_seat_axi": spherical_seat_axi,
          "spherical_seat_axi_smoothed": lambda level: spherical_seat_axi(level, smoothed=True),
          "spherical_seat_3d": spherical_seat_3d,
