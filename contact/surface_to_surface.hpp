@@ -6,7 +6,8 @@
 /// inpact's discretisation (a mortar-type weighted gap, integrated on the slave faces):
 ///   every slave facet carries integration points (segment-based, contact/mortar_segments.hpp: its
 ///   parametric domain cut where master facets begin and end, a Gauss rule per piece; the plain
-///   kRulePoints rule where no master facet edge crosses it); each point x_q is projected onto the master (closest point, projection.hpp) giving g_q, n_q. A point
+///   kRulePoints rule where no master facet edge crosses it); each point x_q is projected onto
+///   the master (closest point, projection.hpp) giving g_q, n_q. A point
 ///   overlaps the master when it projects orthogonally (or nearly: the distance direction within
 ///   45° of the master facet's normal, so that points beyond the master's free edge drop out)
 ///   and the slave face there faces the master (n_slave · n_q ≤ −cos 45°).
