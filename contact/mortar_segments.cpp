@@ -13,6 +13,13 @@ namespace {
 /// opposite: the points' own overlap test, surface_to_surface.cpp's kOverlapCosine).
 constexpr double kFacingCosine = 0.7071;
 
+/// extended_param: the affine estimate from the centre's tangents, then Gauss–Newton refinements
+/// of at most kMaxRefinement each — a fixed number of steps, no convergence test: the result is a
+/// continuous function of the coordinates (a test that fails or passes would make the pieces, and
+/// the residual, jump between Newton iterations).
+constexpr int kProjectionSteps = 4;
+constexpr double kMaxRefinement = 0.25;
+
 std::array<double, 2> facet_centre(FacetShape s) {
   if (s == FacetShape::Tri3 || s == FacetShape::Tri6) return {1.0 / 3.0, 1.0 / 3.0};
   return {0.0, 0.0};
@@ -98,27 +105,27 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
 bool extended_param(const Facet& f, std::span<const Vec3> x, const Vec3& p, std::array<double, 2>& xi) {
   xi = facet_centre(f.shape);
   const bool affine = f.shape == FacetShape::Line2 || f.shape == FacetShape::Tri3;
-  for (int it = 0; it < 30; ++it) {
+  for (int it = 0; it < kProjectionSteps; ++it) {
     const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
     const Vec3 r = sub(p, g.x);
     std::array<double, 2> d{};
     if (facet_param_dim(f.shape) == 1) {
       const double aa = dot(g.a[0], g.a[0]);
-      if (!(aa > 0)) return false;
+      if (!(aa > 0)) return it > 0;
       d[0] = dot(g.a[0], r) / aa;
     } else {
       const double m00 = dot(g.a[0], g.a[0]), m01 = dot(g.a[0], g.a[1]), m11 = dot(g.a[1], g.a[1]);
       const double det = m00 * m11 - m01 * m01;
-      if (!(det > 1e-14 * m00 * m11)) return false;
+      if (!(det > 1e-14 * m00 * m11)) return it > 0;
       const double b0 = dot(g.a[0], r), b1 = dot(g.a[1], r);
       d = {(m11 * b0 - m01 * b1) / det, (m00 * b1 - m01 * b0) / det};
     }
+    if (it > 0)  // the refinements: bounded, so that far beyond the domain nothing runs away
+      for (double& c : d) c = std::clamp(c, -kMaxRefinement, kMaxRefinement);
     xi = {xi[0] + d[0], xi[1] + d[1]};
-    if (affine) return true;  // one Gauss–Newton step is exact on an affine map
-    if (!(std::abs(xi[0]) < 1e3 && std::abs(xi[1]) < 1e3)) return false;
-    if (std::max(std::abs(d[0]), std::abs(d[1])) < 1e-13) return true;
+    if (affine) break;  // one step is exact on an affine map
   }
-  return false;
+  return std::isfinite(xi[0]) && std::isfinite(xi[1]);
 }
 
 int segment_rule(std::vector<double>& breaks, int min_points, int base_points, std::vector<QuadPoint>& out) {

@@ -38,9 +38,12 @@ namespace inpact::contact {
 /// are merged into their neighbour: a kink within δ of a piece's end costs O(δ²) of its integral.
 inline constexpr double kMinSegment = 1e-6;
 
-/// The parametric point ξ minimising |x(ξ) − p| over the facet's polynomial map continued beyond
-/// its domain (Gauss–Newton from the centre; exact in one step on Line2 and Tri3). False when
-/// the iteration does not converge or the facet is degenerate.
+/// The parametric point ξ nearest p on the facet's polynomial map continued beyond its domain:
+/// the affine estimate from the centre's tangent plane (exact on Line2, Tri3 and parallelograms),
+/// then three Gauss–Newton steps of at most 0.25 each (a fixed count: ξ is a continuous function
+/// of the coordinates). Near the facet that is the closest point to round-off (flat bilinear
+/// quads: Newton converges quadratically); far beyond it, a bounded estimate, which only moves
+/// where a master edge crosses the slave's boundary. False on a degenerate facet.
 bool extended_param(const Facet& f, std::span<const Vec3> x, const Vec3& p, std::array<double, 2>& xi);
 
 /// A Gauss rule over [−1, 1] split at `breaks` (any order; those within kMinSegment of an end or of

@@ -87,16 +87,25 @@ TEST(MortarSegments, PolygonRuleIsExactForDegreeFour) {
 }
 
 TEST(MortarSegments, ExtendedParamReachesBeyondTheDomain) {
-  // A bilinear, non-parallelogram planar quad; a point off its plane and outside its domain.
-  const std::vector<Vec3> x{{0, 0, 0}, {2, 0, 0}, {2.5, 2, 0}, {0, 1.5, 0}, {3.0, -0.5, 0.7}};
+  // A bilinear, non-parallelogram planar quad; points off its plane, just outside its domain
+  // (the closest point to round-off) and far outside (a bounded, finite estimate).
+  const std::vector<Vec3> x{{0, 0, 0}, {2, 0, 0}, {2.3, 1.8, 0}, {0, 1.5, 0}, {2.2, -0.2, 0.3}, {30, -40, 1}};
   const Facet f = make_facet(FacetShape::Quad4, {0, 1, 2, 3});
   std::array<double, 2> xi{};
   ASSERT_TRUE(contact::extended_param(f, x, x[4], xi));
   const auto g = contact::facet_geometry(f, x, xi[0], xi[1]);
-  EXPECT_NEAR(g.x[0], 3.0, 1e-12);
-  EXPECT_NEAR(g.x[1], -0.5, 1e-12);
+  EXPECT_NEAR(g.x[0], 2.2, 1e-12);
+  EXPECT_NEAR(g.x[1], -0.2, 1e-12);
   EXPECT_GT(xi[0], 1.0);
   EXPECT_LT(xi[1], -1.0);
+  ASSERT_TRUE(contact::extended_param(f, x, x[5], xi));
+  EXPECT_TRUE(std::isfinite(xi[0]) && std::isfinite(xi[1]));
+  // A parallelogram is affine: exact in the first step, however far.
+  const std::vector<Vec3> p{{0, 0, 0}, {2, 0, 0}, {2.5, 1.5, 0}, {0.5, 1.5, 0}, {30, -40, 1}};
+  ASSERT_TRUE(contact::extended_param(f, p, p[4], xi));
+  const auto gp = contact::facet_geometry(f, p, xi[0], xi[1]);
+  EXPECT_NEAR(gp.x[0], 30, 1e-12);
+  EXPECT_NEAR(gp.x[1], -40, 1e-12);
 }
 
 // A coarse slave edge (x from 0 to 2, facing down) over two master edges (0–0.8–2, facing up):
