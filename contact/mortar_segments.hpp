@@ -17,9 +17,11 @@
 ///     normals within 45° of opposite, the points' own overlap test) make cells; the part of the
 ///     slave facet no master facet covers (beyond the master's free edge) gets no point.
 /// Where no master edge crosses the slave facet, or the cells are ambiguous (they overlap: two
-/// master layers facing the same slave facet, a projection that does not converge, a folded
-/// cell), mortar_rule() returns false and the caller keeps its plain rule over the whole facet:
-/// then the points are those of before, to the bit.
+/// master layers facing the same slave facet; a folded cell; a degenerate facet), mortar_rule()
+/// returns false and the caller keeps its plain rule over the whole facet: then the points are
+/// those of before, to the bit. Every test that decides the layout compares a continuous
+/// function of the coordinates with a fixed bound, so the layout — and the residual — changes
+/// only where such a function crosses its bound, not with round-off in between.
 ///
 /// Approximations: the cut lies where the master corner projects along the slave normal, while
 /// the points themselves are projected onto the master by closest point (the master's normal);

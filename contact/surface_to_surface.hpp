@@ -32,10 +32,11 @@
 ///
 /// The points' layout depends on the configuration: it is recomputed at every update() from the
 /// current coordinates (the master corners' projections onto each slave facet). The linearisation
-/// holds it fixed: the motion of the segment boundaries (the pieces' ∂ξ_q/∂u and ∂w_q/∂u) is
-/// neglected, as is usual in segment-based mortar codes (Puso & Laursen 2004; Popp et al. 2010
-/// include it). It moves the kinks of the integrand, not its value on a piece, so the residual is
-/// exact and the tangent misses a term of the order of the kink's jump × the boundary's speed.
+/// holds it fixed: the motion of the cuts (the pieces' ∂ξ_q/∂u and ∂w_q/∂u) is neglected, as
+/// segment-based mortar codes usually do (Puso & Laursen 2004; Popp et al. 2010 linearise it).
+/// By Leibniz's rule the neglected term is the jump of the integrand across a cut times the cut's
+/// speed: across a master facet edge the gap, N_m and W are continuous, so the term vanishes; it
+/// does not where a piece ends at the master's free edge (W g jumps to 0 there).
 /// A facet whose point count changes between updates drops its warm starts (below).
 ///
 /// Each point's projection onto the master facet it projected into at the last update starts
