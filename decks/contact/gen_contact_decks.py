@@ -112,7 +112,8 @@ def coarse_slave_decks():
     for n_upper, nesting in ((2, "nested"), (3, "offset")):
         for method in ("direct", "penalty"):
             for dim, make in ((2, patch_2d), (3, patch_3d)):
-                pair = make(method, n_lower=4, disc="s2s", n_upper=n_upper)
+                pair = make(method, n_lower=4, disc="s2s", n_upper=n_upper).replace(
+                    "tests/contact/test_contact_analysis.cpp", "tests/contact/test_surface_to_surface.cpp")
                 out[f"patch_{dim}d_coarse_{nesting}_s2s_{method}.inp"] = pair
                 out[f"patch_{dim}d_coarse_{nesting}_general_{method}.inp"] = as_general(pair)
     return out
