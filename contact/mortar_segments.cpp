@@ -58,7 +58,7 @@ bool edge_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
 
 /// Each facing master facet's projected corner polygon, clipped against the slave face.
 bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-               std::span<const Vec3> x, std::vector<QuadPoint>& out) {
+               std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out) {
   const Vec3 ns = centre_normal(slave, x);
   const double domain_area = polygon_area(domain_polygon(slave.shape));
   thread_local std::vector<std::pair<std::int32_t, std::array<double, 2>>> projected;  // node row → ξ
@@ -93,10 +93,13 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
   }
   if (cells.empty() || covered > domain_area * (1 + 1e-9)) return false;  // nothing, or two layers
   if (cells.size() == 1 && largest >= domain_area * (1 - kMinSegment)) return false;  // one master facet
-  // W_a N_m: degree 4 on linear faces (bilinear × bilinear), up to 6 with quadratic ones.
-  const int n = quadratic ? 4 : 3;
+  // W_a N_m: degree 4 on linear faces (bilinear × bilinear), up to 6 with quadratic ones: 3 or 4
+  // points per direction at least; more when few cells share the facet (about the plain rule's
+  // base² points in all: the same work, and the curved cases keep their accuracy).
+  const int n_min = quadratic ? 4 : 3;
+  const int n = std::max(n_min, static_cast<int>(std::lround(base_points / std::sqrt(static_cast<double>(cells.size())))));
   for (const Polygon& cell : cells)
-    if (!polygon_rule(cell, n, out)) return false;
+    if (!(cell.size() == 4 && quad_rule(cell, n, out)) && !polygon_rule(cell, n, out)) return false;
   return true;
 }
 
@@ -200,11 +203,36 @@ bool polygon_rule(const Polygon& p, int n, std::vector<QuadPoint>& out) {
   return true;
 }
 
+bool quad_rule(const Polygon& p, int n, std::vector<QuadPoint>& out) {
+  const std::size_t start = out.size();
+  const auto rule = facet_rule(FacetShape::Quad4, n);  // on [−1, 1]²
+  for (const QuadPoint& q : rule) {
+    const double s = q.xi, t = q.eta;
+    const std::array<double, 4> N{(1 - s) * (1 - t) / 4, (1 + s) * (1 - t) / 4, (1 + s) * (1 + t) / 4, (1 - s) * (1 + t) / 4};
+    const std::array<double, 4> Ns{-(1 - t) / 4, (1 - t) / 4, (1 + t) / 4, -(1 + t) / 4};
+    const std::array<double, 4> Nt{-(1 - s) / 4, -(1 + s) / 4, (1 + s) / 4, (1 - s) / 4};
+    std::array<double, 2> xi{}, ds{}, dt{};
+    for (std::size_t a = 0; a < 4; ++a)
+      for (std::size_t k = 0; k < 2; ++k) {
+        xi[k] += N[a] * p[a][k];
+        ds[k] += Ns[a] * p[a][k];
+        dt[k] += Nt[a] * p[a][k];
+      }
+    const double det = cross2(ds, dt);
+    if (!(det > 0)) {  // folded (not convex): the caller fans it into triangles
+      out.resize(start);
+      return false;
+    }
+    out.push_back({xi[0], xi[1], q.weight * det});
+  }
+  return true;
+}
+
 bool mortar_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                  std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out) {
   out.clear();
   const bool ok = facet_param_dim(slave.shape) == 1 ? edge_rule(slave, facets, candidates, x, base_points, out)
-                                                    : face_rule(slave, facets, candidates, x, out);
+                                                    : face_rule(slave, facets, candidates, x, base_points, out);
   if (!ok) out.clear();
   return ok;
 }

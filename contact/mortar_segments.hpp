@@ -12,8 +12,10 @@
 ///     that fall inside it (segment_rule); the segments partition the facet, so no part of it is
 ///     counted twice whatever the master.
 ///   3D (faces): each master facet's projected corner polygon is clipped against the slave
-///     domain (Sutherland–Hodgman, clip_to_domain), fanned into triangles (polygon_rule) with a
-///     collapsed-Gauss triangle rule each. Only master facets facing the slave facet (centre
+///     domain (Sutherland–Hodgman, clip_to_domain); a quadrilateral cell gets a mapped n × n
+///     Gauss rule (quad_rule), any other one is fanned into triangles (polygon_rule) with a
+///     collapsed-Gauss triangle rule each; n = max(3 (4 on quadratic faces), round(6/√cells)).
+///     Only master facets facing the slave facet (centre
 ///     normals within 45° of opposite, the points' own overlap test) make cells; the part of the
 ///     slave facet no master facet covers (beyond the master's free edge) gets no point.
 /// Where no master edge crosses the slave facet, or the cells are ambiguous (they overlap: two
@@ -64,6 +66,12 @@ Polygon clip_to_domain(const Polygon& subject, FacetShape shape);
 /// rule of n points per direction, exact to degree 2n − 2). False (nothing appended) when a fan
 /// triangle turns the wrong way (a non-convex polygon).
 bool polygon_rule(const Polygon& p, int n, std::vector<QuadPoint>& out);
+
+/// Appends the n × n Gauss rule over the quadrilateral `p` (counter-clockwise), mapped
+/// bilinearly from [−1, 1]² (its Jacobian is linear: exact for polynomials in ξ of total degree
+/// ≤ 2n − 2, 2n − 1 on a parallelogram). False (nothing appended) where the map folds (a
+/// non-convex quadrilateral).
+bool quad_rule(const Polygon& p, int n, std::vector<QuadPoint>& out);
 
 /// The mortar rule of slave facet `slave` against the master `facets` listed in `candidates`
 /// (those the slave facet may touch), in the slave's parametric space with weights of the

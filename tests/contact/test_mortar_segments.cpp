@@ -86,6 +86,26 @@ TEST(MortarSegments, PolygonRuleIsExactForDegreeFour) {
   EXPECT_NEAR(integral, (b * b * b - a * a * a) * (d * d * d - c * c * c) / 9, 1e-15);
 }
 
+TEST(MortarSegments, QuadRuleIsExactOnAGeneralQuadrilateral) {
+  // A trapezoid (not a parallelogram): the mapped 3 × 3 rule is exact to total degree 4, like
+  // the fan of two triangles with the 3-point collapsed rule; both against each other.
+  const Polygon trapezoid{{-0.9, -0.8}, {0.7, -0.6}, {0.4, 0.9}, {-0.5, 0.6}};
+  std::vector<QuadPoint> quad, fan;
+  ASSERT_TRUE(contact::quad_rule(trapezoid, 3, quad));
+  ASSERT_TRUE(contact::polygon_rule(trapezoid, 3, fan));
+  EXPECT_EQ(quad.size(), 9u);
+  auto integrate = [](const std::vector<QuadPoint>& r, auto&& f) {
+    double s = 0.0;
+    for (const QuadPoint& q : r) s += q.weight * f(q.xi, q.eta);
+    return s;
+  };
+  auto f = [](double x, double y) { return x * x * y * y + x * x * x - 2 * x * y + 1; };
+  EXPECT_NEAR(integrate(quad, f), integrate(fan, f), 1e-14);
+  EXPECT_NEAR(weight_sum(quad), contact::polygon_area(trapezoid), 1e-14);
+  // A folded quadrilateral (a non-convex corner) is refused.
+  EXPECT_FALSE(contact::quad_rule({{-1, -1}, {1, -1}, {-0.5, -0.5}, {-1, 1}}, 3, quad));
+}
+
 TEST(MortarSegments, ExtendedParamReachesBeyondTheDomain) {
   // A bilinear, non-parallelogram planar quad; points off its plane, just outside its domain
   // (the closest point to round-off) and far outside (a bounded, finite estimate).
@@ -154,6 +174,7 @@ TEST(MortarSegments, FaceOverAGridOfMasterFacesIsTiledByTheClippedCells) {
     }
   std::vector<QuadPoint> rule;
   ASSERT_TRUE(contact::mortar_rule(slave, masters, candidates, x, 6, rule));
+  EXPECT_EQ(rule.size(), 9u * 9u);  // 9 quadrilateral cells, 3 × 3 points each
   EXPECT_NEAR(weight_sum(rule), 4.0, 1e-13);  // the slave's parametric area
   // ∫ x² y² dA = (2³/3)² = 64/9 (degree 4 in ξ, η: exact on every triangle).
   double integral = 0.0;

@@ -58,7 +58,7 @@ TEST(SurfaceToSurfaceWeights, AreAPartitionOfUnityEverywhere) {
 // Offset meshes (3 and 4 elements across, 3 × 3 and 4 × 4 in 3D): the master's shape functions
 // kink inside the slave facets. Surface to surface transfers the consistent nodal forces of a
 // uniform pressure; with the slave facets cut at the master's facet edges (mortar_segments.hpp)
-// measured here: max |CPRESS − p|/p 2e-14 … 2.3e-11 (4.4e-4 … 8.8e-4 with a 6-point rule across
+// measured here: max |CPRESS − p|/p 2e-14 … 6e-10 (4.4e-4 … 8.8e-4 with a 6-point rule across
 // the kinks), against 8 % for node to surface on the same 2D meshes (test_contact_analysis.cpp).
 TEST(SurfaceToSurfacePatchTest, TwoDimensionalOffsetMeshesGiveUniformPressureForEveryMethod) {
   const double k = 10.0 * kM / kSlaveElementHeight;  // linear penalty: 10 k_e
@@ -66,7 +66,7 @@ TEST(SurfaceToSurfacePatchTest, TwoDimensionalOffsetMeshesGiveUniformPressureFor
     auto r = verification::run_deck(contact_deck(std::string("patch_2d_s2s_") + m + ".inp"));
     const auto fig = check_patch(*r, std::string("surface to surface, ") + m);
     EXPECT_LE(fig.max_cpress_error, 0.01) << m;  // the 1 % everywhere
-    EXPECT_LE(fig.max_cpress_error, 1e-9) << m;  // what it does (see above)
+    EXPECT_LE(fig.max_cpress_error, 1e-8) << m;  // what it does (see above; nonlinear: Newton's tolerance)
     const std::string method = m;
     if (method == "direct") {
       EXPECT_LE(std::max(std::abs(fig.max_penetration), std::abs(fig.min_penetration)), 1e-12);
@@ -98,7 +98,7 @@ TEST(SurfaceToSurfacePatchTest, ThreeDimensionalOffsetMeshesGiveUniformPressureF
       area += cnarea.values[i];
     }
     EXPECT_LE(worst, 0.01) << m;
-    EXPECT_LE(worst, 1e-9) << m;
+    EXPECT_LE(worst, 1e-8) << m;  // (nonlinear penalty: Newton's tolerance, 6e-10)
     EXPECT_NEAR(area, 4.0, 1e-9) << m;  // the nodal areas tile the 2 × 2 interface
     const auto rf = verification::sum_rf(*r, f);
     EXPECT_NEAR(rf[2], kP * 4.0, 1e-8 * kP * 4.0) << m;  // reactions balance p × 2 × 2
