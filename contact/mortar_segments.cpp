@@ -18,6 +18,18 @@ constexpr double kFacingCosine = 0.7071;
 /// continuous function of the coordinates (a test that fails or passes would make the pieces, and
 /// the residual, jump between Newton iterations).
 constexpr int kProjectionSteps = 4;
+constexpr double kSliverFraction = 0.01;
+
+/// Quad4 / Quad8 with its corners a parallelogram and (Quad8) its midside nodes halfway: an
+/// affine map, on which the first projection step is exact.
+bool is_affine(const Facet& f, std::span<const Vec3> x) {
+  if (f.shape == FacetShape::Line2 || f.shape == FacetShape::Tri3) return true;
+  if (f.shape != FacetShape::Quad4) return false;
+  auto X = [&](int a) -> const Vec3& { return x[static_cast<std::size_t>(f.nodes[static_cast<std::size_t>(a)])]; };
+  const Vec3 b = sub(add(X(0), X(2)), add(X(1), X(3)));  // the bilinear term (×4)
+  const Vec3 d = sub(X(2), X(0));
+  return dot(b, b) <= 1e-24 * dot(d, d);
+}
 constexpr double kMaxRefinement = 0.25;
 
 std::array<double, 2> facet_centre(FacetShape s) {
@@ -37,13 +49,14 @@ std::array<double, 2> minus2(const std::array<double, 2>& a, const std::array<do
 
 /// The projections of the corners of facing master facets that fall inside the slave edge.
 bool edge_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-               std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out) {
+               std::span<const Vec3> x, std::span<const Vec3> normals, int base_points, std::vector<QuadPoint>& out) {
   const Vec3 ns = centre_normal(slave, x);
   thread_local std::vector<double> breaks;
   breaks.clear();
   for (std::int32_t c : candidates) {
     const Facet& m = facets[static_cast<std::size_t>(c)];
-    if (dot(ns, centre_normal(m, x)) > -kFacingCosine) continue;
+    const Vec3 nm = normals.empty() ? centre_normal(m, x) : normals[static_cast<std::size_t>(c)];
+    if (dot(ns, nm) > -kFacingCosine) continue;
     for (int a = 0; a < 2; ++a) {
       std::array<double, 2> xi{};
       if (!extended_param(slave, x, x[static_cast<std::size_t>(m.nodes[a])], xi)) return false;
@@ -58,7 +71,7 @@ bool edge_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
 
 /// Each facing master facet's projected corner polygon, clipped against the slave face.
 bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-               std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out) {
+               std::span<const Vec3> x, std::span<const Vec3> normals, int base_points, std::vector<QuadPoint>& out) {
   const Vec3 ns = centre_normal(slave, x);
   const double domain_area = polygon_area(domain_polygon(slave.shape));
   thread_local std::vector<std::pair<std::int32_t, std::array<double, 2>>> projected;  // node row → ξ
@@ -69,7 +82,8 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
   double covered = 0.0, largest = 0.0;
   for (std::int32_t c : candidates) {
     const Facet& m = facets[static_cast<std::size_t>(c)];
-    if (dot(ns, centre_normal(m, x)) > -kFacingCosine) continue;
+    const Vec3 nm = normals.empty() ? centre_normal(m, x) : normals[static_cast<std::size_t>(c)];
+    if (dot(ns, nm) > -kFacingCosine) continue;
     Polygon poly;
     for (int a = 0; a < facet_n_corners(m.shape); ++a) {
       const std::int32_t row = m.nodes[static_cast<std::size_t>(a)];
@@ -96,10 +110,14 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
   // W_a N_m: degree 4 on linear faces (bilinear × bilinear), up to 6 with quadratic ones: 3 or 4
   // points per direction at least; more when few cells share the facet (about the plain rule's
   // base² points in all: the same work, and the curved cases keep their accuracy).
+  // A sliver (under kSliverFraction of the facet: a master edge just inside it) gets one point
+  // per direction fewer: over its width the integrand is nearly linear.
   const int n_min = quadratic ? 4 : 3;
   const int n = std::max(n_min, static_cast<int>(std::lround(base_points / std::sqrt(static_cast<double>(cells.size())))));
-  for (const Polygon& cell : cells)
-    if (!(cell.size() == 4 && quad_rule(cell, n, out)) && !polygon_rule(cell, n, out)) return false;
+  for (const Polygon& cell : cells) {
+    const int nc = polygon_area(cell) < kSliverFraction * domain_area ? n_min - 1 : n;
+    if (!(cell.size() == 4 && quad_rule(cell, nc, out)) && !polygon_rule(cell, nc, out)) return false;
+  }
   return true;
 }
 
@@ -107,7 +125,7 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
 
 bool extended_param(const Facet& f, std::span<const Vec3> x, const Vec3& p, std::array<double, 2>& xi) {
   xi = facet_centre(f.shape);
-  const bool affine = f.shape == FacetShape::Line2 || f.shape == FacetShape::Tri3;
+  const bool affine = is_affine(f, x);
   for (int it = 0; it < kProjectionSteps; ++it) {
     const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
     const Vec3 r = sub(p, g.x);
@@ -228,11 +246,16 @@ bool quad_rule(const Polygon& p, int n, std::vector<QuadPoint>& out) {
   return true;
 }
 
+void centre_normals(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<Vec3>& out) {
+  out.resize(facets.size());
+  for (std::size_t i = 0; i < facets.size(); ++i) out[i] = centre_normal(facets[i], x);
+}
+
 bool mortar_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                 std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out) {
+                 std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out, std::span<const Vec3> normals) {
   out.clear();
-  const bool ok = facet_param_dim(slave.shape) == 1 ? edge_rule(slave, facets, candidates, x, base_points, out)
-                                                    : face_rule(slave, facets, candidates, x, base_points, out);
+  const bool ok = facet_param_dim(slave.shape) == 1 ? edge_rule(slave, facets, candidates, x, normals, base_points, out)
+                                                    : face_rule(slave, facets, candidates, x, normals, base_points, out);
   if (!ok) out.clear();
   return ok;
 }

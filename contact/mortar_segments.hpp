@@ -14,7 +14,8 @@
 ///   3D (faces): each master facet's projected corner polygon is clipped against the slave
 ///     domain (Sutherland–Hodgman, clip_to_domain); a quadrilateral cell gets a mapped n × n
 ///     Gauss rule (quad_rule), any other one is fanned into triangles (polygon_rule) with a
-///     collapsed-Gauss triangle rule each; n = max(3 (4 on quadratic faces), round(6/√cells)).
+///     collapsed-Gauss triangle rule each; n = max(3 (4 on quadratic faces), round(6/√cells)),
+///     one less on a sliver (a cell under 1 % of the facet).
 ///     Only master facets facing the slave facet (centre
 ///     normals within 45° of opposite, the points' own overlap test) make cells; the part of the
 ///     slave facet no master facet covers (beyond the master's free edge) gets no point.
@@ -76,8 +77,12 @@ bool quad_rule(const Polygon& p, int n, std::vector<QuadPoint>& out);
 /// The mortar rule of slave facet `slave` against the master `facets` listed in `candidates`
 /// (those the slave facet may touch), in the slave's parametric space with weights of the
 /// parametric measure (like facet_rule()). `base_points`: the plain rule's points per direction.
-/// False: keep the plain rule (see the header comment).
+/// False: keep the plain rule (see the header comment). `normals`: centre_normals() of `facets`
+/// on x when the caller has them (many slave facets against the same master).
 bool mortar_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                 std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out);
+                 std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out,
+                 std::span<const Vec3> normals = {});
+/// The unit normal of every facet at its parametric centre, into `out` (resized).
+void centre_normals(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<Vec3>& out);
 
 }  // namespace inpact::contact

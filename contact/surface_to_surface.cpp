@@ -87,6 +87,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});
   facet_boxes(master_.facets(), x, master_boxes_);
+  centre_normals(master_.facets(), x, master_normals_);
   parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
   // The sums over each node's points, facet after facet and point after point: the same order
   // whatever the thread count, so the same bits.
@@ -129,7 +130,7 @@ std::span<const QuadPoint> SurfaceToSurfacePair::facet_points(std::span<const Ve
   near.clear();
   search_.query_box(box.lo, box.hi, near);
   if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), near);
-  if (mortar_rule(f, master_.facets(), near, x, kRulePoints, layout)) return layout;
+  if (mortar_rule(f, master_.facets(), near, x, kRulePoints, layout, master_normals_)) return layout;
   return facet_rule(f.shape, kRulePoints);
 }
 

@@ -120,6 +120,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
   void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
+  std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs (when corrected).
   void correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
