@@ -95,7 +95,32 @@ bool contains(const B& b, const Vec3& p) {
          p[2] <= b.hi[2];
 }
 
+template <class B>
+bool meets(const B& b, const Vec3& lo, const Vec3& hi) {
+  return lo[0] <= b.hi[0] && hi[0] >= b.lo[0] && lo[1] <= b.hi[1] && hi[1] >= b.lo[1] && lo[2] <= b.hi[2] &&
+         hi[2] >= b.lo[2];
+}
+
 }  // namespace
+
+void FacetSearch::query_box(const Vec3& lo, const Vec3& hi, std::vector<std::int32_t>& out) const {
+  if (tree_.empty()) return;
+  std::int32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const TreeNode& node = tree_[static_cast<std::size_t>(stack[--top])];
+    if (!meets(node.box, lo, hi)) continue;
+    if (node.count > 0) {
+      for (std::int32_t i = node.first; i < node.first + node.count; ++i)
+        if (meets(leaf_boxes_[static_cast<std::size_t>(i)], lo, hi)) out.push_back(perm_[static_cast<std::size_t>(i)]);
+    } else {
+      const std::int32_t self = static_cast<std::int32_t>(&node - tree_.data());
+      stack[top++] = node.first;  // right child
+      stack[top++] = self + 1;    // left child
+    }
+  }
+}
 
 void FacetSearch::query(const Vec3& p, std::vector<std::int32_t>& out) const {
   if (tree_.empty()) return;

@@ -40,6 +40,9 @@ class FacetSearch {
   /// Appends to `out` the indices (into the facets given to build()) of the candidate facets
   /// of point `p`, in no particular order.
   void query(const Vec3& p, std::vector<std::int32_t>& out) const;
+  /// Appends the facets whose enlarged box meets the box [lo, hi] (every facet within radius of
+  /// some point of it, under the same guarantee), in no particular order.
+  void query_box(const Vec3& lo, const Vec3& hi, std::vector<std::int32_t>& out) const;
 
   /// Largest control-point displacement of any facet between the build and `x`.
   double drift(std::span<const Facet> facets, std::span<const Vec3> x) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mortar_segments.hpp"
 #include "parallel_for.hpp"
 #include "smoothed_gap.hpp"
 #include "vec3.hpp"
@@ -94,6 +95,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   const auto nodes = slave_.nodes();
   out.assign(nodes.size(), {});
   facet_boxes(master_.facets(), x, master_boxes_);
+  centre_normals(master_.facets(), x, master_normals_);
   parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
   // The sums over each node's points, facet after facet and point after point: the same order
   // whatever the thread count, so the same bits.
@@ -129,16 +131,28 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   });
 }
 
+std::span<const QuadPoint> SurfaceToSurfacePair::facet_points(std::span<const Vec3> x, const Facet& f) const {
+  thread_local std::vector<std::int32_t> near;
+  thread_local std::vector<QuadPoint> layout;
+  const FacetBox box = facet_box(f, x);
+  near.clear();
+  search_.query_box(box.lo, box.hi, near);
+  if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), near);
+  if (mortar_rule(f, master_.facets(), near, x, kRulePoints, layout, master_normals_)) return layout;
+  return facet_rule(f.shape, kRulePoints);
+}
+
 void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi) {
   const Facet& f = slave_.facets()[fi];
-  const auto rule = facet_rule(f.shape, kRulePoints);
+  const auto rule = facet_points(x, f);
   auto& pts = points_[fi];
-  if (pts.size() != rule.size()) {  // the first update: the shape and weighting functions
-    pts.resize(rule.size());
-    for (std::size_t q = 0; q < rule.size(); ++q) {
-      pts[q].N = eval_shape(f.shape, rule[q].xi, rule[q].eta).N;
-      pts[q].W = weighting_functions(f.shape, pts[q].N);
-    }
+  if (pts.size() != rule.size()) pts.assign(rule.size(), Point{});  // another layout: no warm starts
+  for (std::size_t q = 0; q < rule.size(); ++q) {
+    Point& pt = pts[q];
+    if (pt.param[0] == rule[q].xi && pt.param[1] == rule[q].eta) continue;
+    pt.param = {rule[q].xi, rule[q].eta};
+    pt.N = eval_shape(f.shape, rule[q].xi, rule[q].eta).N;
+    pt.W = weighting_functions(f.shape, pt.N);
   }
   thread_local std::vector<std::int32_t> candidates;
   for (std::size_t q = 0; q < rule.size(); ++q) {

@@ -4,8 +4,10 @@
 /// regions nearby slave nodes rather than only at individual slave nodes" (Abaqus §38.1.1).
 ///
 /// inpact's discretisation (a mortar-type weighted gap, integrated on the slave faces):
-///   every slave facet carries a fine Gauss rule (kRulePoints per direction); each point x_q is
-///   projected onto the master (closest point, projection.hpp) giving g_q, n_q. A point
+///   every slave facet carries integration points (segment-based, contact/mortar_segments.hpp: its
+///   parametric domain cut where master facets begin and end, a Gauss rule per piece; the plain
+///   kRulePoints rule where no master facet edge crosses it); each point x_q is projected onto
+///   the master (closest point, projection.hpp) giving g_q, n_q. A point
 ///   overlaps the master when it projects orthogonally (or nearly: the distance direction within
 ///   45° of the master facet's normal, so that points beyond the master's free edge drop out)
 ///   and the slave face there faces the master (n_slave · n_q ≤ −cos 45°).
@@ -27,6 +29,15 @@
 ///   The Hessian (finite sliding) is Σ_q W_a dA_q/A_a × the point's ∂²g_q mapped to the nodes.
 ///   The contact direction is the master's normal at each point (Abaqus uses the slave normal;
 ///   the two agree where the surfaces touch and the difference is of the order of the gap).
+///
+/// The points' layout depends on the configuration: it is recomputed at every update() from the
+/// current coordinates (the master corners' projections onto each slave facet). The linearisation
+/// holds it fixed: the motion of the cuts (the pieces' ∂ξ_q/∂u and ∂w_q/∂u) is neglected, as
+/// segment-based mortar codes usually do (Puso & Laursen 2004; Popp et al. 2010 linearise it).
+/// By Leibniz's rule the neglected term is the jump of the integrand across a cut times the cut's
+/// speed: across a master facet edge the gap, N_m and W are continuous, so the term vanishes; it
+/// does not where a piece ends at the master's free edge (W g jumps to 0 there).
+/// A facet whose point count changes between updates drops its warm starts (below).
 ///
 /// Each point's projection onto the master facet it projected into at the last update starts
 /// from the ξ found then (ProjectionHint) instead of a grid search, and its geometric correction
@@ -64,9 +75,8 @@
 
 namespace inpact::contact {
 
-/// Gauss points per parametric direction on each slave facet: enough that a master facet edge
-/// crossing a slave facet (a kink of the master's shape functions under it) costs under 0.1%
-/// of a node's force in the patch tests (tests/contact/test_surface_to_surface.cpp).
+/// Gauss points per parametric direction of a slave facet's plain rule (no master facet edge
+/// crosses it); the pieces of a segmented facet get their own rules (contact/mortar_segments.hpp).
 inline constexpr int kRulePoints = 6;
 
 /// The weighting function values W_a at a point of a facet of `shape`, from its shape
@@ -89,6 +99,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
   /// One integration point of a slave facet at the last update.
   struct Point {
     double da = 0.0;                 ///< weight × area element
+    std::array<double, 2> param{2.0, 2.0};  ///< its parametric point on the slave facet (N, W are of it)
     std::array<double, 8> N{}, W{};  ///< shape and weighting functions of the slave facet
     Vec3 x{};
     Projection projection;
@@ -111,9 +122,13 @@ class SurfaceToSurfacePair final : public PairKinematics {
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
   /// Projects the integration points of slave facet fi (points_[fi]; one thread per facet).
   void measure_facet(std::span<const Vec3> x, std::size_t fi);
+  /// The integration points of slave facet f on x: the mortar rule against the master facets near
+  /// it, or the plain rule (mortar_segments.hpp). Valid until the thread's next call.
+  std::span<const QuadPoint> facet_points(std::span<const Vec3> x, const Facet& f) const;
   void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
+  std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs; whether it was corrected.
   bool correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,

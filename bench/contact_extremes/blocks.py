@@ -183,8 +183,8 @@ def expectation(c):
     """The analytic answer in the deck's units (mm, MPa; for unit m: m, Pa).
 
     General contact with a penalty-type method is two rows of weight ½ (balanced master-slave,
-    contact/interaction_table.hpp), each with the law of its own slave (k_e, characteristic
-    length): the pressure that acts is the mean of the two laws at the common penetration h."""
+    contact/interaction_table.hpp), both with the law of the mean of the two surfaces' k_e and
+    characteristic lengths: the pressure that acts is that law at the common penetration h."""
     dim = c["dim"]
     Ms, Mm = constrained(c["Es"], c["nus"]), constrained(c["Em"], c["num"])
     ns, nms = c["ns"], c["nms"] or max(1, round(c["ns"] * c["Hs"] / c["W"]))
@@ -198,7 +198,10 @@ def expectation(c):
     if not general:
         sides = [upper]
     elif method != "DIRECT":
-        sides = [upper, lower]
+        # both rows take the mean of the two surfaces' k_e and characteristic length
+        # (contact/resolved_interaction.cpp, resolve_scales): one law, the same gap
+        mean = ((upper[0] + lower[0]) / 2, (upper[1] + lower[1]) / 2)
+        sides = [mean, mean]
     else:  # one row: the smaller facets are the slave (ties: the first body, the lower block)
         sides = [upper if upper[1] < lower[1] else lower]
     ke, l_char = sides[0]

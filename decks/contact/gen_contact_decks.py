@@ -36,19 +36,19 @@ def lines(items, per=8):
     return "\n".join(", ".join(items[k:k + per]) for k in range(0, len(items), per)) + "\n"
 
 
-def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=None):
-    """Two stacked blocks 2 × 1 (n_lower and 4 elements across), side rollers, bottom held.
+def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=None, n_upper=4):
+    """Two stacked blocks 2 × 1 (n_lower and n_upper elements across), side rollers, bottom held.
     n_lower = 2: every master node is also a slave node position (nested meshes), where
     node-to-surface contact passes the patch test; n_lower = 3: it does not (offset meshes)."""
     ln, le = grid2d(1, n_lower, 2, 0.0, 2.0, 0.0, 1.0)
-    un, ue = grid2d(101, 4, 2, 0.0, 2.0, 1.0 + offset, 2.0 + offset)
+    un, ue = grid2d(101, n_upper, 2, 0.0, 2.0, 1.0 + offset, 2.0 + offset)
     m = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
     s = "*HEADING\n"
     if lift_off:
         s += (f" Contact lift-off, 2D ({method}): the upper block is pushed down by 0.005 in step 1 and\n"
               " lifted 0.01 above its start in step 2: every slave node open, CPRESS = 0, CSTATUS = 0.\n")
     else:
-        s += (f" Contact patch test, 2D plane strain ({method}, {TYPE[disc].lower()}): two blocks with non-matching meshes ({n_lower} and 4\n"
+        s += (f" Contact patch test, 2D plane strain ({method}, {TYPE[disc].lower()}): two blocks with non-matching meshes ({n_lower} and {n_upper}\n"
               " elements across) under a\n"
               f" uniform pressure p = {P:g} on top, side rollers. Exact state: uniaxial strain, CPRESS = p\n"
               f" at every slave node; M = E(1-nu)/((1+nu)(1-2nu)) = {m:.6g}.\n")
@@ -61,8 +61,8 @@ def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=N
     s += "*ELEMENT, TYPE=CPE4, ELSET=LOWER\n" + "".join(", ".join(map(str, e)) + "\n" for e in le)
     s += "*ELEMENT, TYPE=CPE4, ELSET=UPPER\n" + "".join(", ".join(map(str, e)) + "\n" for e in ue)
     s += "*ELSET, ELSET=LOWER_TOP\n" + lines([e[0] for e in le[n_lower:]])
-    s += "*ELSET, ELSET=UPPER_BOTTOM\n101, 102, 103, 104\n"
-    s += "*ELSET, ELSET=UPPER_TOP\n105, 106, 107, 108\n"
+    s += "*ELSET, ELSET=UPPER_BOTTOM\n" + lines([e[0] for e in ue[:n_upper]])
+    s += "*ELSET, ELSET=UPPER_TOP\n" + lines([e[0] for e in ue[n_upper:]])
     s += "*SURFACE, NAME=MASTER_S\nLOWER_TOP, S3\n*SURFACE, NAME=SLAVE_S\nUPPER_BOTTOM, S1\n"
     s += "*SURFACE, NAME=TOP_S\nUPPER_TOP, S3\n"
     s += "*SOLID SECTION, ELSET=LOWER, MATERIAL=SOFT\n*SOLID SECTION, ELSET=UPPER, MATERIAL=SOFT\n"
@@ -93,6 +93,30 @@ def patch_2d_general(friction=False):
                   "*CONTACT\n*CONTACT INCLUSIONS, ALL EXTERIOR\n*CONTACT PROPERTY ASSIGNMENT\n, , SMOOTH\n")
     s = s.replace("(penalty, surface to surface)", "(general contact, ALL EXTERIOR" + (", friction 0.2)" if friction else ")"))
     return s
+
+
+def as_general(deck):
+    """The pair deck as general contact: ALL EXTERIOR, the pair's interaction assigned globally."""
+    pair = "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=SURFACE TO SURFACE\nSLAVE_S, MASTER_S\n"
+    assert pair in deck
+    return deck.replace(pair, "*CONTACT\n*CONTACT INCLUSIONS, ALL EXTERIOR\n*CONTACT PROPERTY ASSIGNMENT\n, , SMOOTH\n") \
+        .replace("surface to surface)", "general contact, ALL EXTERIOR)")
+
+
+def coarse_slave_decks():
+    """A coarse slave on a fine master (4 elements across below, 2 above: nested; 3 above: not
+    nested), surface to surface (pair and general contact), 2D and 3D, direct and penalty: the
+    segment-based integration (contact/mortar_segments.hpp) makes CPRESS = p at every node
+    (tests/contact/test_surface_to_surface.cpp)."""
+    out = {}
+    for n_upper, nesting in ((2, "nested"), (3, "offset")):
+        for method in ("direct", "penalty"):
+            for dim, make in ((2, patch_2d), (3, patch_3d)):
+                pair = make(method, n_lower=4, disc="s2s", n_upper=n_upper).replace(
+                    "tests/contact/test_contact_analysis.cpp", "tests/contact/test_surface_to_surface.cpp")
+                out[f"patch_{dim}d_coarse_{nesting}_s2s_{method}.inp"] = pair
+                out[f"patch_{dim}d_coarse_{nesting}_general_{method}.inp"] = as_general(pair)
+    return out
 
 
 def quad_grid2d(first, nx, ny, x0, x1, y0, y1):
@@ -180,21 +204,21 @@ def grid3d(first, n, nz, z0, z1, size=2.0):
     return nodes, elems
 
 
-def patch_3d(method, n_lower=2, disc="n2s"):
-    """Two stacked 2 × 2 × 1 blocks (n_lower² and 4 × 4 elements across; nested when n_lower = 2),
+def patch_3d(method, n_lower=2, disc="n2s", n_upper=4):
+    """Two stacked 2 × 2 × 1 blocks (n_lower² and n_upper² elements across; nested when n_lower = 2),
     rollers on the sides."""
     ln, le = grid3d(1, n_lower, 2, 0.0, 1.0)
-    un, ue = grid3d(1001, 4, 2, 1.0, 2.0)
+    un, ue = grid3d(1001, n_upper, 2, 1.0, 2.0)
     s = (f"*HEADING\n Contact patch test, 3D ({method}, {TYPE[disc].lower()}): two blocks with non-matching meshes "
-         f"({n_lower} x {n_lower} and 4 x 4\n"
+         f"({n_lower} x {n_lower} and {n_upper} x {n_upper}\n"
          f" elements across) under p = {P:g} on top, rollers on the sides: CPRESS = p at every slave node.\n"
          "** Generated by decks/contact/gen_contact_decks.py; tolerances in tests/contact/test_contact_analysis.cpp\n")
     s += "*NODE, NSET=ALL\n" + "".join(f"{n}, {x:.12g}, {y:.12g}, {z:.12g}\n" for n, x, y, z in ln + un)
     s += "*ELEMENT, TYPE=C3D8, ELSET=LOWER\n" + "".join(", ".join(map(str, e)) + "\n" for e in le)
     s += "*ELEMENT, TYPE=C3D8, ELSET=UPPER\n" + "".join(", ".join(map(str, e)) + "\n" for e in ue)
     s += "*ELSET, ELSET=LOWER_TOP\n" + lines([e[0] for e in le[n_lower * n_lower:]])
-    s += "*ELSET, ELSET=UPPER_BOTTOM\n" + lines([e[0] for e in ue[:16]])
-    s += "*ELSET, ELSET=UPPER_TOP\n" + lines([e[0] for e in ue[16:]])
+    s += "*ELSET, ELSET=UPPER_BOTTOM\n" + lines([e[0] for e in ue[:n_upper * n_upper]])
+    s += "*ELSET, ELSET=UPPER_TOP\n" + lines([e[0] for e in ue[n_upper * n_upper:]])
     s += "*SURFACE, NAME=MASTER_S\nLOWER_TOP, S2\n*SURFACE, NAME=SLAVE_S\nUPPER_BOTTOM, S1\n*SURFACE, NAME=TOP_S\nUPPER_TOP, S2\n"
     s += "*SOLID SECTION, ELSET=LOWER, MATERIAL=SOFT\n*SOLID SECTION, ELSET=UPPER, MATERIAL=SOFT\n"
     s += f"*MATERIAL, NAME=SOFT\n*ELASTIC\n{E:g}, {NU:g}\n"
@@ -299,6 +323,9 @@ def main():
             f.write(patch_2d(method, n_lower=3, disc="s2s"))
         with open(os.path.join(HERE, f"patch_3d_s2s_{method}.inp"), "w") as f:
             f.write(patch_3d(method, n_lower=3, disc="s2s"))
+    for name, text in coarse_slave_decks().items():
+        with open(os.path.join(HERE, name), "w") as f:
+            f.write(text)
     # Initial gaps and overclosures, with and without ADJUST (tests/contact/test_initial_gaps.cpp).
     for name, offset, adjust in (("patch_2d_gap_direct", 0.001, None), ("patch_2d_gap_adjust", 0.001, "0.002"),
                                  ("patch_2d_overclosed_adjust", -0.001, "YES")):
