@@ -1,4 +1,4 @@
-/// *MATERIAL with *ELASTIC, *DENSITY, *EXPANSION; *SOLID SECTION.
+/// *MATERIAL with *ELASTIC, *PLASTIC, *DENSITY, *EXPANSION; *SOLID SECTION.
 #include <fmt/format.h>
 
 #include "handlers.hpp"
@@ -46,6 +46,73 @@ void elastic(KeywordContext& ctx) {
   if (*nu <= -1.0 || *nu >= 0.5)
     ctx.error(f[1].loc, fmt::format("Poisson's ratio must lie in (-1, 0.5), found {}", *nu));
   ctx.state.material->elastic = model::Elastic{*e, *nu, line->loc};
+}
+
+/// One *PLASTIC data line: yield stress, plastic strain[, temperature]; false when it is bad.
+bool plastic_point(KeywordContext& ctx, const Line& line, model::Plastic::Point& point,
+                   std::optional<double>& temperature) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, 1, 3, "yield stress[, plastic strain[, temperature]]")) return false;
+  auto sy = ctx.real(f[0], "yield stress");
+  if (!sy) return false;
+  double ep = 0.0;
+  if (f.size() > 1 && !f[1].empty()) {
+    auto v = ctx.real(f[1], "plastic strain");
+    if (!v) return false;
+    ep = *v;
+  }
+  if (f.size() > 2 && !f[2].empty()) temperature = ctx.real(f[2], "temperature");
+  if (*sy <= 0) {
+    ctx.error(f[0].loc, fmt::format("the yield stress must be positive, found {}", *sy));
+    return false;
+  }
+  point = {*sy, ep};
+  return true;
+}
+
+// *PLASTIC, HARDENING=ISOTROPIC (default) | KINEMATIC: yield stress, equivalent plastic strain
+// [, temperature] per line. The first line is at zero plastic strain (Abaqus requires it), the
+// strains increase. A temperature column is read; several temperatures are not supported yet.
+void plastic(KeywordContext& ctx) {
+  const std::string hardening = ctx.choice_value("HARDENING");
+  model::Plastic p;
+  if (hardening == "KINEMATIC") {
+    p.hardening = model::Plastic::Hardening::Kinematic;
+  } else if (!hardening.empty() && hardening != "ISOTROPIC") {
+    ctx.error_param("HARDENING", fmt::format("HARDENING={} is not supported yet (ISOTROPIC or KINEMATIC)", hardening));
+    return;
+  }
+  if (ctx.param("DEPENDENCIES") || ctx.param("RATE")) {
+    ctx.error(ctx.keyword.loc, "field-variable and rate dependence (DEPENDENCIES, RATE) are not supported yet");
+    return;
+  }
+  std::optional<double> first_temperature;
+  for (std::size_t i = 0; i < ctx.data.size(); ++i) {
+    const Line& line = ctx.data[i];
+    model::Plastic::Point point;
+    std::optional<double> temperature;
+    if (!plastic_point(ctx, line, point, temperature)) return;
+    if (i == 0) first_temperature = temperature;
+    if (temperature.value_or(0.0) != first_temperature.value_or(0.0)) {
+      ctx.error(line.loc, "temperature-dependent plasticity (more than one temperature) is not supported yet");
+      return;
+    }
+    if (i == 0 && point.plastic_strain != 0.0) {
+      ctx.error(line.loc, fmt::format("the first yield stress must be given at zero plastic strain, found {}",
+                                      point.plastic_strain));
+      return;
+    }
+    if (i > 0 && point.plastic_strain <= p.table.back().plastic_strain) {
+      ctx.error(line.loc, fmt::format("the plastic strains must increase, found {} after {}", point.plastic_strain,
+                                      p.table.back().plastic_strain));
+      return;
+    }
+    p.table.push_back(point);
+  }
+  if (ctx.state.material->plastic) ctx.error(ctx.keyword.loc, "*PLASTIC is given twice in this material");
+  p.loc = ctx.keyword.loc;
+  ctx.state.material->plastic = std::move(p);
 }
 
 // *DENSITY: ρ. Kept for gravity loads and later procedures.
@@ -105,6 +172,12 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
                 {"MODULI", ValueKind::Required, ValueType::Choice, {"LONG TERM", "INSTANTANEOUS"}},
                 {"DEPENDENCIES", ValueKind::Required, ValueType::Int}},
                DataLines::Required, elastic, parent});
+  t.back().numbers_from = 0;
+  t.push_back({"*PLASTIC", kModelScope,
+               {{"HARDENING", ValueKind::Required, ValueType::Choice, {"ISOTROPIC", "KINEMATIC", "COMBINED", "JOHNSON COOK", "USER"}},
+                {"DEPENDENCIES", ValueKind::Required, ValueType::Int},
+                {"RATE", ValueKind::Required, ValueType::Real}},
+               DataLines::Required, plastic, parent});
   t.back().numbers_from = 0;
   t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});
   t.back().numbers_from = 0;

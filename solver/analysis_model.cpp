@@ -13,6 +13,7 @@
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
 #include "elements/material.hpp"
+#include "elements/mises_plasticity.hpp"
 
 namespace inpact::solver {
 
@@ -26,14 +27,40 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
 
 namespace {
 
+/// The Mises material of *PLASTIC; plane stress has no return yet and NLGEOM no finite-strain
+/// plasticity (a clear stop instead of a wrong answer).
+std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
+                                                model::ElementFamily family, const elements::ElasticConstants& c) {
+  const model::Plastic& p = *mat.plastic;
+  if (family == model::ElementFamily::PlaneStress)
+    throw AnalysisError(fmt::format("{}: error: *PLASTIC: plasticity with plane stress elements (CPS*) is not supported "
+                                    "yet (material '{}'; use plane strain, axisymmetric or solid elements)",
+                                    m.sources.describe(p.loc), mat.name));
+  for (const model::Step& step : m.steps)
+    if (step.nlgeom)
+      throw AnalysisError(fmt::format("{}: error: *PLASTIC: plasticity with NLGEOM (finite strain) is not supported yet "
+                                      "(material '{}'; step '{}' has NLGEOM)", m.sources.describe(p.loc), mat.name,
+                                      step.name));
+  elements::MisesHardening h;
+  h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
+  for (const auto& point : p.table) {
+    h.plastic_strain.push_back(point.plastic_strain);
+    h.yield_stress.push_back(point.yield_stress);
+  }
+  return std::make_shared<elements::MisesPlasticity>(c, std::move(h));
+}
+
 /// Each element's material law and section data. One law per section and element family (plane
 /// stress condenses the elasticity matrix), shared by the section's elements; an element no
 /// section covers keeps zero constants.
 void assign_materials(const model::Model& m, AnalysisModel& am) {
   std::map<std::pair<std::size_t, model::ElementFamily>, const elements::Material*> laws;
-  const auto law = [&](std::size_t section, model::ElementFamily family, const elements::ElasticConstants& c) {
+  const auto law = [&](std::size_t section, model::ElementFamily family, const elements::ElasticConstants& c,
+                       const model::Material* mat) {
     const elements::Material*& l = laws[{section, family}];
-    if (!l) l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
+    if (l) return l;
+    if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
+    else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
     return l;
   };
   for (std::size_t k = 0; k < m.mesh.sections.size(); ++k) {
@@ -48,13 +75,13 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
     for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[e];
-      s.material = law(k, s.type->family, c);
+      s.material = law(k, s.type->family, c, &mat);
       s.section.thickness = sec.thickness;
       s.density = mat.density.value_or(0.0);
     }
   }
   for (ElementSetup& s : am.elements)
-    if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {});
+    if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {}, nullptr);
 }
 
 }  // namespace

@@ -199,7 +199,10 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
   const Mat6& D = law.update({F, strain, thermal_strain}, history, stress, scratch);
   const Mat6x24 B = hex8_b(request.nlgeom ? F : Eigen::Matrix3d::Identity(), g);
   f.noalias() += (B.transpose() * stress) * geo.dv[p];
-  if (request.point_output) hex8_output(rule, geo, p, law.elastic(), request.nlgeom, F, strain, stress, sys);
+  if (request.point_output) {
+    hex8_output(rule, geo, p, law.elastic(), request.nlgeom, F, strain, stress, sys);
+    if (!history.trial.empty()) law.plastic_output(history.trial, sys.points.back());
+  }
   if (!request.stiffness) return;
   const Mat6x24 DB = (D * geo.dv[p]) * B;
   K.noalias() += B.transpose() * DB;
@@ -370,6 +373,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
     for (std::size_t p = 0; p < geo.pts.size(); ++p) {
       point_output(type.family, law.elastic(), request.nlgeom, geo.pts[p], as.states[p], sys.points[p]);
       sys.points[p].coords = geo.point_coords[p];
+      if (const PointHistory h = history.at(p); !h.trial.empty()) law.plastic_output(h.trial, sys.points[p]);
     }
   }
   return sys;

@@ -8,6 +8,8 @@ using model::ElementFamily;
 
 void Material::initial_state(std::span<double> state) const { std::fill(state.begin(), state.end(), 0.0); }
 
+void Material::plastic_output(std::span<const double>, PointResult&) const {}
+
 IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants)
     : constants_(constants), D_(elasticity_matrix(family, constants)) {}
 

@@ -52,6 +52,9 @@ class Material {
   /// The elastic constants, for what is not the stress: the expansion α, the hourglass
   /// control's shear modulus, the plane-stress thickness strain in the output.
   virtual const ElasticConstants& elastic() const = 0;
+  /// The plastic strain (PE, engineering shear) and the equivalent plastic strain (PEEQ) of a
+  /// point's state, for output; a material without plasticity leaves them zero.
+  virtual void plastic_output(std::span<const double> state, PointResult& out) const;
   /// The element kernels' fast path: this material when it is isotropic linear elastic.
   virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
 };

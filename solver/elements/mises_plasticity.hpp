@@ -1,0 +1,73 @@
+#pragma once
+/// Mises (J2) plasticity at small strain: isotropic elasticity, the yield function
+///
+///   f = q(σ − α) − σ_y(ε̄ᵖ),   q(ξ) = √(3/2 dev ξ : dev ξ),
+///
+/// associated flow ε̇ᵖ = ε̄̇ᵖ · 3/2 dev(σ − α)/q, and either
+///  - isotropic hardening: σ_y(ε̄ᵖ) piecewise linear through the table points, constant beyond
+///    the last one (one point: perfectly plastic), α = 0; or
+///  - linear kinematic hardening: σ_y = σ⁰ (the first point), α̇ = 2/3 C ε̇ᵖ with C the slope of
+///    the first two points (Prager; for a Mises surface and a deviatoric backstress this is
+///    Abaqus's linear Ziegler law α̇ = C/σ⁰ (σ − α) ε̄̇ᵖ, since dev(σ − α) = 2/3 σ⁰ · 3/2 n).
+///
+/// Integration: backward Euler, the radial return (Simo & Hughes, Computational Inelasticity,
+/// §3.3): the trial stress σ_tr = D(ε − εᵖ_n − ε_th), and on yield the one scalar equation
+/// q_tr − 3GΔγ − H_kin Δγ − σ_y(ε̄ᵖ_n + Δγ) = 0, solved exactly segment by segment of the
+/// piecewise-linear table (no iteration, no tolerance). Tangent: the consistent (algorithmic)
+/// one, C = K 1⊗1 + 2Gθ I_dev − 2G θ̄ n⊗n, θ = 1 − 3GΔγ/q_tr, θ̄ = 1/(1 + H/3G) − (1 − θ),
+/// H the slope at the returned point (+ C kinematic).
+///
+/// State per point (state_size()): εᵖ (6, Voigt 11 22 33 12 13 23, engineering shear), ε̄ᵖ,
+/// and with kinematic hardening α (6, tensor components). Families: 3D, plane strain and
+/// axisymmetric (the full 3D return; ε33 = 0 resp. the hoop strain comes in the strain);
+/// plane stress has no return here (analysis_model refuses it).
+#include <vector>
+
+#include "material.hpp"
+
+namespace inpact::solver::elements {
+
+/// The hardening data of *PLASTIC: points (ε̄ᵖ, σ_y), the first at ε̄ᵖ = 0, strains increasing.
+struct MisesHardening {
+  bool kinematic = false;
+  std::vector<double> plastic_strain;
+  std::vector<double> yield_stress;
+};
+
+/// Where the state of a point keeps what.
+struct MisesStateLayout {
+  static constexpr std::size_t plastic_strain = 0;  ///< 6 values
+  static constexpr std::size_t equivalent = 6;      ///< ε̄ᵖ
+  static constexpr std::size_t backstress = 7;      ///< 6 values, kinematic hardening only
+};
+
+class MisesPlasticity final : public Material {
+ public:
+  MisesPlasticity(const ElasticConstants& constants, MisesHardening hardening);
+
+  std::size_t state_size() const override { return hardening_.kinematic ? 13 : 7; }
+  const Mat6& update(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
+                     Mat6& scratch) const override;
+  const ElasticConstants& elastic() const override { return constants_; }
+  void plastic_output(std::span<const double> state, PointResult& out) const override;
+
+  /// σ_y(ε̄ᵖ) of the isotropic table (σ⁰ with kinematic hardening).
+  double yield_stress(double equivalent_plastic_strain) const;
+  /// The elasticity matrix (3D).
+  const Mat6& D() const { return D_; }
+
+ private:
+  struct Return {
+    double dgamma = 0.0;  ///< Δε̄ᵖ
+    double slope = 0.0;   ///< dσ_y/dε̄ᵖ + C at the returned point
+  };
+  Return solve_return(double q_trial, double eq_n) const;
+
+  ElasticConstants constants_;
+  MisesHardening hardening_;
+  double shear_ = 0.0, bulk_ = 0.0;
+  double kinematic_modulus_ = 0.0;  ///< C (0 without kinematic hardening)
+  Mat6 D_;
+};
+
+}  // namespace inpact::solver::elements
