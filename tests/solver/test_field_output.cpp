@@ -348,11 +348,11 @@ TEST_F(FieldOutput, AFieldAskedForOnSeveralSetsIsWrittenOnTheirUnionEveryFrame) 
 }
 
 TEST_F(FieldOutput, RequestedButNotComputedVariablesAreReportedOncePerStep) {
-  const auto m = read(pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, PEEQ\n*EL PRINT\nPEEQ, MISES\n") +
+  const auto m = read(pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, TRESCA\n*EL PRINT\nTRESCA, MISES\n") +
                       pull_step(""));
   const Recorder rec = run(m);
   const auto count = std::count_if(rec.messages.begin(), rec.messages.end(),
-                                   [](const std::string& s) { return s.find("PEEQ") != std::string::npos; });
+                                   [](const std::string& s) { return s.find("TRESCA") != std::string::npos; });
   EXPECT_EQ(count, 2);  // once in each step (carried over), not per request or increment
 }
 
