@@ -48,27 +48,38 @@ void elastic(KeywordContext& ctx) {
   ctx.state.material->elastic = model::Elastic{*e, *nu, line->loc};
 }
 
-/// One *PLASTIC data line: yield stress, plastic strain[, temperature]; false when it is bad.
-bool plastic_point(KeywordContext& ctx, const Line& line, model::Plastic::Point& point,
-                   std::optional<double>& temperature) {
+/// One *PLASTIC data line: yield stress, plastic strain[, temperature], with where the strain
+/// and the temperature are written (for the errors about the table).
+struct PlasticLine {
+  model::Plastic::Point point;
+  std::optional<double> temperature;
+  model::SourceLoc strain_loc, temperature_loc;
+};
+
+std::optional<PlasticLine> plastic_line(KeywordContext& ctx, const Line& line) {
   std::vector<Field> f;
   split_fields(line, f);
-  if (!ctx.check_count(f, line, 1, 3, "yield stress[, plastic strain[, temperature]]")) return false;
+  if (!ctx.check_count(f, line, 1, 3, "yield stress[, plastic strain[, temperature]]")) return std::nullopt;
   auto sy = ctx.real(f[0], "yield stress");
-  if (!sy) return false;
-  double ep = 0.0;
+  if (!sy) return std::nullopt;
+  PlasticLine out;
+  out.strain_loc = f.size() > 1 ? f[1].loc : line.loc;
+  out.temperature_loc = f.size() > 2 ? f[2].loc : line.loc;
   if (f.size() > 1 && !f[1].empty()) {
     auto v = ctx.real(f[1], "plastic strain");
-    if (!v) return false;
-    ep = *v;
+    if (!v) return std::nullopt;
+    out.point.plastic_strain = *v;
   }
-  if (f.size() > 2 && !f[2].empty()) temperature = ctx.real(f[2], "temperature");
+  if (f.size() > 2 && !f[2].empty()) {
+    out.temperature = ctx.real(f[2], "temperature");
+    if (!out.temperature) return std::nullopt;
+  }
   if (*sy <= 0) {
     ctx.error(f[0].loc, fmt::format("the yield stress must be positive, found {}", *sy));
-    return false;
+    return std::nullopt;
   }
-  point = {*sy, ep};
-  return true;
+  out.point.yield_stress = *sy;
+  return out;
 }
 
 // *PLASTIC, HARDENING=ISOTROPIC (default) | KINEMATIC: yield stress, equivalent plastic strain
@@ -83,32 +94,30 @@ void plastic(KeywordContext& ctx) {
     ctx.error_param("HARDENING", fmt::format("HARDENING={} is not supported yet (ISOTROPIC or KINEMATIC)", hardening));
     return;
   }
-  if (ctx.param("DEPENDENCIES") || ctx.param("RATE")) {
+  if (ctx.has("DEPENDENCIES") || ctx.has("RATE")) {
     ctx.error(ctx.keyword.loc, "field-variable and rate dependence (DEPENDENCIES, RATE) are not supported yet");
     return;
   }
   std::optional<double> first_temperature;
   for (std::size_t i = 0; i < ctx.data.size(); ++i) {
-    const Line& line = ctx.data[i];
-    model::Plastic::Point point;
-    std::optional<double> temperature;
-    if (!plastic_point(ctx, line, point, temperature)) return;
-    if (i == 0) first_temperature = temperature;
-    if (temperature.value_or(0.0) != first_temperature.value_or(0.0)) {
-      ctx.error(line.loc, "temperature-dependent plasticity (more than one temperature) is not supported yet");
+    const auto line = plastic_line(ctx, ctx.data[i]);
+    if (!line) return;
+    if (i == 0) first_temperature = line->temperature;
+    if (line->temperature.value_or(0.0) != first_temperature.value_or(0.0)) {
+      ctx.error(line->temperature_loc, "temperature-dependent plasticity (more than one temperature) is not supported yet");
       return;
     }
-    if (i == 0 && point.plastic_strain != 0.0) {
-      ctx.error(line.loc, fmt::format("the first yield stress must be given at zero plastic strain, found {}",
-                                      point.plastic_strain));
+    const double ep = line->point.plastic_strain;
+    if (i == 0 && ep != 0.0) {
+      ctx.error(line->strain_loc, fmt::format("the first yield stress must be given at zero plastic strain, found {}", ep));
       return;
     }
-    if (i > 0 && point.plastic_strain <= p.table.back().plastic_strain) {
-      ctx.error(line.loc, fmt::format("the plastic strains must increase, found {} after {}", point.plastic_strain,
-                                      p.table.back().plastic_strain));
+    if (i > 0 && ep <= p.table.back().plastic_strain) {
+      ctx.error(line->strain_loc, fmt::format("the plastic strains must increase, found {} after {}", ep,
+                                              p.table.back().plastic_strain));
       return;
     }
-    p.table.push_back(point);
+    p.table.push_back(line->point);
   }
   if (ctx.state.material->plastic) ctx.error(ctx.keyword.loc, "*PLASTIC is given twice in this material");
   p.loc = ctx.keyword.loc;

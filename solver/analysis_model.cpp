@@ -27,15 +27,11 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
 
 namespace {
 
-/// The Mises material of *PLASTIC; plane stress has no return yet and NLGEOM no finite-strain
-/// plasticity (a clear stop instead of a wrong answer).
+/// The Mises material of *PLASTIC; NLGEOM has no finite-strain plasticity yet (a clear stop
+/// instead of a wrong answer).
 std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
                                                 model::ElementFamily family, const elements::ElasticConstants& c) {
   const model::Plastic& p = *mat.plastic;
-  if (family == model::ElementFamily::PlaneStress)
-    throw AnalysisError(fmt::format("{}: error: *PLASTIC: plasticity with plane stress elements (CPS*) is not supported "
-                                    "yet (material '{}'; use plane strain, axisymmetric or solid elements)",
-                                    m.sources.describe(p.loc), mat.name));
   for (const model::Step& step : m.steps)
     if (step.nlgeom)
       throw AnalysisError(fmt::format("{}: error: *PLASTIC: plasticity with NLGEOM (finite strain) is not supported yet "
@@ -47,7 +43,7 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
     h.plastic_strain.push_back(point.plastic_strain);
     h.yield_stress.push_back(point.yield_stress);
   }
-  return std::make_shared<elements::MisesPlasticity>(c, std::move(h));
+  return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
 }
 
 /// Each element's material law and section data. One law per section and element family (plane

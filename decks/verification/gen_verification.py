@@ -710,6 +710,32 @@ def plastic_bar():
     return d
 
 
+def plastic_plate():
+    """The bar of plastic_bar() as a plate 4 x 1 of 4 CPS4 (plane stress, thickness 1)."""
+    E, nu, sy, H, L, eps_max = (PLAST[k] for k in ("E", "nu", "sy", "H", "L", "eps_max"))
+    eps = 1e-9
+    coords, conn = grid_quad(4, 1, lambda s_, t: (L * s_, t), False)
+    d = Deck("Plate in uniaxial tension, plane stress (CPS4), Mises plasticity with linear hardening: load, unload",
+             ["The bar of plastic_bar_c3d8.inp as a plane-stress plate (the local sigma_33 = 0 iteration of the",
+              "material): the same closed forms, and the thickness strain E33 = -nu sigma/E - eps_p/2.",
+              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+    d.nodes(coords, 2)
+    d.elements("CPS4", "BAR", conn)
+    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "1.", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
+          "*PLASTIC", f"{sy}, 0.", f"{sy + H * 0.1:g}, 0.1")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ, PEMAG"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+    d.add("*STEP, NAME=LOAD", "*STATIC, DIRECT", "0.1, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps_max:g}",
+          *out, "*END STEP")
+    d.add("*STEP, NAME=UNLOAD", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1", "Y0, 2, 2",
+          "*END STEP")
+    return d
+
+
 CYL = dict(a=10.0, b=20.0, c=15.0, E=200000.0, nu=0.4999, sy=250.0)
 
 
@@ -785,6 +811,7 @@ def committed(out):
         "equation_tie.inp": equation_tie(),
         "rigid_mode_abort.inp": rigid_mode(),
         "plastic_bar_c3d8.inp": plastic_bar(),
+        "plastic_plate_cps4.inp": plastic_plate(),
         "plastic_cylinder_cpe8r.inp": plastic_cylinder("CPE8R", 12, 4),
     }
     for name, d in decks.items():

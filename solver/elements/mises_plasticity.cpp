@@ -24,8 +24,9 @@ double contract(const Vec6& a) { return a.head<3>().squaredNorm() + 2.0 * a.tail
 
 }  // namespace
 
-MisesPlasticity::MisesPlasticity(const ElasticConstants& constants, MisesHardening hardening)
-    : constants_(constants), hardening_(std::move(hardening)),
+MisesPlasticity::MisesPlasticity(const ElasticConstants& constants, MisesHardening hardening,
+                                 model::ElementFamily family)
+    : constants_(constants), hardening_(std::move(hardening)), plane_stress_(family == model::ElementFamily::PlaneStress),
       D_(elasticity_matrix(model::ElementFamily::Solid3D, constants)) {
   const auto& h = hardening_;
   if (h.yield_stress.empty() || h.yield_stress.size() != h.plastic_strain.size() || h.plastic_strain[0] != 0.0)
@@ -70,18 +71,53 @@ MisesPlasticity::Return MisesPlasticity::solve_return(double q_trial, double eq_
 
 const Mat6& MisesPlasticity::update(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
                                     Mat6& scratch) const {
+  if (plane_stress_) return update_plane_stress(in, point, stress, scratch);
+  return update_3d(in.strain, in.thermal_strain, point, stress, scratch);
+}
+
+const Mat6& MisesPlasticity::update_plane_stress(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
+                                                 Mat6& scratch) const {
+  const std::size_t thickness = L::thickness(hardening_.kinematic);
+  Vec6 strain = in.strain;
+  strain(4) = strain(5) = 0.0;
+  strain(2) = point.committed[thickness];
+  const Mat6* tangent = nullptr;
+  bool converged = false;
+  for (int it = 0; it < 50 && !converged; ++it) {
+    tangent = &update_3d(strain, in.thermal_strain, point, stress, scratch);
+    const double scale = std::max(stress.cwiseAbs().maxCoeff(), hardening_.yield_stress[0]);
+    converged = std::abs(stress(2)) <= 1e-12 * scale;
+    if (!converged) strain(2) -= stress(2) / (*tangent)(2, 2);
+  }
+  point.trial[thickness] = strain(2);
+  if (!converged) stress.setConstant(std::nan(""));  // the increment is cut back
+  // Condensed for σ33 = 0: dσ_ij = (C_ij − C_i3 C_3j / C_33) dε_j (i, j in 11, 22, 12).
+  const Mat6 full = *tangent;  // may be scratch itself
+  scratch.setZero();
+  for (int i : {0, 1, 3})
+    for (int j : {0, 1, 3}) scratch(i, j) = full(i, j) - full(i, 2) * full(2, j) / full(2, 2);
+  stress(2) = stress(4) = stress(5) = 0.0;
+  return scratch;
+}
+
+const Mat6& MisesPlasticity::update_3d(const Vec6& strain, double thermal_strain, const PointHistory& point,
+                                       Vec6& stress, Mat6& scratch) const {
   const std::span<const double> c = point.committed;
   std::copy(c.begin(), c.end(), point.trial.begin());
   const Eigen::Map<const Vec6> ep_n(c.data() + L::plastic_strain);
-  Vec6 elastic_strain = in.strain - ep_n;
-  elastic_strain.head<3>().array() -= in.thermal_strain;
+  Vec6 elastic_strain = strain - ep_n;
+  elastic_strain.head<3>().array() -= thermal_strain;
   stress = D_ * elastic_strain;  // the trial stress
   Vec6 xi = deviator(stress);
   if (hardening_.kinematic) xi -= Eigen::Map<const Vec6>(c.data() + L::backstress);
   const double norm = std::sqrt(contract(xi));
   const double q_trial = std::sqrt(1.5) * norm;
   const double eq_n = c[L::equivalent];
-  if (q_trial <= yield_stress(eq_n)) return D_;  // elastic: the committed state stays
+  // Elastic: the committed state stays. A point evaluated at its converged strain (the first
+  // iteration of an increment) is on the surface to round-off and must stay elastic: the
+  // elastic tangent there is what lets an unloading increment converge at once, where the
+  // elastic–plastic one overshoots into reversed yielding and Newton cycles about the kink.
+  if (q_trial <= yield_stress(eq_n) * (1 + 1e-12)) return D_;
 
   const Return r = solve_return(q_trial, eq_n);
   const Vec6 n = xi / norm;                    // unit normal (tensor components)
@@ -111,6 +147,8 @@ void MisesPlasticity::plastic_output(std::span<const double> state, PointResult&
   if (state.size() < state_size()) return;
   std::copy_n(state.begin() + L::plastic_strain, 6, out.plastic_strain.begin());
   out.peeq = state[L::equivalent];
+  // Plane stress: the elastic formula of point_output misses the plastic part of ε33.
+  if (plane_stress_) out.strain[2] = state[L::thickness(hardening_.kinematic)];
 }
 
 }  // namespace inpact::solver::elements

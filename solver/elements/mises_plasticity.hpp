@@ -18,9 +18,14 @@
 /// H the slope at the returned point (+ C kinematic).
 ///
 /// State per point (state_size()): εᵖ (6, Voigt 11 22 33 12 13 23, engineering shear), ε̄ᵖ,
-/// and with kinematic hardening α (6, tensor components). Families: 3D, plane strain and
-/// axisymmetric (the full 3D return; ε33 = 0 resp. the hoop strain comes in the strain);
-/// plane stress has no return here (analysis_model refuses it).
+/// with kinematic hardening α (6, tensor components), and in plane stress the thickness strain
+/// ε33 last. Families: 3D, plane strain and axisymmetric take the full 3D return (ε33 = 0 resp.
+/// the hoop strain comes in the strain). Plane stress: the same 3D return inside a local Newton
+/// iteration on ε33 until σ33 = 0 (to 1e-12 of the stress), started from the last converged ε33;
+/// the tangent is the 3D consistent one condensed for σ33 = 0, C − C·₃ C₃· / C₃₃ (exact: the
+/// derivative of the converged plane-stress return), with zero rows for 33, 13, 23 as
+/// elasticity_matrix has them. A local iteration that does not converge gives NaN stresses, so
+/// the increment is cut back.
 #include <vector>
 
 #include "material.hpp"
@@ -39,13 +44,18 @@ struct MisesStateLayout {
   static constexpr std::size_t plastic_strain = 0;  ///< 6 values
   static constexpr std::size_t equivalent = 6;      ///< ε̄ᵖ
   static constexpr std::size_t backstress = 7;      ///< 6 values, kinematic hardening only
+  /// Plane stress: the thickness strain ε33, after the others (7, or 13 with backstress).
+  static std::size_t thickness(bool kinematic) { return kinematic ? 13 : 7; }
 };
 
 class MisesPlasticity final : public Material {
  public:
-  MisesPlasticity(const ElasticConstants& constants, MisesHardening hardening);
+  MisesPlasticity(const ElasticConstants& constants, MisesHardening hardening,
+                  model::ElementFamily family = model::ElementFamily::Solid3D);
 
-  std::size_t state_size() const override { return hardening_.kinematic ? 13 : 7; }
+  std::size_t state_size() const override {
+    return MisesStateLayout::thickness(hardening_.kinematic) + (plane_stress_ ? 1 : 0);
+  }
   const Mat6& update(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
                      Mat6& scratch) const override;
   const ElasticConstants& elastic() const override { return constants_; }
@@ -53,7 +63,7 @@ class MisesPlasticity final : public Material {
 
   /// σ_y(ε̄ᵖ) of the isotropic table (σ⁰ with kinematic hardening).
   double yield_stress(double equivalent_plastic_strain) const;
-  /// The elasticity matrix (3D).
+  /// The 3D elasticity matrix.
   const Mat6& D() const { return D_; }
 
  private:
@@ -62,11 +72,17 @@ class MisesPlasticity final : public Material {
     double slope = 0.0;   ///< dσ_y/dε̄ᵖ + C at the returned point
   };
   Return solve_return(double q_trial, double eq_n) const;
+  /// The 3D return at `strain` (ε33 included) from point.committed into point.trial.
+  const Mat6& update_3d(const Vec6& strain, double thermal_strain, const PointHistory& point, Vec6& stress,
+                        Mat6& scratch) const;
+  const Mat6& update_plane_stress(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
+                                  Mat6& scratch) const;
 
   ElasticConstants constants_;
   MisesHardening hardening_;
   double shear_ = 0.0, bulk_ = 0.0;
   double kinematic_modulus_ = 0.0;  ///< C (0 without kinematic hardening)
+  bool plane_stress_ = false;
   Mat6 D_;
 };
 

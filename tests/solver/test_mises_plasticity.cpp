@@ -247,3 +247,56 @@ TEST(MisesPlasticity, KinematicHardeningReversesYieldAtTwiceTheInitialYieldStres
   const double s_rev = uniaxial(eps_max - back - 1e-3);
   EXPECT_NEAR(s_rev, s_max - 2 * kSy - Et * 1e-3, 1e-9 * kSy);
 }
+
+// Plane stress: the 3D return inside a local iteration on ε33 (σ33 = 0), the tangent condensed.
+TEST(MisesPlasticity, PlaneStressTangentIsTheCentralDifferenceAndSigma33Vanishes) {
+  for (const bool kinematic : {false, true}) {
+    SCOPED_TRACE(kinematic ? "kinematic" : "isotropic table");
+    const MisesPlasticity m(kElastic, kinematic ? kinematic_hardening() : table_hardening(),
+                            inpact::model::ElementFamily::PlaneStress);
+    ASSERT_EQ(m.state_size(), kinematic ? 14u : 8u);
+    std::vector<double> committed(m.state_size(), 0.0);
+    const Vec6 strain = (Vec6() << 3.1e-3, -0.9e-3, 0.0, 2.6e-3, 0.0, 0.0).finished();
+    const Eval base = evaluate(m, committed, strain);
+    const std::size_t thickness = MisesStateLayout::thickness(kinematic);
+    ASSERT_GT(base.trial[L::equivalent], 0.0);
+    EXPECT_EQ(base.stress(2), 0.0);
+    // ε33 = elastic −ν/E (σ11 + σ22) plus the plastic εᵖ33.
+    EXPECT_NEAR(base.trial[thickness], -kNu / kE * (base.stress(0) + base.stress(1)) + base.trial[2], 1e-13);
+    const double q = mises_of(base.stress, base.trial, kinematic);
+    EXPECT_LE(std::abs(q - m.yield_stress(base.trial[L::equivalent])), 1e-9 * kSy);
+    const double h = 1e-8;
+    Mat6 fd = Mat6::Zero();
+    for (int j : {0, 1, 3}) {
+      Vec6 plus = strain, minus = strain;
+      plus(j) += h;
+      minus(j) -= h;
+      fd.col(j) = (evaluate(m, committed, plus).stress - evaluate(m, committed, minus).stress) / (2 * h);
+    }
+    const double err = (fd - base.tangent).cwiseAbs().maxCoeff() / base.tangent.cwiseAbs().maxCoeff();
+    std::printf("[mises] plane stress tangent vs central differences: %.2e relative\n", err);
+    EXPECT_LE(err, 1e-6) << "tangent\n" << base.tangent << "\ndifferences\n" << fd;
+  }
+}
+
+// Plane stress uniaxial (σ22 = 0 by Newton on ε22, σ33 = 0 by the kernel): the 1D closed form.
+TEST(MisesPlasticity, PlaneStressUniaxialLinearHardening) {
+  const double H = 20000.0, Et = kE * H / (kE + H);
+  const MisesPlasticity m(kElastic, {false, {0.0, 0.1}, {kSy, kSy + H * 0.1}}, inpact::model::ElementFamily::PlaneStress);
+  std::vector<double> committed(8, 0.0);
+  double lateral = 0;
+  for (double eps : {1.0e-3, 2.0e-3, 5.0e-3}) {
+    Eval e;
+    for (int it = 0; it < 30; ++it) {
+      Vec6 strain = Vec6::Zero();
+      strain << eps, lateral, 0, 0, 0, 0;
+      e = evaluate(m, committed, strain);
+      if (std::abs(e.stress(1)) <= 1e-12 * kSy) break;
+      lateral -= e.stress(1) / e.tangent(1, 1);
+    }
+    const double exact = eps <= kSy / kE ? kE * eps : kSy + Et * (eps - kSy / kE);
+    EXPECT_NEAR(e.stress(0), exact, 1e-9 * kSy) << eps;
+    EXPECT_NEAR(e.trial[L::equivalent], std::max(0.0, (exact - kSy) / H), 1e-13) << eps;
+    committed = e.trial;
+  }
+}
