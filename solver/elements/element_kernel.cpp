@@ -301,7 +301,8 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
 }
 
 /// Incompatible modes: solves f_α(u, α) = 0 for the internal modes (one step when linear,
-/// Newton with NLGEOM) and condenses them out of f and K.
+/// Newton with NLGEOM or a material with state, whose stress is nonlinear in the strain) and
+/// condenses them out of f and K.
 template <class Law>
 void condense_modes(const model::ElementTypeInfo& type, const Law& law, const ElementRequest& request,
                     const std::vector<PointData>& pts, const ElementHistory& history, Eigen::VectorXd& uf,
@@ -309,9 +310,10 @@ void condense_modes(const model::ElementTypeInfo& type, const Law& law, const El
   const int n_dof = type.n_nodes * type.dim;
   const int na = n_incompatible_modes(type.dim) * type.dim;
   const double ref = std::max(as.f.norm(), 1e-300);
+  const bool linear = !request.nlgeom && law.state_size() == 0;
   for (int it = 0; it < 30; ++it) {
     const Eigen::VectorXd fa = as.f.tail(na);
-    if (it > 0 && (!request.nlgeom || fa.norm() <= 1e-13 * ref)) break;
+    if (it > 0 && (linear || fa.norm() <= 1e-13 * ref)) break;
     const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
     uf.tail(na) -= Kaa.ldlt().solve(fa);
     as = assemble(type.family, type.dim, law, request.nlgeom, pts, uf, true, history);
