@@ -39,6 +39,17 @@ struct Plastic {
   SourceLoc loc;
 };
 
+/// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN: the plastic strain of integration points before
+/// the first increment (Voigt 11 22 33 12 13 23, engineering shear; 2D lines give 11 22 33 12).
+/// The equivalent plastic strain (hardening) is not set by it, as in Abaqus (TYPE=HARDENING).
+struct InitialPlasticStrain {
+  std::string target;                 ///< element label or element set, as written
+  std::vector<std::int32_t> elements;  ///< element rows
+  int point = 0;                      ///< 1-based integration point; 0 (empty field): every point
+  double components[6] = {0, 0, 0, 0, 0, 0};
+  SourceLoc loc;
+};
+
 struct Material {
   std::string name;  ///< as written
   std::optional<Elastic> elastic;

@@ -14,6 +14,7 @@
 #include "contact_problem.hpp"
 #include "elements/material.hpp"
 #include "elements/mises_plasticity.hpp"
+#include "elements/quadrature.hpp"
 
 namespace inpact::solver {
 
@@ -80,6 +81,23 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {}, nullptr);
 }
 
+/// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN names elements with plasticity and points they have.
+void check_initial_plastic_strains(const model::Model& m, const AnalysisModel& am) {
+  for (const model::InitialPlasticStrain& ic : m.initial_plastic_strains)
+    for (std::int32_t e : ic.elements) {
+      const ElementSetup& s = am.elements[static_cast<std::size_t>(e)];
+      std::vector<double> probe(s.material->state_size());
+      const auto where = [&] { return m.sources.describe(ic.loc); };
+      if (probe.empty() || !s.material->set_plastic_strain(probe, elements::Vec6::Zero()))
+        throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: TYPE=PLASTIC STRAIN on element {}, whose "
+                                        "material has no *PLASTIC", where(), m.mesh.elements.labels[e]));
+      const std::size_t points = elements::element_rule(*s.type).size();
+      if (static_cast<std::size_t>(ic.point) > points)
+        throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: element {} ({}) has {} integration points, "
+                                        "not {}", where(), m.mesh.elements.labels[e], s.type->name, points, ic.point));
+    }
+}
+
 }  // namespace
 
 AnalysisModel build_analysis_model(const model::Model& m) {
@@ -122,6 +140,7 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   }
 
   assign_materials(m, am);
+  check_initial_plastic_strains(m, am);
   // Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
   // elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
   std::set<std::pair<std::string, std::string>> locking;

@@ -53,6 +53,9 @@ class MaterialStates {
 
  private:
   std::span<const double> slice(const std::vector<double>& v, std::size_t e) const;
+  /// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN into the committed states (checked by
+  /// build_analysis_model: every element named has plasticity, every point exists).
+  void apply_initial_plastic_strains(const AnalysisModel& am);
 
   std::vector<std::size_t> offset_;       ///< element e: values [offset_[e], offset_[e + 1]); n + 1 or empty
   std::vector<std::uint32_t> per_point_;  ///< element e: values per point (0: stateless)

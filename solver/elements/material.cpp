@@ -10,6 +10,8 @@ void Material::initial_state(std::span<double> state) const { std::fill(state.be
 
 void Material::plastic_output(std::span<const double>, PointResult&) const {}
 
+bool Material::set_plastic_strain(std::span<double>, const Vec6&) const { return false; }
+
 IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants)
     : constants_(constants), D_(elasticity_matrix(family, constants)) {}
 

@@ -55,6 +55,9 @@ class Material {
   /// The plastic strain (PE, engineering shear) and the equivalent plastic strain (PEEQ) of a
   /// point's state, for output; a material without plasticity leaves them zero.
   virtual void plastic_output(std::span<const double> state, PointResult& out) const;
+  /// Sets the plastic strain (engineering shear) of a point's initial state; false when the
+  /// material has no plastic strain (*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN).
+  virtual bool set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const;
   /// The element kernels' fast path: this material when it is isotropic linear elastic.
   virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
 };

@@ -143,6 +143,11 @@ const Mat6& MisesPlasticity::update_3d(const Vec6& strain, double thermal_strain
   return scratch;
 }
 
+bool MisesPlasticity::set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const {
+  std::copy_n(plastic_strain.data(), 6, state.begin() + L::plastic_strain);
+  return true;
+}
+
 void MisesPlasticity::plastic_output(std::span<const double> state, PointResult& out) const {
   if (state.size() < state_size()) return;
   std::copy_n(state.begin() + L::plastic_strain, 6, out.plastic_strain.begin());

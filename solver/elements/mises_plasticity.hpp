@@ -60,6 +60,7 @@ class MisesPlasticity final : public Material {
                      Mat6& scratch) const override;
   const ElasticConstants& elastic() const override { return constants_; }
   void plastic_output(std::span<const double> state, PointResult& out) const override;
+  bool set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const override;
 
   /// σ_y(ε̄ᵖ) of the isotropic table (σ⁰ with kinematic hardening).
   double yield_stress(double equivalent_plastic_strain) const;
