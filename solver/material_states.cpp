@@ -67,6 +67,19 @@ elements::ElementHistory MaterialStates::output_history(std::size_t e, std::vect
   return {committed, scratch, per_point_[e]};
 }
 
+std::size_t MaterialStates::points_with_too_large_increments(const AnalysisModel& am) const {
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < per_point_.size(); ++e) {
+    const std::size_t size = per_point_[e];
+    if (size == 0) continue;
+    for (std::size_t p = offset_[e]; p < offset_[e + 1]; p += size)
+      if (am.elements[e].material->increment_too_large(std::span(committed_).subspan(p, size),
+                                                       std::span(trial_).subspan(p, size)))
+        ++count;
+  }
+  return count;
+}
+
 void MaterialStates::commit() { std::copy(trial_.begin(), trial_.end(), committed_.begin()); }
 
 void MaterialStates::discard() { std::copy(committed_.begin(), committed_.end(), trial_.begin()); }

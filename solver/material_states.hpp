@@ -46,6 +46,10 @@ class MaterialStates {
   std::span<const double> committed(std::size_t e) const { return slice(committed_, e); }
   std::span<const double> trial(std::size_t e) const { return slice(trial_, e); }
 
+  /// The points whose material says the step from committed to trial is too large
+  /// (elements::Material::increment_too_large).
+  std::size_t points_with_too_large_increments(const AnalysisModel& am) const;
+
   /// The increment converged: its trial states become the committed ones.
   void commit();
   /// The attempt failed: its trial states are dropped.

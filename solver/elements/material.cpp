@@ -12,6 +12,8 @@ void Material::plastic_output(std::span<const double>, PointResult&) const {}
 
 bool Material::set_plastic_strain(std::span<double>, const Vec6&) const { return false; }
 
+bool Material::increment_too_large(std::span<const double>, std::span<const double>) const { return false; }
+
 IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants)
     : constants_(constants), D_(elasticity_matrix(family, constants)) {}
 

@@ -58,6 +58,10 @@ class Material {
   /// Sets the plastic strain (engineering shear) of a point's initial state; false when the
   /// material has no plastic strain (*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN).
   virtual bool set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const;
+  /// Whether a point's step from `committed` to `trial` is too large to accept (plasticity: an
+  /// equivalent plastic strain increment above fifty times the strain of first yield); the
+  /// increment is then cut back.
+  virtual bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const;
   /// The element kernels' fast path: this material when it is isotropic linear elastic.
   virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
 };

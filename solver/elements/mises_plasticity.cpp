@@ -143,6 +143,11 @@ const Mat6& MisesPlasticity::update_3d(const Vec6& strain, double thermal_strain
   return scratch;
 }
 
+bool MisesPlasticity::increment_too_large(std::span<const double> committed, std::span<const double> trial) const {
+  const double first_yield = hardening_.yield_stress[0] / constants_.youngs_modulus;
+  return trial[L::equivalent] - committed[L::equivalent] > 50 * first_yield;
+}
+
 bool MisesPlasticity::set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const {
   std::copy_n(plastic_strain.data(), 6, state.begin() + L::plastic_strain);
   return true;

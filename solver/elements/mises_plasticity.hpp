@@ -61,6 +61,10 @@ class MisesPlasticity final : public Material {
   const ElasticConstants& elastic() const override { return constants_; }
   void plastic_output(std::span<const double> state, PointResult& out) const override;
   bool set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const override;
+  /// Δε̄ᵖ > 50 σ_y⁰/E: Abaqus/Standard's limit ("the strain increment has exceeded fifty times
+  /// the strain to cause first yield", then a cutback), which keeps the return's one backward
+  /// Euler step from spanning a large part of a nonradial path.
+  bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const override;
 
   /// σ_y(ε̄ᵖ) of the isotropic table (σ⁰ with kinematic hardening).
   double yield_stress(double equivalent_plastic_strain) const;

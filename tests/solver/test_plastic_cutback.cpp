@@ -104,3 +104,43 @@ TEST(PlasticCutback, FailedAttemptsLeaveTheCommittedPlasticStateUntouched) {
     for (std::size_t p = 0; p < 8; ++p)
       EXPECT_NEAR(states.committed(e)[p * 7 + L::equivalent], plastic_strain_at(kEpsMax), 1e-15);
 }
+
+namespace {
+
+/// Records the .sta rows and the messages.
+struct Rows : AnalysisObserver {
+  void attempt_finished(const StatusRow& row) override { rows.push_back(row); }
+  void message(std::string_view text) override { messages.emplace_back(text); }
+  std::vector<StatusRow> rows;
+  std::vector<std::string> messages;
+};
+
+}  // namespace
+
+// An increment that converges with a plastic strain increment beyond fifty times the strain of
+// first yield (50 σ_y/E = 0.0625) is cut back, as Abaqus/Standard does: the bar pulled to
+// ε = 0.1 in one increment (Δε̄ᵖ ≈ 0.098) converges but is refused; a quarter (Δε̄ᵖ ≈ 0.024) is
+// accepted. Every converged increment stays exact.
+TEST(PlasticCutback, PlasticStrainIncrementFarBeyondFirstYieldIsCutBack) {
+  std::string text = cutback_deck();
+  text.replace(text.find(", , , 4\n"), 8, ", , , 16\n");  // the default I_C: Newton itself converges
+  text.replace(text.find("RIGHT, 1, 1, 0.032"), 18, "RIGHT, 1, 1, 0.4");  // ε = 0.1
+  test::DeckDir dir;
+  const auto r = dir.read(text);
+  ASSERT_TRUE(r.ok()) << r.report();
+  const AnalysisModel am = build_analysis_model(r.model);
+  MaterialStates states(am);
+  Rows rows;
+  const AnalysisOutcome outcome = run_steps(am, states, rows);
+  ASSERT_TRUE(outcome.completed) << outcome.message;
+  ASSERT_GE(rows.rows.size(), 2u);
+  EXPECT_TRUE(rows.rows[0].cut_back);
+  EXPECT_EQ(rows.rows[0].inc_of_time, 1.0);
+  EXPECT_FALSE(rows.rows[1].cut_back);
+  EXPECT_EQ(rows.rows[1].inc_of_time, 0.25);
+  ASSERT_FALSE(rows.messages.empty());
+  EXPECT_NE(rows.messages[0].find("the strain increment has exceeded fifty times the strain to cause first yield at 32 "
+                                  "points"), std::string::npos) << rows.messages[0];
+  using L = elements::MisesStateLayout;
+  EXPECT_NEAR(states.committed(0)[L::equivalent], plastic_strain_at(0.1), 1e-15);
+}
