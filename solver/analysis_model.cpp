@@ -98,6 +98,22 @@ void check_initial_plastic_strains(const model::Model& m, const AnalysisModel& a
     }
 }
 
+/// Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
+/// elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
+void warn_about_locking(AnalysisModel& am) {
+  std::set<std::pair<std::string, std::string>> locking;
+  for (const ElementSetup& s : am.elements) {
+    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
+    const double nu = s.material->elastic().poissons_ratio;
+    if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
+  }
+  for (const auto& [type, nu] : locking)
+    am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "
+                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495, "
+                                      "which inpact does not have — use the reduced-integration (R) or incompatible-mode "
+                                      "(I) form of the element", type, nu));
+}
+
 }  // namespace
 
 AnalysisModel build_analysis_model(const model::Model& m) {
@@ -141,20 +157,7 @@ AnalysisModel build_analysis_model(const model::Model& m) {
 
   assign_materials(m, am);
   check_initial_plastic_strains(m, am);
-  // Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
-  // elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
-  std::set<std::pair<std::string, std::string>> locking;
-  for (std::size_t e = 0; e < el.size(); ++e) {
-    const ElementSetup& s = am.elements[e];
-    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
-    const double nu = s.material->elastic().poissons_ratio;
-    if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
-  }
-  for (const auto& [type, nu] : locking)
-    am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "
-                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495, "
-                                      "which inpact does not have — use the reduced-integration (R) or incompatible-mode "
-                                      "(I) form of the element", type, nu));
+  warn_about_locking(am);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const auto& x : m.mesh.nodes.coords)
     for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);
