@@ -1,5 +1,6 @@
 #pragma once
 /// *MATERIAL and its options.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,9 +23,37 @@ struct Expansion {
   SourceLoc loc;
 };
 
+/// *PLASTIC (Mises yield): yield stress against equivalent plastic strain, the first point at
+/// zero plastic strain. ISOTROPIC: piecewise linear between the points, constant beyond the
+/// last (one point: perfectly plastic), as Abaqus. KINEMATIC: linear Ziegler/Prager hardening
+/// with σ⁰ = the first yield stress and C from the first two points (one point: perfectly
+/// plastic). One temperature only (a temperature column with one value is accepted).
+struct Plastic {
+  enum class Hardening : std::uint8_t { Isotropic, Kinematic };
+  struct Point {
+    double yield_stress = 0.0;
+    double plastic_strain = 0.0;
+  };
+  Hardening hardening = Hardening::Isotropic;
+  std::vector<Point> table;
+  SourceLoc loc;
+};
+
+/// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN: the plastic strain of integration points before
+/// the first increment (Voigt 11 22 33 12 13 23, engineering shear; 2D lines give 11 22 33 12).
+/// The equivalent plastic strain (hardening) is not set by it, as in Abaqus (TYPE=HARDENING).
+struct InitialPlasticStrain {
+  std::string target;                 ///< element label or element set, as written
+  std::vector<std::int32_t> elements;  ///< element rows
+  int point = 0;                      ///< 1-based integration point; 0 (empty field): every point
+  double components[6] = {0, 0, 0, 0, 0, 0};
+  SourceLoc loc;
+};
+
 struct Material {
   std::string name;  ///< as written
   std::optional<Elastic> elastic;
+  std::optional<Plastic> plastic;
   std::optional<double> density;  ///< kept for later procedures; static steps ignore it
   std::optional<Expansion> expansion;
   SourceLoc loc;

@@ -31,6 +31,7 @@ struct Model {
   // Initial (model-level) conditions, in force from the first step on.
   std::vector<BoundaryBlock> boundaries;
   std::vector<TemperatureEntry> initial_temperatures;
+  std::vector<InitialPlasticStrain> initial_plastic_strains;
 
   // Contact.
   std::map<std::string, SurfaceInteraction> interactions;

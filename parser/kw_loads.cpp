@@ -381,11 +381,54 @@ void temperature(KeywordContext& ctx) {
   ctx.state.step->temperatures.push_back(std::move(b));
 }
 
-// *INITIAL CONDITIONS, TYPE=TEMPERATURE: the temperatures at the start of the analysis.
+// TYPE=PLASTIC STRAIN lines: element or element set, integration point (empty: every point),
+// then the plastic strain components in the order of the stress components (3D: 11 22 33 12
+// 13 23, 2D: 11 22 33 12), missing ones zero. The field layout (element, point, components) is
+// CalculiX's and, from memory, Abaqus's for continuum elements without section points.
+void initial_plastic_strain_lines(KeywordContext& ctx) {
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 3, 8, "element or element set, integration point, plastic strain components"))
+      continue;
+    model::InitialPlasticStrain e;
+    auto rows = ctx.elements(f[0]);
+    if (!rows) continue;
+    e.target = std::string(f[0].text);
+    e.elements = std::move(*rows);
+    if (!f[1].empty()) {
+      auto ip = ctx.integer(f[1], "integration point");
+      if (!ip) continue;
+      if (*ip < 1) {
+        ctx.error(f[1].loc, fmt::format("the integration point number must be positive, found {}", *ip));
+        continue;
+      }
+      e.point = static_cast<int>(*ip);
+    }
+    bool ok = true;
+    for (std::size_t k = 2; k < f.size() && ok; ++k) {
+      if (f[k].empty()) continue;
+      auto v = ctx.real(f[k], "plastic strain component");
+      if (v) e.components[k - 2] = *v;
+      ok = v.has_value();
+    }
+    e.loc = line.loc;
+    if (ok) ctx.model().initial_plastic_strains.push_back(std::move(e));
+  }
+}
+
+// *INITIAL CONDITIONS, TYPE=TEMPERATURE: the temperatures at the start of the analysis;
+// TYPE=PLASTIC STRAIN: the plastic strains of integration points.
 void initial_conditions(KeywordContext& ctx) {
   const std::string type = ctx.choice_value("TYPE");
+  if (type == "PLASTICSTRAIN" || type == "PLASTIC STRAIN") {
+    reject_params(ctx, {"USER", "FILE", "STEP", "INC", "INPUT"});
+    initial_plastic_strain_lines(ctx);
+    return;
+  }
   if (type != "TEMPERATURE") {
-    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only TEMPERATURE)", ctx.param("TYPE")->value.value_or("")));
+    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only TEMPERATURE and PLASTIC STRAIN)",
+                                        ctx.param("TYPE")->value.value_or("")));
     return;
   }
   reject_params(ctx, {"USER", "FILE", "STEP", "INC", "INPUT"});
@@ -435,7 +478,7 @@ void add_load_keywords(std::vector<KeywordSpec>& t) {
                 {"USER", VK::None}, {"FILE", VK::Required}, {"STEP", VK::Required, VT::Int},
                 {"INC", VK::Required, VT::Int}, {"INPUT", VK::Required}},
                DataLines::Required, initial_conditions});
-  t.back().numbers_from = 1;  // node or node set (TYPE=TEMPERATURE)
+  t.back().numbers_from = 1;  // node or node set (TEMPERATURE), element or element set (PLASTIC STRAIN)
   add_amplitude_keywords(t);
   add_equation_keywords(t);
 }

@@ -1,4 +1,4 @@
-/// *MATERIAL with *ELASTIC, *DENSITY, *EXPANSION; *SOLID SECTION.
+/// *MATERIAL with *ELASTIC, *PLASTIC, *DENSITY, *EXPANSION; *SOLID SECTION.
 #include <fmt/format.h>
 
 #include "handlers.hpp"
@@ -46,6 +46,82 @@ void elastic(KeywordContext& ctx) {
   if (*nu <= -1.0 || *nu >= 0.5)
     ctx.error(f[1].loc, fmt::format("Poisson's ratio must lie in (-1, 0.5), found {}", *nu));
   ctx.state.material->elastic = model::Elastic{*e, *nu, line->loc};
+}
+
+/// One *PLASTIC data line: yield stress, plastic strain[, temperature], with where the strain
+/// and the temperature are written (for the errors about the table).
+struct PlasticLine {
+  model::Plastic::Point point;
+  std::optional<double> temperature;
+  model::SourceLoc strain_loc, temperature_loc;
+};
+
+std::optional<PlasticLine> plastic_line(KeywordContext& ctx, const Line& line) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, 1, 3, "yield stress[, plastic strain[, temperature]]")) return std::nullopt;
+  auto sy = ctx.real(f[0], "yield stress");
+  if (!sy) return std::nullopt;
+  PlasticLine out;
+  out.strain_loc = f.size() > 1 ? f[1].loc : line.loc;
+  out.temperature_loc = f.size() > 2 ? f[2].loc : line.loc;
+  if (f.size() > 1 && !f[1].empty()) {
+    auto v = ctx.real(f[1], "plastic strain");
+    if (!v) return std::nullopt;
+    out.point.plastic_strain = *v;
+  }
+  if (f.size() > 2 && !f[2].empty()) {
+    out.temperature = ctx.real(f[2], "temperature");
+    if (!out.temperature) return std::nullopt;
+  }
+  if (*sy <= 0) {
+    ctx.error(f[0].loc, fmt::format("the yield stress must be positive, found {}", *sy));
+    return std::nullopt;
+  }
+  out.point.yield_stress = *sy;
+  return out;
+}
+
+// *PLASTIC, HARDENING=ISOTROPIC (default) | KINEMATIC: yield stress, equivalent plastic strain
+// [, temperature] per line. The first line is at zero plastic strain (Abaqus requires it), the
+// strains increase. A temperature column is read; several temperatures are not supported yet.
+void plastic(KeywordContext& ctx) {
+  const std::string hardening = ctx.choice_value("HARDENING");
+  model::Plastic p;
+  if (hardening == "KINEMATIC") {
+    p.hardening = model::Plastic::Hardening::Kinematic;
+  } else if (!hardening.empty() && hardening != "ISOTROPIC") {
+    ctx.error_param("HARDENING", fmt::format("HARDENING={} is not supported yet (ISOTROPIC or KINEMATIC)", hardening));
+    return;
+  }
+  if (ctx.has("DEPENDENCIES") || ctx.has("RATE")) {
+    ctx.error(ctx.keyword.loc, "field-variable and rate dependence (DEPENDENCIES, RATE) are not supported yet");
+    return;
+  }
+  std::optional<double> first_temperature;
+  for (std::size_t i = 0; i < ctx.data.size(); ++i) {
+    const auto line = plastic_line(ctx, ctx.data[i]);
+    if (!line) return;
+    if (i == 0) first_temperature = line->temperature;
+    if (line->temperature.value_or(0.0) != first_temperature.value_or(0.0)) {
+      ctx.error(line->temperature_loc, "temperature-dependent plasticity (more than one temperature) is not supported yet");
+      return;
+    }
+    const double ep = line->point.plastic_strain;
+    if (i == 0 && ep != 0.0) {
+      ctx.error(line->strain_loc, fmt::format("the first yield stress must be given at zero plastic strain, found {}", ep));
+      return;
+    }
+    if (i > 0 && ep <= p.table.back().plastic_strain) {
+      ctx.error(line->strain_loc, fmt::format("the plastic strains must increase, found {} after {}", ep,
+                                              p.table.back().plastic_strain));
+      return;
+    }
+    p.table.push_back(line->point);
+  }
+  if (ctx.state.material->plastic) ctx.error(ctx.keyword.loc, "*PLASTIC is given twice in this material");
+  p.loc = ctx.keyword.loc;
+  ctx.state.material->plastic = std::move(p);
 }
 
 // *DENSITY: ρ. Kept for gravity loads and later procedures.
@@ -105,6 +181,12 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
                 {"MODULI", ValueKind::Required, ValueType::Choice, {"LONG TERM", "INSTANTANEOUS"}},
                 {"DEPENDENCIES", ValueKind::Required, ValueType::Int}},
                DataLines::Required, elastic, parent});
+  t.back().numbers_from = 0;
+  t.push_back({"*PLASTIC", kModelScope,
+               {{"HARDENING", ValueKind::Required, ValueType::Choice, {"ISOTROPIC", "KINEMATIC", "COMBINED", "JOHNSON COOK", "USER"}},
+                {"DEPENDENCIES", ValueKind::Required, ValueType::Int},
+                {"RATE", ValueKind::Required, ValueType::Real}},
+               DataLines::Required, plastic, parent});
   t.back().numbers_from = 0;
   t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});
   t.back().numbers_from = 0;

@@ -176,6 +176,14 @@ NewtonOutcome run_attempt(const AnalysisModel& am, StepRun& run, const Increment
                              run.step.static_procedure->time_period);
   int augmentations = 0;
   NewtonOutcome outcome = solve_with_augmentations(ctx, inc.end(), trial, augmentations);
+  // Equilibrium alone does not make an increment acceptable: a plastic strain increment far
+  // beyond first yield is cut back (Abaqus/Standard does the same, with this message).
+  if (outcome.converged && !run.states.empty())
+    if (const std::size_t n = run.states.points_with_too_large_increments(am); n > 0) {
+      outcome.converged = false;
+      outcome.failure = fmt::format("the strain increment has exceeded fifty times the strain to cause first yield at "
+                                    "{} point{}", n, n == 1 ? "" : "s");
+    }
   observer.attempt_finished(status_row(run, inc, outcome, augmentations));
   return outcome;
 }

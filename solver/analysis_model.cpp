@@ -13,6 +13,8 @@
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
 #include "elements/material.hpp"
+#include "elements/mises_plasticity.hpp"
+#include "elements/quadrature.hpp"
 
 namespace inpact::solver {
 
@@ -26,14 +28,36 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
 
 namespace {
 
+/// The Mises material of *PLASTIC; NLGEOM has no finite-strain plasticity yet (a clear stop
+/// instead of a wrong answer).
+std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
+                                                model::ElementFamily family, const elements::ElasticConstants& c) {
+  const model::Plastic& p = *mat.plastic;
+  for (const model::Step& step : m.steps)
+    if (step.nlgeom)
+      throw AnalysisError(fmt::format("{}: error: *PLASTIC: plasticity with NLGEOM (finite strain) is not supported yet "
+                                      "(material '{}'; step '{}' has NLGEOM)", m.sources.describe(p.loc), mat.name,
+                                      step.name));
+  elements::MisesHardening h;
+  h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
+  for (const auto& point : p.table) {
+    h.plastic_strain.push_back(point.plastic_strain);
+    h.yield_stress.push_back(point.yield_stress);
+  }
+  return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
+}
+
 /// Each element's material law and section data. One law per section and element family (plane
 /// stress condenses the elasticity matrix), shared by the section's elements; an element no
 /// section covers keeps zero constants.
 void assign_materials(const model::Model& m, AnalysisModel& am) {
   std::map<std::pair<std::size_t, model::ElementFamily>, const elements::Material*> laws;
-  const auto law = [&](std::size_t section, model::ElementFamily family, const elements::ElasticConstants& c) {
+  const auto law = [&](std::size_t section, model::ElementFamily family, const elements::ElasticConstants& c,
+                       const model::Material* mat) {
     const elements::Material*& l = laws[{section, family}];
-    if (!l) l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
+    if (l) return l;
+    if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
+    else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
     return l;
   };
   for (std::size_t k = 0; k < m.mesh.sections.size(); ++k) {
@@ -48,13 +72,46 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
     for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[e];
-      s.material = law(k, s.type->family, c);
+      s.material = law(k, s.type->family, c, &mat);
       s.section.thickness = sec.thickness;
       s.density = mat.density.value_or(0.0);
     }
   }
   for (ElementSetup& s : am.elements)
-    if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {});
+    if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {}, nullptr);
+}
+
+/// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN names elements with plasticity and points they have.
+void check_initial_plastic_strains(const model::Model& m, const AnalysisModel& am) {
+  for (const model::InitialPlasticStrain& ic : m.initial_plastic_strains)
+    for (std::int32_t e : ic.elements) {
+      const ElementSetup& s = am.elements[static_cast<std::size_t>(e)];
+      std::vector<double> probe(s.material->state_size());
+      const auto where = [&] { return m.sources.describe(ic.loc); };
+      if (probe.empty() || !s.material->set_plastic_strain(probe, elements::Vec6::Zero()))
+        throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: TYPE=PLASTIC STRAIN on element {}, whose "
+                                        "material has no *PLASTIC", where(), m.mesh.elements.labels[e]));
+      const std::size_t points = elements::element_rule(*s.type).size();
+      if (static_cast<std::size_t>(ic.point) > points)
+        throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: element {} ({}) has {} integration points, "
+                                        "not {}", where(), m.mesh.elements.labels[e], s.type->name, points, ic.point));
+    }
+}
+
+/// Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
+/// elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
+void warn_about_locking(AnalysisModel& am) {
+  std::set<std::pair<std::string, std::string>> locking;
+  for (const ElementSetup& s : am.elements) {
+    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
+    const double nu = s.material->elastic().poissons_ratio;
+    if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
+  }
+  for (const auto& [type, nu] : locking)
+    am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "
+                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495, "
+                                      "which inpact does not have — use the reduced-integration (R) or incompatible-mode "
+                                      "(I) form of the element", type, nu));
 }
 
 }  // namespace
@@ -99,20 +156,8 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   }
 
   assign_materials(m, am);
-  // Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
-  // elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
-  std::set<std::pair<std::string, std::string>> locking;
-  for (std::size_t e = 0; e < el.size(); ++e) {
-    const ElementSetup& s = am.elements[e];
-    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
-    const double nu = s.material->elastic().poissons_ratio;
-    if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
-  }
-  for (const auto& [type, nu] : locking)
-    am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "
-                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495, "
-                                      "which inpact does not have — use the reduced-integration (R) or incompatible-mode "
-                                      "(I) form of the element", type, nu));
+  check_initial_plastic_strains(m, am);
+  warn_about_locking(am);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const auto& x : m.mesh.nodes.coords)
     for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);

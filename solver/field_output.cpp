@@ -7,6 +7,7 @@
 
 #include "assembler.hpp"
 #include "elements/element_kernel.hpp"
+#include "elements/material.hpp"
 #include "material_states.hpp"
 
 namespace inpact::solver {
@@ -84,7 +85,8 @@ std::string field_key(std::string_view v, Domain d) {
   }
   if (element) {
     if (v == "MISES") return "S";
-    for (std::string_view k : {"S", "E"})
+    if (v == "PEEQ" || v == "PEMAG") return std::string(v);
+    for (std::string_view k : {"PE", "S", "E"})
       if (is_variable(v, k, 2)) return std::string(k);
   }
   return "";
@@ -124,10 +126,10 @@ std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) 
     for (const char* k : {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFN1", "CFN2", "CFN3"})
       if (v == k) return {v};
   } else if (d == Domain::Element) {
-    if (v == "MISES") return {v};
+    if (v == "MISES" || v == "PEEQ" || v == "PEMAG") return {v};
     if (v == "COORD") return vector_labels(v, dim);
     if (is_variable(v, "COORD", 1)) return component(vector_labels("COORD", dim));
-    for (const char* k : {"S", "E"}) {
+    for (const char* k : {"PE", "S", "E"}) {
       if (v == k) return tensor_labels(k, dim);
       if (is_variable(v, k, 2)) return component(tensor_labels(k, dim));
     }
@@ -139,9 +141,23 @@ void add_unique(std::vector<std::string>& list, const std::string& v) {
   if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
 }
 
-constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E"};
+constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E", "PE", "PEEQ", "PEMAG"};
 
 bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
+
+/// Keys of integration-point values (computed by the element kernels).
+bool point_key(const std::string& key) {
+  return key == "S" || key == "E" || key == "PE" || key == "PEEQ" || key == "PEMAG";
+}
+
+/// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
+/// PEEQ and PEMAG (Abaqus writes them for elements with plasticity), so an elastic model's
+/// results stay as they were.
+bool model_has_plasticity(const AnalysisModel& am) {
+  return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) {
+    return s.material && s.material->state_size() > 0 && s.material->as_isotropic_elastic() == nullptr;
+  });
+}
 
 constexpr const char* kContactKeys[] = {"CPRESS", "COPEN", "CSTATUS", "CNAREA", "CFN",
                                         "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CFS"};
@@ -243,6 +259,8 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (d == Domain::Node || d == Domain::Model) a.variables.insert(a.variables.end(), {"U", "RF"});
         if (r.all && (d == Domain::Node || d == Domain::Model)) a.variables.push_back("COORD");
         if (d == Domain::Element || d == Domain::Model) a.variables.insert(a.variables.end(), {"S", "E"});
+        if ((d == Domain::Element || d == Domain::Model) && model_has_plasticity(am))
+          a.variables.insert(a.variables.end(), {"PE", "PEEQ", "PEMAG"});
         // Abaqus's preselection holds CSTRESS and CDISP: inpact's CPRESS and COPEN.
         if (d == Domain::Contact || (d == Domain::Model && model_has_contact(model))) {
           a.variables.insert(a.variables.end(), {"CPRESS", "COPEN"});
@@ -298,7 +316,7 @@ OutputDue StepOutput::due(int increment, double t, bool last) {
 bool StepOutput::points_due(int increment, double t, bool last) const {
   for (std::size_t i = 0; i < field_.size(); ++i) {
     const auto& v = field_[i].variables;
-    const bool element_key = std::find(v.begin(), v.end(), "S") != v.end() || std::find(v.begin(), v.end(), "E") != v.end();
+    const bool element_key = std::any_of(v.begin(), v.end(), [](const std::string& k) { return point_key(k); });
     if (element_key && field_timing_[i].would_be_due(increment, t, last)) return true;
   }
   for (std::size_t i = 0; i < print_.size(); ++i)
@@ -437,14 +455,22 @@ FieldData nodal_field(const AnalysisModel& am, const std::string& key, const Key
   return f;
 }
 
+/// PEMAG: the plastic strain magnitude √(2/3 εᵖ:εᵖ) (engineering shears halved).
+double plastic_magnitude(const elements::PointResult& p) {
+  const auto& e = p.plastic_strain;
+  const double dot = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + 0.5 * (e[3] * e[3] + e[4] * e[4] + e[5] * e[5]);
+  return std::sqrt(2.0 / 3.0 * dot);
+}
+
 FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool with_instance = am.model->instances.size() > 1;
-  const std::size_t n_comp = am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
+  const bool scalar = key == "PEEQ" || key == "PEMAG";
+  const std::size_t n_comp = scalar ? 1 : am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
   FieldData f;
   f.key = key;
   f.position = Position::IntegrationPoint;
-  f.component_labels = tensor_labels(key, am.dim);
+  f.component_labels = scalar ? std::vector<std::string>{key} : tensor_labels(key, am.dim);
   f.region = where.region;
   const bool stress = key == "S";
   // The points of every element first, so that the arrays are sized once (a frame of a few
@@ -469,26 +495,34 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
       f.elements[i] = elements.labels[el];
       f.ip[i] = static_cast<std::int32_t>(p + 1);
       if (with_instance) f.instance[i] = elements.instance[el];
-      const auto& v = stress ? pts[p].stress : pts[p].strain;
-      std::copy_n(v.begin(), n_comp, f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp));
+      const auto at = f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp);
+      if (scalar) {
+        *at = key == "PEEQ" ? pts[p].peeq : plastic_magnitude(pts[p]);
+        continue;
+      }
+      const auto& v = stress ? pts[p].stress : key == "PE" ? pts[p].plastic_strain : pts[p].strain;
+      std::copy_n(v.begin(), n_comp, at);
     }
   return f;
 }
 
 /// A printed column: its source and component (0-based).
 struct Column {
-  enum class Source : std::uint8_t { U, RF, Coord, S, E, Mises } source;
+  enum class Source : std::uint8_t { U, RF, Coord, S, E, Mises, PE, Peeq, Pemag } source;
   int component = 0;
 };
 
 Column parse_column(const std::string& name) {
   using S = Column::Source;
   if (name == "MISES") return {S::Mises, 0};
+  if (name == "PEEQ") return {S::Peeq, 0};
+  if (name == "PEMAG") return {S::Pemag, 0};
   if (name.rfind("COORD", 0) == 0) return {S::Coord, name[5] - '1'};
   if (name.rfind("RF", 0) == 0) return {S::RF, name[2] - '1'};
   if (name[0] == 'U') return {S::U, name[1] - '1'};
   // Tensor 11 22 33 12 13 23 → Abaqus-ordered slots 0..5.
   static const std::map<std::string, int> slot = {{"11", 0}, {"22", 1}, {"33", 2}, {"12", 3}, {"13", 4}, {"23", 5}};
+  if (name.rfind("PE", 0) == 0) return {S::PE, slot.at(name.substr(2))};
   return {name[0] == 'S' ? S::S : S::E, slot.at(name.substr(1))};
 }
 
@@ -524,6 +558,9 @@ double point_value(const elements::PointResult& p, const Column& c) {
     case Column::Source::S: return p.stress[c.component];
     case Column::Source::E: return p.strain[c.component];
     case Column::Source::Mises: return von_mises(p.stress);
+    case Column::Source::PE: return p.plastic_strain[c.component];
+    case Column::Source::Peeq: return p.peeq;
+    case Column::Source::Pemag: return plastic_magnitude(p);
     case Column::Source::Coord: return p.coords[c.component];
     default: return 0.0;
   }
@@ -540,7 +577,9 @@ elements::PointResult centroid_of(std::span<const elements::PointResult> points)
     for (int i = 0; i < 6; ++i) {
       c.stress[i] += w * p.stress[i];
       c.strain[i] += w * p.strain[i];
+      c.plastic_strain[i] += w * p.plastic_strain[i];
     }
+    c.peeq += w * p.peeq;
     for (int i = 0; i < 3; ++i) c.coords[i] += w * p.coords[i];
   }
   c.volume = total;

@@ -29,7 +29,8 @@
 ///    results file keeps a field's locations within a step).
 ///  - VARIABLE=PRESELECT: Abaqus's preselection for a static step is S, PE, PEEQ, PEMAG, LE, U,
 ///    RF, CF, CSTRESS, CDISP. inpact writes the ones it computes: U, RF (nodes) and S, E
-///    (integration points; E is the kernel's strain, logarithmic under NLGEOM) and, when the
+///    (integration points; E is the kernel's strain, logarithmic under NLGEOM), PE, PEEQ and
+///    PEMAG when a section has plasticity (*PLASTIC: Abaqus writes them for such elements) and, when the
 ///    model has contact pairs or general contact, CPRESS and COPEN (+ CSHEAR1/2 and CSLIP1/2
 ///    with friction) for CSTRESS and CDISP. VARIABLE=ALL adds COORD (nodal). Variables named explicitly that inpact does not compute are listed
 ///    by not_computed(), which the analysis reports once per step.

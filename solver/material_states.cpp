@@ -24,7 +24,23 @@ MaterialStates::MaterialStates(const AnalysisModel& am) {
   for (std::size_t e = 0; e < n_el; ++e)
     for (std::size_t p = offset_[e]; p < offset_[e + 1]; p += per_point_[e])
       am.elements[e].material->initial_state(std::span(committed_).subspan(p, per_point_[e]));
+  if (am.model) apply_initial_plastic_strains(am);
   trial_ = committed_;
+}
+
+void MaterialStates::apply_initial_plastic_strains(const AnalysisModel& am) {
+  for (const model::InitialPlasticStrain& ic : am.model->initial_plastic_strains) {
+    const elements::Vec6 pe = Eigen::Map<const elements::Vec6>(ic.components);
+    for (std::int32_t e : ic.elements) {
+      const auto n = static_cast<std::size_t>(e);
+      const std::size_t size = per_point_[n];
+      if (size == 0) continue;  // build_analysis_model refused elements without plasticity
+      const std::size_t points = (offset_[n + 1] - offset_[n]) / size;
+      for (std::size_t p = 0; p < points; ++p)
+        if (ic.point == 0 || static_cast<std::size_t>(ic.point) == p + 1)
+          am.elements[n].material->set_plastic_strain(std::span(committed_).subspan(offset_[n] + p * size, size), pe);
+    }
+  }
 }
 
 std::size_t MaterialStates::bytes() const {
@@ -49,6 +65,19 @@ elements::ElementHistory MaterialStates::output_history(std::size_t e, std::vect
   const std::span<const double> committed = slice(committed_, e);
   scratch.assign(committed.begin(), committed.end());
   return {committed, scratch, per_point_[e]};
+}
+
+std::size_t MaterialStates::points_with_too_large_increments(const AnalysisModel& am) const {
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < per_point_.size(); ++e) {
+    const std::size_t size = per_point_[e];
+    if (size == 0) continue;
+    for (std::size_t p = offset_[e]; p < offset_[e + 1]; p += size)
+      if (am.elements[e].material->increment_too_large(std::span(committed_).subspan(p, size),
+                                                       std::span(trial_).subspan(p, size)))
+        ++count;
+  }
+  return count;
 }
 
 void MaterialStates::commit() { std::copy(trial_.begin(), trial_.end(), committed_.begin()); }

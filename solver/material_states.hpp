@@ -46,6 +46,10 @@ class MaterialStates {
   std::span<const double> committed(std::size_t e) const { return slice(committed_, e); }
   std::span<const double> trial(std::size_t e) const { return slice(trial_, e); }
 
+  /// The points whose material says the step from committed to trial is too large
+  /// (elements::Material::increment_too_large).
+  std::size_t points_with_too_large_increments(const AnalysisModel& am) const;
+
   /// The increment converged: its trial states become the committed ones.
   void commit();
   /// The attempt failed: its trial states are dropped.
@@ -53,6 +57,9 @@ class MaterialStates {
 
  private:
   std::span<const double> slice(const std::vector<double>& v, std::size_t e) const;
+  /// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN into the committed states (checked by
+  /// build_analysis_model: every element named has plasticity, every point exists).
+  void apply_initial_plastic_strains(const AnalysisModel& am);
 
   std::vector<std::size_t> offset_;       ///< element e: values [offset_[e], offset_[e + 1]); n + 1 or empty
   std::vector<std::uint32_t> per_point_;  ///< element e: values per point (0: stateless)

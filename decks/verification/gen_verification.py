@@ -670,6 +670,115 @@ def rigid_mode():
     return d
 
 
+# --------------------------------------------------------------------------- 9. plasticity
+
+PLAST = dict(E=200000.0, nu=0.3, sy=250.0, H=20000.0, L=4.0, eps_max=8e-3)
+
+
+def plastic_bar():
+    """Bar 4 x 1 x 1 of 4 C3D8, symmetry planes x = y = z = 0, linear isotropic hardening."""
+    E, nu, sy, H, L, eps_max = (PLAST[k] for k in ("E", "nu", "sy", "H", "L", "eps_max"))
+    eps = 1e-9
+    coords, conn = bar_mesh(0.0, L, 4)
+    Et = E * H / (E + H)
+    s_max = sy + Et * (eps_max - sy / E)
+    ep_max = (s_max - sy) / H
+    d = Deck("Bar in uniaxial tension, Mises plasticity with linear hardening: loading, then unloading",
+             [f"E = {E}, nu = {nu}, sigma_y = {sy} + H eps_p, H = {H} (E_t = E H/(E + H) = {Et:.12g}).",
+              f"Step LOAD: x = {L} driven to u1 = {L * eps_max:g} (strain {eps_max:g}) in 10 increments:",
+              "sigma = E eps up to eps_y = sigma_y/E, then sigma_y + E_t (eps - eps_y);",
+              f"sigma_max = {s_max:.12g}, eps_p = {ep_max:.12g}. Step UNLOAD: the end released",
+              "(*BOUNDARY, OP=NEW: its reaction ramps to zero) in 4 increments: elastic,",
+              "sigma = sigma_max (1 - t), at the end sigma = 0 and PEEQ = PE11 = eps_p, PE22 = -eps_p/2.",
+              "*CONTROLS: residuals to 1e-12 of the average force (R_n, R_l), so that the values are exact to round-off.",
+              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BAR", conn)
+    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
+          "*PLASTIC", f"{sy}, 0.", f"{sy + H * 0.1:g}, 0.1")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ, PEMAG"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+    d.add("*STEP, NAME=LOAD", "*STATIC, DIRECT", "0.1, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps_max:g}",
+          *out, "*END STEP")
+    d.add("*STEP, NAME=UNLOAD", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1", "Y0, 2, 2",
+          "Z0, 3, 3", "*END STEP")
+    return d
+
+
+def plastic_plate():
+    """The bar of plastic_bar() as a plate 4 x 1 of 4 CPS4 (plane stress, thickness 1)."""
+    E, nu, sy, H, L, eps_max = (PLAST[k] for k in ("E", "nu", "sy", "H", "L", "eps_max"))
+    eps = 1e-9
+    coords, conn = grid_quad(4, 1, lambda s_, t: (L * s_, t), False)
+    d = Deck("Plate in uniaxial tension, plane stress (CPS4), Mises plasticity with linear hardening: load, unload",
+             ["The bar of plastic_bar_c3d8.inp as a plane-stress plate (the local sigma_33 = 0 iteration of the",
+              "material): the same closed forms, and the thickness strain E33 = -nu sigma/E - eps_p/2.",
+              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+    d.nodes(coords, 2)
+    d.elements("CPS4", "BAR", conn)
+    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "1.", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
+          "*PLASTIC", f"{sy}, 0.", f"{sy + H * 0.1:g}, 0.1")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ, PEMAG"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+    d.add("*STEP, NAME=LOAD", "*STATIC, DIRECT", "0.1, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps_max:g}",
+          *out, "*END STEP")
+    d.add("*STEP, NAME=UNLOAD", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1", "Y0, 2, 2",
+          "*END STEP")
+    return d
+
+
+CYL = dict(a=10.0, b=20.0, c=15.0, E=200000.0, nu=0.4999, sy=250.0)
+
+
+def hill_pressure(a, b, c, sy):
+    """Hill (The Mathematical Theory of Plasticity, ch. V §3), Mises, plane strain, nu = 1/2:
+    the pressure that puts the elastic-plastic boundary at r = c."""
+    k = sy / math.sqrt(3.0)
+    return k * (2 * math.log(c / a) + 1 - c * c / (b * b))
+
+
+def plastic_cylinder(etype, nr, nt):
+    a, b, c, E, nu, sy = (CYL[key] for key in ("a", "b", "c", "E", "nu", "sy"))
+    p = hill_pressure(a, b, c, sy)
+    k = sy / math.sqrt(3.0)
+    ua = 3 * k * c * c / (2 * E * a)
+    eps = 1e-9
+    coords, conn = grid_quad(nr, nt, lambda s, t: ((a + (b - a) * s) * math.cos(math.pi / 2 * t),
+                                                  (a + (b - a) * s) * math.sin(math.pi / 2 * t)), "8" in etype)
+    bore_el = [i + 1 for i, el in enumerate(conn)
+               if all(abs(math.hypot(*coords[el[j]][:2]) - a) < 1e-6 for j in (0, 3))]
+    d = Deck(f"Thick cylinder under internal pressure, elastic-perfectly plastic (Mises), plane strain, {etype} {nr}x{nt}",
+             [f"a = {a}, b = {b}, E = {E}, nu = {nu}, sigma_y = {sy} (k = sigma_y/sqrt 3 = {k:.12g}).",
+              "Hill, The Mathematical Theory of Plasticity, ch. V sec. 3, exact for nu = 1/2 (sigma_z = mean of",
+              "sigma_r, sigma_theta everywhere); nu = 0.4999 leaves corrections O(1 - 2 nu) = 2e-4:",
+              "p = k (2 ln(c/a) + 1 - c^2/b^2), plastic a < r < c: sigma_r = -p + 2k ln(r/a), sigma_theta = sigma_r + 2k;",
+              "elastic c < r < b: sigma_r = -k c^2 (1/r^2 - 1/b^2), sigma_theta = k c^2 (1/r^2 + 1/b^2);",
+              f"u(a) = 3 k c^2/(2 E a). For c = {c}: p = {p:.12g}, u(a) = {ua:.12g}.",
+              "Pressure ramped in 10 increments (DIRECT). Reduced integration: the plastic flow is isochoric.",
+              "Tolerances in tests/verification/test_plastic_cylinder.cpp."])
+    d.nodes(coords, 2)
+    d.elements(etype, "WALL", conn)
+    d.elset("BORE_EL", bore_el)
+    d.add("*SURFACE, NAME=BORE", "BORE_EL, S4")
+    d.add("*SOLID SECTION, ELSET=WALL, MATERIAL=STEEL", "1.")
+    d.add("*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}", "*PLASTIC", f"{sy}, 0.")
+    d.nset("ON_X", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("ON_Y", select(coords, lambda x: abs(x[0]) < eps))
+    d.add("*BOUNDARY", "ON_X, YSYMM", "ON_Y, XSYMM")
+    d.add("*STEP, NAME=PRESSURIZE", "*STATIC, DIRECT", "0.1, 1.", "*DSLOAD", f"BORE, P, {p:.15g}",
+          "*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PEEQ", "*END STEP")
+    return d
+
+
 # --------------------------------------------------------------------------- main
 
 CANTILEVER_LEVELS = {
@@ -774,6 +883,9 @@ def committed(out):
         "spinning_disk_cps8.inp": spinning_disk("CPS8", 8, 8),
         "spinning_disk_cax8r.inp": spinning_disk("CAX8R", 8, 1),
         "spinning_block_c3d8.inp": spinning_block(),
+        "plastic_bar_c3d8.inp": plastic_bar(),
+        "plastic_plate_cps4.inp": plastic_plate(),
+        "plastic_cylinder_cpe8r.inp": plastic_cylinder("CPE8R", 12, 4),
     }
     for name, d in decks.items():
         d.write(os.path.join(out, name))

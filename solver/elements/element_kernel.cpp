@@ -199,7 +199,10 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
   const Mat6& D = law.update({F, strain, thermal_strain}, history, stress, scratch);
   const Mat6x24 B = hex8_b(request.nlgeom ? F : Eigen::Matrix3d::Identity(), g);
   f.noalias() += (B.transpose() * stress) * geo.dv[p];
-  if (request.point_output) hex8_output(rule, geo, p, law.elastic(), request.nlgeom, F, strain, stress, sys);
+  if (request.point_output) {
+    hex8_output(rule, geo, p, law.elastic(), request.nlgeom, F, strain, stress, sys);
+    if (!history.trial.empty()) law.plastic_output(history.trial, sys.points.back());
+  }
   if (!request.stiffness) return;
   const Mat6x24 DB = (D * geo.dv[p]) * B;
   K.noalias() += B.transpose() * DB;
@@ -298,7 +301,8 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
 }
 
 /// Incompatible modes: solves f_α(u, α) = 0 for the internal modes (one step when linear,
-/// Newton with NLGEOM) and condenses them out of f and K.
+/// Newton with NLGEOM or a material with state, whose stress is nonlinear in the strain) and
+/// condenses them out of f and K.
 template <class Law>
 void condense_modes(const model::ElementTypeInfo& type, const Law& law, const ElementRequest& request,
                     const std::vector<PointData>& pts, const ElementHistory& history, Eigen::VectorXd& uf,
@@ -306,9 +310,10 @@ void condense_modes(const model::ElementTypeInfo& type, const Law& law, const El
   const int n_dof = type.n_nodes * type.dim;
   const int na = n_incompatible_modes(type.dim) * type.dim;
   const double ref = std::max(as.f.norm(), 1e-300);
+  const bool linear = !request.nlgeom && law.state_size() == 0;
   for (int it = 0; it < 30; ++it) {
     const Eigen::VectorXd fa = as.f.tail(na);
-    if (it > 0 && (!request.nlgeom || fa.norm() <= 1e-13 * ref)) break;
+    if (it > 0 && (linear || fa.norm() <= 1e-13 * ref)) break;
     const Eigen::MatrixXd Kaa = as.K.bottomRightCorner(na, na);
     uf.tail(na) -= Kaa.ldlt().solve(fa);
     as = assemble(type.family, type.dim, law, request.nlgeom, pts, uf, true, history);
@@ -370,6 +375,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
     for (std::size_t p = 0; p < geo.pts.size(); ++p) {
       point_output(type.family, law.elastic(), request.nlgeom, geo.pts[p], as.states[p], sys.points[p]);
       sys.points[p].coords = geo.point_coords[p];
+      if (const PointHistory h = history.at(p); !h.trial.empty()) law.plastic_output(h.trial, sys.points[p]);
     }
   }
   return sys;

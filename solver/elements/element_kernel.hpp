@@ -55,6 +55,8 @@ struct PointResult {
   Voigt6 strain{};  ///< small strain ε (nlgeom: logarithmic strain LE = ½ ln(F Fᵀ)), engineering shear
   Vec3 coords{};    ///< reference coordinates of the point
   double volume = 0.0;  ///< reference volume it represents (Abaqus IVOL; 2πr·dA for CAX)
+  Voigt6 plastic_strain{};  ///< PE, engineering shear (0 without plasticity)
+  double peeq = 0.0;        ///< PEEQ, the equivalent plastic strain ∫ε̄̇ᵖ dt
 };
 
 /// The history variables of one integration point (material.hpp, material_states.hpp): the

@@ -8,6 +8,12 @@ using model::ElementFamily;
 
 void Material::initial_state(std::span<double> state) const { std::fill(state.begin(), state.end(), 0.0); }
 
+void Material::plastic_output(std::span<const double>, PointResult&) const {}
+
+bool Material::set_plastic_strain(std::span<double>, const Vec6&) const { return false; }
+
+bool Material::increment_too_large(std::span<const double>, std::span<const double>) const { return false; }
+
 IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants)
     : constants_(constants), D_(elasticity_matrix(family, constants)) {}
 

@@ -52,6 +52,16 @@ class Material {
   /// The elastic constants, for what is not the stress: the expansion α, the hourglass
   /// control's shear modulus, the plane-stress thickness strain in the output.
   virtual const ElasticConstants& elastic() const = 0;
+  /// The plastic strain (PE, engineering shear) and the equivalent plastic strain (PEEQ) of a
+  /// point's state, for output; a material without plasticity leaves them zero.
+  virtual void plastic_output(std::span<const double> state, PointResult& out) const;
+  /// Sets the plastic strain (engineering shear) of a point's initial state; false when the
+  /// material has no plastic strain (*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN).
+  virtual bool set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const;
+  /// Whether a point's step from `committed` to `trial` is too large to accept (plasticity: an
+  /// equivalent plastic strain increment above fifty times the strain of first yield); the
+  /// increment is then cut back.
+  virtual bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const;
   /// The element kernels' fast path: this material when it is isotropic linear elastic.
   virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
 };

@@ -10,6 +10,7 @@
 
 #include "fixtures/deck_fixture.hpp"
 #include "solver/analysis.hpp"
+#include "solver/analysis_error.hpp"
 #include "solver/analysis_model.hpp"
 #include "solver/assembler.hpp"
 #include "solver/dof_map.hpp"
@@ -348,11 +349,11 @@ TEST_F(FieldOutput, AFieldAskedForOnSeveralSetsIsWrittenOnTheirUnionEveryFrame) 
 }
 
 TEST_F(FieldOutput, RequestedButNotComputedVariablesAreReportedOncePerStep) {
-  const auto m = read(pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, PEEQ\n*EL PRINT\nPEEQ, MISES\n") +
+  const auto m = read(pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, TRESCA\n*EL PRINT\nTRESCA, MISES\n") +
                       pull_step(""));
   const Recorder rec = run(m);
   const auto count = std::count_if(rec.messages.begin(), rec.messages.end(),
-                                   [](const std::string& s) { return s.find("PEEQ") != std::string::npos; });
+                                   [](const std::string& s) { return s.find("TRESCA") != std::string::npos; });
   EXPECT_EQ(count, 2);  // once in each step (carried over), not per request or increment
 }
 
@@ -381,6 +382,67 @@ TEST(VonMises, IsTheUniaxialStressAndRootThreeTimesThePureShear) {
   EXPECT_DOUBLE_EQ(von_mises(std::array<double, 6>{0, 0, -250, 0, 0, 0}), 250.0);
   EXPECT_NEAR(von_mises(std::array<double, 6>{0, 0, 0, 10, 0, 0}), 10.0 * std::sqrt(3.0), 1e-12);
   EXPECT_NEAR(von_mises(std::array<double, 6>{5, 5, 5, 0, 0, 0}), 0.0, 1e-12);  // hydrostatic
+}
+
+}  // namespace
+}  // namespace inpact::solver
+
+// --- Plasticity output (PE, PEEQ, PEMAG) -----------------------------------------------
+
+namespace inpact::solver {
+namespace {
+
+// The bar with *PLASTIC: σ_y = 200 + 1000 ε̄ᵖ; the uniform σ33 = 250 gives ε̄ᵖ = 0.05, PE33 = 0.05,
+// PE11 = PE22 = −0.025 (isochoric flow) and PEMAG = √(2/3 εᵖ:εᵖ) = 0.05 (uniaxial: PEMAG = PEEQ).
+const char* kPlastic = "*PLASTIC\n200., 0.\n300., 0.1\n";
+
+TEST_F(FieldOutput, PreselectBringsPlasticStrainsOnlyWhenASectionIsPlastic) {
+  EXPECT_EQ(keys(read(kPlastic + pull_step("")), 0), (Keys{"U", "RF", "S", "E", "PE", "PEEQ", "PEMAG"}));
+  EXPECT_EQ(keys(read(pull_step("")), 0), (Keys{"U", "RF", "S", "E"}));  // elastic: as before
+  EXPECT_EQ(keys(read(kPlastic + pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nPE22, PEEQ\n")), 0), (Keys{"PE", "PEEQ"}));
+}
+
+TEST_F(FieldOutput, PlasticStrainsInTheResultsAndInElPrint) {
+  const auto m = read(kPlastic + pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT, ELSET=TOPEL\nPE, PEEQ, PEMAG\n"
+                                           "*EL PRINT, ELSET=TOPEL\nPEEQ, PE33, PE11, PEMAG\n"));
+  const Recorder rec = run(m);
+  ASSERT_EQ(rec.frames.size(), 1u);
+  const Frame& f = rec.frames[0];
+  for (const auto& fd : f.fields) {
+    ASSERT_EQ(fd.elements.size(), 8u) << fd.key;  // TOPEL's 8 points
+    if (fd.key == "PE") {
+      EXPECT_EQ(fd.component_labels, (std::vector<std::string>{"PE11", "PE22", "PE33", "PE12", "PE13", "PE23"}));
+      EXPECT_NEAR(fd.values[2], 0.05, 1e-9);
+      EXPECT_NEAR(fd.values[0], -0.025, 1e-9);
+    } else {
+      EXPECT_EQ(fd.component_labels, (std::vector<std::string>{fd.key}));
+      ASSERT_EQ(fd.values.size(), 8u);
+      for (double v : fd.values) EXPECT_NEAR(v, 0.05, 1e-9) << fd.key;
+    }
+  }
+  ASSERT_EQ(rec.prints.size(), 1u);
+  const auto& t = rec.prints[0].tables.at(0);
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"PEEQ", "PE33", "PE11", "PEMAG"}));
+  ASSERT_EQ(t.values.size(), 32u);
+  for (std::size_t p = 0; p < 8; ++p) {
+    EXPECT_NEAR(t.values[4 * p], 0.05, 1e-9);
+    EXPECT_NEAR(t.values[4 * p + 1], 0.05, 1e-9);
+    EXPECT_NEAR(t.values[4 * p + 2], -0.025, 1e-9);
+    EXPECT_NEAR(t.values[4 * p + 3], 0.05, 1e-9);
+  }
+}
+
+TEST_F(FieldOutput, PlasticityWithNlgeomStopsWithAClearError) {
+  auto steps = kPlastic + pull_step("");
+  steps.replace(steps.find("*STEP\n"), 6, "*STEP, NLGEOM\n");
+  const auto m = read(steps);
+  try {
+    build_analysis_model(m);
+    ADD_FAILURE() << "no error";
+  } catch (const AnalysisError& e) {
+    EXPECT_NE(std::string(e.what()).find("*PLASTIC: plasticity with NLGEOM (finite strain) is not supported yet"),
+              std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
