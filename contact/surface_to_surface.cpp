@@ -313,7 +313,6 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
   const double g_node = sum_wg / sum_w;
   for (std::int32_t fi : slave_.facets_of_node(local)) {
     const Facet& sf = facets[static_cast<std::size_t>(fi)];
-    const auto rule = facet_rule(sf.shape, kRulePoints);
     const std::size_t a = local_node(sf, k.node);
     std::array<std::size_t, 8> slave_slot{};
     for (int b = 0; b < sf.n_nodes; ++b) slave_slot[static_cast<std::size_t>(b)] = slot(L.nodes, sf.nodes[static_cast<std::size_t>(b)]);
@@ -325,9 +324,10 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
       if (!pt.smoothed_valid) {  // once per point after an update(), for every node of the facet
-        const SmoothedPoint sp{&sf, {rule[q].xi, rule[q].eta}, &mf, &pt.projection, pt.x, pt.master_corrected};
+        // (the point's own ξ on its facet: the layout is the facet's cut cells, or the plain rule)
+        const SmoothedPoint sp{&sf, pt.param, &mf, &pt.projection, pt.x, pt.master_corrected};
         smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, pt.smoothed_gradient);
-        area_element_log_gradient(sf, {rule[q].xi, rule[q].eta}, x, dim_, slave_.axisymmetric(), pt.log_area_gradient);
+        area_element_log_gradient(sf, pt.param, x, dim_, slave_.axisymmetric(), pt.log_area_gradient);
         pt.smoothed_valid = true;
       }
       const std::vector<double>& grad = pt.smoothed_gradient;
