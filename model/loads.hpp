@@ -143,7 +143,8 @@ struct Tie {
   std::size_t n_adjusted = 0;
   double largest_adjustment = 0.0;
   SourceLoc loc;          ///< the *TIE keyword line
-  SourceLoc line_loc;     ///< the data line
+  SourceLoc line_loc;     ///< the data line (its slave field)
+  SourceLoc master_loc;   ///< its master field
 };
 
 }  // namespace inpact::model

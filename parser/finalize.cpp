@@ -141,9 +141,9 @@ void check_contact(model::Model& m, Diagnostics& diags) {
 void check_ties(const model::Model& m, Diagnostics& diags) {
   for (const auto& t : m.ties) {
     check_surface(m, diags, t.slave, t.line_loc, "*TIE");
-    if (check_defined(diags, m.mesh.surfaces, t.master, t.line_loc, "*TIE", "surface") &&
+    if (check_defined(diags, m.mesh.surfaces, t.master, t.master_loc, "*TIE", "surface") &&
         m.mesh.surfaces.at(t.master).kind != model::Surface::Kind::Element)
-      diags.error(t.line_loc, "*TIE", fmt::format("tie {}: the master surface '{}' is node based; a master surface must be "
+      diags.error(t.master_loc, "*TIE", fmt::format("tie {}: the master surface '{}' is node based; a master surface must be "
                                                   "made of element faces", t.name, t.master));
     if (!t.tied_nset.empty()) check_defined(diags, m.mesh.nsets, t.tied_nset, t.loc, "*TIE", "node set");
   }

@@ -65,6 +65,7 @@ void tie(KeywordContext& ctx) {
     t.slave = normalize_label(f[0].text);
     t.master = normalize_label(f[1].text);
     t.line_loc = f[0].loc;
+    t.master_loc = f[1].loc;
     if (t.name.empty()) t.name = fmt::format("TIE-{}", ctx.model().ties.size() + 1);
     if (t.slave == t.master) {
       ctx.error(f[1].loc, "the slave and the master surface of a tie must differ");
