@@ -87,6 +87,19 @@ TiedNode tied_node(std::int32_t row, const Facet& f, const Projection& p) {
   return n;
 }
 
+/// Replaces n's closest-point weights by its mortar row, when it has one.
+bool use_mortar_row(const std::map<std::int32_t, std::vector<std::pair<std::int32_t, double>>>& mortar, TiedNode& n) {
+  const auto it = mortar.find(n.slave);
+  if (it == mortar.end()) return false;
+  n.masters.clear();
+  n.weights.clear();
+  for (const auto& [row, w] : it->second) {
+    n.masters.push_back(row);
+    n.weights.push_back(w);
+  }
+  return true;
+}
+
 /// What the tie-wide checks need: nodes held by boundary conditions, eliminated by equations,
 /// and already tied (by which tie).
 struct TieContext {
@@ -145,16 +158,7 @@ ResolvedTie resolve_one(TieContext& c, const model::Tie& t) {
                                  t.name, label, it->second->name, m.sources.describe(it->second->line_loc)),
                      t.line_loc);
     r.tied.push_back(tied_node(row, master.facets()[static_cast<std::size_t>(p.facet)], p));
-    if (auto it = mortar.find(row); it != mortar.end()) {
-      TiedNode& n = r.tied.back();
-      n.masters.clear();
-      n.weights.clear();
-      for (const auto& [m_row, w] : it->second) {
-        n.masters.push_back(m_row);
-        n.weights.push_back(w);
-      }
-      ++r.n_mortar;
-    }
+    r.n_mortar += use_mortar_row(mortar, r.tied.back());
     r.largest_distance = std::max(r.largest_distance, p.distance);
   }
   for (const TiedNode& n : r.tied) c.tied_by[n.slave] = &t;

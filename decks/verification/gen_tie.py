@@ -15,6 +15,8 @@
                               the DOF map resolves): still S = (1, 0, ...) everywhere.
   tie_cantilever_c3d8i.inp    a cantilever (L = 10, h = b = 1, E = 1000, nu = 0, tip shear 1) made
                               of two meshes tied at x = 5 (10x4x2 slave, 8x3x1 master);
+  tie_cantilever_s2s_c3d8i.inp     the same with the default tie (SURFACE TO SURFACE, default
+                              tolerance) instead of NODE TO SURFACE;
   tie_cantilever_single_c3d8i.inp  the same cantilever as one 20x4x2 mesh.
                               Beam theory: v = PL^3/3EI + PL/(kGA) = 4 + 0.024 (k = 5/6).
 
@@ -158,7 +160,7 @@ CANT_HEADER = ["L = 10, h = b = 1 (y, z), E = 1000, nu = 0; x = 0 face held (all
                "as consistent nodal forces on the x = 10 face. Beam theory: v = PL^3/3EI + PL/(kGA) = 4.024."]
 
 
-def cantilever_tied():
+def cantilever_tied(tie_line="*TIE, NAME=SPAN, TYPE=NODE TO SURFACE, POSITION TOLERANCE=0.01"):
     cl, el, wl = box([0, 0, 0], [5, 1, 1], (10, 4, 2), 1, 1)
     cr, er, wr = box([5, 0, 0], [10, 1, 1], (8, 3, 1), 1001, 1001)
     d = Deck("Cantilever of two non-matching C3D8I meshes tied at x = 5",
@@ -173,7 +175,7 @@ def cantilever_tied():
     d.nset("TIP", [n for n, x in coords.items() if abs(x[0] - 10) < EPS])
     d.add("*SOLID SECTION, ELSET=L, MATERIAL=M", "*SOLID SECTION, ELSET=R, MATERIAL=M",
           "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.")
-    d.add("*TIE, NAME=SPAN, TYPE=NODE TO SURFACE, POSITION TOLERANCE=0.01", "L_END, R_START")
+    d.add(tie_line, "L_END, R_START")
     d.add("*BOUNDARY", "ROOT, 1, 3")
     d.add("*STEP, NAME=BEND", "*STATIC", "*CLOAD",
           *[f"{n}, 2, {f:.15g}" for n, f in tip_loads(cr, 10.0, 1.0, 1.0, 3, 1)], *OUTPUT, "*END STEP")
@@ -203,6 +205,7 @@ def main():
                                                     "onto B (0.004 < the default tolerance 0.0354): the answer is the one above."]),
         "tie_patch_chain_c3d8.inp": chain(),
         "tie_cantilever_c3d8i.inp": cantilever_tied(),
+        "tie_cantilever_s2s_c3d8i.inp": cantilever_tied("*TIE, NAME=SPAN"),
         "tie_cantilever_single_c3d8i.inp": cantilever_single(),
     }
     for name, d in decks.items():
