@@ -100,6 +100,17 @@ bool use_mortar_row(const std::map<std::int32_t, std::vector<std::pair<std::int3
   return true;
 }
 
+/// The closest point among the candidate facets (the lowest index among equally close ones).
+Projection closest_point(std::span<const Facet> facets, std::span<const std::int32_t> candidates, std::span<const Vec3> x,
+                         const Vec3& xs) {
+  Projection best;
+  for (std::int32_t k : candidates) {
+    const Projection p = project_relative(facets[static_cast<std::size_t>(k)], x, xs, k);
+    if (best.facet < 0 || p.distance < best.distance) best = p;
+  }
+  return best;
+}
+
 /// What the tie-wide checks need: nodes held by boundary conditions, eliminated by equations,
 /// and already tied (by which tie).
 struct TieContext {
@@ -127,8 +138,6 @@ ResolvedTie resolve_one(TieContext& c, const model::Tie& t) {
   options.radius = by_set ? c.model_size : r.tolerance;
   FacetSearch search;
   search.build(master.facets(), c.x, options);
-  std::vector<FacetBox> boxes;
-  facet_boxes(master.facets(), c.x, boxes);
   // Surface to surface: the dual-mortar rows of the slave nodes the master covers (tie_mortar.hpp).
   std::map<std::int32_t, std::vector<std::pair<std::int32_t, double>>> mortar;
   if (t.type == model::Tie::Type::SurfaceToSurface) mortar = mortar_tie_weights(slave, master, c.x, r.tolerance);
@@ -142,7 +151,7 @@ ResolvedTie resolve_one(TieContext& c, const model::Tie& t) {
     candidates.clear();
     search.query(c.x[row], candidates);
     std::sort(candidates.begin(), candidates.end());  // the result does not depend on the tree's order
-    const Projection p = closest_projection(master.facets(), candidates, c.x, c.x[row], nullptr, boxes);
+    const Projection p = closest_point(master.facets(), candidates, c.x, c.x[row]);
     if (p.facet < 0 || (!by_set && p.distance > r.tolerance)) {
       r.untied.push_back(row);
       continue;
@@ -171,6 +180,19 @@ ResolvedTie resolve_one(TieContext& c, const model::Tie& t) {
 }
 
 }  // namespace
+
+Projection project_relative(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t index) {
+  const Vec3 origin = x[static_cast<std::size_t>(f.nodes[0])];
+  std::array<Vec3, 8> local{};
+  Facet g = f;
+  for (int a = 0; a < f.n_nodes; ++a) {
+    local[a] = sub(x[static_cast<std::size_t>(f.nodes[a])], origin);
+    g.nodes[a] = a;
+  }
+  Projection p = project_to_facet(g, std::span<const Vec3>(local.data(), static_cast<std::size_t>(f.n_nodes)), sub(xs, origin), index);
+  p.x_master = add(p.x_master, origin);
+  return p;
+}
 
 std::string first_labels(const model::Model& m, const std::vector<std::int32_t>& rows, std::size_t n) {
   std::vector<std::int32_t> labels;

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "contact/facet.hpp"
+#include "contact/projection.hpp"
 #include "model/model.hpp"
 
 namespace inpact::contact {
@@ -78,6 +79,13 @@ std::vector<ResolvedTie> resolve_ties(const model::Model& model);
 /// The warnings resolve_ties' results call for (untied nodes, nodes left out for a boundary
 /// condition), each `file:line:col: *TIE NAME: ...`.
 std::vector<std::string> tie_warnings(const model::Model& model, const std::vector<ResolvedTie>& ties);
+
+/// project_to_facet() on coordinates relative to the facet's first node. Its Newton iteration
+/// stops on an absolute step of 1e-14 in ξ, which the round-off of coordinates far from the
+/// origin (|x| / facet size ≳ 30) keeps it from reaching even for a point on a flat facet; then
+/// it reports converged = false and the facet's edge. Relative coordinates keep that round-off
+/// at the facet's own scale.
+Projection project_relative(const Facet& f, std::span<const Vec3> x, const Vec3& xs, std::int32_t index = 0);
 
 /// "101, 102, 103 and 4 more": the first `n` labels of node rows.
 std::string first_labels(const model::Model& model, const std::vector<std::int32_t>& rows, std::size_t n = 5);

@@ -6,6 +6,7 @@
 
 #include "contact/projection.hpp"
 #include "contact/search.hpp"
+#include "contact/tie.hpp"
 #include "vec3.hpp"
 
 namespace inpact::contact {
@@ -106,8 +107,8 @@ std::vector<SegmentPoint> segment_points(const Facet& fs, const ContactSurface& 
         const P2 p{p0[0] + q.xi * (p1[0] - p0[0]) + q.eta * (p2[0] - p0[0]),
                    p0[1] + q.xi * (p1[1] - p0[1]) + q.eta * (p2[1] - p0[1])};
         const Vec3 X = plane.to3(p);
-        const Projection ps = project_to_facet(fs, x, X);
-        const Projection pm = project_to_facet(fm, x, facet_geometry(fs, x, ps.xi[0], ps.xi[1]).x);
+        const Projection ps = project_relative(fs, x, X);
+        const Projection pm = project_relative(fm, x, facet_geometry(fs, x, ps.xi[0], ps.xi[1]).x);
         if (pm.distance > tolerance) continue;
         out.push_back({ps.xi, pm.xi, m, 2.0 * area * q.weight});
       }

@@ -16,14 +16,17 @@ namespace {
 
 /// Cube A = [0,1]³ (one C3D8, nodes 1-8); block B = [1,2]×[0,1]² as n × n × 1 C3D8 (nodes from
 /// 101), its x = 1 nodes moved to `x_face`; `tie` is the *TIE block.
-std::string two_blocks(int n, double x_face, const std::string& tie) {
-  std::string d = "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n";
+std::string two_blocks(int n, double x_face, const std::string& tie, double y0 = 0.0) {
+  std::string d = "*NODE\n";
+  for (int a = 0; a < 8; ++a)
+    d += std::to_string(a + 1) + "," + std::to_string((a % 4 == 1 || a % 4 == 2) ? 1 : 0) + "," +
+         std::to_string(y0 + ((a % 4 >= 2) ? 1 : 0)) + "," + std::to_string(a >= 4 ? 1 : 0) + "\n";
   auto lab = [&](int i, int j, int k) { return 101 + i + 2 * (j + (n + 1) * k); };
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= 1; ++i)
         d += std::to_string(lab(i, j, k)) + "," + std::to_string(i == 0 ? x_face : 2.0) + "," +
-             std::to_string(double(j) / n) + "," + std::to_string(double(k) / n) + "\n";
+             std::to_string(y0 + double(j) / n) + "," + std::to_string(double(k) / n) + "\n";
   d += "*ELEMENT, TYPE=C3D8, ELSET=A\n1,1,2,3,4,5,6,7,8\n*ELEMENT, TYPE=C3D8, ELSET=B\n";
   int e = 101;
   for (int k = 0; k < n; ++k)
@@ -116,4 +119,17 @@ TEST(Tie, AdjustNoKeepsTheGapAndTiedNsetTiesAtAnyDistance) {
   ASSERT_EQ(ties[0].tied.size(), 2u);
   EXPECT_NEAR(ties[0].largest_distance, 0.3, 1e-12);
   EXPECT_FALSE(r.model.ties[0].adjust);
+}
+
+// Far from the origin (|x| / facet size = 300), the facet projection's round-off exceeds its
+// absolute Newton tolerance; the tie projects on coordinates relative to each facet and still
+// finds every slave node on the master (distance 0, interior weights).
+TEST(Tie, SlaveNodesOnAFacetFarFromTheOriginAreTied) {
+  DeckDir dir;
+  auto r = dir.read(two_blocks(3, 1.0, "*TIE, NAME=T, TYPE=NODE TO SURFACE\nB_LEFT, A_RIGHT\n", 300.0));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto ties = contact::resolve_ties(r.model);
+  EXPECT_EQ(ties[0].tied.size(), 16u);
+  EXPECT_TRUE(ties[0].untied.empty());
+  EXPECT_LE(ties[0].largest_distance, 1e-12);
 }
