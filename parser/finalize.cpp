@@ -1,6 +1,7 @@
 #include "finalize.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -139,7 +140,11 @@ void check_contact(model::Model& m, Diagnostics& diags) {
 /// *TIE: both surfaces defined, the master made of element faces (a node set has no facets to
 /// project onto), TIED NSET defined.
 void check_ties(const model::Model& m, Diagnostics& diags) {
+  std::map<std::string, const model::Tie*> first_of_name;  // the data lines of one *TIE share its name
   for (const auto& t : m.ties) {
+    const auto [it, fresh] = first_of_name.emplace(t.name, &t);
+    if (!fresh && (it->second->loc.line != t.loc.line || it->second->loc.file != t.loc.file))
+      diags.error(t.loc, "*TIE", fmt::format("tie name '{}' is used already (line {})", t.name, it->second->loc.line));
     check_surface(m, diags, t.slave, t.line_loc, "*TIE");
     if (check_defined(diags, m.mesh.surfaces, t.master, t.master_loc, "*TIE", "surface") &&
         m.mesh.surfaces.at(t.master).kind != model::Surface::Kind::Element)

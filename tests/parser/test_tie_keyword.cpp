@@ -48,10 +48,12 @@ TEST(TieKeyword, ParametersAreRead) {
 TEST(TieKeyword, BadInputIsReportedWithItsPlace) {
   DeckDir dir;
   auto r = dir.read(with_tie("*TIE, NAME=G, POSITION TOLERANCE=0.1, TIED NSET=TN\nTOP, BOTTOM\n"
-                             "*TIE, NAME=C, CYCLIC SYMMETRY\nTOP, BOTTOM\n*TIE, NAME=S\nTOP, TOP\n*TIE, NAME=U\nTOP, NOPE\n"));
+                             "*TIE, NAME=C, CYCLIC SYMMETRY\nTOP, BOTTOM\n*TIE, NAME=S\nTOP, TOP\n*TIE, NAME=U\nTOP, NOPE\n"
+                             "*TIE, NAME=D\nTOP, BOTTOM\n*TIE, NAME=D\nBOTTOM, TOP\n"));
   EXPECT_FALSE(r.ok());
   EXPECT_TRUE(has_diagnostic(r, "*TIE: POSITION TOLERANCE and TIED NSET are mutually exclusive")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "*TIE: CYCLIC SYMMETRY is not supported by inpact yet")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "*TIE: the slave and the master surface of a tie must differ")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "*TIE: surface 'NOPE' is not defined")) << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "*TIE: tie name 'D' is used already (line")) << r.report();
 }
