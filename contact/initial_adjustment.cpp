@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "contact/node_to_surface.hpp"
+#include "contact/tie.hpp"
 
 namespace inpact::contact {
 
@@ -16,6 +17,26 @@ int model_dim(const model::Model& m) {
   for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
     if (model::element_type(m.mesh.elements.type[e]).dim == 3) return 3;
   return 2;
+}
+
+/// *TIE, ADJUST=YES: every tied slave node onto its master point (before the contact pairs'
+/// ADJUST). A tie the model contradicts is left alone here: the analysis reports it.
+void adjust_ties(model::Model& m) {
+  std::vector<ResolvedTie> ties;
+  try {
+    ties = resolve_ties(m);
+  } catch (const TieError&) {
+    return;
+  }
+  for (const ResolvedTie& r : ties) {
+    model::Tie& t = m.ties[static_cast<std::size_t>(r.tie - m.ties.data())];
+    if (!t.adjust) continue;
+    for (const TiedNode& n : r.tied) {
+      m.mesh.nodes.coords[static_cast<std::size_t>(n.slave)] = n.on_master;
+      if (n.distance > 0.0) ++t.n_adjusted;
+      t.largest_adjustment = std::max(t.largest_adjustment, n.distance);
+    }
+  }
 }
 
 }  // namespace
@@ -59,6 +80,7 @@ std::vector<AdjustedNode> adjusted_nodes(const model::Model& m, std::vector<std:
 }
 
 std::vector<std::string> apply_adjust(model::Model& m) {
+  adjust_ties(m);
   std::vector<std::string> notes;
   const auto moves = adjusted_nodes(m, notes);
   for (const AdjustedNode& a : moves) m.mesh.nodes.coords[static_cast<std::size_t>(a.row)] = a.to;

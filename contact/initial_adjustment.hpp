@@ -26,7 +26,9 @@ struct AdjustedNode {
 /// The moves ADJUST asks for, with one note per adjusting pair (how many nodes, the largest move).
 std::vector<AdjustedNode> adjusted_nodes(const model::Model& model, std::vector<std::string>& notes);
 
-/// Moves the nodes of adjusted_nodes() in `model` and marks it adjusted (model.adjusted): what
+/// Moves the tied slave nodes of every *TIE with ADJUST=YES onto their master points (recorded in
+/// model::Tie::n_adjusted, largest_adjustment; contact/tie.hpp), then
+/// the nodes of adjusted_nodes() in `model` and marks it adjusted (model.adjusted): what
 /// `inpact check` and `inpact run` do after reading a deck, before the analysis. Returns the notes.
 std::vector<std::string> apply_adjust(model::Model& model);
 

@@ -9,6 +9,7 @@
 #include "contact/contact_surface.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact/interaction_table.hpp"
+#include "contact/tie.hpp"
 
 namespace inpact::io {
 
@@ -183,6 +184,37 @@ void write_steps(std::ostream& out, const model::Model& m,
   }
 }
 
+/// Each *TIE as the analysis resolves it (contact/tie.hpp): tolerance, nodes tied and not, the
+/// largest move ADJUST made (or, with ADJUST=NO, the largest distance the tie bridges).
+void write_ties(std::ostream& out, const model::Model& m) {
+  if (m.ties.empty()) return;
+  print(out, "Ties       {:>10}\n", m.ties.size());
+  std::vector<contact::ResolvedTie> ties;
+  try {
+    ties = contact::resolve_ties(m);
+  } catch (const std::exception& e) {
+    print(out, "  cannot be resolved: {}\n", e.what());
+    return;
+  }
+  for (const auto& r : ties) {
+    const model::Tie& t = *r.tie;
+    print(out, "  {}: {} / {}, {}, position tolerance {:.4g}{}, ADJUST={}\n", t.name, t.slave, t.master,
+          t.type == model::Tie::Type::NodeToSurface ? "node to surface" : "surface to surface",
+          r.tolerance, r.default_tolerance ? " (default: 5% of the typical master facet diagonal)" : "",
+          t.adjust ? "YES" : "NO");
+    if (!t.tied_nset.empty()) print(out, "    TIED NSET {}\n", t.tied_nset);
+    print(out, "    {} slave node(s) tied, {} not tied", r.tied.size(), r.untied.size());
+    if (t.type == model::Tie::Type::SurfaceToSurface)
+      print(out, " ({} by mortar segments, {} by their closest point)", r.n_mortar, r.tied.size() - r.n_mortar);
+    if (t.adjust) print(out, "; ADJUST moved {} node(s), the largest by {:.4g}\n", t.n_adjusted, t.largest_adjustment);
+    else print(out, "; largest slave-to-master distance {:.4g}\n", r.largest_distance);
+    if (!r.untied.empty()) print(out, "    not tied (beyond the tolerance): {}\n", contact::first_labels(m, r.untied));
+    if (!r.held.empty()) print(out, "    with a *BOUNDARY (it holds the DOFs it prescribes, the tie the others): {}\n", contact::first_labels(m, r.held));
+    if (!r.shared.empty()) print(out, "    left out (nodes of the master surface too): {}\n", contact::first_labels(m, r.shared));
+    if (t.no_rotation) print(out, "    NO ROTATION: inpact's solid elements have no rotational degrees of freedom to tie\n");
+  }
+}
+
 }  // namespace
 
 void write_model_summary(std::ostream& out, const model::Model& m,
@@ -191,6 +223,7 @@ void write_model_summary(std::ostream& out, const model::Model& m,
   write_mesh(out, m);
   write_materials(out, m);
   write_contact(out, m);
+  write_ties(out, m);
   write_steps(out, m, interactions);
 }
 

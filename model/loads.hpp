@@ -2,7 +2,9 @@
 /// Boundary conditions, loads, amplitudes, constraints and initial conditions.
 /// Targets are resolved to rows by the parser; `target` keeps the text as written for reports.
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -122,6 +124,29 @@ struct Equation {
   };
   std::vector<Term> terms;
   SourceLoc loc;
+};
+
+/// One data line of *TIE (model data): every node of the slave surface that lies within the
+/// position tolerance of the master surface moves with the master point it projects onto,
+/// u_s = Σ N_m(ξ) u_m (its translations eliminated like an *EQUATION's first DOF). The geometry
+/// is resolved by contact::resolve_ties (contact/tie.hpp).
+struct Tie {
+  enum class Type : std::uint8_t { SurfaceToSurface, NodeToSurface };
+  std::string name;    ///< NAME=, as written
+  std::string slave;   ///< upper-case surface names
+  std::string master;
+  Type type = Type::SurfaceToSurface;  ///< Abaqus/Standard's default for *TIE
+  /// POSITION TOLERANCE=; unset = inpact's default (5 % of the typical master facet diagonal).
+  std::optional<double> position_tolerance;
+  std::string tied_nset;  ///< TIED NSET=: only these slave nodes, at any distance
+  bool adjust = true;     ///< ADJUST=YES (Abaqus's default): tied slave nodes moved onto the master
+  bool no_rotation = false;
+  /// What ADJUST did (contact::apply_adjust, before the analysis): nodes moved, largest move.
+  std::size_t n_adjusted = 0;
+  double largest_adjustment = 0.0;
+  SourceLoc loc;          ///< the *TIE keyword line
+  SourceLoc line_loc;     ///< the data line (its slave field)
+  SourceLoc master_loc;   ///< its master field
 };
 
 }  // namespace inpact::model

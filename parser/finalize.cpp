@@ -1,6 +1,7 @@
 #include "finalize.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -143,6 +144,23 @@ void check_contact(model::Model& m, Diagnostics& diags) {
       }
 }
 
+/// *TIE: both surfaces defined, the master made of element faces (a node set has no facets to
+/// project onto), TIED NSET defined.
+void check_ties(const model::Model& m, Diagnostics& diags) {
+  std::map<std::string, const model::Tie*> first_of_name;  // the data lines of one *TIE share its name
+  for (const auto& t : m.ties) {
+    const auto [it, fresh] = first_of_name.emplace(t.name, &t);
+    if (!fresh && (it->second->loc.line != t.loc.line || it->second->loc.file != t.loc.file))
+      diags.error(t.loc, "*TIE", fmt::format("tie name '{}' is used already (line {})", t.name, it->second->loc.line));
+    check_surface(m, diags, t.slave, t.line_loc, "*TIE");
+    if (check_defined(diags, m.mesh.surfaces, t.master, t.master_loc, "*TIE", "surface") &&
+        m.mesh.surfaces.at(t.master).kind != model::Surface::Kind::Element)
+      diags.error(t.master_loc, "*TIE", fmt::format("tie {}: the master surface '{}' is node based; a master surface must be "
+                                                  "made of element faces", t.name, t.master));
+    if (!t.tied_nset.empty()) check_defined(diags, m.mesh.nsets, t.tied_nset, t.loc, "*TIE", "node set");
+  }
+}
+
 void check_amplitude(const model::Model& m, Diagnostics& diags, const std::string& name, model::SourceLoc loc,
                      const char* keyword) {
   if (!name.empty()) check_defined(diags, m.amplitudes, name, loc, keyword, "amplitude");
@@ -218,6 +236,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
     diags.error({0, 0, 0}, "*ELEMENT", "the model has no elements");
   check_sections(m, diags);
   check_contact(m, diags);
+  check_ties(m, diags);
   check_steps(m, diags);
 }
 

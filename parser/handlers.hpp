@@ -17,5 +17,6 @@ void add_step_keywords(std::vector<KeywordSpec>& table);      // kw_step.cpp
 void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
 void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
 void add_step_contact_keywords(std::vector<KeywordSpec>& table);  // kw_step_contact.cpp
+void add_tie_keywords(std::vector<KeywordSpec>& table);       // kw_tie.cpp
 
 }  // namespace inpact::parser

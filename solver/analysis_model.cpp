@@ -155,6 +155,13 @@ AnalysisModel build_analysis_model(const model::Model& m) {
     throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(e.loc), e.keyword, e.what()));
   }
 
+  try {
+    am.ties = contact::resolve_ties(m);
+  } catch (const contact::TieError& e) {
+    throw AnalysisError(fmt::format("{}: error: *TIE: {}", m.sources.describe(e.loc), e.what()));
+  }
+  for (auto& w : contact::tie_warnings(m, am.ties)) am.warnings.push_back(std::move(w));
+
   assign_materials(m, am);
   check_initial_plastic_strains(m, am);
   warn_about_locking(am);

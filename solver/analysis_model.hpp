@@ -7,6 +7,7 @@
 
 #include "contact/interaction_table.hpp"
 #include "contact/resolved_interaction.hpp"
+#include "contact/tie.hpp"
 
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
@@ -38,6 +39,9 @@ struct AnalysisModel {
   /// Per step (index), the rows in force as they are enforced: what `check` prints and the
   /// analysis uses (contact/resolved_interaction.hpp).
   std::vector<std::vector<contact::ResolvedInteraction>> interactions;
+  /// The *TIE constraints resolved on the reference geometry (contact/tie.hpp): the DOF map
+  /// eliminates each tied slave node's translations into its master nodes.
+  std::vector<contact::ResolvedTie> ties;
   /// Warnings about the model as given (e.g. volumetric locking), for `check` and `run`.
   std::vector<std::string> warnings;
 

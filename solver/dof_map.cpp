@@ -21,6 +21,32 @@ void DofMap::update_dependent(std::vector<double>& u) const {
   }
 }
 
+namespace {
+
+/// *TIE: each tied slave node's translations u_s,c = Σ N_a u_a,c over its master nodes a
+/// (contact/tie.hpp resolved which nodes and checked them against boundary conditions, equations
+/// and other ties; a slave DOF prescribed anyway stays prescribed).
+void add_tie_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>& kind,
+                        std::map<std::int64_t, std::vector<MasterTerm>>& dependent) {
+  const model::Model& m = *am.model;
+  for (const contact::ResolvedTie& r : am.ties)
+    for (const contact::TiedNode& n : r.tied)
+      for (int c = 0; c < am.dim; ++c) {
+        const std::int64_t d = static_cast<std::int64_t>(n.slave) * am.dim + c;
+        if (kind[d] == DofMap::Kind::Prescribed) continue;
+        if (dependent.count(d))
+          throw AnalysisError(fmt::format("{}: error: *TIE: tie {}: slave node {} is already eliminated by another constraint",
+                                          m.sources.describe(r.tie->line_loc), r.tie->name, m.mesh.nodes.labels[n.slave]));
+        std::vector<MasterTerm> terms;
+        for (std::size_t k = 0; k < n.masters.size(); ++k)
+          terms.push_back({static_cast<std::int64_t>(n.masters[k]) * am.dim + c, n.weights[k]});
+        dependent[d] = std::move(terms);
+        kind[d] = DofMap::Kind::Dependent;
+      }
+}
+
+}  // namespace
+
 DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed) {
   const model::Model& m = *am.model;
   const std::int64_t n = static_cast<std::int64_t>(am.n_dof());
@@ -56,11 +82,13 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
     dependent[d0] = std::move(terms);
     map.kind_[d0] = Kind::Dependent;
   }
-  // Substitute dependents into each other until every term is independent.
+  add_tie_dependents(am, map.kind_, dependent);
+  // Substitute dependents into each other until every term is independent (a tie's master node
+  // that is itself tied elsewhere, an equation on a tied node: chains resolve here).
   for (auto& [d, terms] : dependent) {
     for (int pass = 0;; ++pass) {
       if (pass > static_cast<int>(dependent.size()))
-        throw AnalysisError("*EQUATION: the equations eliminate each other's degrees of freedom in a cycle");
+        throw AnalysisError("*EQUATION / *TIE: the constraints eliminate each other's degrees of freedom in a cycle");
       std::vector<MasterTerm> next;
       bool substituted = false;
       for (const auto& t : terms) {
