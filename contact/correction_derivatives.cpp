@@ -11,15 +11,6 @@ namespace inpact::contact {
 
 namespace {
 
-/// The orthonormal frame (t1, t2, n) of a facet point, as geometric_correction.cpp builds it.
-bool frame_of(const FacetGeometry& g, std::array<Vec3, 3>& q) {
-  const double l1 = norm(g.a[0]);
-  if (!(l1 > 0) || !(norm(g.n) > 0)) return false;
-  q[0] = scale(1.0 / l1, g.a[0]);
-  q[2] = g.n;
-  q[1] = cross(q[2], q[0]);
-  return true;
-}
 
 /// ∂(t1, t2, n) of frame q at geometry g when the tangents move by da = (∂a_1, ∂a_2): t1 = a_1/|a_1|,
 /// n = (a_2 × a_1)/|a_2 × a_1| (an edge: a_1 turned clockwise), t2 = n × t1.
@@ -48,7 +39,7 @@ Vec3 rotated_change(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& 
 /// The facet's own point and normal with their node derivatives (no correction: x̃ = x_f, ñ = n).
 void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, CorrectionDerivatives& d) {
   std::array<Vec3, 3> q{};
-  const bool framed = frame_of(g, q);
+  const bool framed = facet_frame(g, q);
   for (int a = 0; a < sh.n; ++a)
     for (int j = 0; j < 3; ++j) {
       d.x_node[a][j] = {0, 0, 0};
@@ -78,7 +69,7 @@ CorrectedPoint SurfaceCorrection::node_derivatives(std::size_t i, std::array<dou
   Vec3 off, nref;
   FacetGeometry gX;
   std::array<Vec3, 3> qX, qx;
-  if (!reference_ideal(i, sh, off, nref, gX) || !frame_of(gX, qX) || !frame_of(gx, qx)) return p;
+  if (!reference_ideal(i, sh, off, nref, gX) || !facet_frame(gX, qX) || !facet_frame(gx, qx)) return p;
   // x̃ = x_f + Q d, ñ = unit(Q ñ_ref): Q moves with the current frame.
   for (int a = 0; a < sh.n; ++a)
     for (int j = 0; j < 3; ++j) {

@@ -203,6 +203,15 @@ FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, double xi,
   return facet_geometry(f, x, eval_shape(f.shape, xi, eta));
 }
 
+bool facet_frame(const FacetGeometry& g, std::array<Vec3, 3>& q) {
+  const double l1 = norm(g.a[0]);
+  if (!(l1 > 0) || !(norm(g.n) > 0)) return false;
+  q[0] = scale(1.0 / l1, g.a[0]);
+  q[2] = g.n;
+  q[1] = cross(q[2], q[0]);
+  return true;
+}
+
 FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, const ShapeEval& e) {
   FacetGeometry g;
   for (int a = 0; a < e.n; ++a) {

@@ -67,6 +67,10 @@ FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, double xi,
 /// The same from the shape functions at the point, e = eval_shape(f.shape, ξ, η).
 FacetGeometry facet_geometry(const Facet& f, std::span<const Vec3> x, const ShapeEval& e);
 
+/// The orthonormal facet frame (t1 along a[0], t2 = n × t1, n) at a point; false on a
+/// degenerate facet.
+bool facet_frame(const FacetGeometry& g, std::array<Vec3, 3>& q);
+
 /// A quadrature rule over the facet's parametric domain.
 struct QuadPoint {
   double xi, eta, weight;

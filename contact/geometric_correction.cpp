@@ -55,15 +55,6 @@ Facet local_facet(const Facet& f) {
   return l;
 }
 
-/// The orthonormal facet frame (t1, t2, n) at a point; false on a degenerate facet.
-bool facet_frame(const FacetGeometry& g, std::array<Vec3, 3>& q) {
-  const double l1 = norm(g.a[0]);
-  if (!(l1 > 0) || !(norm(g.n) > 0)) return false;
-  q[0] = scale(1.0 / l1, g.a[0]);
-  q[2] = g.n;
-  q[1] = cross(q[2], q[0]);
-  return true;
-}
 
 /// v given in frame `from`, expressed in frame `to` (the rotation to·fromᵀ applied to v).
 Vec3 rotate(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& to, const Vec3& v) {

@@ -5,19 +5,13 @@
 
 #include <fmt/format.h>
 
+#include "model/mesh_queries.hpp"
 #include "contact/node_to_surface.hpp"
 #include "contact/tie.hpp"
 
 namespace inpact::contact {
 
 namespace {
-
-/// 2 for plane and axisymmetric models, else 3.
-int model_dim(const model::Model& m) {
-  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
-    if (model::element_type(m.mesh.elements.type[e]).dim == 3) return 3;
-  return 2;
-}
 
 /// *TIE, ADJUST=YES: every tied slave node onto its master point (before the contact pairs'
 /// ADJUST). A tie the model contradicts is left alone here: the analysis reports it.
@@ -50,7 +44,7 @@ std::vector<AdjustedNode> adjusted_nodes(const model::Model& m, std::vector<std:
     const model::Surface& slave = m.mesh.surfaces.at(p.slave);
     const model::Surface& master = m.mesh.surfaces.at(p.master);
     if (master.kind != model::Surface::Kind::Element) continue;  // refused by the analysis
-    NodeToSurfacePair geometry(m, slave, master, model_dim(m), 1.0);
+    NodeToSurfacePair geometry(m, slave, master, model::spatial_dimension(m.mesh.elements), 1.0);
     std::vector<SlaveKinematics> kin;
     geometry.update(x, kin);
     std::set<std::int32_t> in_set;

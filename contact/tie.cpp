@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "model/mesh_queries.hpp"
 #include "contact/contact_surface.hpp"
 #include "contact/projection.hpp"
 #include "contact/search.hpp"
@@ -16,13 +17,6 @@
 namespace inpact::contact {
 
 namespace {
-
-/// 2 for plane and axisymmetric models, else 3.
-int model_dim(const model::Model& m) {
-  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
-    if (model::element_type(m.mesh.elements.type[e]).dim == 3) return 3;
-  return 2;
-}
 
 /// Nodes with a *BOUNDARY on a translation, in the model data or in any step.
 std::set<std::int32_t> held_nodes(const model::Model& m, int dim) {
@@ -208,7 +202,7 @@ std::vector<ResolvedTie> resolve_ties(const model::Model& m) {
   std::vector<ResolvedTie> out;
   if (m.ties.empty()) return out;
   const auto x = reference_coordinates(m.mesh.nodes);
-  const int dim = model_dim(m);
+  const int dim = model::spatial_dimension(m.mesh.elements);
   TieContext c{m, x, 0.0, held_nodes(m, dim), equation_dependents(m, dim), {}};
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const Vec3& p : x)

@@ -8,6 +8,12 @@
 
 namespace inpact::model {
 
+int spatial_dimension(const Elements& elements) {
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    if (element_type(elements.type[e]).dim == 3) return 3;
+  return 2;
+}
+
 std::vector<std::int32_t> face_nodes(const Elements& elements, Face face) {
   const ElementTypeInfo& info = element_type(elements.type[face.element]);
   const FaceDef& def = info.faces[face.face];

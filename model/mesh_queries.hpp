@@ -1,5 +1,5 @@
 #pragma once
-/// Questions asked of a mesh by more than one folder: face nodes and exterior faces.
+/// Questions asked of a mesh by more than one folder: its dimension, face nodes and exterior faces.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -7,6 +7,9 @@
 #include "mesh.hpp"
 
 namespace inpact::model {
+
+/// 3 when any element is a 3D one, else 2 (plane and axisymmetric models).
+int spatial_dimension(const Elements& elements);
 
 /// Node rows of one face (corners first, then midside nodes).
 std::vector<std::int32_t> face_nodes(const Elements& elements, Face face);
