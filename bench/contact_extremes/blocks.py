@@ -30,7 +30,7 @@ import math
 BASE = dict(dim=2, elem=None, W=2.0, Hs=1.0, Hm=1.0, ns=4, nms=None, nm=2, nmm=None,
             Es=210000.0, Em=210000.0, nus=0.3, num=0.3, load="pressure", p=10.0, d=None, gap=0.0,
             method="DIRECT", sf=None, stiffness=None, tol=None, discretization="NODE TO SURFACE",
-            inc=0.5, unit="mm")
+            inc=0.5, unit="mm", stabilize=None)
 
 
 def constrained(E, nu):
@@ -159,7 +159,13 @@ def deck(**kw):
         out += ["*NSET, NSET=YSIDES"] + lines([n for n, x in mn + sn if on(x[1], 0.0) or on(x[1], W)]).splitlines()
         bcs += ["YSIDES, 2"]
     out += bcs
-    out += ["*STEP, NAME=PRESS", "*STATIC", f"{c['inc']:g}, 1.0"]
+    # stabilize: "contact" (*CONTACT STABILIZATION, damping ramped off over the step) or "static"
+    # (*STATIC, STABILIZE: automatic damping of the whole model) for a body that is free until
+    # the contact closes
+    static = "*STATIC, STABILIZE" if c["stabilize"] == "static" else "*STATIC"
+    out += ["*STEP, NAME=PRESS", static, f"{c['inc']:g}, 1.0"]
+    if c["stabilize"] == "contact":
+        out += ["*CONTACT STABILIZATION"]
     if c["load"] == "pressure":
         out += ["*DSLOAD", f"TOP_S, P, {c['p']:.17g}"]
     else:
@@ -182,9 +188,11 @@ def deck(**kw):
 def expectation(c):
     """The analytic answer in the deck's units (mm, MPa; for unit m: m, Pa).
 
-    General contact with a penalty-type method is two rows of weight ½ (balanced master-slave,
-    contact/interaction_table.hpp), both with the law of the mean of the two surfaces' k_e and
-    characteristic lengths: the pressure that acts is that law at the common penetration h."""
+    General contact with a penalty law is two rows of weight ½ (balanced master-slave,
+    contact/interaction_table.cpp, general_contact_one_row), both with the law of the mean of the
+    two surfaces' k_e and characteristic lengths: the pressure that acts is that law at the
+    common penetration h. Direct and augmented Lagrange hold a multiplier per node: one row, the
+    finer surface as slave, with its own k_e."""
     dim = c["dim"]
     Ms, Mm = constrained(c["Es"], c["nus"]), constrained(c["Em"], c["num"])
     ns, nms = c["ns"], c["nms"] or max(1, round(c["ns"] * c["Hs"] / c["W"]))
@@ -197,7 +205,7 @@ def expectation(c):
     upper, lower = (Ms / (c["Hs"] / nms), c["W"] / ns), (Mm / (c["Hm"] / nmm), c["W"] / nm)
     if not general:
         sides = [upper]
-    elif method != "DIRECT":
+    elif method not in ("DIRECT", "AUGMENTED LAGRANGE"):
         # both rows take the mean of the two surfaces' k_e and characteristic length
         # (contact/resolved_interaction.cpp, resolve_scales): one law, the same gap
         mean = ((upper[0] + lower[0]) / 2, (upper[1] + lower[1]) / 2)
