@@ -171,6 +171,8 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
     pt.projection =
         closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, master_boxes_);
+    if (pt.projection.facet >= 0 && dot(g.n, pt.projection.normal) > -kOverlapCosine)
+      project_onto_facing(x, g, candidates, pt.projection);
     const Projection& pr = pt.projection;
     pt.hint = {pr.region == ProjectionRegion::Interior && pr.converged ? pr.facet : -1, pr.xi};
     // (judged on the faceted projection: beyond the master's free edge the idealised one
@@ -183,6 +185,21 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
     pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
   }
+}
+
+/// A point that has gone deep into the other body near one of its edges can lie closer to a
+/// side face than to the face it went through (general contact's bodies have both): the
+/// closest master facet that faces the point then replaces the closest one. Where none faces
+/// it, or a facing one is no closer than that facet's own edge, `p` stays (an open point).
+void SurfaceToSurfacePair::project_onto_facing(std::span<const Vec3> x, const FacetGeometry& g,
+                                               std::span<const std::int32_t> candidates, Projection& p) const {
+  thread_local std::vector<std::int32_t> facing;
+  facing.clear();
+  for (std::int32_t c : candidates)
+    if (dot(g.n, master_normals_[static_cast<std::size_t>(c)]) <= -kOverlapCosine) facing.push_back(c);
+  if (facing.empty()) return;
+  const Projection q = closest_projection(master_.facets(), facing, x, g.x, nullptr, master_boxes_);
+  if (q.facet >= 0 && q.region == ProjectionRegion::Interior && dot(g.n, q.normal) <= -kOverlapCosine) p = q;
 }
 
 /// The slave node's own closest-point projection (for friction), kept in k.projection's facet,

@@ -126,6 +126,9 @@ class SurfaceToSurfacePair final : public PairKinematics {
   /// it, or the plain rule (mortar_segments.hpp). Valid until the thread's next call.
   std::span<const QuadPoint> facet_points(std::span<const Vec3> x, const Facet& f) const;
   void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
+  /// Replaces a point's projection `p` that does not face it by the closest facing one.
+  void project_onto_facing(std::span<const Vec3> x, const FacetGeometry& g, std::span<const std::int32_t> candidates,
+                           Projection& p) const;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
