@@ -185,6 +185,13 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
     const Vec3 r = sub(xs, l.x);
     const double g0 = -dot(l.a0, r), g1 = -dot(l.a1, r);  // ∇φ
     const double m00 = dot(l.a0, l.a0), m01 = dot(l.a0, l.a1), m11 = dot(l.a1, l.a1);
+    // The step's round-off: r is a difference of coordinates of size |x|, so ξ is known to about
+    // ε |x| / |∂x/∂ξ|; far from the origin (|x| over 30 facet sizes) that exceeds 1e-14, and a
+    // point on a flat facet would never count as converged.
+    const double magnitude = std::max({std::abs(xs[0]), std::abs(xs[1]), std::abs(xs[2]), std::abs(l.x[0]),
+                                       std::abs(l.x[1]), std::abs(l.x[2])});
+    const double step_tol =
+        std::max(1e-14, 8.0 * std::numeric_limits<double>::epsilon() * magnitude / std::sqrt(std::min(m00, m11)));
     double h00 = m00 - dot(r, l.a00), h01 = m01 - dot(r, l.a01), h11 = m11 - dot(r, l.a11);
     double det = h00 * h11 - h01 * h01;
     if (!(h00 > 0 && det > 0)) {  // not a descent direction: Gauss–Newton (metric) instead
@@ -193,7 +200,7 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
       if (!(det > 0)) return res;  // degenerate facet
     }
     const double d0 = -(h11 * g0 - h01 * g1) / det, d1 = -(h00 * g1 - h01 * g0) / det;
-    if (std::abs(d0) + std::abs(d1) < 1e-14) {
+    if (std::abs(d0) + std::abs(d1) < step_tol) {
       res.converged = true;
       break;
     }
@@ -205,7 +212,7 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
       while (lambda > 1e-6 && fn.phi(xs, xi[0] + lambda * d0, xi[1] + lambda * d1) > phi0 + 1e-4 * lambda * slope)
         lambda *= 0.5;
     xi = {xi[0] + lambda * d0, xi[1] + lambda * d1};
-    if (lambda * (std::abs(d0) + std::abs(d1)) < 1e-14) {
+    if (lambda * (std::abs(d0) + std::abs(d1)) < step_tol) {
       res.converged = true;
       break;
     }
