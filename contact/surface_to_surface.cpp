@@ -187,10 +187,11 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
   }
 }
 
-/// A point that has gone deep into the other body near one of its edges can lie closer to a
-/// side face than to the face it went through (general contact's bodies have both): the
-/// closest master facet that faces the point then replaces the closest one. Where none faces
-/// it, or a facing one is no closer than that facet's own edge, `p` stays (an open point).
+/// A point that has gone into the other body near one of its edges can lie closer to a side
+/// face than to the face it went through (general contact's bodies have both): the closest
+/// master facet that faces the point then replaces the closest one, when the point lies behind
+/// it by less than half its size (a penetration, not the far side of the body: a thin strip's
+/// upper face must not find the bottom of the block it rests on). Otherwise `p` stays.
 void SurfaceToSurfacePair::project_onto_facing(std::span<const Vec3> x, const FacetGeometry& g,
                                                std::span<const std::int32_t> candidates, Projection& p) const {
   thread_local std::vector<std::int32_t> facing;
@@ -199,7 +200,9 @@ void SurfaceToSurfacePair::project_onto_facing(std::span<const Vec3> x, const Fa
     if (dot(g.n, master_normals_[static_cast<std::size_t>(c)]) <= -kOverlapCosine) facing.push_back(c);
   if (facing.empty()) return;
   const Projection q = closest_projection(master_.facets(), facing, x, g.x, nullptr, master_boxes_);
-  if (q.facet >= 0 && q.region == ProjectionRegion::Interior && dot(g.n, q.normal) <= -kOverlapCosine) p = q;
+  if (q.facet < 0 || q.region != ProjectionRegion::Interior || dot(g.n, q.normal) > -kOverlapCosine) return;
+  const double half_size2 = 0.25 * master_boxes_[static_cast<std::size_t>(q.facet)].size2;
+  if (q.gap < 0.0 && q.gap * q.gap < half_size2) p = q;
 }
 
 /// The slave node's own closest-point projection (for friction), kept in k.projection's facet,
