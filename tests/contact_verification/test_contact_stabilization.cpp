@@ -15,6 +15,7 @@
 
 #include "fixtures/deck_fixture.hpp"
 #include "solver/stabilization.hpp"
+#include "stabilization_checks.hpp"
 #include "verification/verification_fixture.hpp"
 
 namespace {
@@ -29,25 +30,9 @@ std::string reference(const std::string& name) {
   return std::string(INPACT_SOURCE_DIR) + "/tests/contact_verification/decks/" + name + ".inp";
 }
 
-double history(const inpact::solver::Frame& f, const std::string& key) {
-  for (const auto& h : f.history)
-    if (h.key == key) return h.value;
-  ADD_FAILURE() << "no history value " << key;
-  return NAN;
-}
-
-const std::vector<double>& cpress(const inpact::solver::Frame& f) {
-  const auto* field = inpact::verification::field(f, "CPRESS");
-  EXPECT_NE(field, nullptr);
-  static const std::vector<double> none;
-  return field ? field->values : none;
-}
-
-bool warned(const inpact::verification::Run& r) {
-  return std::any_of(r.capture.messages.begin(), r.capture.messages.end(), [](const std::string& m) {
-    return m.find("the stabilised answer may be wrong") != std::string::npos;
-  });
-}
+using inpact::stabilization_checks::cpress;
+using inpact::stabilization_checks::history;
+using inpact::stabilization_checks::warned;
 
 /// The largest relative error of CPRESS against F/A = 10.
 double worst_against_load(const std::vector<double>& p) {

@@ -12,6 +12,7 @@
 
 #include "fixtures/deck_fixture.hpp"
 #include "solver/stabilization.hpp"
+#include "stabilization_checks.hpp"
 #include "verification/verification_fixture.hpp"
 
 namespace {
@@ -22,25 +23,9 @@ std::string stabilize_deck(const std::string& name) {
   return std::string(INPACT_SOURCE_DIR) + "/tests/contact_verification/decks/" + name + ".inp";
 }
 
-double history(const inpact::solver::Frame& f, const std::string& key) {
-  for (const auto& h : f.history)
-    if (h.key == key) return h.value;
-  ADD_FAILURE() << "no history value " << key;
-  return NAN;
-}
-
-const std::vector<double>& cpress(const inpact::solver::Frame& f) {
-  const auto* field = inpact::verification::field(f, "CPRESS");
-  EXPECT_NE(field, nullptr);
-  static const std::vector<double> none;
-  return field ? field->values : none;
-}
-
-bool warned(const inpact::verification::Run& r) {
-  return std::any_of(r.capture.messages.begin(), r.capture.messages.end(), [](const std::string& m) {
-    return m.find("the stabilised answer may be wrong") != std::string::npos;
-  });
-}
+using inpact::stabilization_checks::cpress;
+using inpact::stabilization_checks::history;
+using inpact::stabilization_checks::warned;
 
 TEST(StabilizePatch, CompletesWithSmallDissipationAndTheExactPressure) {
   const auto plain = run_deck(stabilize_deck("stabilize_patch_3d_unstabilized"));
