@@ -12,6 +12,7 @@
 #include "analysis_error.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
+#include "elements/finite_strain_mises.hpp"
 #include "elements/material.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/quadrature.hpp"
@@ -28,23 +29,28 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
 
 namespace {
 
-/// The Mises material of *PLASTIC; NLGEOM has no finite-strain plasticity yet (a clear stop
-/// instead of a wrong answer).
+/// The Mises material of *PLASTIC: the small-strain law, or the finite-strain one
+/// (finite_strain_mises.hpp) when a step has NLGEOM; what the finite-strain law lacks (kinematic
+/// hardening, plane stress) stops with a clear message instead of a wrong answer.
 std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
                                                 model::ElementFamily family, const elements::ElasticConstants& c) {
   const model::Plastic& p = *mat.plastic;
-  for (const model::Step& step : m.steps)
-    if (step.nlgeom)
-      throw AnalysisError(fmt::format("{}: error: *PLASTIC: plasticity with NLGEOM (finite strain) is not supported yet "
-                                      "(material '{}'; step '{}' has NLGEOM)", m.sources.describe(p.loc), mat.name,
-                                      step.name));
   elements::MisesHardening h;
   h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
   for (const auto& point : p.table) {
     h.plastic_strain.push_back(point.plastic_strain);
     h.yield_stress.push_back(point.yield_stress);
   }
-  return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
+  const auto nlgeom = std::find_if(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
+  if (nlgeom == m.steps.end()) return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
+  const char* missing = h.kinematic ? "kinematic hardening"
+                        : family == model::ElementFamily::PlaneStress ? "plane stress elements"
+                                                                      : nullptr;
+  if (missing)
+    throw AnalysisError(fmt::format("{}: error: *PLASTIC: finite-strain plasticity (NLGEOM) with {} is not supported "
+                                    "yet (material '{}'; step '{}' has NLGEOM)", m.sources.describe(p.loc), missing,
+                                    mat.name, nlgeom->name));
+  return std::make_shared<elements::FiniteStrainMises>(c, std::move(h));
 }
 
 /// Each element's material law and section data. One law per section and element family (plane

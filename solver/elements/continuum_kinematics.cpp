@@ -4,6 +4,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "voigt.hpp"
+
 namespace inpact::solver::elements {
 
 using model::ElementFamily;
@@ -13,13 +15,6 @@ namespace {
 // Voigt index pairs in Abaqus order.
 constexpr int kVi[6] = {0, 1, 2, 0, 0, 1};
 constexpr int kVj[6] = {0, 1, 2, 1, 2, 2};
-
-Eigen::Matrix3d voigt_to_tensor(const Vec6& v, bool engineering_shear) {
-  const double s = engineering_shear ? 0.5 : 1.0;
-  Eigen::Matrix3d t;
-  t << v(0), s * v(3), s * v(4), s * v(3), v(1), s * v(5), s * v(4), s * v(5), v(2);
-  return t;
-}
 
 Voigt6 tensor_to_voigt(const Eigen::Matrix3d& t, bool engineering_shear) {
   const double s = engineering_shear ? 2.0 : 1.0;

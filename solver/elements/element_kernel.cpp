@@ -76,7 +76,7 @@ Assembled assemble(ElementFamily family, int dim, const Law& law, bool nlgeom, c
   for (std::size_t p = 0; p < pts.size(); ++p) {
     const PointData& pd = pts[p];
     PointState& st = r.states.emplace_back(point_kinematics(family, dim, nlgeom, pd, u));
-    const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain}, history.at(p), st.stress, scratch);
+    const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain, nlgeom}, history.at(p), st.stress, scratch);
     add_point_contribution(family, dim, D, nlgeom, pd, st, &r.f, want_k ? &r.K : nullptr);
   }
   return r;
@@ -196,7 +196,7 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
   }
   Vec6 stress;
   Mat6 scratch;
-  const Mat6& D = law.update({F, strain, thermal_strain}, history, stress, scratch);
+  const Mat6& D = law.update({F, strain, thermal_strain, request.nlgeom}, history, stress, scratch);
   const Mat6x24 B = hex8_b(request.nlgeom ? F : Eigen::Matrix3d::Identity(), g);
   f.noalias() += (B.transpose() * stress) * geo.dv[p];
   if (request.point_output) {

@@ -32,6 +32,7 @@ struct MaterialPointInput {
   const Eigen::Matrix3d& F;  ///< deformation gradient I + ∇₀u (CAX: F33 = 1 + u_r/R)
   const Vec6& strain;        ///< ε, or E with NLGEOM
   double thermal_strain;     ///< α ΔT at the point (isotropic, on the diagonal)
+  bool nlgeom = false;       ///< the element is total Lagrangian: strain is E, the stress wanted S
 };
 
 class IsotropicElastic;

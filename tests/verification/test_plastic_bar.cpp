@@ -82,5 +82,44 @@ TEST(PlasticBar, StressAtEveryIncrementAndResidualPlasticStrainAreExact) { check
 // The plane-stress plate: the same closed forms through the material's local σ33 = 0 iteration.
 TEST(PlasticBar, PlaneStressPlateIsExactToo) { check_bar("plastic_plate_cps4.inp"); }
 
+// Case 9b: the same bar stretched to λ = 1.5 with NLGEOM (plastic_bar_nlgeom_c3d8.inp), the
+// finite-strain law (solver/elements/finite_strain_mises.hpp), H = 1000 on the Kirchhoff stress.
+// Closed form at LE11 = ln λ: ε̄ᵖ = (LE11 − σ_y/E)/(1 + H/E), τ = σ_y + H ε̄ᵖ, Cauchy S11 = τ/J,
+// J = exp((1 − 2ν)τ/E), LE22 = −ν τ/E − ε̄ᵖ/2, the end's reaction τ A0/λ. The path is proportional
+// with fixed principal axes, where the exponential map is exact: every value to round-off
+// (1e-10 relative). Unloading is elastic to zero stress: the end at L(exp ε̄ᵖ − 1).
+TEST(PlasticBar, LargeStrainNlgeomBarFollowsTheClosedForm) {
+  const auto r = run_deck(deck_path("plastic_bar_nlgeom_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  constexpr double Hn = 1000.0, tol = 1e-10;
+  double worst_s = 0, worst_e = 0;
+  const auto load = r->capture.of_step(1);
+  ASSERT_EQ(load.size(), 20u);
+  double ep_end = 0;
+  for (const auto* f : load) {
+    const double lambda = 1 + 0.5 * f->step_time, le = std::log(lambda);
+    const double ep = std::max(0.0, (le - sy / E) / (1 + Hn / E));
+    const double tau = ep > 0 ? sy + Hn * ep : E * le;
+    const double cauchy = tau / std::exp((1 - 2 * nu) * tau / E);
+    const double ds = std::max({worst_of(*r, *f, "S", 0, cauchy), worst_of(*r, *f, "S", 1, 0.0), worst_of(*r, *f, "S", 3, 0.0)});
+    const double de = std::max({worst_of(*r, *f, "E", 0, le), worst_of(*r, *f, "E", 1, -nu * tau / E - ep / 2),
+                                worst_of(*r, *f, "PEEQ", 0, ep), worst_of(*r, *f, "PE", 0, ep), worst_of(*r, *f, "PE", 2, -ep / 2)});
+    EXPECT_LE(ds, tol * sy) << "t = " << f->step_time;
+    EXPECT_LE(de, tol * le) << "t = " << f->step_time;
+    double reaction = 0;
+    for (std::int32_t n : nset(r->model(), "RIGHT")) reaction += nodal(*f, "RF", static_cast<std::size_t>(n), 0);
+    EXPECT_NEAR(reaction, tau * 1.0 / lambda, tol * sy) << "t = " << f->step_time;
+    worst_s = std::max(worst_s, ds);
+    worst_e = std::max(worst_e, de);
+    ep_end = ep;
+  }
+  const auto& end = *r->capture.of_step(2).back();
+  EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * (std::exp(ep_end) - 1), tol * L);
+  EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * sy);
+  EXPECT_LE(worst_of(*r, end, "E", 0, ep_end), tol * ep_end);
+  report("plastic_bar_nlgeom_c3d8: worst |S11 - closed form| / sigma_y", worst_s / sy);
+  report("plastic_bar_nlgeom_c3d8: worst |LE, PE, PEEQ - closed form| / LE11", worst_e);
+}
+
 }  // namespace
 }  // namespace inpact::verification
