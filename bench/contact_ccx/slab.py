@@ -45,7 +45,7 @@ def parse_2d(lines):
                 d["sections"].append((opts["ELSET"], opts["MATERIAL"]))
             elif kw == "*MATERIAL":
                 d["material"].append(s)
-            elif kw == "*ELASTIC":
+            elif kw in ("*ELASTIC", "*PLASTIC"):
                 d["material"].append(s)
             elif kw == "*STEP":
                 in_step = True
@@ -64,7 +64,7 @@ def parse_2d(lines):
         elif kw == "*SURFACE":
             es, face = [x.strip() for x in s.split(",")]
             d["surfaces"][name].append((es, face))
-        elif kw == "*ELASTIC":
+        elif kw in ("*ELASTIC", "*PLASTIC"):
             d["material"].append(s)
         elif kw == "*BOUNDARY":
             (d["step_boundary"] if in_step else d["boundary"]).append(s)
@@ -83,10 +83,10 @@ def offset_of(d):
     return 10 ** len(str(top))
 
 
-def slab_deck(lines_2d, t, contact, step_output, no_contact=False, ccx=True, title=""):
+def slab_deck(lines_2d, t, contact, step_output, no_contact=False, ccx=True, title="", nlgeom=False):
     """The 3-D slab deck. `contact`: the interaction and pair lines (with {slave} and {master}
     already filled); `step_output`: output request lines of the step. ccx: CalculiX spelling of
-    *STEP (no NAME parameter)."""
+    *STEP (no NAME parameter). nlgeom: the step has NLGEOM."""
     d = parse_2d(lines_2d)
     off = offset_of(d)
     out = ["*HEADING", f" {title or ' '.join(d['heading'])[:200]}",
@@ -111,7 +111,8 @@ def slab_deck(lines_2d, t, contact, step_output, no_contact=False, ccx=True, tit
     if not no_contact:
         out += contact
     out += ["*BOUNDARY", "ALL, 3"] + d["boundary"]
-    out += ["*STEP" if ccx else "*STEP, NAME=S1", "*STATIC", d["static"]]
+    step = "*STEP" if ccx else "*STEP, NAME=S1"
+    out += [step + (", NLGEOM" if nlgeom else ""), "*STATIC", d["static"]]
     if d["step_boundary"]:
         out += ["*BOUNDARY"] + d["step_boundary"]
     out += step_output + ["*END STEP"]
