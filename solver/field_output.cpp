@@ -86,7 +86,7 @@ std::string field_key(std::string_view v, Domain d) {
   if (element) {
     if (v == "MISES") return "S";
     if (v == "PEEQ" || v == "PEMAG") return std::string(v);
-    for (std::string_view k : {"PE", "S", "E"})
+    for (std::string_view k : {"PE", "LE", "S", "E"})
       if (is_variable(v, k, 2)) return std::string(k);
   }
   return "";
@@ -129,7 +129,7 @@ std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) 
     if (v == "MISES" || v == "PEEQ" || v == "PEMAG") return {v};
     if (v == "COORD") return vector_labels(v, dim);
     if (is_variable(v, "COORD", 1)) return component(vector_labels("COORD", dim));
-    for (const char* k : {"PE", "S", "E"}) {
+    for (const char* k : {"PE", "LE", "S", "E"}) {
       if (v == k) return tensor_labels(k, dim);
       if (is_variable(v, k, 2)) return component(tensor_labels(k, dim));
     }
@@ -141,13 +141,15 @@ void add_unique(std::vector<std::string>& list, const std::string& v) {
   if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
 }
 
-constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E", "PE", "PEEQ", "PEMAG"};
+/// LE is E's values under Abaqus's name for them with NLGEOM (the logarithmic strain; without
+/// NLGEOM the small strain, which it equals to first order).
+constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG"};
 
 bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
 
 /// Keys of integration-point values (computed by the element kernels).
 bool point_key(const std::string& key) {
-  return key == "S" || key == "E" || key == "PE" || key == "PEEQ" || key == "PEMAG";
+  return key == "S" || key == "E" || key == "LE" || key == "PE" || key == "PEEQ" || key == "PEMAG";
 }
 
 /// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
@@ -523,6 +525,7 @@ Column parse_column(const std::string& name) {
   // Tensor 11 22 33 12 13 23 → Abaqus-ordered slots 0..5.
   static const std::map<std::string, int> slot = {{"11", 0}, {"22", 1}, {"33", 2}, {"12", 3}, {"13", 4}, {"23", 5}};
   if (name.rfind("PE", 0) == 0) return {S::PE, slot.at(name.substr(2))};
+  if (name.rfind("LE", 0) == 0) return {S::E, slot.at(name.substr(2))};
   return {name[0] == 'S' ? S::S : S::E, slot.at(name.substr(1))};
 }
 

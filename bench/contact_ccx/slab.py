@@ -94,7 +94,8 @@ def slab_deck(lines_2d, t, contact, step_output, no_contact=False, ccx=True, tit
            f"** thickness {t:.17g}; node n of the 2-D mesh is n (z = 0) and n + {off} (z = t)"]
     out += ["*NODE, NSET=ALL"]
     for z, add in ((0.0, 0), (t, off)):
-        out += [f"{n + add}, {x:.17g}, {y:.17g}, {z:.17g}" for n, x, y in d["nodes"]]
+        # 15 digits: CalculiX reads at most 20 characters a field (17 digits and an exponent are 22)
+        out += [f"{n + add}, {x:.15g}, {y:.15g}, {z:.15g}" for n, x, y in d["nodes"]]
     for es, (etype, rows) in d["elements"].items():
         assert etype == "CPE4", etype
         out += [f"*ELEMENT, TYPE=C3D8, ELSET={es}"]

@@ -432,6 +432,22 @@ TEST_F(FieldOutput, PlasticStrainsInTheResultsAndInElPrint) {
   }
 }
 
+// LE (Abaqus's logarithmic strain under NLGEOM) is the strain E holds, under its own name, in the
+// results file and in *EL PRINT.
+TEST_F(FieldOutput, LogarithmicStrainLeIsTheStrainUnderItsOwnName) {
+  auto steps = pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\nE, LE\n*EL PRINT\nLE11, LE33\n");
+  steps.replace(steps.find("*STEP\n"), 6, "*STEP, NLGEOM\n");
+  const Recorder rec = run(read(steps));
+  ASSERT_EQ(rec.frames.size(), 1u);
+  const FieldData* e = field(rec.frames[0], "E");
+  const FieldData* le = field(rec.frames[0], "LE");
+  ASSERT_TRUE(e && le);
+  EXPECT_EQ(le->values, e->values);
+  EXPECT_EQ(le->component_labels.front(), "LE11");
+  ASSERT_EQ(rec.prints.size(), 1u);
+  EXPECT_EQ(rec.prints[0].tables.at(0).columns, (std::vector<std::string>{"LE11", "LE33"}));
+}
+
 TEST_F(FieldOutput, KinematicHardeningWithNlgeomStopsWithAClearError) {
   auto steps = std::string("*PLASTIC, HARDENING=KINEMATIC\n200., 0.\n300., 0.1\n") + pull_step("");
   steps.replace(steps.find("*STEP\n"), 6, "*STEP, NLGEOM\n");

@@ -103,6 +103,7 @@ TEST(PlasticBar, LargeStrainNlgeomBarFollowsTheClosedForm) {
     const double cauchy = tau / std::exp((1 - 2 * nu) * tau / E);
     const double ds = std::max({worst_of(*r, *f, "S", 0, cauchy), worst_of(*r, *f, "S", 1, 0.0), worst_of(*r, *f, "S", 3, 0.0)});
     const double de = std::max({worst_of(*r, *f, "E", 0, le), worst_of(*r, *f, "E", 1, -nu * tau / E - ep / 2),
+                                worst_of(*r, *f, "LE", 0, le), worst_of(*r, *f, "LE", 2, -nu * tau / E - ep / 2),
                                 worst_of(*r, *f, "PEEQ", 0, ep), worst_of(*r, *f, "PE", 0, ep), worst_of(*r, *f, "PE", 2, -ep / 2)});
     EXPECT_LE(ds, tol * sy) << "t = " << f->step_time;
     EXPECT_LE(de, tol * le) << "t = " << f->step_time;
