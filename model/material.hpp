@@ -27,15 +27,32 @@ struct Expansion {
 /// zero plastic strain. ISOTROPIC: piecewise linear between the points, constant beyond the
 /// last (one point: perfectly plastic), as Abaqus. KINEMATIC: linear Ziegler/Prager hardening
 /// with σ⁰ = the first yield stress and C from the first two points (one point: perfectly
-/// plastic). One temperature only (a temperature column with one value is accepted).
+/// plastic). COMBINED (DATATYPE=PARAMETERS): nonlinear kinematic hardening (Chaboche), the
+/// first point is σ|0 and `backstresses` holds (C_k, γ_k); the size of the yield surface comes
+/// from *CYCLIC HARDENING (Material::cyclic_hardening), constant σ|0 without it. One temperature
+/// only (a temperature column with one value is accepted).
 struct Plastic {
-  enum class Hardening : std::uint8_t { Isotropic, Kinematic };
+  enum class Hardening : std::uint8_t { Isotropic, Kinematic, Combined };
   struct Point {
     double yield_stress = 0.0;
     double plastic_strain = 0.0;
   };
+  struct Backstress {
+    double modulus = 0.0;   ///< C_k
+    double recovery = 0.0;  ///< γ_k (0: linear)
+  };
   Hardening hardening = Hardening::Isotropic;
   std::vector<Point> table;
+  std::vector<Backstress> backstresses;
+  SourceLoc loc;
+};
+
+/// *CYCLIC HARDENING: the size σ⁰(ε̄ᵖ) of the yield surface of combined hardening, as a table
+/// (piecewise linear, constant beyond the last point, as *PLASTIC's) or, with PARAMETERS, the
+/// exponential law σ⁰ = σ|0 + Q∞ (1 − exp(−b ε̄ᵖ)).
+struct CyclicHardening {
+  std::vector<Plastic::Point> table;  ///< empty with PARAMETERS
+  double initial = 0.0, saturation = 0.0, rate = 0.0;  ///< σ|0, Q∞, b (PARAMETERS)
   SourceLoc loc;
 };
 
@@ -54,6 +71,7 @@ struct Material {
   std::string name;  ///< as written
   std::optional<Elastic> elastic;
   std::optional<Plastic> plastic;
+  std::optional<CyclicHardening> cyclic_hardening;
   std::optional<double> density;  ///< kept for later procedures; static steps ignore it
   std::optional<Expansion> expansion;
   SourceLoc loc;

@@ -5,19 +5,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "voigt.hpp"
+
 namespace inpact::solver::elements {
 
 namespace {
 
 using L = MisesStateLayout;
-
-/// The deviator of a stress-like Voigt vector (tensor components, no factor on the shears).
-Vec6 deviator(const Vec6& s) {
-  Vec6 d = s;
-  const double mean = (s(0) + s(1) + s(2)) / 3.0;
-  d.head<3>().array() -= mean;
-  return d;
-}
 
 /// ξ : ξ of a symmetric tensor in Voigt form (tensor components): the shears count twice.
 double contract(const Vec6& a) { return a.head<3>().squaredNorm() + 2.0 * a.tail<3>().squaredNorm(); }
@@ -108,7 +102,7 @@ const Mat6& MisesPlasticity::update_3d(const Vec6& strain, double thermal_strain
   Vec6 elastic_strain = strain - ep_n;
   elastic_strain.head<3>().array() -= thermal_strain;
   stress = D_ * elastic_strain;  // the trial stress
-  Vec6 xi = deviator(stress);
+  Vec6 xi = voigt_deviator(stress);
   if (hardening_.kinematic) xi -= Eigen::Map<const Vec6>(c.data() + L::backstress);
   const double norm = std::sqrt(contract(xi));
   const double q_trial = std::sqrt(1.5) * norm;

@@ -19,4 +19,17 @@ inline Eigen::Matrix<double, 6, 1> tensor_to_vec6(const Eigen::Matrix3d& t, bool
   return v;
 }
 
+/// The deviator of a stress-like Voigt vector (tensor components, no factor on the shears).
+inline Eigen::Matrix<double, 6, 1> voigt_deviator(const Eigen::Matrix<double, 6, 1>& s) {
+  Eigen::Matrix<double, 6, 1> d = s;
+  const double mean = (s(0) + s(1) + s(2)) / 3.0;
+  d.head<3>().array() -= mean;
+  return d;
+}
+
+/// a : b of two symmetric tensors in Voigt form with tensor components: the shears count twice.
+inline double voigt_contract(const Eigen::Matrix<double, 6, 1>& a, const Eigen::Matrix<double, 6, 1>& b) {
+  return a.head<3>().dot(b.head<3>()) + 2.0 * a.tail<3>().dot(b.tail<3>());
+}
+
 }  // namespace inpact::solver::elements
