@@ -48,7 +48,11 @@ bool check_section(const model::Model& m, Diagnostics& diags, const model::Prete
                    const std::vector<std::uint8_t>& connected) {
   auto it = m.mesh.surfaces.find(s.surface);
   if (it == m.mesh.surfaces.end()) {
-    diags.error(s.surface_loc, kKeyword, fmt::format("surface '{}' is not defined", s.surface));
+    std::vector<std::string> names;
+    for (const auto& [name, surface] : m.mesh.surfaces) names.push_back(name);
+    const std::string guess = did_you_mean(s.surface, names);
+    diags.error(s.surface_loc, kKeyword, fmt::format("surface '{}' is not defined{}", s.surface,
+                                                     guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
     return false;
   }
   if (it->second.kind != model::Surface::Kind::Element || it->second.faces.empty()) {
@@ -115,13 +119,27 @@ std::vector<std::int32_t> underlying_elements(const model::Model& m, const model
   return {out.begin(), out.end()};
 }
 
-/// Cuts the mesh: a copy of each section node replaces it in the underlying elements.
-void split_section(model::Model& m, model::PretensionSection& s) {
+/// Cuts the mesh (when `cut`): a copy of each section node replaces it in the underlying elements.
+/// False (the error reported, the mesh unchanged) when a section node has no element on the other side.
+bool split_section(model::Model& m, Diagnostics& diags, model::PretensionSection& s, bool cut) {
   model::Mesh& mesh = m.mesh;
   std::set<std::int32_t> section_nodes;
   for (const model::Face& f : mesh.surfaces.at(s.surface).faces)
     for (std::int32_t n : model::face_nodes(mesh.elements, f)) section_nodes.insert(n);
   const std::vector<std::int32_t> rewired = underlying_elements(m, s, section_nodes);
+  std::set<std::int32_t> other_side;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+    if (!std::binary_search(rewired.begin(), rewired.end(), static_cast<std::int32_t>(e)))
+      for (std::int32_t n : mesh.elements.nodes_of(e))
+        if (section_nodes.count(n)) other_side.insert(n);
+  for (std::int32_t n : section_nodes)
+    if (!other_side.count(n)) {
+      diags.error(s.surface_loc, kKeyword, fmt::format("node {} of surface '{}' has no element on the other side of the "
+                                                       "section (a pre-tension section must cut through the fastener)",
+                                                       mesh.nodes.labels[n], s.surface));
+      return false;
+    }
+  if (!cut) return true;
   std::map<std::int32_t, std::int64_t> largest_label;  // per instance
   for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
     auto [it, fresh] = largest_label.try_emplace(mesh.nodes.instance[n], mesh.nodes.labels[n]);
@@ -143,6 +161,7 @@ void split_section(model::Model& m, model::PretensionSection& s) {
     for (std::int64_t k = mesh.elements.offsets[e]; k < mesh.elements.offsets[e + 1]; ++k)
       if (auto it = copy_of.find(mesh.elements.conn[k]); it != copy_of.end()) mesh.elements.conn[k] = it->second;
   s.n_rewired_elements = rewired.size();
+  return true;
 }
 
 }  // namespace
@@ -159,7 +178,8 @@ void split_pretension_sections(model::Model& m, Diagnostics& diags) {
                                                     "section needs its own node", m.mesh.nodes.labels[s.node]));
       continue;
     }
-    if (resolve_normal(m, diags, s) && !diags.has_errors()) split_section(m, s);
+    // With errors elsewhere the section is checked but the mesh left as read.
+    if (resolve_normal(m, diags, s)) split_section(m, diags, s, !diags.has_errors());
   }
 }
 
