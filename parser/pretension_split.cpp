@@ -94,11 +94,25 @@ bool resolve_normal(const model::Model& m, Diagnostics& diags, model::Pretension
   return true;
 }
 
+/// The direction out of the underlying elements, which tells the sides apart: the faces' own
+/// average (a given normal may point either way), or the given one when the faces cancel out.
+Vec outward_direction(const model::Model& m, const model::PretensionSection& s) {
+  Vec sum{0, 0, 0};
+  double total = 0.0;
+  for (const model::Face& f : m.mesh.surfaces.at(s.surface).faces) {
+    const Vec a = face_area_vector(m.mesh, f);
+    for (int k = 0; k < 3; ++k) sum[k] += a[k];
+    total += std::sqrt(dot(a, a));
+  }
+  return std::sqrt(dot(sum, sum)) > 1e-12 * total ? sum : s.normal;
+}
+
 /// The elements that take the copies: the surface's own and those behind the section.
 std::vector<std::int32_t> underlying_elements(const model::Model& m, const model::PretensionSection& s,
                                               const std::set<std::int32_t>& section_nodes) {
   const auto& elements = m.mesh.elements;
   const auto& x = m.mesh.nodes.coords;
+  const Vec outward = outward_direction(m, s);
   std::set<std::int32_t> out;
   for (const model::Face& f : m.mesh.surfaces.at(s.surface).faces) out.insert(f.element);
   for (std::size_t e = 0; e < elements.size(); ++e) {
@@ -114,7 +128,7 @@ std::vector<std::int32_t> underlying_elements(const model::Model& m, const model
     }
     if (n_on == 0) continue;
     for (double& v : on_section) v /= n_on;
-    if (dot(sub(centroid, on_section), s.normal) < 0) out.insert(static_cast<std::int32_t>(e));
+    if (dot(sub(centroid, on_section), outward) < 0) out.insert(static_cast<std::int32_t>(e));
   }
   return {out.begin(), out.end()};
 }

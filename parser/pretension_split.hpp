@@ -11,7 +11,7 @@ namespace inpact::parser {
 /// area-weighted average outward normal), its area, and the split: every section node gets a copy
 /// (a new node at the same place, labelled after the instance's largest label) that replaces it
 /// in the underlying elements, i.e. the surface's own elements and any other element holding a
-/// section node whose centroid lies behind the section (n · (centroid − its section nodes' mean) < 0).
+/// section node whose centroid lies behind the section (o · (centroid − its section nodes' mean) < 0, o the faces' average outward normal).
 void split_pretension_sections(model::Model& m, Diagnostics& diags);
 
 }  // namespace inpact::parser

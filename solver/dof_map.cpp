@@ -109,7 +109,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
   for (auto& [d, terms] : dependent) {
     for (int pass = 0;; ++pass) {
       if (pass > static_cast<int>(dependent.size()))
-        throw AnalysisError("*EQUATION / *TIE / *PRE-TENSION SECTION: the constraints eliminate each other's degrees of freedom in a cycle");
+        throw AnalysisError("*EQUATION / *TIE: the constraints eliminate each other's degrees of freedom in a cycle");
       std::vector<MasterTerm> next;
       bool substituted = false;
       for (const auto& t : terms) {
