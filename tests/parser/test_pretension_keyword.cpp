@@ -85,6 +85,19 @@ TEST(PretensionKeyword, AGivenNormalIsNormalisedAndTheOtherSideCanBeTheSurface) 
   for (int a = 0; a < 4; ++a) EXPECT_EQ(r.model.mesh.nodes.labels[upper[a]], 51 + a) << "the upper cube underlies";
 }
 
+TEST(PretensionKeyword, AGivenNormalAgainstTheFacesKeepsTheSurfaceSideUnderlying) {
+  // CalculiX's pret1 gives its normal against the faces' outward one: the sides are still told
+  // apart by the faces, and the constraint takes the normal as given.
+  DeckDir dir;
+  auto r = dir.read(two_cubes("*PRE-TENSION SECTION, SURFACE=CUT, NODE=50\n0., 0., -1.\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& s = r.model.pretension_sections[0];
+  EXPECT_EQ(s.normal, (std::array<double, 3>{0, 0, -1}));
+  EXPECT_EQ(s.n_rewired_elements, 1u);
+  const auto lower = r.model.mesh.elements.nodes_of(0);
+  for (int a = 4; a < 8; ++a) EXPECT_EQ(r.model.mesh.nodes.labels[lower[a]], 51 + (a - 4));
+}
+
 TEST(PretensionKeyword, BadSectionsAreReportedWithTheirPlace) {
   DeckDir dir;
   // Line 32 is the first line after the base deck.
