@@ -215,6 +215,20 @@ void write_ties(std::ostream& out, const model::Model& m) {
   }
 }
 
+/// Each *PRE-TENSION SECTION as the parser cut the mesh: its node, normal, area, the node copies.
+void write_pretension_sections(std::ostream& out, const model::Model& m) {
+  if (m.pretension_sections.empty()) return;
+  print(out, "Pre-tension sections {:>4}\n", m.pretension_sections.size());
+  for (const auto& s : m.pretension_sections) {
+    const std::string inst = m.instances[m.mesh.nodes.instance[s.node]];
+    print(out, "  {}: pre-tension node {}{}, normal ({:.6g}, {:.6g}, {:.6g}){}, area {:.6g}\n", s.surface,
+          inst.empty() ? "" : inst + ".", m.mesh.nodes.labels[s.node], s.normal[0], s.normal[1], s.normal[2],
+          s.given_normal ? "" : " (the surface's average)", s.area);
+    print(out, "    {} section node(s) copied, {} element(s) on the underlying side use the copies\n", s.node_pairs.size(),
+          s.n_rewired_elements);
+  }
+}
+
 }  // namespace
 
 void write_model_summary(std::ostream& out, const model::Model& m,
@@ -224,6 +238,7 @@ void write_model_summary(std::ostream& out, const model::Model& m,
   write_materials(out, m);
   write_contact(out, m);
   write_ties(out, m);
+  write_pretension_sections(out, m);
   write_steps(out, m, interactions);
 }
 

@@ -149,4 +149,27 @@ struct Tie {
   SourceLoc master_loc;   ///< its master field
 };
 
+/// *PRE-TENSION SECTION, SURFACE=, NODE= (model data): the surface cuts a fastener in two. The
+/// parser (parser/pretension_split.cpp) gives the elements on the surface's side (its underlying
+/// elements) a copy of each section node, and the DOF map ties every copy to its original,
+///   u_copy = u_original + n · u_P1,
+/// so DOF 1 of the pre-tension node P is the relative displacement of the two sides along the
+/// normal n (the tightening) and its conjugate force is the force carried across the section
+/// (positive = tension) [K16 *PRE-TENSION SECTION], [IG Prescribed assembly loads].
+struct PretensionSection {
+  std::string surface;  ///< upper-case surface name
+  std::int32_t node = -1;  ///< the pre-tension node's row
+  std::optional<std::array<double, 3>> given_normal;  ///< the data line, as written
+  /// Resolved by the split: the unit normal (pointing out of the underlying elements, as the
+  /// given one is taken), the section area normal to it, and (original, copy) node rows.
+  std::array<double, 3> normal{0, 0, 0};
+  double area = 0.0;
+  std::vector<std::array<std::int32_t, 2>> node_pairs;
+  std::size_t n_rewired_elements = 0;  ///< elements that now use the copies
+  SourceLoc loc;          ///< the keyword line
+  SourceLoc surface_loc;  ///< SURFACE='s value
+  SourceLoc node_loc;     ///< NODE='s value
+  SourceLoc normal_loc;   ///< the data line
+};
+
 }  // namespace inpact::model

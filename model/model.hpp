@@ -28,6 +28,7 @@ struct Model {
   std::map<std::string, Amplitude> amplitudes;
   std::vector<Equation> equations;
   std::vector<Tie> ties;  ///< *TIE, one per data line, in deck order
+  std::vector<PretensionSection> pretension_sections;  ///< in deck order
 
   // Initial (model-level) conditions, in force from the first step on.
   std::vector<BoundaryBlock> boundaries;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "pretension_split.hpp"
 #include "text.hpp"
 
 namespace inpact::parser {
@@ -238,6 +239,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   check_contact(m, diags);
   check_ties(m, diags);
   check_steps(m, diags);
+  split_pretension_sections(m, diags);
 }
 
 }  // namespace inpact::parser

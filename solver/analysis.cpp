@@ -19,6 +19,7 @@
 #include "linear_solve.hpp"
 #include "material_states.hpp"
 #include "newton.hpp"
+#include "pretension.hpp"
 #include "solution_controls.hpp"
 #include "stabilization.hpp"
 #include "step_conditions.hpp"
@@ -92,7 +93,9 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   const std::vector<double> delta_t = run.conditions.temperature_change(t);
   // The element point values of the converged state, as its last assembly kept them.
   const ElementPoints* points = run.assembler.points_at(s.u, delta_t, run.step.nlgeom);
-  OutputValues values = compute_output(am, run.output, due, s.u, reactions(run.dofs, s), run.step.nlgeom, delta_t,
+  std::vector<double> rf = reactions(run.dofs, s);
+  report_pretension_forces(am, s.f_int, s.f_ext, rf);  // RF1 of a pre-tension node: the bolt force
+  OutputValues values = compute_output(am, run.output, due, s.u, rf, run.step.nlgeom, delta_t,
                                        run.contact ? &contact : nullptr, points, &run.states);
   if (due.any_field()) {
     Frame frame;

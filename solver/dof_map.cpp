@@ -45,6 +45,24 @@ void add_tie_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>& kind
       }
 }
 
+/// *PRE-TENSION SECTION: each copy of a section node moves with its original plus the normal
+/// times the tightening, u_copy,c = u_orig,c + n_c u_P1 (model/loads.hpp); DOF 1 of the
+/// pre-tension node P is an unknown (or prescribed) though no element connects P.
+void add_pretension_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>& kind,
+                               std::map<std::int64_t, std::vector<MasterTerm>>& dependent) {
+  for (const model::PretensionSection& s : am.model->pretension_sections) {
+    const std::int64_t p = static_cast<std::int64_t>(s.node) * am.dim;
+    for (const auto& [orig, copy] : s.node_pairs)
+      for (int c = 0; c < am.dim; ++c) {
+        const std::int64_t d = static_cast<std::int64_t>(copy) * am.dim + c;
+        std::vector<MasterTerm> terms{{static_cast<std::int64_t>(orig) * am.dim + c, 1.0}};
+        if (s.normal[c] != 0.0) terms.push_back({p, s.normal[c]});
+        dependent[d] = std::move(terms);
+        kind[d] = DofMap::Kind::Dependent;
+      }
+  }
+}
+
 }  // namespace
 
 DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed) {
@@ -56,6 +74,8 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
   for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
     for (std::int32_t node : m.mesh.elements.nodes_of(e))
       for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(node) * am.dim + c] = Kind::Free;
+  for (const model::PretensionSection& s : m.pretension_sections)
+    map.kind_[static_cast<std::int64_t>(s.node) * am.dim] = Kind::Free;
   for (std::int64_t d = 0; d < n; ++d)
     if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
 
@@ -83,6 +103,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
     map.kind_[d0] = Kind::Dependent;
   }
   add_tie_dependents(am, map.kind_, dependent);
+  add_pretension_dependents(am, map.kind_, dependent);
   // Substitute dependents into each other until every term is independent (a tie's master node
   // that is itself tied elsewhere, an equation on a tied node: chains resolve here).
   for (auto& [d, terms] : dependent) {

@@ -4,7 +4,8 @@
 /// Global DOF d = node_row · dim + component. Each DOF is one of
 ///  - free: an unknown of the linear system (equation number eq(d) >= 0);
 ///  - prescribed: its value comes from a boundary condition (no equation);
-///  - dependent: eliminated by a *EQUATION, u_d = Σ w_i u_i over independent DOFs;
+///  - dependent: eliminated by a *EQUATION, *TIE or *PRE-TENSION SECTION, u_d = Σ w_i u_i over
+///    independent DOFs;
 ///  - unused: a node no element connects (no stiffness; held at zero, not reported).
 /// Assembly expands each element DOF into its independent DOFs ("masters") with weights, so
 /// K_reduced = Tᵀ K T without ever forming T.

@@ -39,7 +39,7 @@ void apply_boundaries(const AnalysisModel& am, const std::vector<model::Boundary
       for (std::int32_t node : e.nodes)
         for (int dof = e.first_dof; dof <= std::min(e.last_dof, am.dim); ++dof) {
           const std::int64_t d = static_cast<std::int64_t>(node) * am.dim + dof - 1;
-          defs[d] = {e.value, b.amplitude, e.value};
+          defs[d] = {e.value, b.fixed ? "" : b.amplitude, e.value, b.fixed};
         }
   }
 }
@@ -169,7 +169,9 @@ double StepConditions::value_at(const V* prev, const V* target, double t) const 
 
 void StepConditions::apply_prescribed(double t, std::span<const double> u_start, std::span<double> u) const {
   for (const auto& [d, def] : target_.boundary) {
-    if (!def.amplitude.empty()) {
+    if (def.fixed) {
+      u[d] = step_start_value_.try_emplace(d, u_start[d]).first->second;
+    } else if (!def.amplitude.empty()) {
       u[d] = def.value * amplitude(def.amplitude, t);
     } else {
       // From wherever the DOF was at the step start (a new BC on a free DOF starts there).

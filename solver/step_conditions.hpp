@@ -6,6 +6,7 @@
 ///    condition) to the new one over the step (*STEP, AMPLITUDE=RAMP, the static default), or
 ///    applies at once (AMPLITUDE=STEP);
 ///  - with AMPLITUDE=name the value is magnitude × a(t);
+///  - *BOUNDARY, FIXED holds a DOF where it is at the start of the step;
 ///  - OP=MOD (default) changes the definitions it names and keeps the others; OP=NEW removes
 ///    every earlier one of its kind first: removed loads ramp down to zero, and a removed
 ///    boundary condition leaves its reaction as a load that ramps down to zero.
@@ -29,6 +30,9 @@ struct ConditionHistory {
     double value = 0.0;      ///< the magnitude as defined
     std::string amplitude;   ///< upper-case amplitude name; empty = the step's ramp/step
     double end_value = 0.0;  ///< what it reached at the end of its step (= value × a(t_end))
+    /// *BOUNDARY, FIXED: held at the value the DOF has at the start of the step (value and
+    /// amplitude unused); carried into later steps it keeps holding that value.
+    bool fixed = false;
   };
   std::map<std::int64_t, Value> boundary;  ///< key: global DOF
   std::map<std::int64_t, Value> cload;     ///< key: global DOF

@@ -7,6 +7,7 @@
 
 #include "contact/contact_test_util.hpp"
 #include "io/model_summary.hpp"
+#include "parser/read_deck.hpp"
 
 using namespace inpact;
 
@@ -40,6 +41,20 @@ TEST(ModelSummary, SmoothingLinesShowTheLargestCorrection) {
   EXPECT_NE(s.find("Surface smoothing SM\n    S CIRCUMFERENTIAL a=(1, 1, 0) b=(1, 1, 1)\n"
                    "      cannot be applied: CIRCUMFERENTIAL correction of surface S: node 3 lies on the axis of "
                    "revolution, where it has no radial direction\n"),
+            std::string::npos)
+      << s;
+}
+
+// `inpact check` on the pre-tension bar (decks/verification/pretension_bar.inp): the section's
+// node, its normal (the average of the lower half's top faces), its area 10 × 10 and the cut.
+TEST(ModelSummary, PretensionSectionLineShowsNodeNormalAreaAndCut) {
+  const auto r = parser::read_deck(std::string(INPACT_SOURCE_DIR) + "/decks/verification/pretension_bar.inp");
+  ASSERT_TRUE(r.ok()) << r.report();
+  std::ostringstream out;
+  io::write_model_summary(out, r.model);
+  const std::string s = out.str();
+  EXPECT_NE(s.find("Pre-tension sections    1\n  CUT: pre-tension node 9001, normal (0, 0, 1) (the surface's average), "
+                   "area 100\n    9 section node(s) copied, 4 element(s) on the underlying side use the copies\n"),
             std::string::npos)
       << s;
 }

@@ -72,3 +72,38 @@ TEST(DofMap, EquationsThatEliminateEachOtherAreACycle) {
   ASSERT_TRUE(r.ok()) << r.report();
   EXPECT_THROW(map_of(r.model, {}), solver::AnalysisError);
 }
+
+// *PRE-TENSION SECTION on the cube's top face, a second cube on it: the copies of its four nodes are dependent,
+// u_copy = u_orig + n u_P1 (n = (0, 0, 1)); the pre-tension node's DOF 1 is an unknown though no
+// element connects it, its DOFs 2 and 3 stay unused; prescribed, DOF 1 has no equation.
+TEST(DofMap, PretensionCopiesFollowTheirOriginalsPlusTheTightening) {
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck("*NODE\n9, 0, 0, 2\n10, 1, 0, 2\n11, 1, 1, 2\n12, 0, 1, 2\n13, 5, 5, 5\n"
+                                  "*ELEMENT, TYPE=C3D8, ELSET=UPPER\n2, 5, 6, 7, 8, 9, 10, 11, 12\n"
+                                  "*SOLID SECTION, ELSET=UPPER, MATERIAL=STEEL\n*ELSET, ELSET=LOWER\n1\n"
+                                  "*SURFACE, NAME=TOP\nLOWER, S2\n*PRE-TENSION SECTION, SURFACE=TOP, NODE=13\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& s = r.model.pretension_sections.at(0);
+  const std::int64_t p = static_cast<std::int64_t>(s.node) * 3;
+  const auto map = map_of(r.model, {});
+  EXPECT_EQ(map.kind(p), solver::DofMap::Kind::Free);
+  EXPECT_EQ(map.kind(p + 1), solver::DofMap::Kind::Unused);
+  EXPECT_EQ(map.kind(p + 2), solver::DofMap::Kind::Unused);
+  EXPECT_EQ(map.n_equations(), 12 * 3 + 1) << "the twelve nodes and DOF 1 of the pre-tension node";
+  for (const auto& [orig, copy] : s.node_pairs)
+    for (int c = 0; c < 3; ++c) {
+      const std::int64_t d = static_cast<std::int64_t>(copy) * 3 + c;
+      ASSERT_EQ(map.kind(d), solver::DofMap::Kind::Dependent);
+      const auto m = map.masters(d);
+      ASSERT_EQ(m.size(), c == 2 ? 2u : 1u);
+      EXPECT_EQ(m[0].dof, static_cast<std::int64_t>(orig) * 3 + c);
+      EXPECT_EQ(m[0].weight, 1.0);
+      if (c == 2) {
+        EXPECT_EQ(m[1].dof, p);
+        EXPECT_EQ(m[1].weight, 1.0);
+      }
+    }
+  const auto held = map_of(r.model, {p});
+  EXPECT_EQ(held.kind(p), solver::DofMap::Kind::Prescribed);
+  EXPECT_EQ(held.equation(p), -1);
+}

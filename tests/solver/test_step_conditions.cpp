@@ -72,3 +72,45 @@ TEST(StepConditions, PrescribedValuesRampFromWhereTheDofWas) {
   s.apply_prescribed(0.5, u_start, u);
   EXPECT_DOUBLE_EQ(u[dof(7, 3)], 0.1 + (0.4 - 0.1) * 0.5);
 }
+
+// *BOUNDARY, FIXED: the DOF stays where the step found it (a value on the data line is ignored,
+// and so is an amplitude), in this step and in the next one that does not redefine it.
+TEST(StepConditions, FixedHoldsTheStepStartValue) {
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck(R"(*AMPLITUDE, NAME=TRI
+0., 0., 0.5, 1., 1., 0.
+*STEP
+*STATIC
+*BOUNDARY, FIXED, AMPLITUDE=TRI
+7, 3, 3
+*END STEP
+*STEP
+*STATIC
+*CLOAD
+7, 1, 1.
+*END STEP
+*STEP
+*STATIC
+*BOUNDARY
+7, 3, 3, 0.5
+*END STEP
+)"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto am = solver::build_analysis_model(r.model);
+  std::vector<double> u_start(am.n_dof(), 0.0), u(am.n_dof(), 0.0);
+  u_start[dof(7, 3)] = 0.125;  // where the previous step left it
+  solver::StepConditions s1(am, r.model.steps[0], solver::initial_history(am), 0.0);
+  ASSERT_EQ(s1.prescribed()[dof(7, 3)], 1);
+  for (double t : {0.25, 0.5, 1.0}) {
+    s1.apply_prescribed(t, u_start, u);
+    EXPECT_EQ(u[dof(7, 3)], 0.125) << "t = " << t;
+  }
+  const std::vector<double> reactions(am.n_dof(), 0.0);
+  solver::StepConditions s2(am, r.model.steps[1], s1.end_state(reactions), 1.0);
+  ASSERT_EQ(s2.prescribed()[dof(7, 3)], 1);
+  s2.apply_prescribed(0.5, u_start, u);
+  EXPECT_EQ(u[dof(7, 3)], 0.125) << "carried over, FIXED keeps holding";
+  solver::StepConditions s3(am, r.model.steps[2], s2.end_state(reactions), 2.0);
+  s3.apply_prescribed(0.5, u_start, u);
+  EXPECT_DOUBLE_EQ(u[dof(7, 3)], 0.125 + 0.5 * (0.5 - 0.125)) << "redefined: ramps from where it was";
+}

@@ -1,0 +1,200 @@
+#include "pretension_split.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "model/element_types.hpp"
+#include "model/mesh_queries.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+using Vec = std::array<double, 3>;
+constexpr const char* kKeyword = "*PRE-TENSION SECTION";
+
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/// The outward area vector of a face from its corners: a solid's face corners turn into the
+/// element (model/element_types.hpp), so the polygon's right-hand area vector is negated; a 2D
+/// element's edge has the outward normal of its direction turned clockwise (per unit thickness).
+Vec face_area_vector(const model::Mesh& mesh, model::Face face) {
+  const auto& info = model::element_type(mesh.elements.type[face.element]);
+  const auto nodes = model::face_nodes(mesh.elements, face);
+  const int n_corners = info.faces[face.face].n_corners;
+  const auto& x = mesh.nodes.coords;
+  if (info.dim == 2) {
+    const Vec t = sub(x[nodes[1]], x[nodes[0]]);
+    return {t[1], -t[0], 0.0};
+  }
+  Vec a{0, 0, 0};
+  for (int i = 0; i < n_corners; ++i) {
+    const Vec c = cross(x[nodes[i]], x[nodes[(i + 1) % n_corners]]);
+    for (int k = 0; k < 3; ++k) a[k] -= 0.5 * c[k];
+  }
+  return a;
+}
+
+/// The surface and node checks; false (with the error reported) when the section cannot be cut.
+bool check_section(const model::Model& m, Diagnostics& diags, const model::PretensionSection& s,
+                   const std::vector<std::uint8_t>& connected) {
+  auto it = m.mesh.surfaces.find(s.surface);
+  if (it == m.mesh.surfaces.end()) {
+    std::vector<std::string> names;
+    for (const auto& [name, surface] : m.mesh.surfaces) names.push_back(name);
+    const std::string guess = did_you_mean(s.surface, names);
+    diags.error(s.surface_loc, kKeyword, fmt::format("surface '{}' is not defined{}", s.surface,
+                                                     guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
+    return false;
+  }
+  if (it->second.kind != model::Surface::Kind::Element || it->second.faces.empty()) {
+    diags.error(s.surface_loc, kKeyword, fmt::format("surface '{}' is not element based (the section must be made of "
+                                                     "element faces, *SURFACE, TYPE=ELEMENT)", s.surface));
+    return false;
+  }
+  if (connected[s.node]) {
+    diags.error(s.node_loc, kKeyword, fmt::format("the pre-tension node {} belongs to elements; it must be a node no "
+                                                  "element uses (define a separate *NODE)",
+                                                  m.mesh.nodes.labels[s.node]));
+    return false;
+  }
+  return true;
+}
+
+/// The unit normal (given, or the average of the faces' outward normals weighted by their
+/// areas) and the section's area normal to it; false when the normal is zero.
+bool resolve_normal(const model::Model& m, Diagnostics& diags, model::PretensionSection& s) {
+  const auto& faces = m.mesh.surfaces.at(s.surface).faces;
+  Vec sum{0, 0, 0};
+  double total = 0.0;
+  for (const model::Face& f : faces) {
+    const Vec a = face_area_vector(m.mesh, f);
+    for (int k = 0; k < 3; ++k) sum[k] += a[k];
+    total += std::sqrt(dot(a, a));
+  }
+  const Vec n = s.given_normal ? *s.given_normal : sum;
+  const double length = std::sqrt(dot(n, n));
+  if (!(length > 1e-12 * (s.given_normal ? 1.0 : total))) {
+    diags.error(s.given_normal ? s.normal_loc : s.loc, kKeyword,
+                s.given_normal ? "the normal is zero"
+                               : fmt::format("the average normal of surface '{}' is zero (its faces face opposite "
+                                             "ways); give the normal on the data line", s.surface));
+    return false;
+  }
+  for (int k = 0; k < 3; ++k) s.normal[k] = n[k] / length;
+  s.area = std::abs(dot(sum, s.normal));
+  return true;
+}
+
+/// The direction out of the underlying elements, which tells the sides apart: the faces' own
+/// average (a given normal may point either way), or the given one when the faces cancel out.
+Vec outward_direction(const model::Model& m, const model::PretensionSection& s) {
+  Vec sum{0, 0, 0};
+  double total = 0.0;
+  for (const model::Face& f : m.mesh.surfaces.at(s.surface).faces) {
+    const Vec a = face_area_vector(m.mesh, f);
+    for (int k = 0; k < 3; ++k) sum[k] += a[k];
+    total += std::sqrt(dot(a, a));
+  }
+  return std::sqrt(dot(sum, sum)) > 1e-12 * total ? sum : s.normal;
+}
+
+/// The elements that take the copies: the surface's own and those behind the section.
+std::vector<std::int32_t> underlying_elements(const model::Model& m, const model::PretensionSection& s,
+                                              const std::set<std::int32_t>& section_nodes) {
+  const auto& elements = m.mesh.elements;
+  const auto& x = m.mesh.nodes.coords;
+  const Vec outward = outward_direction(m, s);
+  std::set<std::int32_t> out;
+  for (const model::Face& f : m.mesh.surfaces.at(s.surface).faces) out.insert(f.element);
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto nodes = elements.nodes_of(e);
+    Vec centroid{0, 0, 0}, on_section{0, 0, 0};
+    int n_on = 0;
+    for (std::int32_t n : nodes) {
+      for (int k = 0; k < 3; ++k) centroid[k] += x[n][k] / static_cast<double>(nodes.size());
+      if (section_nodes.count(n)) {
+        ++n_on;
+        for (int k = 0; k < 3; ++k) on_section[k] += x[n][k];
+      }
+    }
+    if (n_on == 0) continue;
+    for (double& v : on_section) v /= n_on;
+    if (dot(sub(centroid, on_section), outward) < 0) out.insert(static_cast<std::int32_t>(e));
+  }
+  return {out.begin(), out.end()};
+}
+
+/// Cuts the mesh (when `cut`): a copy of each section node replaces it in the underlying elements.
+/// False (the error reported, the mesh unchanged) when a section node has no element on the other side.
+bool split_section(model::Model& m, Diagnostics& diags, model::PretensionSection& s, bool cut) {
+  model::Mesh& mesh = m.mesh;
+  std::set<std::int32_t> section_nodes;
+  for (const model::Face& f : mesh.surfaces.at(s.surface).faces)
+    for (std::int32_t n : model::face_nodes(mesh.elements, f)) section_nodes.insert(n);
+  const std::vector<std::int32_t> rewired = underlying_elements(m, s, section_nodes);
+  std::set<std::int32_t> other_side;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+    if (!std::binary_search(rewired.begin(), rewired.end(), static_cast<std::int32_t>(e)))
+      for (std::int32_t n : mesh.elements.nodes_of(e))
+        if (section_nodes.count(n)) other_side.insert(n);
+  for (std::int32_t n : section_nodes)
+    if (!other_side.count(n)) {
+      diags.error(s.surface_loc, kKeyword, fmt::format("node {} of surface '{}' has no element on the other side of the "
+                                                       "section (a pre-tension section must cut through the fastener)",
+                                                       mesh.nodes.labels[n], s.surface));
+      return false;
+    }
+  if (!cut) return true;
+  std::map<std::int32_t, std::int64_t> largest_label;  // per instance
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+    auto [it, fresh] = largest_label.try_emplace(mesh.nodes.instance[n], mesh.nodes.labels[n]);
+    if (!fresh) it->second = std::max(it->second, mesh.nodes.labels[n]);
+  }
+  std::map<std::int32_t, std::int32_t> copy_of;
+  for (std::int32_t n : section_nodes) {
+    const auto row = static_cast<std::int32_t>(mesh.nodes.size());
+    const std::int32_t inst = mesh.nodes.instance[n];
+    const std::int64_t label = ++largest_label[inst];
+    mesh.nodes.labels.push_back(label);
+    mesh.nodes.coords.push_back(mesh.nodes.coords[n]);
+    mesh.nodes.instance.push_back(inst);
+    mesh.nodes.index.insert(inst, label, row);
+    copy_of[n] = row;
+    s.node_pairs.push_back({n, row});
+  }
+  for (std::int32_t e : rewired)
+    for (std::int64_t k = mesh.elements.offsets[e]; k < mesh.elements.offsets[e + 1]; ++k)
+      if (auto it = copy_of.find(mesh.elements.conn[k]); it != copy_of.end()) mesh.elements.conn[k] = it->second;
+  s.n_rewired_elements = rewired.size();
+  return true;
+}
+
+}  // namespace
+
+void split_pretension_sections(model::Model& m, Diagnostics& diags) {
+  if (m.pretension_sections.empty()) return;
+  std::vector<std::uint8_t> connected(m.mesh.nodes.size(), 0);
+  for (std::int32_t n : m.mesh.elements.conn) connected[n] = 1;
+  std::set<std::int32_t> pretension_nodes;
+  for (model::PretensionSection& s : m.pretension_sections) {
+    if (!check_section(m, diags, s, connected)) continue;
+    if (!pretension_nodes.insert(s.node).second) {
+      diags.error(s.node_loc, kKeyword, fmt::format("the pre-tension node {} serves another section already; each "
+                                                    "section needs its own node", m.mesh.nodes.labels[s.node]));
+      continue;
+    }
+    // With errors elsewhere the section is checked but the mesh left as read.
+    if (resolve_normal(m, diags, s)) split_section(m, diags, s, !diags.has_errors());
+  }
+}
+
+}  // namespace inpact::parser
