@@ -18,6 +18,10 @@ void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
 void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
 void add_step_contact_keywords(std::vector<KeywordSpec>& table);  // kw_step_contact.cpp
 void add_tie_keywords(std::vector<KeywordSpec>& table);       // kw_tie.cpp
+void add_combined_hardening_keywords(std::vector<KeywordSpec>& table);  // kw_combined_hardening.cpp
+
+/// *PLASTIC, HARDENING=COMBINED's data into `p` (kw_combined_hardening.cpp; called by *PLASTIC).
+void combined_plastic(KeywordContext& ctx, model::Plastic& p);
 void add_pretension_keywords(std::vector<KeywordSpec>& table);  // kw_pretension.cpp
 
 }  // namespace inpact::parser

@@ -19,6 +19,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_contact_keywords(t);
     add_step_contact_keywords(t);
     add_tie_keywords(t);
+    add_combined_hardening_keywords(t);
     add_pretension_keywords(t);
     return t;
   }();

@@ -90,16 +90,21 @@ void plastic(KeywordContext& ctx) {
   model::Plastic p;
   if (hardening == "KINEMATIC") {
     p.hardening = model::Plastic::Hardening::Kinematic;
+  } else if (hardening == "COMBINED") {
+    p.hardening = model::Plastic::Hardening::Combined;
   } else if (!hardening.empty() && hardening != "ISOTROPIC") {
-    ctx.error_param("HARDENING", fmt::format("HARDENING={} is not supported yet (ISOTROPIC or KINEMATIC)", hardening));
+    ctx.error_param("HARDENING", fmt::format("HARDENING={} is not supported yet (ISOTROPIC, KINEMATIC or COMBINED)", hardening));
     return;
   }
   if (ctx.has("DEPENDENCIES") || ctx.has("RATE")) {
     ctx.error(ctx.keyword.loc, "field-variable and rate dependence (DEPENDENCIES, RATE) are not supported yet");
     return;
   }
+  const std::size_t n_errors = ctx.diags.error_count();
+  if (p.hardening == model::Plastic::Hardening::Combined) combined_plastic(ctx, p);
+  if (ctx.diags.error_count() > n_errors) return;
   std::optional<double> first_temperature;
-  for (std::size_t i = 0; i < ctx.data.size(); ++i) {
+  for (std::size_t i = 0; p.hardening != model::Plastic::Hardening::Combined && i < ctx.data.size(); ++i) {
     const auto line = plastic_line(ctx, ctx.data[i]);
     if (!line) return;
     if (i == 0) first_temperature = line->temperature;
@@ -185,7 +190,9 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
   t.push_back({"*PLASTIC", kModelScope,
                {{"HARDENING", ValueKind::Required, ValueType::Choice, {"ISOTROPIC", "KINEMATIC", "COMBINED", "JOHNSON COOK", "USER"}},
                 {"DEPENDENCIES", ValueKind::Required, ValueType::Int},
-                {"RATE", ValueKind::Required, ValueType::Real}},
+                {"RATE", ValueKind::Required, ValueType::Real},
+                {"DATATYPE", ValueKind::Required, ValueType::Choice, {"HALF CYCLE", "STABILIZED", "PARAMETERS"}},
+                {"NUMBER BACKSTRESSES", ValueKind::Required, ValueType::Int}},
                DataLines::Required, plastic, parent});
   t.back().numbers_from = 0;
   t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});

@@ -12,6 +12,7 @@
 #include "analysis_error.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
+#include "elements/combined_plasticity.hpp"
 #include "elements/finite_strain_mises.hpp"
 #include "elements/material.hpp"
 #include "elements/mises_plasticity.hpp"
@@ -32,9 +33,37 @@ namespace {
 /// The Mises material of *PLASTIC: the small-strain law, or the finite-strain one
 /// (finite_strain_mises.hpp) when a step has NLGEOM; what the finite-strain law lacks (kinematic
 /// hardening, plane stress) stops with a clear message instead of a wrong answer.
+/// HARDENING=COMBINED: the Chaboche law (combined_plasticity.hpp), small strain, not plane stress.
+std::shared_ptr<elements::Material> combined_law(const model::Model& m, const model::Material& mat,
+                                                 model::ElementFamily family, const elements::ElasticConstants& c) {
+  const model::Plastic& p = *mat.plastic;
+  const auto nlgeom = std::find_if(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
+  const char* missing = nlgeom != m.steps.end()                    ? "NLGEOM (finite strain)"
+                        : family == model::ElementFamily::PlaneStress ? "plane stress elements"
+                                                                      : nullptr;
+  if (missing)
+    throw AnalysisError(fmt::format("{}: error: *PLASTIC: HARDENING=COMBINED with {} is not supported yet (material '{}')",
+                                    m.sources.describe(p.loc), missing, mat.name));
+  elements::CombinedHardening h;
+  for (const auto& b : p.backstresses) h.backstresses.push_back({b.modulus, b.recovery});
+  h.initial = p.table.front().yield_stress;
+  if (const auto& cyc = mat.cyclic_hardening) {
+    if (cyc->table.empty()) h.initial = cyc->initial, h.saturation = cyc->saturation, h.rate = cyc->rate;
+    for (const auto& point : cyc->table) {
+      h.table_strain.push_back(point.plastic_strain);
+      h.table_stress.push_back(point.yield_stress);
+    }
+  }
+  return std::make_shared<elements::CombinedPlasticity>(c, std::move(h));
+}
+
 std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
                                                 model::ElementFamily family, const elements::ElasticConstants& c) {
   const model::Plastic& p = *mat.plastic;
+  if (mat.cyclic_hardening && p.hardening != model::Plastic::Hardening::Combined)
+    throw AnalysisError(fmt::format("{}: error: *CYCLIC HARDENING: it needs *PLASTIC, HARDENING=COMBINED (material '{}')",
+                                    m.sources.describe(mat.cyclic_hardening->loc), mat.name));
+  if (p.hardening == model::Plastic::Hardening::Combined) return combined_law(m, mat, family, c);
   elements::MisesHardening h;
   h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
   for (const auto& point : p.table) {

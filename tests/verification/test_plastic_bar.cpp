@@ -122,5 +122,23 @@ TEST(PlasticBar, LargeStrainNlgeomBarFollowsTheClosedForm) {
   report("plastic_bar_nlgeom_c3d8: worst |LE, PE, PEEQ - closed form| / LE11", worst_e);
 }
 
+// Case 9c: combined (Chaboche) hardening with a Voce surface (plastic_bar_combined_c3d8.inp):
+// one plastic increment from the virgin state, where backward Euler gives a closed form
+// (the deck's header), then released elastically. Exact to round-off (1e-10 relative).
+TEST(PlasticBar, CombinedHardeningBarFollowsTheBackwardEulerClosedForm) {
+  const auto r = run_deck(deck_path("plastic_bar_combined_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  constexpr double dg = 0.002, tol = 1e-10;
+  const double x = 40000.0 * dg / (1 + 400.0 * dg), s = 250.0 + 80.0 * (1 - std::exp(-10.0 * dg)) + x;
+  const auto& load = *r->capture.of_step(1).back();
+  EXPECT_LE(worst_of(*r, load, "S", 0, s), tol * s);
+  EXPECT_LE(worst_of(*r, load, "S", 1, 0.0), tol * s);
+  EXPECT_LE(std::max(worst_of(*r, load, "PEEQ", 0, dg), worst_of(*r, load, "PE", 1, -dg / 2)), tol * dg);
+  const auto& end = *r->capture.of_step(2).back();
+  EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * s);
+  EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * dg, tol * L * dg);
+  report("plastic_bar_combined_c3d8: |S11 - closed form| / S11", worst_of(*r, load, "S", 0, s) / s);
+}
+
 }  // namespace
 }  // namespace inpact::verification
