@@ -188,6 +188,7 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
                 {"RATE", ValueKind::Required, ValueType::Real}},
                DataLines::Required, plastic, parent});
   t.back().numbers_from = 0;
+  add_hyperelastic_keyword(t);
   t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});
   t.back().numbers_from = 0;
   t.push_back({"*EXPANSION", kModelScope,
