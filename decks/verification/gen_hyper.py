@@ -125,6 +125,25 @@ def uniaxial(out, name, etype, n, size, quadratic, nlgeom):
           + ([] if nlgeom else ["no NLGEOM on *STEP: inpact switches it on for the hyperelastic material"]), lines)
 
 
+def follower_pressure(out, name):
+    """One C3D8 pulled by a pressure of -1 on its face x = 1 (S4), symmetry planes through 0."""
+    mesh = Mesh((1, 1, 1), (1.0, 1.0, 1.0), False)
+    eps = 1e-9
+    lines = node_block(mesh) + element_block(mesh, "C3D8")
+    bc = []
+    for d in range(3):
+        lines += nset(f"SYM{d + 1}", mesh.nodes_where(lambda x, d=d: abs(x[d]) < eps))
+        bc.append(f"SYM{d + 1}, {d + 1}, {d + 1}")
+    lines += material(C10, D1)
+    body = step(True, bc, increment=0.1)
+    at = body.index("*OUTPUT, FIELD")
+    lines += body[:at] + ["*DLOAD", "1, P4, -1."] + body[at:]
+    write(out, name, ["Neo-Hooke cube pulled by a follower pressure of -1 on its face x = 1 (NLGEOM)",
+                      f"C10 = {C10}, D1 = {D1}; the pressure acts on the current face: the Cauchy stress",
+                      "sigma11 = 1 (the nominal stress 1 x the current area); the stretch from sigma11 = 1, sigma22 = 0"],
+          lines)
+
+
 def simple_shear(out, name, etype, n, size, quadratic):
     """u1 = gamma x2 on every boundary node (the rest free), gamma = 1."""
     mesh = Mesh(n, size, quadratic)
@@ -187,6 +206,7 @@ def main():
     uniaxial(a.out, "hyper_uniaxial_c3d8.inp", "C3D8", (1, 1, 1), (1.0, 1.0, 1.0), False, False)
     uniaxial(a.out, "hyper_uniaxial_c3d20h.inp", "C3D20H", (2, 1, 1), (2.0, 1.0, 1.0), True, True)
     uniaxial(a.out, "hyper_uniaxial_cax8h.inp", "CAX8H", (2, 2), (1.0, 1.0), True, True)
+    follower_pressure(a.out, "hyper_follower_pressure_c3d8.inp")
     simple_shear(a.out, "hyper_shear_c3d8.inp", "C3D8", (1, 1, 1), (1.0, 1.0, 1.0), False)
     simple_shear(a.out, "hyper_shear_c3d20.inp", "C3D20", (2, 2, 2), (1.0, 1.0, 1.0), True)
     simple_shear(a.out, "hyper_shear_cpe4h.inp", "CPE4H", (3, 2), (1.5, 1.0), False)

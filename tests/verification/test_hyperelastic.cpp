@@ -4,6 +4,8 @@
 //    Σ RF / A0 and the lateral stretch against the closed form (lateral stretch from σ22 = 0,
 //    by bisection), within 1e-6 relative: one C3D8 (a deck without NLGEOM: switched on), a
 //    2 × 1 × 1 C3D20H mesh, a 2 × 2 CAX8H mesh (A0 = π r², the reaction is the whole ring's).
+//  - A follower pressure of −1 (NLGEOM) on a cube's face: σ11 = 1 and the stretch of
+//    τ1/J = 1, within 1e-8.
 //  - Simple shear to γ = 1 (J = 1): P12 = Σ RF1(top) / A0 = 2 C10 γ and σ12 = 2 C10 γ at every
 //    point, within 1e-6: one C3D8, a 2 × 2 × 2 C3D20 mesh, a 3 × 2 CPE4H mesh.
 //  - The plane-strain cantilever (K0/μ0 = 1e4): tip deflection of CPE4H 80 × 8, CPE8H and CPE8RH
@@ -76,6 +78,30 @@ TEST(Hyperelastic, NeoHookeUniaxialTensionToStretchTwo) {
       EXPECT_TRUE(r->model().steps[0].nlgeom_switched_on);
     }
   }
+}
+
+// NLGEOM pressure follows the face: a cube pulled by −1 on its face x = 1 carries σ11 = 1
+// (Cauchy) exactly; its stretch is the λ of τ1/J = 1 with the lateral faces free (τ2 = 0).
+TEST(Hyperelastic, FollowerPressureGivesTheCauchyStressOfThePressure) {
+  const auto r = run_deck(deck_path("hyper_follower_pressure_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const solver::Frame& f = r->capture.last();
+  for (const auto& p : point_values(*r, f, "S")) {
+    EXPECT_NEAR(p.s[0], 1.0, 1e-8);
+    EXPECT_NEAR(p.s[1], 0.0, 1e-8);
+  }
+  double lo = 1.0, hi = 3.0;  // σ11(λ) = τ1/J rises with λ
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi), lt = lateral_stretch(mid);
+    (tau(mid, lt, lt, 0) / (mid * lt * lt) > 1.0 ? hi : lo) = mid;
+  }
+  const double stretch = 0.5 * (lo + hi);
+  const auto& mesh = r->model().mesh;
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+    if (mesh.nodes.coords[n][0] > 0.5) {
+      EXPECT_NEAR(1.0 + nodal(f, "U", n, 0), stretch, 1e-8);
+    }
+  report("hyper_follower_pressure_c3d8.inp: stretch", stretch);
 }
 
 TEST(Hyperelastic, NeoHookeSimpleShear) {
