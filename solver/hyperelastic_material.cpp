@@ -48,6 +48,10 @@ std::shared_ptr<elements::Material> hyperelastic_law(const model::Model& m, cons
     d.assign(d.size(), 0.0);
     if (hybrid) {
       d[0] = 2 / (kHybridIncompressibleBulkRatio * mu0);
+      warnings.push_back(fmt::format("material '{}' ({}) is incompressible (D = 0): its hybrid elements condense the "
+                                     "pressure with the bulk modulus K0 = {:g} μ0 (D1 = {:.4g}; volume changes of "
+                                     "order 1e-4 of the strain, where Abaqus has none)", mat.name, h.name,
+                                     kHybridIncompressibleBulkRatio, d[0]));
     } else {
       d[0] = 0.1 / mu0;
       warnings.push_back(fmt::format("material '{}' ({}) is incompressible (D = 0), which needs hybrid elements; "
