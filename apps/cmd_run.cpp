@@ -43,7 +43,9 @@ class RunObserver final : public solver::AnalysisObserver {
     results_.begin_step(step);
     dat_.begin_step(step, number);
     status_.note(fmt::format("STEP {} BEGINS ({})", number, step.name));
+    if (step.nlgeom_switched_on) status_.note(model::nlgeom_switched_on_note());
     if (!options_.quiet) std::printf("step %d (%s)\n", number, step.name.c_str());
+    if (!options_.quiet && step.nlgeom_switched_on) std::printf("  %s\n", model::nlgeom_switched_on_note());
   }
   void contact_interactions(int, const std::vector<std::string>& lines) override {
     results_.write_contact_interactions(lines);

@@ -153,6 +153,7 @@ DatReport::DatReport(std::filesystem::path path, const std::string& solver_versi
 void DatReport::begin_step(const model::Step& step, int number) {
   put(fmt::format("\n\n                   S T E P{:>8}     S T A T I C   A N A L Y S I S\n\n\n          {}\n\n",
                   number, step.description.empty() ? step.name : step.description));
+  if (step.nlgeom_switched_on) put(fmt::format("          {}\n\n", model::nlgeom_switched_on_note()));
 }
 
 void DatReport::contact_interactions(const std::vector<std::string>& lines) {

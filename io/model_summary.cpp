@@ -2,6 +2,8 @@
 
 #include <map>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -51,6 +53,15 @@ void write_materials(std::ostream& out, const model::Model& m) {
   for (const auto& [k, mat] : m.materials) {
     print(out, "  {}", mat.name);
     if (mat.elastic) print(out, ": E = {:g}, nu = {:g}", mat.elastic->youngs_modulus, mat.elastic->poissons_ratio);
+    if (mat.hyperelastic) {
+      const auto join = [](const std::vector<double>& v) {
+        std::string s;
+        for (double x : v) s += fmt::format("{}{:g}", s.empty() ? "" : ", ", x);
+        return s;
+      };
+      print(out, ": hyperelastic {} ({}; D = {})", mat.hyperelastic->name, join(mat.hyperelastic->coefficients),
+            join(mat.hyperelastic->d));
+    }
     if (mat.density) print(out, ", density = {:g}", *mat.density);
     if (mat.expansion) print(out, ", alpha = {:g} (from {:g})", mat.expansion->alpha, mat.expansion->zero);
     print(out, "\n");
@@ -151,7 +162,7 @@ void write_steps(std::ostream& out, const model::Model& m,
   print(out, "Steps      {:>10}\n", m.steps.size());
   for (std::size_t k = 0; k < m.steps.size(); ++k) {
     const model::Step& s = m.steps[k];
-    print(out, "  {}: {}{}, at most {} increments\n", s.name, procedure_name(s), s.nlgeom ? ", NLGEOM" : "",
+    print(out, "  {}: {}{}, at most {} increments\n", s.name, procedure_name(s), s.nlgeom_switched_on ? ", NLGEOM (switched on: hyperelastic materials)" : s.nlgeom ? ", NLGEOM" : "",
           s.max_increments);
     if (const auto& p = s.static_procedure) {
       if (p->direct)

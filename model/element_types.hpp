@@ -34,6 +34,9 @@ struct ElementTypeInfo {
   std::uint8_t n_nodes;
   std::uint8_t order;        ///< 1 or 2
   std::span<const FaceDef> faces;  ///< faces[0] is S1
+  /// Hybrid (…H): mixed displacement–pressure, the pressure condensed in the element
+  /// (solver/elements/hybrid.hpp); the rest of the type is the standard element's.
+  bool hybrid = false;
 };
 
 /// The type with this (upper-case) name, or nullptr when inpact does not support it.

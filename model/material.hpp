@@ -56,6 +56,26 @@ struct CyclicHardening {
   SourceLoc loc;
 };
 
+/// *HYPERELASTIC (isotropic, coefficients given directly, one temperature): the strain energy
+/// W = W_iso(Ī1, Ī2 | λ̄) + U(J) of Abaqus. `coefficients` in the order of Abaqus's data lines
+/// without the D's: POLYNOMIAL C10 C01 [C20 C11 C02]; REDUCED POLYNOMIAL C10 [C20 [C30]] (NEO
+/// HOOKE: C10; YEOH: C10 C20 C30); MOONEY-RIVLIN C10 C01; ARRUDA-BOYCE μ, λm; OGDEN μ1 α1 [μ2 α2
+/// [μ3 α3]]. `d`: D1 .. DN (all zero: incompressible).
+struct Hyperelastic {
+  enum class Form : std::uint8_t { Polynomial, ReducedPolynomial, ArrudaBoyce, Ogden };
+  Form form = Form::Polynomial;
+  int order = 1;  ///< N
+  std::string name;  ///< the form as written in messages: "NEO HOOKE", "POLYNOMIAL, N=2", ...
+  std::vector<double> coefficients;
+  std::vector<double> d;
+  SourceLoc loc;
+  bool incompressible() const {
+    for (double v : d)
+      if (v != 0.0) return false;
+    return true;
+  }
+};
+
 /// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN: the plastic strain of integration points before
 /// the first increment (Voigt 11 22 33 12 13 23, engineering shear; 2D lines give 11 22 33 12).
 /// The equivalent plastic strain (hardening) is not set by it, as in Abaqus (TYPE=HARDENING).
@@ -72,6 +92,7 @@ struct Material {
   std::optional<Elastic> elastic;
   std::optional<Plastic> plastic;
   std::optional<CyclicHardening> cyclic_hardening;
+  std::optional<Hyperelastic> hyperelastic;
   std::optional<double> density;  ///< kept for later procedures; static steps ignore it
   std::optional<Expansion> expansion;
   SourceLoc loc;

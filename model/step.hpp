@@ -117,10 +117,19 @@ struct OutputRequest {
   SourceLoc loc;
 };
 
+/// The note of a step whose NLGEOM the reader switched on (Step::nlgeom_switched_on).
+inline constexpr const char* nlgeom_switched_on_note() {
+  return "NOTE: NLGEOM IS SWITCHED ON FOR THIS STEP: THE MODEL HAS HYPERELASTIC MATERIALS, WHICH NEED GEOMETRIC "
+         "NONLINEARITY";
+}
+
 struct Step {
   std::string name;         ///< NAME, as written; default "Step-N" (N = 1-based position)
   std::string description;  ///< the optional data line of *STEP
   bool nlgeom = false;
+  /// NLGEOM was off in the deck and the reader switched it on: a hyperelastic material needs
+  /// it (Abaqus does the same and says so); the run notes it in the .dat, .sta and stdout.
+  bool nlgeom_switched_on = false;
   int max_increments = 100;  ///< INC
   bool unsymm = false;
   enum class DefaultAmplitude : std::uint8_t { Ramp, Step } amplitude = DefaultAmplitude::Ramp;

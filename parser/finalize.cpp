@@ -47,14 +47,45 @@ void check_scopes_closed(BuildState& s, Diagnostics& diags) {
   if (s.step) diags.error(s.step->loc, "*STEP", fmt::format("step '{}' has no *END STEP", s.step->name));
 }
 
+/// A material of a section: elastic (*ELASTIC, with *PLASTIC or *EXPANSION if any) or
+/// hyperelastic (*HYPERELASTIC alone: no expansion or plasticity on top of it yet).
+void check_material(const model::Material& mat, Diagnostics& diags) {
+  if (!mat.elastic && !mat.hyperelastic) {
+    diags.error(mat.loc, "*MATERIAL", fmt::format("material '{}' has no *ELASTIC or *HYPERELASTIC definition, which a "
+                                                  "static analysis needs", mat.name));
+    return;
+  }
+  if (!mat.hyperelastic) return;
+  if (mat.elastic)
+    diags.error(mat.hyperelastic->loc, "*HYPERELASTIC",
+                fmt::format("material '{}' has both *ELASTIC and *HYPERELASTIC (give one)", mat.name));
+  if (mat.plastic)
+    diags.error(mat.plastic->loc, "*PLASTIC", fmt::format("plasticity on a hyperelastic material ('{}') is not "
+                                                          "supported yet", mat.name));
+  if (mat.expansion)
+    diags.error(mat.expansion->loc, "*EXPANSION", fmt::format("thermal expansion of a hyperelastic material ('{}') is "
+                                                              "not supported yet", mat.name));
+}
+
+/// Hyperelastic materials need NLGEOM: a step without it gets it, with a note, as Abaqus does
+/// ("NLGEOM is switched on because the model contains hyperelastic materials").
+void switch_on_nlgeom_for_hyperelasticity(model::Model& m) {
+  bool hyperelastic = false;
+  for (const auto& sec : m.mesh.sections)
+    if (auto it = m.materials.find(sec.material); it != m.materials.end() && it->second.hyperelastic)
+      hyperelastic = true;
+  if (!hyperelastic) return;
+  for (model::Step& step : m.steps)
+    if (!step.nlgeom) step.nlgeom = step.nlgeom_switched_on = true;
+}
+
 void check_sections(model::Model& m, Diagnostics& diags) {
   std::vector<std::uint8_t> has_section(m.mesh.elements.size(), 0);
   for (const auto& sec : m.mesh.sections) {
     const bool elset_ok = check_defined(diags, m.mesh.elsets, sec.elset, sec.loc, "*SOLID SECTION", "element set");
     if (check_defined(diags, m.materials, sec.material, sec.loc, "*SOLID SECTION", "material")) {
       const model::Material& mat = m.materials.at(sec.material);
-      if (!mat.elastic)
-        diags.error(mat.loc, "*MATERIAL", fmt::format("material '{}' has no *ELASTIC definition, which a static analysis needs", mat.name));
+      check_material(mat, diags);
     }
     if (!elset_ok) continue;
     for (auto e : m.mesh.elsets.at(sec.elset).rows) {
@@ -240,6 +271,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   check_ties(m, diags);
   check_steps(m, diags);
   split_pretension_sections(m, diags);
+  switch_on_nlgeom_for_hyperelasticity(m);
 }
 
 }  // namespace inpact::parser

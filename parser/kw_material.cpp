@@ -195,6 +195,7 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
                 {"NUMBER BACKSTRESSES", ValueKind::Required, ValueType::Int}},
                DataLines::Required, plastic, parent});
   t.back().numbers_from = 0;
+  add_hyperelastic_keyword(t);
   t.push_back({"*DENSITY", kModelScope, {{"DEPENDENCIES", ValueKind::Required, ValueType::Int}}, DataLines::Required, density, parent});
   t.back().numbers_from = 0;
   t.push_back({"*EXPANSION", kModelScope,

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,7 @@
 #include "elements/material.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/quadrature.hpp"
+#include "hyperelastic_material.hpp"
 
 namespace inpact::solver {
 
@@ -86,34 +88,38 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
 /// stress condenses the elasticity matrix), shared by the section's elements; an element no
 /// section covers keeps zero constants.
 void assign_materials(const model::Model& m, AnalysisModel& am) {
-  std::map<std::pair<std::size_t, model::ElementFamily>, const elements::Material*> laws;
-  const auto law = [&](std::size_t section, model::ElementFamily family, const elements::ElasticConstants& c,
+  // A hyperelastic law also depends on whether the element is hybrid (an incompressible one).
+  std::map<std::tuple<std::size_t, model::ElementFamily, bool>, const elements::Material*> laws;
+  const auto law = [&](std::size_t section, const model::ElementTypeInfo& type, const elements::ElasticConstants& c,
                        const model::Material* mat) {
-    const elements::Material*& l = laws[{section, family}];
+    const model::ElementFamily family = type.family;
+    const bool hyperelastic = mat && mat->hyperelastic;
+    const elements::Material*& l = laws[{section, family, hyperelastic && type.hybrid}];
     if (l) return l;
-    if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
+    if (hyperelastic) l = am.materials.emplace_back(hyperelastic_law(m, *mat, family, type.hybrid, am.warnings)).get();
+    else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
     else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
     return l;
   };
   for (std::size_t k = 0; k < m.mesh.sections.size(); ++k) {
     const auto& sec = m.mesh.sections[k];
     const model::Material& mat = m.materials.at(sec.material);
-    if (!mat.elastic)
+    if (!mat.elastic && !mat.hyperelastic)
       throw AnalysisError(fmt::format("{}: error: *MATERIAL: material '{}' has no *ELASTIC definition, which a static "
                                       "analysis needs", m.sources.describe(mat.loc), mat.name));
     elements::ElasticConstants c;
-    c.youngs_modulus = mat.elastic->youngs_modulus;
-    c.poissons_ratio = mat.elastic->poissons_ratio;
+    c.youngs_modulus = mat.elastic ? mat.elastic->youngs_modulus : 0.0;
+    c.poissons_ratio = mat.elastic ? mat.elastic->poissons_ratio : 0.0;
     c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
     for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[e];
-      s.material = law(k, s.type->family, c, &mat);
+      s.material = law(k, *s.type, c, &mat);
       s.section.thickness = sec.thickness;
       s.density = mat.density.value_or(0.0);
     }
   }
   for (ElementSetup& s : am.elements)
-    if (!s.material) s.material = law(m.mesh.sections.size(), s.type->family, {}, nullptr);
+    if (!s.material) s.material = law(m.mesh.sections.size(), *s.type, {}, nullptr);
 }
 
 /// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN names elements with plasticity and points they have.
@@ -134,19 +140,21 @@ void check_initial_plastic_strains(const model::Model& m, const AnalysisModel& a
 }
 
 /// Near-incompressible material in fully integrated elements locks (Abaqus recommends hybrid
-/// elements above ν = 0.495; inpact has none): a silently too stiff answer unless said.
+/// elements above ν = 0.495): a silently too stiff answer unless said.
 void warn_about_locking(AnalysisModel& am) {
   std::set<std::pair<std::string, std::string>> locking;
   for (const ElementSetup& s : am.elements) {
-    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress) continue;
+    if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress ||
+        s.type->hybrid)
+      continue;
     const double nu = s.material->elastic().poissons_ratio;
     if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
   }
   for (const auto& [type, nu] : locking)
     am.warnings.push_back(fmt::format("fully integrated {} elements with Poisson's ratio {} lock (volumetric locking: "
-                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495, "
-                                      "which inpact does not have — use the reduced-integration (R) or incompatible-mode "
-                                      "(I) form of the element", type, nu));
+                                      "too stiff, wrong contact pressures); Abaqus uses hybrid elements above 0.495 — use "
+                                      "the hybrid (H) form of the element, or its reduced-integration (R) or "
+                                      "incompatible-mode (I) form", type, nu));
 }
 
 }  // namespace

@@ -36,6 +36,7 @@ class NewtonIterations {
 
   NewtonContext& ctx_;
   IncrementState& state_;
+  const double t_;  ///< the step time the increment ends at
   const DofMap& dofs_;
   const std::size_t n_, n_eq_;  ///< DOFs, and the DOF map's equations (the multipliers follow)
   const std::vector<double> u_start_;
@@ -52,6 +53,7 @@ class NewtonIterations {
 NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState& state)
     : ctx_(ctx),
       state_(state),
+      t_(t),
       dofs_(ctx.assembler.dofs()),
       n_(static_cast<std::size_t>(dofs_.n_dof())),
       n_eq_(static_cast<std::size_t>(dofs_.n_equations())),
@@ -134,6 +136,8 @@ Residual NewtonIterations::assemble_residual(int k) {
       }
   }
   if (ctx_.stabilization) ctx_.stabilization->add_force(state_.u, state_.f_int);
+  // NLGEOM: pressure follows the surface, f_ext(u) (without its load stiffness in the tangent).
+  if (ctx_.conditions.has_follower_pressure()) ctx_.conditions.external_force(t_, state_.u, state_.f_ext);
   for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d];
   ctx_.assembler.reduce(r_full_, std::span(r_).first(n_eq_));
   if (ctx_.contact) ctx_.contact->constraint_residual(state_.contact, std::span(r_).subspan(n_eq_));

@@ -181,7 +181,33 @@ void StepConditions::apply_prescribed(double t, std::span<const double> u_start,
   }
 }
 
-void StepConditions::external_force(double t, std::span<double> f) const {
+void StepConditions::external_force(double t, std::span<double> f) const { external_force(t, {}, f); }
+
+bool StepConditions::has_follower_pressure() const {
+  if (!step_.nlgeom) return false;
+  for (const auto* loads : {&previous_.dload, &target_.dload})
+    for (const auto& [k, v] : *loads)
+      if (k.key < 100) return true;
+  return false;
+}
+
+std::vector<std::pair<std::int64_t, double>> StepConditions::follower_shape(const Key& key,
+                                                                            std::span<const double> u) const {
+  const ElementSetup& setup = am_.elements[key.element];
+  auto coords = am_.coords(key.element);
+  const auto nodes = am_.model->mesh.elements.nodes_of(key.element);
+  const std::size_t dim = static_cast<std::size_t>(am_.dim);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (std::size_t c = 0; c < dim; ++c) coords[a][c] += u[static_cast<std::size_t>(nodes[a]) * dim + c];
+  const auto f = elements::pressure_load(*setup.type, coords, key.key, 1.0, setup.section);
+  std::vector<std::pair<std::int64_t, double>> shape;
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (std::size_t c = 0; c < dim; ++c)
+      shape.emplace_back(static_cast<std::int64_t>(static_cast<std::size_t>(nodes[a]) * dim + c), f[a * dim + c]);
+  return shape;
+}
+
+void StepConditions::external_force(double t, std::span<const double> u, std::span<double> f) const {
   std::fill(f.begin(), f.end(), 0.0);
   auto find = [](const auto& map, const auto& key) -> const auto* {
     auto it = map.find(key);
@@ -203,6 +229,10 @@ void StepConditions::external_force(double t, std::span<double> f) const {
     if (k.key == 300) {
       // (a CENTRIF redefined with another axis takes the new axis for the whole step)
       add_centrifugal_force(k, v, dir, (target ? target : prev)->point, f);
+      return;
+    }
+    if (k.key < 100 && !u.empty()) {  // follower pressure
+      for (const auto& [d, w] : follower_shape(k, u)) f[d] += v * w;
       return;
     }
     for (const auto& [d, w] : dload_shape_.at(k)) {

@@ -10,7 +10,9 @@
 ///  - OP=MOD (default) changes the definitions it names and keeps the others; OP=NEW removes
 ///    every earlier one of its kind first: removed loads ramp down to zero, and a removed
 ///    boundary condition leaves its reaction as a load that ramps down to zero.
-/// Loads act on the reference geometry (no follower pressure yet).
+/// Loads act on the reference geometry, except pressure (*DLOAD Pn, *DSLOAD P) in an NLGEOM step:
+/// it follows the surface (Abaqus's default), evaluated on X + u each iteration; its load
+/// stiffness is not in the tangent (Newton then converges linearly on that part).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -80,6 +82,10 @@ class StepConditions {
   void apply_prescribed(double t, std::span<const double> u_start, std::span<double> u) const;
   /// External force vector at step time t (size n_dof), overwritten.
   void external_force(double t, std::span<double> f) const;
+  /// The same with the pressure loads on the current coordinates X + u (follower pressure).
+  void external_force(double t, std::span<const double> u, std::span<double> f) const;
+  /// NLGEOM and a pressure load in force: the external force depends on u.
+  bool has_follower_pressure() const;
   /// Nodal temperature change T(t) − T_initial, or empty when the model has no temperatures.
   std::vector<double> temperature_change(double t) const;
   /// The definitions in force at the end of the step, for the next one.
@@ -96,6 +102,9 @@ class StepConditions {
   template <class V>
   double value_at(const V* prev, const V* target, double t) const;
   void add_dload_shape(const ConditionHistory::DloadKey& key);
+  /// The pressure load of `key` at unit magnitude on X + u (global DOF, force).
+  std::vector<std::pair<std::int64_t, double>> follower_shape(const ConditionHistory::DloadKey& key,
+                                                              std::span<const double> u) const;
 
   const AnalysisModel& am_;
   const model::Step& step_;

@@ -53,14 +53,11 @@ PointState point_kinematics(ElementFamily family, int dim, bool nlgeom, const Po
   return st;
 }
 
-void add_point_contribution(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const PointData& pd,
-                            const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K) {
+Eigen::Matrix<double, 6, Eigen::Dynamic> strain_operator(ElementFamily family, int dim, const Eigen::Matrix3d& F,
+                                                         const PointData& pd) {
   const int n = static_cast<int>(pd.N.size());
-  const int nd = n * dim;
-  const Eigen::Matrix3d F = nlgeom ? st.F : Eigen::Matrix3d::Identity();
-  const bool axi = family == ElementFamily::Axisymmetric;
   // B(k, a·dim + i) = ∂E_k/∂u_ai: for E_pq = ½(F_ip ∂N_a/∂X_q + F_iq ∂N_a/∂X_p) (×2 for shear).
-  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, nd);
+  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, n * dim);
   B.setZero();
   for (int a = 0; a < n; ++a) {
     const Eigen::RowVector3d g = pd.grad.row(a);
@@ -69,20 +66,32 @@ void add_point_contribution(ElementFamily family, int dim, const Mat6& D, bool n
       for (int k = 0; k < 3; ++k) col(k) = F(i, k) * g(k);
       for (int k = 3; k < 6; ++k) col(k) = F(i, kVi[k]) * g(kVj[k]) + F(i, kVj[k]) * g(kVi[k]);
     }
-    if (axi) B(2, a * dim) += F(2, 2) * pd.N(a) / pd.radius;  // δE33 = F33 δu_r / R
+    if (family == ElementFamily::Axisymmetric) B(2, a * dim) += F(2, 2) * pd.N(a) / pd.radius;  // δE33 = F33 δu_r / R
   }
+  return B;
+}
+
+void add_geometric_stiffness(ElementFamily family, int dim, const PointData& pd, const Vec6& stress, double scale,
+                             Eigen::MatrixXd& K) {
+  const int n = static_cast<int>(pd.N.size());
+  const bool axi = family == ElementFamily::Axisymmetric;
+  const Eigen::Matrix3d S = voigt_to_tensor(stress, false);
+  const Eigen::MatrixXd G = pd.grad * S * pd.grad.transpose() * scale;  // n × n
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      for (int i = 0; i < dim; ++i) K(a * dim + i, b * dim + i) += G(a, b);
+      if (axi) K(a * dim, b * dim) += stress(2) * pd.N(a) * pd.N(b) / (pd.radius * pd.radius) * scale;
+    }
+}
+
+void add_point_contribution(ElementFamily family, int dim, const Mat6& D, bool nlgeom, const PointData& pd,
+                            const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K) {
+  const Eigen::Matrix3d F = nlgeom ? st.F : Eigen::Matrix3d::Identity();
+  const Eigen::Matrix<double, 6, Eigen::Dynamic> B = strain_operator(family, dim, F, pd);
   if (f) f->noalias() += (B.transpose() * st.stress) * pd.dv;
   if (!K) return;
   K->noalias() += (B.transpose() * (D * pd.dv) * B);
-  if (!nlgeom) return;
-  // Geometric (initial-stress) stiffness.
-  const Eigen::Matrix3d S = voigt_to_tensor(st.stress, false);
-  const Eigen::MatrixXd G = pd.grad * S * pd.grad.transpose() * pd.dv;  // n × n
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
-      for (int i = 0; i < dim; ++i) (*K)(a * dim + i, b * dim + i) += G(a, b);
-      if (axi) (*K)(a * dim, b * dim) += st.stress(2) * pd.N(a) * pd.N(b) / (pd.radius * pd.radius) * pd.dv;
-    }
+  if (nlgeom) add_geometric_stiffness(family, dim, pd, st.stress, pd.dv, *K);  // initial-stress stiffness
 }
 
 void point_output(ElementFamily family, const ElasticConstants& m, bool nlgeom, const PointData& pd,

@@ -44,6 +44,15 @@ struct PointState {
 PointState point_kinematics(model::ElementFamily family, int dim, bool nlgeom, const PointData& pd,
                             const Eigen::Ref<const Eigen::VectorXd>& u);
 
+/// B(k, a·dim + i) = ∂E_k/∂u_ai (engineering shear rows), F = I for small strain (CAX: the
+/// hoop row holds F33 N_a / R).
+Eigen::Matrix<double, 6, Eigen::Dynamic> strain_operator(model::ElementFamily family, int dim, const Eigen::Matrix3d& F,
+                                                         const PointData& pd);
+
+/// Adds scale · K_σ(S) (the initial-stress stiffness of S, Voigt) to K.
+void add_geometric_stiffness(model::ElementFamily family, int dim, const PointData& pd, const Vec6& S, double scale,
+                             Eigen::MatrixXd& K);
+
 /// Adds Bᵀσ dV to f and Bᵀ D B dV (+ K_σ) to K (either may be null); D is the material tangent.
 void add_point_contribution(model::ElementFamily family, int dim, const Mat6& D, bool nlgeom,
                             const PointData& pd, const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K);

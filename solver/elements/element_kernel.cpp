@@ -11,6 +11,7 @@
 
 #include "continuum_kinematics.hpp"
 #include "hourglass.hpp"
+#include "hybrid.hpp"
 #include "incompatible_modes.hpp"
 #include "material.hpp"
 #include "quadrature.hpp"
@@ -102,7 +103,7 @@ struct Hex8Rule {
 
 bool is_full_hex8(const model::ElementTypeInfo& type) {
   return type.family == ElementFamily::Solid3D && type.dim == 3 && type.n_nodes == 8 &&
-         type.integration == Integration::Full;  // 2×2×2 Gauss points (quadrature.hpp)
+         type.integration == Integration::Full && !type.hybrid;  // 2×2×2 Gauss points (quadrature.hpp)
 }
 
 const Hex8Rule& hex8_rule(const model::ElementTypeInfo& type) {
@@ -326,6 +327,17 @@ void condense_modes(const model::ElementTypeInfo& type, const Law& law, const El
   if (request.stiffness) K = as.K.topLeftCorner(n_dof, n_dof) - Kua * ldlt.solve(Kua.transpose());
 }
 
+/// A hybrid element's points (hybrid.hpp): the pressure condensed, its f, K and states.
+Assembled assemble_hybrid_points(const model::ElementTypeInfo& type, const Material& law, const ElementRequest& request,
+                                 const std::vector<PointData>& pts, const Eigen::VectorXd& u,
+                                 const ElementHistory& history) {
+  std::vector<std::array<double, 3>> xi;
+  for (const QuadraturePoint& q : element_rule(type)) xi.push_back(q.xi);
+  HybridSystem h = assemble_hybrid(type, law, request.nlgeom, pts, pressure_basis(type, xi), u, request.stiffness,
+                                   history);
+  return {std::move(h.f), std::move(h.K), std::move(h.states)};
+}
+
 /// Every element but the full-integration C3D8: dynamic sizes, incompatible modes, hourglass
 /// control of the reduced first-order elements.
 template <class Law>
@@ -347,7 +359,8 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
   Eigen::VectorXd uf = Eigen::VectorXd::Zero(n_total * dim);
   for (int k = 0; k < n_dof; ++k) uf(k) = u[k];
   const bool want_k = request.stiffness || incompatible;
-  Assembled as = assemble(type.family, dim, law, request.nlgeom, geo.pts, uf, want_k, history);
+  Assembled as = type.hybrid ? assemble_hybrid_points(type, law, request, geo.pts, uf, history)
+                             : assemble(type.family, dim, law, request.nlgeom, geo.pts, uf, want_k, history);
   Eigen::VectorXd f = as.f.head(n_dof);
   Eigen::MatrixXd K;
   if (incompatible) {

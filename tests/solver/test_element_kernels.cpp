@@ -66,7 +66,11 @@ int expected_zero_modes(const model::ElementTypeInfo& t) {
   // six spurious modes and a single CPE8R/CPS8R one (not communicable in a mesh). The CAX8R
   // hourglass mode is stiffened by the hoop strain.
   if (name == "C3D20R") return rigid + 6;
-  if (name == "CPE8R" || name == "CPS8R") return rigid + 1;
+  if (name == "CPE8R" || name == "CPS8R" || name == "CPE8RH") return rigid + 1;
+  // C3D20RH: the 2×2×2 points constrain the volume change through the four linear pressure
+  // functions only, not at each of the eight points: four more single-element modes than
+  // C3D20R (the mixed element with that quadrature and pressure space has them too).
+  if (name == "C3D20RH") return rigid + 10;
   // Abaqus's 2-point rule for C3D6 (triangle centroid × 2 through the thickness) leaves one
   // twist mode: u = θ r (h − 1/3, −(g − 1/3), 0) is strain-free on the centroid line. Shared
   // quadrilateral faces restrain it in a mesh.
