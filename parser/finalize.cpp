@@ -55,6 +55,8 @@ void check_sections(model::Model& m, Diagnostics& diags) {
       if (!mat.elastic)
         diags.error(mat.loc, "*MATERIAL", fmt::format("material '{}' has no *ELASTIC definition, which a static analysis needs", mat.name));
     }
+    if (!sec.orientation.empty())
+      check_defined(diags, m.orientations, sec.orientation, sec.loc, "*SOLID SECTION", "orientation");
     if (!elset_ok) continue;
     for (auto e : m.mesh.elsets.at(sec.elset).rows) {
       if (has_section[e]) {

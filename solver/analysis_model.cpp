@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "anisotropic_law.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
 #include "elements/material.hpp"
@@ -56,7 +57,9 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
                        const model::Material* mat) {
     const elements::Material*& l = laws[{section, family}];
     if (l) return l;
-    if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
+    if (mat && mat->elastic->type != model::Elastic::Type::Isotropic)
+      l = am.materials.emplace_back(anisotropic_law(m, m.mesh.sections[section], *mat, family)).get();
+    else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
     else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
     return l;
   };
