@@ -82,7 +82,8 @@ void directional_elastic(KeywordContext& ctx, const ElasticLayout& layout) {
     fields.insert(fields.end(), line_fields.begin(), line_fields.end());
   }
   if (fields.size() < n) {
-    ctx.error(ctx.data.back().loc, fmt::format("expected {} constants ({}), found {}", n, layout.expected, fields.size()));
+    const model::SourceLoc where = fields.empty() ? ctx.data.back().loc : fields.back().loc;  // after the last one
+    ctx.error(where, fmt::format("expected {} constants ({}), found {}", n, layout.expected, fields.size()));
     return;
   }
   if (fields.size() > n + 1) {
