@@ -19,11 +19,11 @@ namespace inpact::model {
 /// model/elastic_stiffness.hpp turns them into the stiffness in the material axes.
 struct Elastic {
   enum class Type : std::uint8_t { Isotropic, EngineeringConstants, Orthotropic, Anisotropic, Lamina };
-  Type type = Type::Isotropic;
   double youngs_modulus = 0.0;  ///< ISOTROPIC only
   double poissons_ratio = 0.0;  ///< ISOTROPIC only
-  std::vector<double> constants;  ///< the other types: the values above, in that order
   SourceLoc loc;
+  Type type = Type::Isotropic;    // after the isotropic fields: Elastic{E, ν, loc} stays valid
+  std::vector<double> constants = {};  ///< the other types: the values above, in that order
 };
 
 /// *ORIENTATION, SYSTEM=RECTANGULAR | CYLINDRICAL, DEFINITION=COORDINATES: the local material

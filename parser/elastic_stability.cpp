@@ -47,7 +47,10 @@ std::optional<ElasticInstability> orthotropic_instability(const std::vector<doub
   for (const auto& b : bounds)
     if (!(std::abs(c[b.k]) < std::sqrt(c[b.a] * c[b.b])))
       return ElasticInstability{fmt::format("unstable material: {} is required, found {}", b.text, c[b.k]), b.k};
-  if (!model::positive_definite(model::material_stiffness(model::Elastic{model::Elastic::Type::Orthotropic, 0, 0, c, {}})))
+  model::Elastic orthotropic;
+  orthotropic.type = Elastic::Type::Orthotropic;
+  orthotropic.constants = c;
+  if (!model::positive_definite(model::material_stiffness(orthotropic)))
     return ElasticInstability{"unstable material: det D > 0 is required (D1111 D2222 D3333 - D1111 D2233^2 - D2222 "
                               "D1133^2 - D3333 D1122^2 + 2 D1122 D2233 D1133 <= 0)", 0};
   return std::nullopt;

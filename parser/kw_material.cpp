@@ -229,6 +229,12 @@ void solid_section(KeywordContext& ctx) {
   sec.material = ctx.name_value("MATERIAL");
   sec.orientation = ctx.name_value("ORIENTATION");
   sec.loc = ctx.keyword.loc;
+  // Abaqus prints S and E of an oriented section in its material axes; inpact keeps the global
+  // frame for every output (parser/KEYWORDS.md), which a reader comparing numbers must know.
+  if (!sec.orientation.empty())
+    ctx.warning(ctx.keyword.loc, fmt::format("ORIENTATION={}: stresses and strains (S, E) are output in the global "
+                                             "frame, not in the material axes as Abaqus prints them",
+                                             ctx.param("ORIENTATION")->value.value_or(sec.orientation)));
   if (!ctx.data.empty()) {
     std::vector<Field> f;
     split_fields(ctx.data[0], f);
