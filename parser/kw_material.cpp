@@ -74,7 +74,7 @@ std::optional<ElasticLayout> elastic_layout(const std::string& type) {
 void directional_elastic(KeywordContext& ctx, const ElasticLayout& layout) {
   model::Elastic el;
   el.type = layout.type;
-  el.loc = ctx.data.front().loc;
+  el.loc = ctx.keyword.loc;  // the analysis cites the keyword (a data line has no column)
   const std::size_t n = model::elastic_constant_count(layout.type);
   std::vector<Field> fields, line_fields;
   for (const Line& line : ctx.data) {
