@@ -51,6 +51,9 @@
 ///  - The increment summary is printed only for increments with tables; no page headers, no
 ///    echo of the model and history data, no memory estimates.
 ///  - Column widths follow the printout above; later Abaqus releases print wider columns.
+///  - S and E of a section with an *ORIENTATION are in the global frame, as every other
+///    output; Abaqus prints them in the material axes (CalculiX's EL PRINT, GLOBAL=YES prints
+///    the global ones). The *SOLID SECTION warns about it.
 ///
 /// *NODE FILE, *EL FILE and *CONTACT FILE write a .frd file in CalculiX (and the .fil results
 /// file in Abaqus): inpact writes their variables into JOB.h5 instead, as field output with

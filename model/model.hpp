@@ -25,6 +25,7 @@ struct Model {
   Mesh mesh;
 
   std::map<std::string, Material> materials;  ///< key: upper-case name
+  std::map<std::string, Orientation> orientations;  ///< *ORIENTATION; key: upper-case name
   std::map<std::string, Amplitude> amplitudes;
   std::vector<Equation> equations;
   std::vector<Tie> ties;  ///< *TIE, one per data line, in deck order

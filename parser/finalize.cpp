@@ -87,6 +87,8 @@ void check_sections(model::Model& m, Diagnostics& diags) {
       const model::Material& mat = m.materials.at(sec.material);
       check_material(mat, diags);
     }
+    if (!sec.orientation.empty())
+      check_defined(diags, m.orientations, sec.orientation, sec.loc, "*SOLID SECTION", "orientation");
     if (!elset_ok) continue;
     for (auto e : m.mesh.elsets.at(sec.elset).rows) {
       if (has_section[e]) {

@@ -11,6 +11,7 @@ void add_mesh_keywords(std::vector<KeywordSpec>& table);      // kw_mesh.cpp
 void add_assembly_keywords(std::vector<KeywordSpec>& table);  // kw_assembly.cpp
 void add_material_keywords(std::vector<KeywordSpec>& table);  // kw_material.cpp, calls the one below
 void add_hyperelastic_keyword(std::vector<KeywordSpec>& table);  // kw_hyperelastic.cpp
+void add_orientation_keywords(std::vector<KeywordSpec>& table);  // kw_orientation.cpp
 void add_load_keywords(std::vector<KeywordSpec>& table);      // kw_loads.cpp, calls the two below
 void add_amplitude_keywords(std::vector<KeywordSpec>& table);  // kw_amplitude.cpp
 void add_equation_keywords(std::vector<KeywordSpec>& table);   // kw_equation.cpp

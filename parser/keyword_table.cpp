@@ -13,6 +13,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_mesh_keywords(t);
     add_assembly_keywords(t);
     add_material_keywords(t);
+    add_orientation_keywords(t);
     add_load_keywords(t);
     add_step_keywords(t);
     add_output_keywords(t);
@@ -35,7 +36,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
       "SHELLSECTION", "BEAMSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION",
       "BEAMGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
-      "ORIENTATION", "TRANSFORM", "COUPLING", "KINEMATIC", "DISTRIBUTING", "MPC",
+      "TRANSFORM", "COUPLING", "KINEMATIC", "DISTRIBUTING", "MPC",
       "RIGIDBODY", "MASS", "SPRING", "DASHPOT", "CONNECTORSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
   return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);

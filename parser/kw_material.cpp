@@ -1,7 +1,10 @@
-/// *MATERIAL with *ELASTIC, *PLASTIC, *DENSITY, *EXPANSION; *SOLID SECTION.
+/// *MATERIAL with *ELASTIC, *PLASTIC, *DENSITY, *EXPANSION; *SOLID SECTION (ORIENTATION= names an
+/// *ORIENTATION, kw_orientation.cpp; parser/finalize.cpp checks that it exists).
 #include <fmt/format.h>
 
+#include "elastic_stability.hpp"
 #include "handlers.hpp"
+#include "model/elastic_stiffness.hpp"
 #include "text.hpp"
 
 namespace inpact::parser {
@@ -27,13 +30,8 @@ const Line* single_line(KeywordContext& ctx) {
   return ctx.data.empty() ? nullptr : &ctx.data[0];
 }
 
-// *ELASTIC, TYPE=ISOTROPIC (the default and the only type supported): E, ν.
-void elastic(KeywordContext& ctx) {
-  const std::string type = ctx.choice_value("TYPE");
-  if (!type.empty() && type != "ISOTROPIC" && type != "ISO") {
-    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only ISOTROPIC)", type));
-    return;
-  }
+// *ELASTIC, TYPE=ISOTROPIC: E, ν[, temperature] on one line.
+void isotropic_elastic(KeywordContext& ctx) {
   const Line* line = single_line(ctx);
   std::vector<Field> f;
   split_fields(*line, f);
@@ -45,7 +43,82 @@ void elastic(KeywordContext& ctx) {
   // ν = 0.5 makes the bulk modulus infinite; Abaqus/Standard rejects it for these elements too.
   if (*nu <= -1.0 || *nu >= 0.5)
     ctx.error(f[1].loc, fmt::format("Poisson's ratio must lie in (-1, 0.5), found {}", *nu));
-  ctx.state.material->elastic = model::Elastic{*e, *nu, line->loc};
+  model::Elastic el;
+  el.youngs_modulus = *e;
+  el.poissons_ratio = *nu;
+  el.loc = line->loc;
+  ctx.state.material->elastic = el;
+}
+
+/// The constants of the other types, as Abaqus lays them out (8 to a line) and what they are.
+struct ElasticLayout {
+  model::Elastic::Type type;
+  const char* expected;
+};
+
+std::optional<ElasticLayout> elastic_layout(const std::string& type) {
+  using T = model::Elastic::Type;
+  if (type == "ENGINEERINGCONSTANTS")
+    return ElasticLayout{T::EngineeringConstants, "E1, E2, E3, nu12, nu13, nu23, G12, G13 / G23[, temperature]"};
+  if (type == "ORTHOTROPIC")
+    return ElasticLayout{T::Orthotropic, "D1111, D1122, D2222, D1133, D2233, D3333, D1212, D1313 / D2323[, temperature]"};
+  if (type == "ANISOTROPIC")
+    return ElasticLayout{T::Anisotropic, "21 stiffnesses D1111 ... D2323, 8 to a line, [, temperature]"};
+  if (type == "LAMINA") return ElasticLayout{T::Lamina, "E1, E2, nu12, G12, G13, G23[, temperature]"};
+  return std::nullopt;
+}
+
+// *ELASTIC, TYPE=ENGINEERING CONSTANTS | ORTHOTROPIC | ANISOTROPIC | LAMINA: the constants of one
+// temperature over as many lines as they need (a line holds 8), then an optional temperature;
+// an empty field is 0, as in Abaqus. A second temperature is not supported yet (as ISOTROPIC).
+void directional_elastic(KeywordContext& ctx, const ElasticLayout& layout) {
+  model::Elastic el;
+  el.type = layout.type;
+  el.loc = ctx.keyword.loc;  // the analysis cites the keyword (a data line has no column)
+  const std::size_t n = model::elastic_constant_count(layout.type);
+  std::vector<Field> fields, line_fields;
+  for (const Line& line : ctx.data) {
+    split_fields(line, line_fields);
+    fields.insert(fields.end(), line_fields.begin(), line_fields.end());
+  }
+  if (fields.size() < n) {
+    const model::SourceLoc where = fields.empty() ? ctx.data.back().loc : fields.back().loc;  // after the last one
+    ctx.error(where, fmt::format("expected {} constants ({}), found {}", n, layout.expected, fields.size()));
+    return;
+  }
+  if (fields.size() > n + 1) {
+    ctx.error(fields[n + 1].loc, "temperature-dependent data (more than one set of constants) is not supported yet");
+    return;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (fields[k].empty()) {
+      el.constants.push_back(0.0);
+      continue;
+    }
+    auto v = ctx.real(fields[k], "elastic constant");
+    if (!v) return;
+    el.constants.push_back(*v);
+  }
+  if (auto bad = elastic_instability(el)) {
+    ctx.error(fields[bad->constant].loc, bad->what);
+    return;
+  }
+  ctx.state.material->elastic = std::move(el);
+}
+
+void elastic(KeywordContext& ctx) {
+  const std::string type = ctx.choice_value("TYPE");
+  if (type.empty() || type == "ISOTROPIC" || type == "ISO") {
+    isotropic_elastic(ctx);
+    return;
+  }
+  const auto layout = elastic_layout(type);
+  if (!layout) {
+    ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (ISOTROPIC, ENGINEERING CONSTANTS, ORTHOTROPIC, "
+                                        "ANISOTROPIC or LAMINA)", type));
+    return;
+  }
+  directional_elastic(ctx, *layout);
 }
 
 /// One *PLASTIC data line: yield stress, plastic strain[, temperature], with where the strain
@@ -161,8 +234,12 @@ void solid_section(KeywordContext& ctx) {
   sec.material = ctx.name_value("MATERIAL");
   sec.orientation = ctx.name_value("ORIENTATION");
   sec.loc = ctx.keyword.loc;
+  // Abaqus prints S and E of an oriented section in its material axes; inpact keeps the global
+  // frame for every output (parser/KEYWORDS.md), which a reader comparing numbers must know.
   if (!sec.orientation.empty())
-    ctx.error_param("ORIENTATION", "ORIENTATION is not supported yet (isotropic materials need none)");
+    ctx.warning(ctx.keyword.loc, fmt::format("ORIENTATION={}: stresses and strains (S, E) are output in the global "
+                                             "frame, not in the material axes as Abaqus prints them",
+                                             ctx.param("ORIENTATION")->value.value_or(sec.orientation)));
   if (!ctx.data.empty()) {
     std::vector<Field> f;
     split_fields(ctx.data[0], f);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "anisotropic_law.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
 #include "elements/combined_plasticity.hpp"
@@ -97,6 +98,8 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     const elements::Material*& l = laws[{section, family, hyperelastic && type.hybrid}];
     if (l) return l;
     if (hyperelastic) l = am.materials.emplace_back(hyperelastic_law(m, *mat, family, type.hybrid, am.warnings)).get();
+    else if (mat && mat->elastic && mat->elastic->type != model::Elastic::Type::Isotropic)
+      l = am.materials.emplace_back(anisotropic_law(m, m.mesh.sections[section], *mat, family)).get();
     else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
     else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
     return l;

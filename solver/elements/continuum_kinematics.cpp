@@ -21,13 +21,6 @@ Voigt6 tensor_to_voigt(const Eigen::Matrix3d& t, bool engineering_shear) {
   return {t(0, 0), t(1, 1), t(2, 2), s * t(0, 1), s * t(0, 2), s * t(1, 2)};
 }
 
-// Plane stress: the out-of-plane strain that makes σ33 = 0 for an isotropic material,
-// ε33 = −ν/(1−ν)(ε11 + ε22 − 2ε_th) + ε_th (also used for E33 with St. Venant–Kirchhoff).
-double plane_stress_e33(const ElasticConstants& m, const Vec6& e, double eth) {
-  const double nu = m.poissons_ratio;
-  return -nu / (1 - nu) * (e(0) + e(1) - 2 * eth) + eth;
-}
-
 }  // namespace
 
 PointState point_kinematics(ElementFamily family, int dim, bool nlgeom, const PointData& pd,
@@ -94,10 +87,11 @@ void add_point_contribution(ElementFamily family, int dim, const Mat6& D, bool n
   if (nlgeom) add_geometric_stiffness(family, dim, pd, st.stress, pd.dv, *K);  // initial-stress stiffness
 }
 
-void point_output(ElementFamily family, const ElasticConstants& m, bool nlgeom, const PointData& pd,
+void point_output(ElementFamily family, const Material& m, bool nlgeom, const PointData& pd,
                   const PointState& st, PointResult& out) {
   Vec6 strain = st.strain;
-  if (family == ElementFamily::PlaneStress) strain(2) = plane_stress_e33(m, strain, pd.thermal_strain);
+  if (family == ElementFamily::PlaneStress)
+    strain(2) = m.plane_stress_thickness_strain(pd.x, strain, st.stress, pd.thermal_strain);
   out.volume = pd.dv;
   if (!nlgeom) {
     for (int k = 0; k < 6; ++k) {

@@ -31,6 +31,7 @@ struct PointData {
   double radius = 0.0;        ///< CAX: r of the point (> 0)
   double dv = 0.0;            ///< weight · det J · (thickness | 2πr | 1)
   double thermal_strain = 0.0;  ///< α·ΔT at the point
+  Vec3 x{};                     ///< reference coordinates of the point (a cylindrical orientation's axes)
 };
 
 struct PointState {
@@ -58,8 +59,8 @@ void add_point_contribution(model::ElementFamily family, int dim, const Mat6& D,
                             const PointData& pd, const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K);
 
 /// Cauchy stress and strain for output (Abaqus order, engineering shear): small strain passes
-/// σ and ε through (plane stress fills ε33); NLGEOM converts to σ = J⁻¹FSFᵀ and LE.
-void point_output(model::ElementFamily family, const ElasticConstants& m, bool nlgeom, const PointData& pd,
+/// σ and ε through (plane stress fills ε33 from the material); NLGEOM converts to σ = J⁻¹FSFᵀ and LE.
+void point_output(model::ElementFamily family, const Material& m, bool nlgeom, const PointData& pd,
                   const PointState& st, PointResult& out);
 
 }  // namespace inpact::solver::elements

@@ -77,7 +77,7 @@ Assembled assemble(ElementFamily family, int dim, const Law& law, bool nlgeom, c
   for (std::size_t p = 0; p < pts.size(); ++p) {
     const PointData& pd = pts[p];
     PointState& st = r.states.emplace_back(point_kinematics(family, dim, nlgeom, pd, u));
-    const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain, nlgeom}, history.at(p), st.stress, scratch);
+    const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain, &pd.x, nlgeom}, history.at(p), st.stress, scratch);
     add_point_contribution(family, dim, D, nlgeom, pd, st, &r.f, want_k ? &r.K : nullptr);
   }
   return r;
@@ -158,7 +158,7 @@ Mat6x24 hex8_b(const Eigen::Matrix3d& Fb, const Mat83& g) {
 }
 
 /// The hex8 point's output: Cauchy stress and strain at its reference coordinates.
-void hex8_output(const Hex8Rule& rule, const Hex8Geometry& geo, int p, const ElasticConstants& elastic, bool nlgeom,
+void hex8_output(const Hex8Geometry& geo, int p, const Vec3& x, const Material& law, bool nlgeom,
                  const Eigen::Matrix3d& F, const Vec6& strain, const Vec6& stress, ElementSystem& sys) {
   PointData pd;  // point_output reads the volume (and the thermal strain only in plane stress)
   pd.dv = geo.dv[p];
@@ -167,9 +167,8 @@ void hex8_output(const Hex8Rule& rule, const Hex8Geometry& geo, int p, const Ela
   st.strain = strain;
   st.stress = stress;
   PointResult& out = sys.points.emplace_back();
-  point_output(ElementFamily::Solid3D, elastic, nlgeom, pd, st, out);
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) out.coords[i] += rule.N[p][a] * geo.X(a, i);
+  point_output(ElementFamily::Solid3D, law, nlgeom, pd, st, out);
+  out.coords = x;
 }
 
 /// Point p's share of f and K (and its output): state F = I + ∇₀u, strain, the material's stress.
@@ -195,13 +194,16 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
     for (int a = 0; a < 8; ++a) dt += rule.N[p][a] * delta_t[a];
     thermal_strain = law.elastic().expansion * dt;
   }
+  Vec3 x{};  // the point's reference coordinates
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i) x[i] += rule.N[p][a] * geo.X(a, i);
   Vec6 stress;
   Mat6 scratch;
-  const Mat6& D = law.update({F, strain, thermal_strain, request.nlgeom}, history, stress, scratch);
+  const Mat6& D = law.update({F, strain, thermal_strain, &x, request.nlgeom}, history, stress, scratch);
   const Mat6x24 B = hex8_b(request.nlgeom ? F : Eigen::Matrix3d::Identity(), g);
   f.noalias() += (B.transpose() * stress) * geo.dv[p];
   if (request.point_output) {
-    hex8_output(rule, geo, p, law.elastic(), request.nlgeom, F, strain, stress, sys);
+    hex8_output(geo, p, x, law, request.nlgeom, F, strain, stress, sys);
     if (!history.trial.empty()) law.plastic_output(history.trial, sys.points.back());
   }
   if (!request.stiffness) return;
@@ -285,6 +287,7 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
     pd.grad = Eigen::MatrixX3d::Zero(n_total, 3);
     pd.grad.topRows(n) = m.grad;
     pd.radius = m.radius;
+    pd.x = m.x;
     pd.dv = q.weight * m.det * out_of_plane_measure(family, section, m.radius);
     if (incompatible) {
       const double j = m.det * (family == ElementFamily::Axisymmetric ? m.radius : 1.0);
@@ -386,7 +389,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
   if (request.point_output) {
     sys.points.resize(geo.pts.size());
     for (std::size_t p = 0; p < geo.pts.size(); ++p) {
-      point_output(type.family, law.elastic(), request.nlgeom, geo.pts[p], as.states[p], sys.points[p]);
+      point_output(type.family, law, request.nlgeom, geo.pts[p], as.states[p], sys.points[p]);
       sys.points[p].coords = geo.point_coords[p];
       if (const PointHistory h = history.at(p); !h.trial.empty()) law.plastic_output(h.trial, sys.points[p]);
     }

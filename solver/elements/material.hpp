@@ -32,6 +32,9 @@ struct MaterialPointInput {
   const Eigen::Matrix3d& F;  ///< deformation gradient I + ∇₀u (CAX: F33 = 1 + u_r/R)
   const Vec6& strain;        ///< ε, or E with NLGEOM
   double thermal_strain;     ///< α ΔT at the point (isotropic, on the diagonal)
+  /// Reference coordinates of the point, for a material whose axes depend on where the point is
+  /// (a cylindrical *ORIENTATION); null where no element is behind the call (unit tests).
+  const Vec3* position = nullptr;
   bool nlgeom = false;       ///< the element is total Lagrangian: strain is E, the stress wanted S
 };
 
@@ -63,6 +66,11 @@ class Material {
   /// equivalent plastic strain increment above fifty times the strain of first yield); the
   /// increment is then cut back.
   virtual bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const;
+  /// Plane stress: the thickness strain ε33 (E33 with NLGEOM) that makes σ33 = 0 at a point of
+  /// in-plane `strain` and `stress`, for output. The default is the isotropic one of elastic(),
+  /// ε33 = −ν/(1−ν)(ε11 + ε22 − 2ε_th) + ε_th.
+  virtual double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
+                                               double thermal_strain) const;
   /// The element kernels' fast path: this material when it is isotropic linear elastic.
   virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
 };

@@ -34,7 +34,7 @@ Eval evaluate(const Material& m, const std::vector<double>& committed, const Mat
   Vec6 strain;
   strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
   Mat6 scratch;
-  e.tangent = m.update({F, strain, 0.0, true}, {committed, e.trial}, e.stress, scratch);
+  e.tangent = m.update({F, strain, 0.0, nullptr, true}, {committed, e.trial}, e.stress, scratch);
   return e;
 }
 
