@@ -18,5 +18,6 @@ void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
 void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
 void add_step_contact_keywords(std::vector<KeywordSpec>& table);  // kw_step_contact.cpp
 void add_tie_keywords(std::vector<KeywordSpec>& table);       // kw_tie.cpp
+void add_spring_keywords(std::vector<KeywordSpec>& table);    // kw_spring.cpp
 
 }  // namespace inpact::parser

@@ -19,6 +19,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_contact_keywords(t);
     add_step_contact_keywords(t);
     add_tie_keywords(t);
+    add_spring_keywords(t);
     return t;
   }();
   return table;
@@ -34,7 +35,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
       "BEAMGENERALSECTION", "HYPERELASTIC", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
       "ORIENTATION", "TRANSFORM", "COUPLING", "KINEMATIC", "DISTRIBUTING", "MPC",
-      "RIGIDBODY", "MASS", "SPRING", "DASHPOT", "CONNECTORSECTION", "PRE-TENSIONSECTION",
+      "RIGIDBODY", "MASS", "DASHPOT", "CONNECTORSECTION", "PRE-TENSIONSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
   return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);
 }

@@ -624,13 +624,25 @@ std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequ
   return out;
 }
 
+/// The columns of a table of this element type: trusses and springs have the 11 component of
+/// a tensor only (Abaqus prints S11 and E11 for them), continua every column asked for.
+std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables) {
+  if (model::is_continuum(type)) return variables;
+  std::vector<std::string> out;
+  for (const std::string& v : variables) {
+    const Column c = parse_column(v);
+    const bool tensor = c.source == Column::Source::S || c.source == Column::Source::E || c.source == Column::Source::PE;
+    if (!tensor || c.component == 0) out.push_back(v);
+  }
+  return out;
+}
+
 /// One table per element type, in the order the types first appear in the set (Abaqus prints
 /// element output by element type).
 std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequest& a, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool centroid = a.request.position == OutputRequest::Position::Centroidal;
-  std::vector<Column> cols;
-  for (const auto& c : a.variables) cols.push_back(parse_column(c));
+  std::vector<std::vector<Column>> table_cols;
   std::vector<PrintTable> tables;
   std::map<std::uint8_t, std::size_t> table_of_type;
   auto add = [&](std::size_t el) {
@@ -642,13 +654,17 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
       t.set = a.request.set;
       t.element_type = std::string(model::element_type(type).name);
       t.centroid = centroid;
-      t.columns = a.variables;
+      t.columns = columns_for(model::element_type(type), a.variables);
       t.summary = a.request.summary;
       t.totals = a.request.totals;
       t.totals_only = a.request.totals_only;
+      std::vector<Column> cols;
+      for (const auto& c : t.columns) cols.push_back(parse_column(c));
+      table_cols.push_back(std::move(cols));
       tables.push_back(std::move(t));
     }
     PrintTable& t = tables[it->second];
+    const std::vector<Column>& cols = table_cols[it->second];
     const auto& points = cache.of(el);
     auto row = [&](const elements::PointResult& p, std::int32_t ip) {
       t.labels.push_back(elements.labels[el]);

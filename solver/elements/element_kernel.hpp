@@ -35,8 +35,12 @@ struct ElasticConstants {
 };
 
 /// Section data the kernels need.
+struct SpringBehavior;  // line_elements.hpp
+
 struct SectionData {
   double thickness = 1.0;  ///< plane strain / plane stress out-of-plane thickness (Abaqus default 1)
+  double area = 0.0;       ///< trusses: the cross-section area (*SOLID SECTION's data line)
+  const SpringBehavior* spring = nullptr;  ///< springs: their *SPRING (owned by the AnalysisModel)
   /// Stiffness of the hourglass control of C3D8R/CPE4R/CPS4R/CAX4R as a fraction of the shear
   /// modulus (see hourglass.hpp); 0.005 mirrors Abaqus's default scaling r_F·G = 0.005·G.
   double hourglass_scale = 0.005;
