@@ -11,10 +11,12 @@ namespace inpact::solver::elements {
 
 std::pair<double, double> SpringBehavior::force(double delta) const {
   if (table.empty()) return {stiffness * delta, stiffness};
-  if (delta <= table.front()[1]) return {table.front()[0], 0.0};
-  if (delta >= table.back()[1]) return {table.back()[0], 0.0};
+  // Beyond the table the force is constant; on its end points the tangent is the end segment's
+  // (a spring starting at the table's first point must not start without stiffness).
+  if (delta < table.front()[1]) return {table.front()[0], 0.0};
+  if (delta > table.back()[1]) return {table.back()[0], 0.0};
   std::size_t i = 1;
-  while (table[i][1] <= delta) ++i;  // table[i-1][1] <= delta < table[i][1]
+  while (i + 1 < table.size() && table[i][1] <= delta) ++i;  // table[i-1][1] <= delta <= table[i][1]
   const auto& a = table[i - 1];
   const auto& b = table[i];
   const double slope = (b[0] - a[0]) / (b[1] - a[1]);
