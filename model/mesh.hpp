@@ -69,10 +69,10 @@ struct SolidSection {
   std::string elset;     ///< upper-case set name
   std::string material;  ///< upper-case material name
   double thickness = 1.0;  ///< plane elements: out-of-plane thickness (Abaqus default 1); trusses: area
-  bool value_given = false;  ///< the data line gave the first field (a truss needs its area)
-  SourceLoc value_loc;       ///< where (the keyword line when not given)
   std::string orientation;
   SourceLoc loc;
+  bool value_given = false;  ///< the data line gave the first field (a truss needs its area)
+  SourceLoc value_loc{};     ///< where (the keyword line when not given)
 };
 
 /// *SPRING, ELSET=: the behaviour of the spring elements of a set. Linear: `stiffness`;

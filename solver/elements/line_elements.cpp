@@ -93,6 +93,7 @@ void compute_truss(const model::ElementTypeInfo& type, std::span<const Vec3> coo
       const double stretch = std::sqrt(l2 / L2);
       r.stress[0] = stretch * S, r.strain[0] = std::log(stretch);
     }
+    r.section_force = section.area * r.stress[0];
     if (request.point_output) out.points.push_back(r);
   }
 }

@@ -32,6 +32,9 @@ TEST(TrussSpring, TwoBarTrussMatchesTheClosedFormToRoundOff) {
       for (int ip = 1; ip <= points; ++ip) {
         EXPECT_NEAR(point(f, "S", e, ip, 0), -312.5, 1e-12 * 312.5) << deck << " element " << e;
         EXPECT_NEAR(point(f, "E", e, ip, 0), -312.5 / 200000.0, 1e-12 * 312.5 / 200000.0) << deck;
+        if (points == 1) {
+          EXPECT_NEAR(point(f, "SF", e, ip, 0), -625.0, 1e-12 * 625.0) << "SF1 = N";
+        }
       }
   }
 }
