@@ -20,7 +20,16 @@ struct CellTypes {
 CellTypes cell_types(const model::ElementTypeInfo& t) {
   // VTK_TRIANGLE 5, VTK_QUAD 9, VTK_TETRA 10, VTK_HEXAHEDRON 12, VTK_WEDGE 13,
   // VTK_QUADRATIC_TRIANGLE 22, VTK_QUADRATIC_QUAD 23, VTK_QUADRATIC_TETRA 24,
-  // VTK_QUADRATIC_HEXAHEDRON 25; XDMF numbers from XdmfTopologyType.cpp.
+  // VTK_QUADRATIC_HEXAHEDRON 25; XDMF numbers from XdmfTopologyType.cpp. Trusses and springs:
+  // VTK_VERTEX 1 / VTK_LINE 3 / VTK_QUADRATIC_EDGE 21 (XDMF Polyvertex 1, Polyline 2, Edge_3 34).
+  if (!model::is_continuum(t)) {
+    switch (t.n_nodes) {
+      case 1: return {1, 1, "Polyvertex"};
+      case 2: return {3, 2, "Polyline"};
+      case 3: return {21, 34, "Edge_3"};
+    }
+    return {0, 0, ""};
+  }
   if (t.dim == 3) {
     switch (t.n_nodes) {
       case 4: return {10, 6, "Tetrahedron"};
@@ -137,10 +146,14 @@ void element_arrays(const model::Model& model, const FieldData& f, std::size_t n
 // rule; Abaqus's C3D6 face S1 (1,2,3) turns into the element. Swapping the second and third node
 // of both triangles maps one onto the other (VTK's vtkCellValidator pins this in tests/io).
 constexpr std::uint8_t kWedgeToVtk[] = {0, 2, 1, 3, 5, 4};
+// T3D3 is end, middle, end; VTK's quadratic edge (and XDMF's Edge_3) end, end, middle.
+constexpr std::uint8_t kEdge3ToVtk[] = {0, 2, 1};
 
 }  // namespace
 
 std::span<const std::uint8_t> vtk_node_order(const model::ElementTypeInfo& type) {
+  if (!model::is_continuum(type)) return type.n_nodes == 3 ? std::span<const std::uint8_t>(kEdge3ToVtk)
+                                                          : std::span<const std::uint8_t>();
   if (type.dim == 3 && type.n_nodes == 6) return kWedgeToVtk;
   return {};
 }
@@ -162,7 +175,8 @@ ViewTopology build_view_topology(const model::Mesh& mesh) {
     const CellTypes ct = cell_types(type);
     t.vtk_types.push_back(ct.vtk);
     t.xdmf_mixed.push_back(ct.xdmf);
-    // Abaqus node order is VTK's (and XDMF's) for every supported type but the wedge.
+    if (ct.xdmf == 1 || ct.xdmf == 2) t.xdmf_mixed.push_back(type.n_nodes);  // XDMF's poly cells give their size
+    // Abaqus node order is VTK's (and XDMF's) for every supported type but the wedge and T3D3.
     const auto nodes = el.nodes_of(e);
     const auto order = vtk_node_order(type);
     for (std::size_t i = 0; i < nodes.size(); ++i) {

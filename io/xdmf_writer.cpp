@@ -48,10 +48,13 @@ std::string xdmf_text(const XdmfMesh& mesh, const std::vector<XdmfFrame>& frames
   const bool mixed = mesh.topology_type == "Mixed";
   const std::string topology_dims = mixed ? std::to_string(mesh.topology_length)
                                           : fmt::format("{} {}", mesh.n_cells, mesh.nodes_per_cell);
+  // XDMF's poly cells of one type need their size (a mixed topology gives it per cell).
+  const bool poly = mesh.topology_type == "Polyline" || mesh.topology_type == "Polyvertex";
+  const std::string size = poly ? fmt::format(" NodesPerElement=\"{}\"", mesh.nodes_per_cell) : "";
   const std::string topology = fmt::format(
-      "        <Topology TopologyType=\"{}\" NumberOfElements=\"{}\">\n          {}\n        </Topology>\n"
+      "        <Topology TopologyType=\"{}\" NumberOfElements=\"{}\"{}>\n          {}\n        </Topology>\n"
       "        <Geometry GeometryType=\"XYZ\">\n          {}\n        </Geometry>\n",
-      mesh.topology_type, mesh.n_cells, data_item(topology_dims, "Int", mesh, mesh.topology_path),
+      mesh.topology_type, mesh.n_cells, size, data_item(topology_dims, "Int", mesh, mesh.topology_path),
       data_item(fmt::format("{} 3", mesh.n_nodes), "Float", mesh, mesh.coordinates_path));
 
   std::string out = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n";

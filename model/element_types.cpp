@@ -79,6 +79,13 @@ constexpr ElementTypeInfo kTypes[] = {
     {"CAX4H", F::Axisymmetric, I::Full, 2, 4, 1, kQuad4, true},
     {"CAX8H", F::Axisymmetric, I::Full, 2, 8, 2, kQuad8, true},
     {"CAX8RH", F::Axisymmetric, I::Reduced, 2, 8, 2, kQuad8, true},
+    // Line and point elements: no faces. T3D3's nodes are end, middle, end (Abaqus's order).
+    {"T2D2", F::Truss, I::Full, 2, 2, 1, {}},
+    {"T3D2", F::Truss, I::Full, 3, 2, 1, {}},
+    {"T3D3", F::Truss, I::Full, 3, 3, 2, {}},
+    {"SPRINGA", F::Spring, I::Full, 0, 2, 1, {}},
+    {"SPRING1", F::Spring, I::Full, 0, 1, 1, {}},
+    {"SPRING2", F::Spring, I::Full, 0, 2, 1, {}},
 };
 
 }  // namespace

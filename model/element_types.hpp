@@ -11,7 +11,9 @@ enum class ElementFamily : std::uint8_t {
   Solid3D,      ///< C3D*
   PlaneStrain,  ///< CPE*
   PlaneStress,  ///< CPS*
-  Axisymmetric  ///< CAX*
+  Axisymmetric, ///< CAX*
+  Truss,        ///< T2D2, T3D2, T3D3: axial force only, cross-section area from *SOLID SECTION
+  Spring        ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
 };
 
 enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
@@ -30,7 +32,7 @@ struct ElementTypeInfo {
   std::string_view name;     ///< Abaqus name, upper case
   ElementFamily family;
   Integration integration;
-  std::uint8_t dim;          ///< 2 or 3 (coordinates used)
+  std::uint8_t dim;          ///< 2 or 3 (coordinates used); 0 for springs, which take the model's
   std::uint8_t n_nodes;
   std::uint8_t order;        ///< 1 or 2
   std::span<const FaceDef> faces;  ///< faces[0] is S1
@@ -38,6 +40,12 @@ struct ElementTypeInfo {
   /// (solver/elements/hybrid.hpp); the rest of the type is the standard element's.
   bool hybrid = false;
 };
+
+/// Solids, plane and axisymmetric elements: the types with faces, sections of a material and
+/// the continuum kernels (not trusses or springs).
+inline bool is_continuum(const ElementTypeInfo& t) {
+  return t.family != ElementFamily::Truss && t.family != ElementFamily::Spring;
+}
 
 /// The type with this (upper-case) name, or nullptr when inpact does not support it.
 const ElementTypeInfo* find_element_type(std::string_view upper_name);

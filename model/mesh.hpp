@@ -68,8 +68,24 @@ struct Surface {
 struct SolidSection {
   std::string elset;     ///< upper-case set name
   std::string material;  ///< upper-case material name
-  double thickness = 1.0;  ///< plane elements: out-of-plane thickness (Abaqus default 1)
+  double thickness = 1.0;  ///< plane elements: out-of-plane thickness (Abaqus default 1); trusses: area
   std::string orientation;
+  SourceLoc loc;
+  bool value_given = false;  ///< the data line gave the first field (a truss needs its area)
+  SourceLoc value_loc{};     ///< where (the keyword line when not given)
+};
+
+/// *SPRING, ELSET=: the behaviour of the spring elements of a set. Linear: `stiffness`;
+/// NONLINEAR: the (force, relative displacement) table in ascending displacement.
+struct SpringSection {
+  std::string elset;  ///< upper-case set name
+  /// SPRING1/SPRING2: the DOFs (1-based) at the first and second node; 0 = not given.
+  int dof1 = 0, dof2 = 0;
+  SourceLoc dof_loc;  ///< the DOF line (the keyword line when there is none)
+  bool nonlinear = false;
+  double stiffness = 0.0;
+  std::vector<std::array<double, 2>> table;  ///< NONLINEAR: {force, relative displacement}
+  SourceLoc value_loc;                       ///< the (first) stiffness or table line
   SourceLoc loc;
 };
 
@@ -81,6 +97,7 @@ struct Mesh {
   std::map<std::string, Set> elsets;
   std::map<std::string, Surface> surfaces;
   std::vector<SolidSection> sections;
+  std::vector<SpringSection> springs;
 };
 
 }  // namespace inpact::model

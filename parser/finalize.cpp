@@ -98,6 +98,7 @@ void check_sections(model::Model& m, Diagnostics& diags) {
       has_section[e] = 1;
     }
   }
+  check_line_element_sections(m, diags, has_section);
   // Elements without a section cannot be analysed: report the first few by their own line.
   int reported = 0;
   std::size_t missing = 0;
@@ -105,8 +106,10 @@ void check_sections(model::Model& m, Diagnostics& diags) {
     if (has_section[e]) continue;
     ++missing;
     if (reported < 3) {
+      const bool spring = model::element_type(m.mesh.elements.type[e]).family == model::ElementFamily::Spring;
       diags.error(m.mesh.elements.loc[e], "*ELEMENT",
-                  fmt::format("element {} has no section (assign one with *SOLID SECTION)", m.mesh.elements.labels[e]));
+                  fmt::format("element {} has no {} (assign one with {})", m.mesh.elements.labels[e],
+                              spring ? "spring behaviour" : "section", spring ? "*SPRING" : "*SOLID SECTION"));
       ++reported;
     }
   }

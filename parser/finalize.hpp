@@ -9,6 +9,10 @@ namespace inpact::parser {
 /// Resolves element node labels that were not yet defined when the element was read.
 void resolve_pending_nodes(MeshBuild& build, Diagnostics& diags);
 
+/// Truss and spring sections against the mesh (check_line_elements.cpp); marks the elements a
+/// *SPRING covers in `has_section` (element rows).
+void check_line_element_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section);
+
 void finalize_model(BuildState& state, Diagnostics& diags);
 
 }  // namespace inpact::parser

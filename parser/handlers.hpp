@@ -25,5 +25,6 @@ void add_combined_hardening_keywords(std::vector<KeywordSpec>& table);  // kw_co
 /// *PLASTIC, HARDENING=COMBINED's data into `p` (kw_combined_hardening.cpp; called by *PLASTIC).
 void combined_plastic(KeywordContext& ctx, model::Plastic& p);
 void add_pretension_keywords(std::vector<KeywordSpec>& table);  // kw_pretension.cpp
+void add_spring_keywords(std::vector<KeywordSpec>& table);    // kw_spring.cpp
 
 }  // namespace inpact::parser

@@ -155,6 +155,11 @@ void end_instance(KeywordContext& ctx) {
     copy.elset = prefix + sec.elset;
     dst.sections.push_back(std::move(copy));
   }
+  for (const auto& spring : src.springs) {
+    model::SpringSection copy = spring;
+    copy.elset = prefix + spring.elset;
+    dst.springs.push_back(std::move(copy));
+  }
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 /// *MATERIAL with *ELASTIC, *PLASTIC, *DENSITY, *EXPANSION; *SOLID SECTION (ORIENTATION= names an
 /// *ORIENTATION, kw_orientation.cpp; parser/finalize.cpp checks that it exists).
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "elastic_stability.hpp"
@@ -227,28 +229,48 @@ void expansion(KeywordContext& ctx) {
   ctx.state.material->expansion = model::Expansion{*alpha, ctx.real_value("ZERO").value_or(0.0), line->loc};
 }
 
-// *SOLID SECTION, ELSET=, MATERIAL=: data line (optional) = thickness for plane elements.
+/// True when the element set `elset` (already defined) holds truss elements: its data line is
+/// then the cross-section area, not a thickness.
+bool holds_trusses(KeywordContext& ctx, const std::string& elset) {
+  auto it = ctx.mesh().elsets.find(elset);
+  if (it == ctx.mesh().elsets.end()) return false;
+  const auto& el = ctx.mesh().elements;
+  return std::any_of(it->second.rows.begin(), it->second.rows.end(), [&](std::int32_t e) {
+    return model::element_type(el.type[static_cast<std::size_t>(e)]).family == model::ElementFamily::Truss;
+  });
+}
+
+// *SOLID SECTION, ELSET=, MATERIAL=[, OFFSET=]: data line (optional) = thickness for plane
+// elements, cross-section area for trusses. OFFSET (CalculiX reads it for shells and beams)
+// positions a section off its reference surface or line: a solid or truss section has none, so
+// only 0 is accepted (a non-zero value would be silently ignored otherwise).
 void solid_section(KeywordContext& ctx) {
   model::SolidSection sec;
   sec.elset = ctx.name_value("ELSET");
   sec.material = ctx.name_value("MATERIAL");
   sec.orientation = ctx.name_value("ORIENTATION");
   sec.loc = ctx.keyword.loc;
+  sec.value_loc = ctx.keyword.loc;
   // Abaqus prints S and E of an oriented section in its material axes; inpact keeps the global
   // frame for every output (parser/KEYWORDS.md), which a reader comparing numbers must know.
   if (!sec.orientation.empty())
     ctx.warning(ctx.keyword.loc, fmt::format("ORIENTATION={}: stresses and strains (S, E) are output in the global "
                                              "frame, not in the material axes as Abaqus prints them",
                                              ctx.param("ORIENTATION")->value.value_or(sec.orientation)));
+  if (auto offset = ctx.real_value("OFFSET"); offset && *offset != 0.0)
+    ctx.error_param("OFFSET", fmt::format("OFFSET={:g} has no meaning for a solid or truss section (offsets position "
+                                          "shell and beam sections; expected 0 or no OFFSET)", *offset));
+  const bool truss = holds_trusses(ctx, sec.elset);
+  const char* what = truss ? "cross-section area" : "thickness";
   if (!ctx.data.empty()) {
     std::vector<Field> f;
     split_fields(ctx.data[0], f);
     if (!f.empty() && !f[0].empty()) {
-      auto t = ctx.real(f[0], "thickness");
-      if (t && *t <= 0) ctx.error(f[0].loc, fmt::format("thickness must be positive, found {}", *t));
-      else if (t) sec.thickness = *t;
+      auto t = ctx.real(f[0], what);
+      if (t && *t <= 0) ctx.error(f[0].loc, fmt::format("{} must be positive, found {}", what, *t));
+      else if (t) sec.thickness = *t, sec.value_given = true, sec.value_loc = f[0].loc;
     }
-    if (ctx.data.size() > 1) ctx.error(ctx.data[1].loc, "expected at most one data line (thickness)");
+    if (ctx.data.size() > 1) ctx.error(ctx.data[1].loc, fmt::format("expected at most one data line ({})", what));
   }
   ctx.mesh().sections.push_back(std::move(sec));
 }
@@ -284,7 +306,8 @@ void add_material_keywords(std::vector<KeywordSpec>& t) {
   t.push_back({"*SOLID SECTION", kMeshScopes,
                {{"ELSET", ValueKind::Required, ValueType::Text, {}, true},
                 {"MATERIAL", ValueKind::Required, ValueType::Text, {}, true},
-                {"ORIENTATION", ValueKind::Required}, {"CONTROLS", ValueKind::Required}},
+                {"ORIENTATION", ValueKind::Required}, {"CONTROLS", ValueKind::Required},
+                {"OFFSET", ValueKind::Required, ValueType::Real}},
                DataLines::Optional, solid_section});
   t.back().numbers_from = 0;
 }

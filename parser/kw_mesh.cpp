@@ -86,7 +86,7 @@ void element(KeywordContext& ctx) {
     for (const auto& t : model::element_types()) names.emplace_back(t.name);
     const std::string guess = did_you_mean(type_name, names);
     ctx.error_param("TYPE", fmt::format("element type '{}' is not supported{}", type_name,
-                                        guess.empty() ? fmt::format(" (supported: C3D8, C3D8R, C3D8I, C3D20(R), C3D4, C3D10, C3D6, CPE/CPS/CAX 3, 4, 6, 8 and their R/I forms)")
+                                        guess.empty() ? fmt::format(" (supported: C3D8, C3D8R, C3D8I, C3D20(R), C3D4, C3D10, C3D6, CPE/CPS/CAX 3, 4, 6, 8 and their R/I forms, T2D2, T3D2, T3D3, SPRINGA, SPRING1, SPRING2)")
                                                       : fmt::format(" (did you mean {}?)", guess)));
     return;
   }

@@ -20,6 +20,7 @@
 #include "elements/mises_plasticity.hpp"
 #include "elements/quadrature.hpp"
 #include "hyperelastic_material.hpp"
+#include "line_element_setup.hpp"
 
 namespace inpact::solver {
 
@@ -148,7 +149,7 @@ void warn_about_locking(AnalysisModel& am) {
   std::set<std::pair<std::string, std::string>> locking;
   for (const ElementSetup& s : am.elements) {
     if (s.type->integration != model::Integration::Full || s.type->family == model::ElementFamily::PlaneStress ||
-        s.type->hybrid)
+        s.type->hybrid || !model::is_continuum(*s.type))
       continue;
     const double nu = s.material->elastic().poissons_ratio;
     if (nu > 0.495) locking.insert({std::string(s.type->name), fmt::format("{:g}", nu)});
@@ -170,16 +171,20 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   if (el.size() == 0) throw AnalysisError("the model has no elements");
 
   // One kind of model at a time: the DOFs per node and the axisymmetric ring integration
-  // apply to the whole model.
-  const auto& first = model::element_type(el.type[0]);
-  am.dim = first.dim;
+  // apply to the whole model. Springs take the dimension of the rest (3 in a model of springs).
+  std::size_t first_row = 0;
+  while (first_row + 1 < el.size() && model::element_type(el.type[first_row]).family == model::ElementFamily::Spring)
+    ++first_row;
+  const auto& first = model::element_type(el.type[first_row]);
+  am.dim = first.dim ? first.dim : 3;
   am.axisymmetric = first.family == model::ElementFamily::Axisymmetric;
   for (std::size_t e = 0; e < el.size(); ++e) {
     const auto& t = model::element_type(el.type[e]);
+    am.elements[e].type = &t;
+    if (t.family == model::ElementFamily::Spring) continue;
     if (t.dim != am.dim || (t.family == model::ElementFamily::Axisymmetric) != am.axisymmetric)
       throw AnalysisError(fmt::format("{}: error: *ELEMENT: element {} ({}) cannot be combined with {} elements in one model",
                                       m.sources.describe(el.loc[e]), el.labels[e], t.name, first.name));
-    am.elements[e].type = &t;
   }
 
   // Smoothing data the mesh contradicts (a surface node on the axis or at the centre) is a
@@ -209,6 +214,7 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   for (auto& w : contact::tie_warnings(m, am.ties)) am.warnings.push_back(std::move(w));
 
   assign_materials(m, am);
+  setup_line_elements(m, am);
   check_initial_plastic_strains(m, am);
   warn_about_locking(am);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};

@@ -16,6 +16,7 @@ namespace inpact::solver {
 
 namespace elements {
 class Material;
+struct SpringBehavior;
 }
 
 struct ElementSetup {
@@ -29,10 +30,11 @@ struct ElementSetup {
 
 struct AnalysisModel {
   const model::Model* model = nullptr;
-  int dim = 3;  ///< DOFs per node: 3 for solids, 2 for plane and axisymmetric models
+  int dim = 3;  ///< DOFs per node: 3 for solids and T3D*, 2 for plane, axisymmetric and T2D2 models (springs take it)
   bool axisymmetric = false;
   std::vector<ElementSetup> elements;  ///< per element row
   std::vector<std::shared_ptr<const elements::Material>> materials;  ///< what ElementSetup::material points to
+  std::vector<std::shared_ptr<const elements::SpringBehavior>> springs;  ///< what SectionData::spring points to
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;

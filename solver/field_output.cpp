@@ -86,6 +86,7 @@ std::string field_key(std::string_view v, Domain d) {
   if (element) {
     if (v == "MISES") return "S";
     if (v == "PEEQ" || v == "PEMAG") return std::string(v);
+    if (v == "SF" || v == "SF1") return "SF";  // trusses' axial force (0 for continua)
     for (std::string_view k : {"PE", "LE", "S", "E"})
       if (is_variable(v, k, 2)) return std::string(k);
   }
@@ -127,6 +128,7 @@ std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) 
       if (v == k) return {v};
   } else if (d == Domain::Element) {
     if (v == "MISES" || v == "PEEQ" || v == "PEMAG") return {v};
+    if (v == "SF" || v == "SF1") return {"SF1"};
     if (v == "COORD") return vector_labels(v, dim);
     if (is_variable(v, "COORD", 1)) return component(vector_labels("COORD", dim));
     for (const char* k : {"PE", "LE", "S", "E"}) {
@@ -143,13 +145,13 @@ void add_unique(std::vector<std::string>& list, const std::string& v) {
 
 /// LE is E's values under Abaqus's name for them with NLGEOM (the logarithmic strain; without
 /// NLGEOM the small strain, which it equals to first order).
-constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG"};
+constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG", "SF"};
 
 bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
 
 /// Keys of integration-point values (computed by the element kernels).
 bool point_key(const std::string& key) {
-  return key == "S" || key == "E" || key == "LE" || key == "PE" || key == "PEEQ" || key == "PEMAG";
+  return key == "S" || key == "E" || key == "LE" || key == "PE" || key == "PEEQ" || key == "PEMAG" || key == "SF";
 }
 
 /// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
@@ -467,12 +469,14 @@ double plastic_magnitude(const elements::PointResult& p) {
 FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool with_instance = am.model->instances.size() > 1;
-  const bool scalar = key == "PEEQ" || key == "PEMAG";
+  const bool scalar = key == "PEEQ" || key == "PEMAG" || key == "SF";
   const std::size_t n_comp = scalar ? 1 : am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
   FieldData f;
   f.key = key;
   f.position = Position::IntegrationPoint;
-  f.component_labels = scalar ? std::vector<std::string>{key} : tensor_labels(key, am.dim);
+  f.component_labels = key == "SF" ? std::vector<std::string>{"SF1"}
+                       : scalar    ? std::vector<std::string>{key}
+                                   : tensor_labels(key, am.dim);
   f.region = where.region;
   const bool stress = key == "S";
   // The points of every element first, so that the arrays are sized once (a frame of a few
@@ -499,7 +503,7 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
       if (with_instance) f.instance[i] = elements.instance[el];
       const auto at = f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp);
       if (scalar) {
-        *at = key == "PEEQ" ? pts[p].peeq : plastic_magnitude(pts[p]);
+        *at = key == "PEEQ" ? pts[p].peeq : key == "SF" ? pts[p].section_force : plastic_magnitude(pts[p]);
         continue;
       }
       const auto& v = stress ? pts[p].stress : key == "PE" ? pts[p].plastic_strain : pts[p].strain;
@@ -510,7 +514,7 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
 
 /// A printed column: its source and component (0-based).
 struct Column {
-  enum class Source : std::uint8_t { U, RF, Coord, S, E, Mises, PE, Peeq, Pemag } source;
+  enum class Source : std::uint8_t { U, RF, Coord, S, E, Mises, PE, Peeq, Pemag, SF } source;
   int component = 0;
 };
 
@@ -519,6 +523,7 @@ Column parse_column(const std::string& name) {
   if (name == "MISES") return {S::Mises, 0};
   if (name == "PEEQ") return {S::Peeq, 0};
   if (name == "PEMAG") return {S::Pemag, 0};
+  if (name == "SF1") return {S::SF, 0};
   if (name.rfind("COORD", 0) == 0) return {S::Coord, name[5] - '1'};
   if (name.rfind("RF", 0) == 0) return {S::RF, name[2] - '1'};
   if (name[0] == 'U') return {S::U, name[1] - '1'};
@@ -564,6 +569,7 @@ double point_value(const elements::PointResult& p, const Column& c) {
     case Column::Source::PE: return p.plastic_strain[c.component];
     case Column::Source::Peeq: return p.peeq;
     case Column::Source::Pemag: return plastic_magnitude(p);
+    case Column::Source::SF: return p.section_force;
     case Column::Source::Coord: return p.coords[c.component];
     default: return 0.0;
   }
@@ -583,6 +589,7 @@ elements::PointResult centroid_of(std::span<const elements::PointResult> points)
       c.plastic_strain[i] += w * p.plastic_strain[i];
     }
     c.peeq += w * p.peeq;
+    c.section_force += w * p.section_force;
     for (int i = 0; i < 3; ++i) c.coords[i] += w * p.coords[i];
   }
   c.volume = total;
@@ -627,13 +634,25 @@ std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequ
   return out;
 }
 
+/// The columns of a table of this element type: trusses and springs have the 11 component of
+/// a tensor only (Abaqus prints S11 and E11 for them), continua every column asked for.
+std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables) {
+  if (model::is_continuum(type)) return variables;
+  std::vector<std::string> out;
+  for (const std::string& v : variables) {
+    const Column c = parse_column(v);
+    const bool tensor = c.source == Column::Source::S || c.source == Column::Source::E || c.source == Column::Source::PE;
+    if (!tensor || c.component == 0) out.push_back(v);
+  }
+  return out;
+}
+
 /// One table per element type, in the order the types first appear in the set (Abaqus prints
 /// element output by element type).
 std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequest& a, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool centroid = a.request.position == OutputRequest::Position::Centroidal;
-  std::vector<Column> cols;
-  for (const auto& c : a.variables) cols.push_back(parse_column(c));
+  std::vector<std::vector<Column>> table_cols;
   std::vector<PrintTable> tables;
   std::map<std::uint8_t, std::size_t> table_of_type;
   auto add = [&](std::size_t el) {
@@ -645,13 +664,17 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
       t.set = a.request.set;
       t.element_type = std::string(model::element_type(type).name);
       t.centroid = centroid;
-      t.columns = a.variables;
+      t.columns = columns_for(model::element_type(type), a.variables);
       t.summary = a.request.summary;
       t.totals = a.request.totals;
       t.totals_only = a.request.totals_only;
+      std::vector<Column> cols;
+      for (const auto& c : t.columns) cols.push_back(parse_column(c));
+      table_cols.push_back(std::move(cols));
       tables.push_back(std::move(t));
     }
     PrintTable& t = tables[it->second];
+    const std::vector<Column>& cols = table_cols[it->second];
     const auto& points = cache.of(el);
     auto row = [&](const elements::PointResult& p, std::int32_t ip) {
       t.labels.push_back(elements.labels[el]);

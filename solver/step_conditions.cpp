@@ -101,6 +101,7 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
 void StepConditions::add_dload_shape(const Key& key) {
   if (dload_shape_.count(key) || centrifugal_moments_.count(key)) return;
   const ElementSetup& setup = am_.elements[key.element];
+  if (setup.type->family == model::ElementFamily::Spring) return;  // springs have no mass: GRAV, CENTRIF add nothing
   const auto coords = am_.coords(key.element);
   if (key.key == 300) {
     const auto moments = elements::volume_moments(*setup.type, coords, setup.section);

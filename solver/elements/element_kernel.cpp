@@ -13,6 +13,7 @@
 #include "hourglass.hpp"
 #include "hybrid.hpp"
 #include "incompatible_modes.hpp"
+#include "line_elements.hpp"
 #include "material.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
@@ -55,7 +56,9 @@ double out_of_plane_measure(ElementFamily family, const SectionData& section, do
     case ElementFamily::Axisymmetric: return 2 * std::numbers::pi * radius;
     case ElementFamily::PlaneStrain:
     case ElementFamily::PlaneStress: return section.thickness;
-    case ElementFamily::Solid3D: return 1.0;
+    case ElementFamily::Solid3D:
+    case ElementFamily::Truss:  // (line elements take line_elements.cpp's kernels)
+    case ElementFamily::Spring: return 1.0;
   }
   return 1.0;
 }
@@ -399,6 +402,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
 
 void check_sizes(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                  std::span<const double> delta_t) {
+  if (!model::is_continuum(type)) return;  // line_elements.cpp checks its own sizes
   const int n = type.n_nodes;
   if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n * type.dim ||
       (!delta_t.empty() && static_cast<int>(delta_t.size()) != n))
@@ -410,6 +414,10 @@ template <class Law>
 void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                   const Law& law, const SectionData& section, const ElementRequest& request,
                   std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
+  if (!model::is_continuum(type)) {
+    compute_line_element(type, coords, u, law.elastic(), section, request, delta_t, out);
+    return;
+  }
   if (is_full_hex8(type) && coords.size() == 8 && u.size() == 24 && (delta_t.empty() || delta_t.size() == 8)) {
     compute_hex8(type, coords, u, law, request, delta_t, history, out);
     return;

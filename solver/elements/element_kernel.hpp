@@ -35,11 +35,15 @@ struct ElasticConstants {
 };
 
 /// Section data the kernels need.
+struct SpringBehavior;  // line_elements.hpp
+
 struct SectionData {
   double thickness = 1.0;  ///< plane strain / plane stress out-of-plane thickness (Abaqus default 1)
   /// Stiffness of the hourglass control of C3D8R/CPE4R/CPS4R/CAX4R as a fraction of the shear
   /// modulus (see hourglass.hpp); 0.005 mirrors Abaqus's default scaling r_F·G = 0.005·G.
   double hourglass_scale = 0.005;
+  double area = 0.0;       ///< trusses: the cross-section area (*SOLID SECTION's data line)
+  const SpringBehavior* spring = nullptr;  ///< springs: their *SPRING (owned by the AnalysisModel)
 };
 
 struct ElementRequest {
@@ -57,6 +61,7 @@ struct PointResult {
   double volume = 0.0;  ///< reference volume it represents (Abaqus IVOL; 2πr·dA for CAX)
   Voigt6 plastic_strain{};  ///< PE, engineering shear (0 without plasticity)
   double peeq = 0.0;        ///< PEEQ, the equivalent plastic strain ∫ε̄̇ᵖ dt
+  double section_force = 0.0;  ///< SF1: a truss's axial force N (0 for other elements)
 };
 
 /// The history variables of one integration point (material.hpp, material_states.hpp): the

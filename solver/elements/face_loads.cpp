@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "line_elements.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
 
@@ -85,6 +86,16 @@ template <class Fn>
 void integrate_volume(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const SectionData& section,
                       Fn&& fn) {
   const int dim = type.dim, n = type.n_nodes;
+  if (type.family == ElementFamily::Truss) {  // along the truss: dV = A ds
+    for (const TrussPoint& p : truss_points(type, coords, dim)) {
+      ShapeValues sv;
+      sv.n_nodes = n;
+      sv.dim = 1;
+      for (int a = 0; a < n; ++a) sv.N[a] = p.N[a];
+      fn(sv, p.x, p.weight * p.J * section.area);
+    }
+    return;
+  }
   const Shape shape = element_shape(type);
   model::ElementTypeInfo full = type;
   full.integration = model::Integration::Full;

@@ -62,6 +62,10 @@ std::vector<std::array<double, 2>> gauss_legendre(int n) {
 }
 
 std::vector<QuadraturePoint> element_rule(const model::ElementTypeInfo& type) {
+  // Trusses: Gauss along the element, 1 point for two nodes, 2 for three (Abaqus's T3D3).
+  // Springs: one output location, the element itself.
+  if (type.family == model::ElementFamily::Truss) return tensor(type.n_nodes - 1, 1);
+  if (type.family == model::ElementFamily::Spring) return {{{0, 0, 0}, 1.0}};
   const bool reduced = type.integration == Integration::Reduced;
   switch (element_shape(type)) {
     case Shape::Hex8: return tensor(reduced ? 1 : 2, 3);

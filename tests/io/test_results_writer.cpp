@@ -387,6 +387,12 @@ TEST(ResultsWriter, EveryElementTypeHasAVtkAndXdmfCell) {
   EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("C3D6")), 13);
   EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("CPE8R")), 23);
   EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("CAX6")), 22);
+  EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("T3D2")), 3);    // VTK_LINE
+  EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("T3D3")), 21);   // VTK_QUADRATIC_EDGE
+  EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("SPRING1")), 1); // VTK_VERTEX
+  const auto edge = io::vtk_node_order(*model::find_element_type("T3D3"));  // end, middle, end → end, end, middle
+  ASSERT_EQ(edge.size(), 3u);
+  EXPECT_EQ(edge[1], 2);
   EXPECT_EQ(io::vtk_cell_type(*model::find_element_type("CPS3")), 5);
   EXPECT_EQ(io::xdmf_cell_type(*model::find_element_type("C3D20")), 48);
 }
