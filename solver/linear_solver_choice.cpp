@@ -39,7 +39,7 @@ SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& mo
   choice.model_dofs = model_dofs(model);
   if (request == SolverRequest::Petsc && !petsc_built())
     throw std::invalid_argument("--solver petsc: this inpact was built without PETSc "
-                                "(configure found no pkg-config PETSc; install petsc-dev and reconfigure)");
+                                "(PETSc, pkg-config PETSc, was not found when it was configured, or INPACT_PETSC=OFF)");
   const bool petsc = request == SolverRequest::Petsc ||
                      (request == SolverRequest::Auto && petsc_built() && choice.model_dofs >= kPetscFromDofs);
   choice.kind = petsc ? SolverKind::Petsc : SolverKind::Direct;

@@ -80,37 +80,51 @@ struct CsrMap {
   std::vector<PetscInt> target, mirror_target;  ///< per inpact entry (mirror: its transpose, upper_only)
   std::vector<PetscInt> fixed_target;           ///< per fixed slot: its diagonal entry
 
+  /// Rows are filled by counting (the inpact matrix holds columns), then each row is sorted:
+  /// a sort of all 2·nnz entries at once took 3 s of a 6 s set-up at 100k DOF.
   CsrMap(const SparseMatrix& a, const SlotLayout& layout, PetscInt n) {
-    struct Entry {
-      PetscInt row, col;
-      std::int64_t source;  ///< k, or -(k+1) for the mirror of entry k, or a fixed slot
-      int kind;             ///< 0 entry, 1 mirror, 2 identity
+    const auto nnz = static_cast<std::int64_t>(a.nnz());
+    // Each PETSc entry comes from a source: inpact entry k (k), its mirror (nnz + k), or the
+    // identity of fixed slot f (2 nnz + f).
+    const auto for_each_entry = [&](auto&& visit) {
+      for (std::int64_t c = 0; c < a.n; ++c)
+        for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
+          const PetscInt r = layout.slot_of_eq[a.row_idx[k]], s = layout.slot_of_eq[c];
+          visit(r, s, k);
+          if (a.upper_only && r != s) visit(s, r, nnz + k);
+        }
+      for (std::size_t f = 0; f < layout.fixed_slots.size(); ++f)
+        visit(layout.fixed_slots[f], layout.fixed_slots[f], 2 * nnz + static_cast<std::int64_t>(f));
     };
-    std::vector<Entry> entries;
-    entries.reserve(a.nnz() * (a.upper_only ? 2 : 1) + layout.fixed_slots.size());
-    for (std::int64_t c = 0; c < a.n; ++c)
-      for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
-        const PetscInt r = layout.slot_of_eq[a.row_idx[k]], s = layout.slot_of_eq[c];
-        entries.push_back({r, s, k, 0});
-        if (a.upper_only && r != s) entries.push_back({s, r, k, 1});
-      }
-    for (std::size_t f = 0; f < layout.fixed_slots.size(); ++f)
-      entries.push_back({layout.fixed_slots[f], layout.fixed_slots[f], static_cast<std::int64_t>(f), 2});
-    std::sort(entries.begin(), entries.end(),
-              [](const Entry& x, const Entry& y) { return x.row != y.row ? x.row < y.row : x.col < y.col; });
     row_ptr.assign(static_cast<std::size_t>(n) + 1, 0);
-    col.resize(entries.size());
+    for_each_entry([&](PetscInt r, PetscInt, std::int64_t) { ++row_ptr[r + 1]; });
+    std::partial_sum(row_ptr.begin(), row_ptr.end(), row_ptr.begin());
+    col.resize(static_cast<std::size_t>(row_ptr[n]));
+    std::vector<std::int64_t> source(col.size());
+    std::vector<PetscInt> next(row_ptr.begin(), row_ptr.end() - 1);
+    for_each_entry([&](PetscInt r, PetscInt s, std::int64_t src) {
+      col[next[r]] = s;
+      source[next[r]++] = src;
+    });
+    std::vector<std::pair<PetscInt, std::int64_t>> row;
+    for (PetscInt r = 0; r < n; ++r) {
+      row.clear();
+      for (PetscInt i = row_ptr[r]; i < row_ptr[r + 1]; ++i) row.emplace_back(col[i], source[i]);
+      std::sort(row.begin(), row.end());
+      for (std::size_t j = 0; j < row.size(); ++j) {
+        col[row_ptr[r] + j] = row[j].first;
+        source[row_ptr[r] + j] = row[j].second;
+      }
+    }
     target.assign(a.nnz(), -1);
     mirror_target.assign(a.upper_only ? a.nnz() : 0, -1);
     fixed_target.resize(layout.fixed_slots.size());
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      const Entry& e = entries[i];
-      ++row_ptr[e.row + 1];
-      col[i] = e.col;
-      auto& where = e.kind == 0 ? target : e.kind == 1 ? mirror_target : fixed_target;
-      where[static_cast<std::size_t>(e.source)] = static_cast<PetscInt>(i);
+    for (std::size_t i = 0; i < source.size(); ++i) {
+      const std::int64_t src = source[i];
+      auto& where = src < nnz ? target : src < 2 * nnz ? mirror_target : fixed_target;
+      where[static_cast<std::size_t>(src < nnz ? src : src < 2 * nnz ? src - nnz : src - 2 * nnz)] =
+          static_cast<PetscInt>(i);
     }
-    std::partial_sum(row_ptr.begin(), row_ptr.end(), row_ptr.begin());
   }
 };
 
