@@ -16,7 +16,7 @@ int run_check(const CheckOptions& options) {
   if (!result) return kDeckError;
   solver::SolverChoice choice;
   try {
-    choice = solver::resolve_linear_solver(*solver::parse_solver_request(options.solver), result->model);
+    choice = solver::resolve_linear_solver(options.solver, result->model);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "inpact: error: %s\n", e.what());
     return kUsage;

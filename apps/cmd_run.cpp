@@ -154,6 +154,20 @@ std::string deck_digest(const model::Model& m) {
   return hash.hex();
 }
 
+/// The linear solver of `--solver`, started (PetscInitialize once per process, before any
+/// output is created); nullopt, with the reason printed, when it cannot be had.
+std::optional<solver::SolverChoice> start_linear_solver(const RunOptions& options, const model::Model& model) {
+  try {
+    const solver::SolverChoice choice =
+        solver::resolve_linear_solver(options.solver, model);
+    solver::start_linear_solver(choice);
+    return choice;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "inpact: error: %s\n", e.what());
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 int run_analysis(const RunOptions& options) {
@@ -163,30 +177,24 @@ int run_analysis(const RunOptions& options) {
   const parser::ReadResult& result = *loaded;
   const std::string job = options.job.empty() ? std::filesystem::path(options.deck).stem().string() : options.job;
   const std::filesystem::path dir = options.output_dir;
-  solver::SolverChoice choice;
-  try {
-    choice = solver::resolve_linear_solver(*solver::parse_solver_request(options.solver), result.model);
-    solver::start_linear_solver(choice);  // PetscInitialize once per process, before any output
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "inpact: error: %s\n", e.what());
-    return kUsage;
-  }
+  const std::optional<solver::SolverChoice> choice = start_linear_solver(options, result.model);
+  if (!choice) return kUsage;
   try {
     std::filesystem::create_directories(dir);
     const std::string digest = deck_digest(result.model);
     clock.mark("read");
     io::ResultsOptions results_options;
-    results_options.linear_solver = solver::kind_name(choice.kind);
-    results_options.linear_solver_choice = solver::describe(choice);
+    results_options.linear_solver = solver::kind_name(choice->kind);
+    results_options.linear_solver_choice = solver::describe(*choice);
     io::ResultsWriter results =
         io::ResultsWriter::create(dir / (job + ".h5"), result.model, digest, INPACT_VERSION, results_options);
     io::StatusLog status(dir / (job + ".sta"), INPACT_VERSION);
-    io::DatReport dat(dir / (job + ".dat"), INPACT_VERSION, result.model.heading, solver::describe(choice));
+    io::DatReport dat(dir / (job + ".dat"), INPACT_VERSION, result.model.heading, solver::describe(*choice));
     clock.mark("create");
     RunObserver observer(results, status, dat, options);
     solver::AnalysisOptions analysis_options;
     analysis_options.threads = options.threads;
-    analysis_options.linear_solver = choice.kind;
+    analysis_options.linear_solver = choice->kind;
     solver::AnalysisOutcome outcome;
     try {
       outcome = solver::run_analysis(result.model, observer, analysis_options);

@@ -46,6 +46,12 @@ SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& mo
   return choice;
 }
 
+SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model) {
+  const auto parsed = parse_solver_request(request);
+  if (!parsed) throw std::invalid_argument(fmt::format("--solver {}: expected direct, petsc or auto", request));
+  return resolve_linear_solver(*parsed, model);
+}
+
 std::string describe(const SolverChoice& c) {
   const std::string what = c.kind == SolverKind::Petsc
                                ? "petsc (CG or GMRES with GAMG; MUMPS for contact multipliers)"

@@ -19,7 +19,7 @@ enum class SolverRequest { Direct, Petsc, Auto };
 enum class SolverKind { Direct, Petsc };
 
 /// `auto` takes petsc from this many DOFs (nodes × DOFs per node) of the model.
-inline constexpr std::int64_t kPetscFromDofs = 200'000;
+inline constexpr std::int64_t kPetscFromDofs = 25'000;
 
 struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
@@ -34,6 +34,8 @@ const char* request_name(SolverRequest request);
 /// The solver `request` comes to for `model`. Throws std::invalid_argument when petsc is
 /// requested from a build without PETSc (auto then takes direct).
 SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model);
+/// The same for the text of `--solver`; throws std::invalid_argument for an unknown one too.
+SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model);
 
 /// "petsc" or "direct": the name the results file records.
 const char* kind_name(SolverKind kind);
