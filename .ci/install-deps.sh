@@ -13,6 +13,7 @@ packages=(
   libgtest-dev                               # tests
   python3-h5py python3-meshio python3-paraview xvfb xauth  # results-file reader tests (tests/io)
   parallel                                   # GNU parallel running study shards (tests/decks)
+  petsc-dev                                  # iterative solver (--solver petsc; optional at configure)
 )
 
 missing=()

@@ -23,6 +23,7 @@
 #include "parser/read_deck.hpp"
 #include "solver/analysis.hpp"
 #include "solver/analysis_error.hpp"
+#include "solver/linear_solver_choice.hpp"
 
 namespace inpact::app {
 
@@ -128,7 +129,8 @@ class PhaseClock {
     add("back_solve", it.back_solve);
     counts_ = {{"contact_updates", it.contact_updates},
                {"element_assemblies", it.element_assemblies},
-               {"factorizations", it.factorizations}};
+               {"factorizations", it.factorizations},
+               {"krylov_iterations", it.krylov_iterations}};
   }
   /// key=value lines: one per phase and total_s (first mark's start to the last mark).
   void write(const std::string& path) const {
@@ -154,6 +156,20 @@ std::string deck_digest(const model::Model& m) {
   return hash.hex();
 }
 
+/// The linear solver of `--solver`, started (PetscInitialize once per process, before any
+/// output is created); nullopt, with the reason printed, when it cannot be had.
+std::optional<solver::SolverChoice> start_linear_solver(const RunOptions& options, const model::Model& model) {
+  try {
+    const solver::SolverChoice choice =
+        solver::resolve_linear_solver(options.solver, model);
+    solver::start_linear_solver(choice);
+    return choice;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "inpact: error: %s\n", e.what());
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 int run_analysis(const RunOptions& options) {
@@ -163,17 +179,24 @@ int run_analysis(const RunOptions& options) {
   const parser::ReadResult& result = *loaded;
   const std::string job = options.job.empty() ? std::filesystem::path(options.deck).stem().string() : options.job;
   const std::filesystem::path dir = options.output_dir;
+  const std::optional<solver::SolverChoice> choice = start_linear_solver(options, result.model);
+  if (!choice) return kUsage;
   try {
     std::filesystem::create_directories(dir);
     const std::string digest = deck_digest(result.model);
     clock.mark("read");
-    io::ResultsWriter results = io::ResultsWriter::create(dir / (job + ".h5"), result.model, digest, INPACT_VERSION);
+    io::ResultsOptions results_options;
+    results_options.linear_solver = solver::kind_name(choice->kind);
+    results_options.linear_solver_choice = solver::describe(*choice);
+    io::ResultsWriter results =
+        io::ResultsWriter::create(dir / (job + ".h5"), result.model, digest, INPACT_VERSION, results_options);
     io::StatusLog status(dir / (job + ".sta"), INPACT_VERSION);
-    io::DatReport dat(dir / (job + ".dat"), INPACT_VERSION, result.model.heading);
+    io::DatReport dat(dir / (job + ".dat"), INPACT_VERSION, result.model.heading, solver::describe(*choice));
     clock.mark("create");
     RunObserver observer(results, status, dat, options);
     solver::AnalysisOptions analysis_options;
     analysis_options.threads = options.threads;
+    analysis_options.linear_solver = choice->kind;
     solver::AnalysisOutcome outcome;
     try {
       outcome = solver::run_analysis(result.model, observer, analysis_options);

@@ -16,6 +16,7 @@
 #include "exit_codes.hpp"
 #include "process_setup.hpp"
 #include "solver/blas_info.hpp"
+#include "solver/linear_solver_choice.hpp"
 
 using namespace inpact::app;
 
@@ -33,7 +34,8 @@ std::map<std::string, std::string> parameter_overrides(const std::vector<std::st
 }
 
 std::string version_text() {
-  return fmt::format("inpact {}\nBLAS: {}", INPACT_VERSION, inpact::solver::blas_description());
+  return fmt::format("inpact {}\nBLAS: {}\n{}", INPACT_VERSION, inpact::solver::blas_description(),
+                     inpact::solver::petsc_availability());
 }
 
 }  // namespace
@@ -64,6 +66,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("-P", run_params, "Override a *PARAMETER: -P name=value");
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
   run_cmd->add_flag("-v,--verbose", run.verbose, "Print every Newton iteration");
+  run_cmd->add_option("--solver", run.solver,
+                      "Linear solver: direct (CHOLMOD/UMFPACK), petsc (CG/GMRES + GAMG, MUMPS), auto (by size)")
+      ->check(CLI::IsMember({"direct", "petsc", "auto"}));
   run_cmd->add_option("--timings", run.timings,
                       "Write the wall time of each phase (read, create, solve, output, finish) and of the Newton "
                       "iterations' parts (contact update, element assembly, factorisation) to this file");
@@ -73,6 +78,8 @@ int main(int argc, char** argv) {
   CLI::App* check_cmd = app.add_subcommand("check", "Read and validate a deck, print the model summary; no analysis");
   check_cmd->add_option("deck", check.deck, "Input deck (.inp)")->required()->check(CLI::ExistingFile);
   check_cmd->add_option("-P", check_params, "Override a *PARAMETER: -P name=value");
+  check_cmd->add_option("--solver", check.solver, "The linear solver `run --solver` would use: direct, petsc, auto")
+      ->check(CLI::IsMember({"direct", "petsc", "auto"}));
 
   CompareOptions compare;
   CLI::App* compare_cmd = app.add_subcommand("compare", "Compare two results files: exit 0 same, 1 different, 5 I/O");

@@ -138,14 +138,17 @@ std::string format_print_table(const PrintTable& t) {
   return out;
 }
 
-DatReport::DatReport(std::filesystem::path path, const std::string& solver_version, const std::string& heading)
+DatReport::DatReport(std::filesystem::path path, const std::string& solver_version, const std::string& heading,
+                     const std::string& solver_line)
     : path_(std::move(path)) {
   out_.open(path_, std::ios::out | std::ios::trunc);
   if (!out_) throw IoError(path_, "cannot create the data file");
   const std::time_t now = std::time(nullptr);
   char date[64] = "";
   std::strftime(date, sizeof date, "DATE %d-%b-%Y TIME %H:%M:%S", std::localtime(&now));
-  std::string text = fmt::format("{:<42}{}\n\n", "inpact " + solver_version, date);
+  std::string text = fmt::format("{:<42}{}\n", "inpact " + solver_version, date);
+  if (!solver_line.empty()) text += solver_line + "\n";
+  text += "\n";
   if (!heading.empty()) text += heading + "\n\n";
   put(text);
 }

@@ -83,8 +83,10 @@ std::string format_print_table(const PrintTable& table);
 
 class DatReport {
  public:
-  /// Creates (truncates) `path` and writes the header. Throws IoError when it cannot.
-  DatReport(std::filesystem::path path, const std::string& solver_version, const std::string& heading = "");
+  /// Creates (truncates) `path` and writes the header (`solver_line`, when given, under the
+  /// version: the linear solver of the run). Throws IoError when it cannot.
+  DatReport(std::filesystem::path path, const std::string& solver_version, const std::string& heading = "",
+            const std::string& solver_line = "");
   /// The step banner (S T E P  n  S T A T I C   A N A L Y S I S) and the step's description.
   void begin_step(const model::Step& step, int number);
   /// The step's contact rows as the analysis enforces them (contact::describe() lines).

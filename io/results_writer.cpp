@@ -398,6 +398,10 @@ ResultsWriter ResultsWriter::create(const fs::path& h5_path, const model::Model&
   w.ctx.attr_string(w.file, "solver_version", solver_version);
   w.ctx.attr_string(w.file, "deck_sha256", deck_sha256);
   w.ctx.attr_string(w.file, "status", "RUNNING");
+  if (!options.linear_solver.empty()) {
+    w.ctx.attr_string(w.file, "linear_solver", options.linear_solver);
+    w.ctx.attr_string(w.file, "linear_solver_choice", options.linear_solver_choice);
+  }
 
   w.write_model(options.contact_pairs ? *options.contact_pairs : contact_pair_names(model));
   w.ctx.create_group(w.file, "steps", true);

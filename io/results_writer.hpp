@@ -37,6 +37,9 @@ struct ResultsOptions {
   /// the disk when HDF5's caches spill and at finish() (measured in tests/io: the flush is
   /// a small part of a frame's cost).
   bool flush_each_frame = true;
+  /// Root attributes linear_solver ("direct" | "petsc") and linear_solver_choice (the line
+  /// solver::describe gives: what and why); not written when empty.
+  std::string linear_solver, linear_solver_choice;
 };
 
 /// The contact pairs of a model in their default row order: model-level *CONTACT PAIR lines,

@@ -277,6 +277,7 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
     StepRun run(am, s, history, total_time, options.threads, material_states);
+    if (options.linear_solver == SolverKind::Petsc) run.solvers.petsc = make_petsc_solver(equation_points(am, run.dofs));
     if (run.contact) {
       const std::vector<std::string> lines = run.contact->describe();
       observer.contact_interactions(static_cast<int>(s + 1), lines);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "iteration_seconds.hpp"
+#include "linear_solver_choice.hpp"
 #include "model/model.hpp"
 #include "observer.hpp"
 
@@ -16,6 +17,7 @@ namespace inpact::solver {
 
 struct AnalysisOptions {
   int threads = 1;
+  SolverKind linear_solver = SolverKind::Direct;  ///< resolve_linear_solver's choice
 };
 
 struct AnalysisOutcome {

@@ -16,6 +16,7 @@ struct IterationSeconds {
   double factorization = 0.0;      ///< LinearSolver::factorize
   double back_solve = 0.0;         ///< LinearSolver::solve
   long contact_updates = 0, element_assemblies = 0, factorizations = 0;
+  long krylov_iterations = 0;      ///< of an iterative linear solver (PETSc), over its solves
 
   IterationSeconds& operator+=(const IterationSeconds& o) {
     contact_update += o.contact_update;
@@ -28,6 +29,7 @@ struct IterationSeconds {
     contact_updates += o.contact_updates;
     element_assemblies += o.element_assemblies;
     factorizations += o.factorizations;
+    krylov_iterations += o.krylov_iterations;
     return *this;
   }
 };

@@ -7,15 +7,36 @@
 
 namespace inpact::solver {
 
+EquationPoints equation_points(const AnalysisModel& am, const DofMap& dofs) {
+  EquationPoints p;
+  p.dim = am.dim;
+  p.node.resize(static_cast<std::size_t>(dofs.n_equations()));
+  p.component.resize(p.node.size());
+  for (std::int64_t d = 0; d < dofs.n_dof(); ++d)
+    if (const std::int64_t eq = dofs.equation(d); eq >= 0) {
+      p.node[eq] = d / am.dim;
+      p.component[eq] = static_cast<int>(d % am.dim);
+    }
+  for (const auto& x : am.model->mesh.nodes.coords) p.coordinates.insert(p.coordinates.end(), x.begin(), x.end());
+  return p;
+}
+
+double krylov_tolerance(double residual_ratio) {
+  if (!(residual_ratio > 0.0)) return 1e-10;
+  return std::clamp(kKrylovTarget / residual_ratio, 1e-10, 1e-2);
+}
+
 CorrectionOutcome CorrectionSolver::solve(const SparseMatrix& tangent, bool saddle_point, std::span<const double> r,
-                                          std::span<double> du, std::size_t n_displacement, double model_size) {
+                                          std::span<double> du, std::size_t n_displacement, double model_size,
+                                          double residual_ratio) {
   CorrectionOutcome out;
-  if (saddle_point || !tangent.upper_only) current_ = solvers_.umfpack.get();
+  if (solvers_.petsc) solvers_.petsc->set_relative_tolerance(krylov_tolerance(residual_ratio));
+  else if (saddle_point || !tangent.upper_only) current_ = solvers_.umfpack.get();
   FactorStatus status;
   {
     const ScopedSeconds clock(solvers_.seconds.factorization, &solvers_.seconds.factorizations);
     status = current_->factorize(tangent);
-    if (status == FactorStatus::NotPositiveDefinite) {
+    if (status == FactorStatus::NotPositiveDefinite && !solvers_.petsc) {
       current_ = solvers_.umfpack.get();
       status = current_->factorize(tangent);
     }
@@ -32,7 +53,9 @@ CorrectionOutcome CorrectionSolver::solve(const SparseMatrix& tangent, bool sadd
   }
   {
     const ScopedSeconds clock(solvers_.seconds.back_solve);
+    const long krylov_before = current_->krylov_iterations();
     current_->solve(r, du);
+    solvers_.seconds.krylov_iterations += current_->krylov_iterations() - krylov_before;
   }
   double largest_du = 0.0;  // over the displacement equations (not the contact multipliers)
   bool finite = true;

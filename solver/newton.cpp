@@ -209,7 +209,8 @@ bool NewtonIterations::solve_correction(Residual& res) {
   const SparseMatrix* tangent = &ctx_.assembler.tangent();
   if (ctx_.contact && ctx_.contact->unsymmetric()) tangent = &ctx_.contact->unsymmetric_tangent(*tangent);
   const std::size_t n_sys = static_cast<std::size_t>(ctx_.assembler.n_equations());
-  CorrectionOutcome solved = solver_.solve(*tangent, n_sys > n_eq_, r_, du_, n_eq_, ctx_.am.size);
+  CorrectionOutcome solved =
+      solver_.solve(*tangent, n_sys > n_eq_, r_, du_, n_eq_, ctx_.am.size, res.q > 0 ? res.max / res.q : 0.0);
   if (solved.solved) return true;
   out_.failure = std::move(solved.failure);
   out_.singular = solved.singular;

@@ -1,12 +1,16 @@
 #pragma once
-/// Direct sparse solvers behind one interface. The symbolic analysis (ordering, elimination
-/// tree) is kept while the pattern stays the same; each Newton iteration only refactors.
+/// Sparse solvers behind one interface. The symbolic analysis (ordering, elimination tree, a
+/// preconditioner's pattern) is kept while the pattern stays the same.
 ///  - CHOLMOD (supernodal Cholesky): symmetric positive definite systems.
 ///  - UMFPACK (unsymmetric multifrontal LU): Lagrange multipliers (indefinite) and friction
 ///    (unsymmetric). 2-10× slower and 2.5× the memory of CHOLMOD on SPD systems: use only there.
+///  - PETSc (petsc_solver.cpp, a module loaded on use): Krylov methods with algebraic multigrid,
+///    and MUMPS for saddle-point systems. "Factorise" sets the preconditioner up; "solve" iterates.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "sparse_matrix.hpp"
 
@@ -32,9 +36,26 @@ class LinearSolver {
   virtual int analyses() const = 0;
   /// For a Singular or NotPositiveDefinite status: the equation where it showed, or -1.
   virtual std::int64_t failed_equation() const = 0;
+  /// An iterative solver stops when ||b − A x|| <= rtol ||b||; a direct one ignores it.
+  virtual void set_relative_tolerance(double rtol) {}
+  /// Krylov iterations of every solve so far (0 for a direct solver).
+  virtual long krylov_iterations() const { return 0; }
+};
+
+/// Where the displacement equations of a step sit: what an algebraic multigrid needs to build
+/// the rigid-body modes of the mesh (its near null space) and to keep a node's DOFs together.
+/// Equations beyond these (contact multipliers) have no point.
+struct EquationPoints {
+  int dim = 3;                       ///< displacement components per node
+  std::vector<std::int64_t> node;    ///< per equation: its node (a row of the mesh's nodes)
+  std::vector<int> component;        ///< per equation: 0 .. dim-1
+  std::vector<double> coordinates;   ///< per node row: x, y, z (3 per node, every node)
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 std::unique_ptr<LinearSolver> make_umfpack_solver();
+/// The PETSc solver (petsc_module.cpp loads the module and starts PETSc on first use). Throws
+/// std::runtime_error when this build has no PETSc or the module cannot be loaded.
+std::unique_ptr<LinearSolver> make_petsc_solver(const EquationPoints& points);
 
 }  // namespace inpact::solver

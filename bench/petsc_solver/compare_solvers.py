@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""compare_solvers.py: `inpact run --solver petsc` against `--solver direct` on every contact
+verification deck (decks/contact_verification, each enforcement method its <method> parameter
+takes: direct multipliers, penalty, augmented Lagrange) and the friction decks of decks/contact.
+
+A case passes when both runs completed and every field of every frame agrees to 1e-6 of the
+field's largest value over the step (max |petsc − direct| <= 1e-6 · max |direct|).
+
+  /usr/bin/python3 bench/petsc_solver/compare_solvers.py --inpact build/apps/inpact [--out DIR] [--only NAME...]
+writes DIR/compare.md (a table) and prints it.
+"""
+import argparse, glob, os, subprocess, sys, time
+import h5py, numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+LENGTHS = ("COPEN", "CSLIP1", "CSLIP2")
+METHODS = {"direct": "DIRECT", "penalty": "PENALTY", "auglag": "AUGMENTED LAGRANGE"}
+
+
+def cases():
+    out = []
+    for deck in sorted(glob.glob(os.path.join(ROOT, "decks/contact_verification/*.inp"))):
+        name = os.path.basename(deck)[:-4]
+        if "<method>" in open(deck).read():
+            out += [(f"{name}-{m}", deck, {"method": v}) for m, v in METHODS.items()]
+        else:
+            out.append((name, deck, {}))
+    for deck in sorted(glob.glob(os.path.join(ROOT, "decks/contact/*friction*.inp"))):
+        out.append((os.path.basename(deck)[:-4], deck, {}))
+    return out
+
+
+def run(inpact, deck, job, params, solver, out, reuse=False):
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, job + ".timings")
+    if reuse and os.path.exists(os.path.join(out, job + ".h5")) and os.path.exists(path):
+        timings = dict((k, float(v)) for k, _, v in (l.strip().partition("=") for l in open(path)))
+        with h5py.File(os.path.join(out, job + ".h5")) as f:
+            rc = 0 if f.attrs["status"] == "COMPLETED" else 4
+        return rc, timings.get("total_s", 0.0), timings, [] if rc == 0 else ["(reused: the run stopped)"]
+    cmd = [inpact, "run", deck, "-j", job, "-o", out, "-q", "--solver", solver,
+           "--timings", os.path.join(out, job + ".timings")]
+    for k, v in params.items():
+        cmd += ["-P", f"{k}={v}"]
+    t0 = time.time()
+    rc = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    seconds = time.time() - t0
+    timings = {}
+    path = os.path.join(out, job + ".timings")
+    if os.path.exists(path):
+        for line in open(path):
+            k, _, v = line.strip().partition("=")
+            timings[k] = float(v)
+    return rc.returncode, seconds, timings, rc.stderr.strip().splitlines()[-1:] if rc.returncode else []
+
+
+def fields(path):
+    """{(step, field, frame): data} of a results file, and the Newton iterations of its .sta table."""
+    out = {}
+    with h5py.File(path) as f:
+        for step, g in f["steps"].items():
+            for key, fo in g.get("fieldOutputs", {}).items():
+                data = fo["data"][()]
+                for i in range(data.shape[0]):
+                    out[(step, key, i)] = data[i]
+        iters = int(np.sum(f["status"]["total_iters"])) if "status" in f else -1
+    return out, iters
+
+
+def worst_difference(a, b):
+    """Largest max|a−b| / max|a| over the fields of a, with its field and frame. max|a| is the
+    field's largest value over the step's frames; for the lengths COPEN and CSLIP at least the
+    step's largest |U|: a closed contact's COPEN is round-off of the coordinates (1e-16), and
+    is measured in the units of the motion instead."""
+    if set(a) != set(b):
+        return float("inf"), "structure: " + str(sorted(set(a) ^ set(b))[:3])
+    scale = {}
+    for (step, key, _), x in a.items():
+        if x.size:
+            scale[(step, key)] = max(scale.get((step, key), 0.0), float(np.nanmax(np.abs(x))))
+    worst, where = 0.0, ""
+    for k, x in a.items():
+        y = b[k]
+        if x.shape != y.shape or not np.array_equal(np.isnan(x), np.isnan(y)):
+            return float("inf"), f"{k}: shape or NaN"
+        if not x.size:
+            continue
+        s = scale[(k[0], k[1])]
+        if k[1] in LENGTHS:
+            s = max(s, scale.get((k[0], "U"), 0.0))
+        diff = float(np.nanmax(np.abs(x - y)))
+        rel = diff / s if s > 0 else (0.0 if diff == 0 else float("inf"))
+        if rel > worst:
+            worst, where = rel, f"{k[1]} step {k[0]} frame {k[2]}"
+    return worst, where
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--inpact", required=True)
+    ap.add_argument("--out", default="compare_solvers.out")
+    ap.add_argument("--only", nargs="*")
+    ap.add_argument("--tolerance", type=float, default=1e-6)
+    ap.add_argument("--reuse", action="store_true",
+                    help="compare the results already in --out (times: the runs' total_s) instead of running")
+    a = ap.parse_args()
+    rows = ["| case | direct s | petsc s | Newton direct / petsc | Krylov its | worst rel. diff | where | pass |",
+            "|---|---|---|---|---|---|---|---|"]
+    failed = 0
+    for job, deck, params in cases():
+        if a.only and not any(o in job for o in a.only):
+            continue
+        rc_d, s_d, _, err_d = run(a.inpact, deck, job, params, "direct", os.path.join(a.out, "direct"), a.reuse)
+        rc_p, s_p, t_p, err_p = run(a.inpact, deck, job, params, "petsc", os.path.join(a.out, "petsc"), a.reuse)
+        if rc_d != 0 or rc_p != 0:
+            same = rc_d == rc_p
+            rows.append(f"| {job} | {s_d:.1f} | {s_p:.1f} | exit {rc_d} / {rc_p} | | | {' '.join(err_d + err_p)[:120]} | "
+                        f"{'both stop alike' if same else 'NO'} |")
+            failed += not same
+            print(rows[-1], flush=True)
+            continue
+        fd, it_d = fields(os.path.join(a.out, "direct", job + ".h5"))
+        fp, it_p = fields(os.path.join(a.out, "petsc", job + ".h5"))
+        worst, where = worst_difference(fd, fp)
+        ok = worst <= a.tolerance
+        failed += not ok
+        rows.append(f"| {job} | {s_d:.1f} | {s_p:.1f} | {it_d} / {it_p} | {int(t_p.get('krylov_iterations', 0))} | "
+                    f"{worst:.2e} | {where} | {'yes' if ok else 'NO'} |")
+        print(rows[-1], flush=True)
+    text = "\n".join(rows) + "\n"
+    with open(os.path.join(a.out, "compare.md"), "w") as f:
+        f.write(text)
+    print(text)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,76 @@
+#include "linear_solver_choice.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "linear/petsc_module.hpp"
+
+namespace inpact::solver {
+
+std::optional<SolverRequest> parse_solver_request(std::string_view text) {
+  if (text == "direct") return SolverRequest::Direct;
+  if (text == "petsc") return SolverRequest::Petsc;
+  if (text == "auto") return SolverRequest::Auto;
+  return std::nullopt;
+}
+
+const char* request_name(SolverRequest request) {
+  switch (request) {
+    case SolverRequest::Direct: return "direct";
+    case SolverRequest::Petsc: return "petsc";
+    case SolverRequest::Auto: return "auto";
+  }
+  return "?";
+}
+
+const char* kind_name(SolverKind kind) { return kind == SolverKind::Petsc ? "petsc" : "direct"; }
+
+/// Nodes × DOFs per node (the first element's type sets them for the whole model).
+static std::int64_t model_dofs(const model::Model& model) {
+  const auto& el = model.mesh.elements;
+  const int dim = el.size() > 0 ? model::element_type(el.type[0]).dim : 3;
+  return static_cast<std::int64_t>(model.mesh.nodes.size()) * dim;
+}
+
+SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model) {
+  SolverChoice choice;
+  choice.requested = request;
+  choice.model_dofs = model_dofs(model);
+  if (request == SolverRequest::Petsc && !petsc_built())
+    throw std::invalid_argument("--solver petsc: this inpact was built without PETSc "
+                                "(PETSc, pkg-config PETSc, was not found when it was configured, or INPACT_PETSC=OFF)");
+  const bool petsc = request == SolverRequest::Petsc ||
+                     (request == SolverRequest::Auto && petsc_built() && choice.model_dofs >= kPetscFromDofs);
+  choice.kind = petsc ? SolverKind::Petsc : SolverKind::Direct;
+  return choice;
+}
+
+SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model) {
+  const auto parsed = parse_solver_request(request);
+  if (!parsed) throw std::invalid_argument(fmt::format("--solver {}: expected direct, petsc or auto", request));
+  return resolve_linear_solver(*parsed, model);
+}
+
+std::string describe(const SolverChoice& c) {
+  const std::string what = c.kind == SolverKind::Petsc
+                               ? "petsc (CG or GMRES with GAMG; MUMPS for contact multipliers)"
+                               : "direct (CHOLMOD; UMFPACK for contact multipliers and friction)";
+  std::string why = "requested";
+  if (c.requested == SolverRequest::Auto)
+    why = !petsc_built() ? "auto: built without PETSc"
+                         : fmt::format("auto: {} DOF {} {}", c.model_dofs, c.kind == SolverKind::Petsc ? ">=" : "<",
+                                       kPetscFromDofs);
+  return fmt::format("LINEAR SOLVER: {}; {}", what, why);
+}
+
+void start_linear_solver(const SolverChoice& choice) {
+  if (choice.kind == SolverKind::Petsc) start_petsc();
+}
+
+std::string petsc_availability() {
+  if (!petsc_built()) return "PETSc: not built (--solver petsc unavailable)";
+  return petsc_build_version() + " (--solver petsc|auto available)";
+}
+
+}  // namespace inpact::solver
