@@ -18,7 +18,6 @@ time (user + system, medians of RUNS runs).
 Writes bench/results/plastic_indentation.md and .json and prints the table.
 """
 import argparse
-import json
 import os
 import re
 import statistics
@@ -32,6 +31,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "bench", "contact_ccx"))
 sys.path.insert(0, os.path.join(ROOT, "decks", "contact_verification"))
 import ccx_bench  # noqa: E402
+import results  # noqa: E402
 import gen_indentation  # noqa: E402
 import slab  # noqa: E402
 
@@ -143,14 +143,7 @@ def main():
             "Forces per unit thickness at the full depth 0.1; diff: the largest difference over the "
             "increment ends both solvers have, relative to ccx's final force. Load average at the start: "
             f"{os.getloadavg()[0]:.1f}.\n\n" + table(rows) + "\n")
-    res = os.path.join(ROOT, "bench", "results")
-    os.makedirs(res, exist_ok=True)
-    with open(os.path.join(res, "plastic_indentation.md"), "w") as f:
-        f.write(text)
-    with open(os.path.join(res, "plastic_indentation.json"), "w") as f:
-        json.dump(rows, f, indent=1)
-    print(text)
-
+    results.write("plastic_indentation", text, rows)
 
 if __name__ == "__main__":
     main()

@@ -14,7 +14,6 @@ the most iterations (from `inpact run -v`), which shows Newton's rate.
 Writes bench/results/plastic_cylinder.md and .json and prints the table.
 """
 import argparse
-import json
 import math
 import os
 import re
@@ -28,6 +27,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "bench", "contact_ccx"))
 sys.path.insert(0, os.path.join(ROOT, "decks", "verification"))
 import ccx_bench  # noqa: E402
+import results  # noqa: E402
 import gen_verification as gv  # noqa: E402
 
 MESHES = [(12, 4), (24, 8), (48, 16)]
@@ -150,14 +150,7 @@ def main():
     for r in rows:
         lines.append(f"- {r['mesh']}: " + ", ".join(f"{v:.2e}" for v in r["inpact"].get("residuals", [])))
     text = "\n".join(lines) + "\n"
-    res = os.path.join(ROOT, "bench", "results")
-    os.makedirs(res, exist_ok=True)
-    with open(os.path.join(res, "plastic_cylinder.md"), "w") as f:
-        f.write(text)
-    with open(os.path.join(res, "plastic_cylinder.json"), "w") as f:
-        json.dump(rows, f, indent=1)
-    print(text)
-
+    results.write("plastic_cylinder", text, rows)
 
 if __name__ == "__main__":
     main()
