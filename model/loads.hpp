@@ -59,17 +59,24 @@ struct DloadEntry {
     Pressure,  ///< P (2D: on the element's faces given by `face`) / Pn on face n
     Gravity,     ///< GRAV: magnitude × direction × density
     BodyForce,   ///< BX, BY, BZ: force per unit volume in one direction
-    Centrifugal  ///< CENTRIF: density × ω² (the magnitude) × the distance vector from the axis
+    Centrifugal,  ///< CENTRIF: density × ω² (the magnitude) × the distance vector from the axis
+    RotaryAcceleration  ///< ROTA: the d'Alembert force −density × α n × r of a rotary acceleration α about n
   };
   Kind kind = Kind::Pressure;
   std::string target;
   std::vector<std::int32_t> elements;  ///< rows
   std::vector<std::uint8_t> faces;     ///< Pressure: face per element (0 = S1)
   double magnitude = 0.0;
-  std::array<double, 3> direction{0, 0, 0};  ///< Gravity; BodyForce (unit axis); Centrifugal: the rotation axis (unit)
-  std::array<double, 3> point{0, 0, 0};      ///< Centrifugal: a point on the rotation axis
+  std::array<double, 3> direction{0, 0, 0};  ///< Gravity; BodyForce (unit axis); CENTRIF, ROTA: the rotation axis (unit)
+  std::array<double, 3> point{0, 0, 0};      ///< CENTRIF, ROTA: a point on the rotation axis
   SourceLoc loc;
 };
+
+/// GRAV, CENTRIF and ROTA are accelerations: their force is the magnitude times the density.
+inline bool scales_with_density(DloadEntry::Kind kind) {
+  return kind == DloadEntry::Kind::Gravity || kind == DloadEntry::Kind::Centrifugal ||
+         kind == DloadEntry::Kind::RotaryAcceleration;
+}
 
 struct DloadBlock {
   Op op = Op::Mod;

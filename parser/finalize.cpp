@@ -203,15 +203,21 @@ void check_amplitude(const model::Model& m, Diagnostics& diags, const std::strin
   if (!name.empty()) check_defined(diags, m.amplitudes, name, loc, keyword, "amplitude");
 }
 
-/// GRAV and CENTRIF loads act through the density: every element they load needs a material
+/// GRAV, CENTRIF and ROTA loads act through the density: every element they load needs a material
 /// with *DENSITY (without one the load would silently be zero).
+/// The *DLOAD label of a load that acts through the density.
+const char* density_load_label(model::DloadEntry::Kind kind) {
+  if (kind == model::DloadEntry::Kind::Gravity) return "GRAV";
+  return kind == model::DloadEntry::Kind::Centrifugal ? "CENTRIF" : "ROTA";
+}
+
 void check_density_loads(const model::Model& m, Diagnostics& diags) {
   std::vector<const model::Material*> material_of;  // element row → material, built on first need
   for (const auto& step : m.steps)
     for (const auto& b : step.dloads)
       for (const auto& e : b.entries) {
-        const bool gravity = e.kind == model::DloadEntry::Kind::Gravity;
-        if (!gravity && e.kind != model::DloadEntry::Kind::Centrifugal) continue;
+        if (!model::scales_with_density(e.kind)) continue;
+        const char* label = density_load_label(e.kind);
         if (material_of.empty()) {
           material_of.assign(m.mesh.elements.size(), nullptr);
           for (const auto& sec : m.mesh.sections) {
@@ -224,7 +230,7 @@ void check_density_loads(const model::Model& m, Diagnostics& diags) {
         for (std::int32_t row : e.elements)
           if (const model::Material* mat = material_of[row]; mat && !mat->density) {
             diags.error(e.loc, "*DLOAD", fmt::format("{} needs the density of material '{}' (add *DENSITY to it)",
-                                                     gravity ? "GRAV" : "CENTRIF", mat->name));
+                                                     label, mat->name));
             break;
           }
       }

@@ -246,11 +246,46 @@ bool centrifugal_axis_fits(KeywordContext& ctx, const Field& at, const model::Dl
   return false;
 }
 
+/// The axis of CENTRIF and ROTA: `element|elset, LABEL, magnitude, x0, y0, z0, n1, n2, n3`.
+bool read_rotation_axis(KeywordContext& ctx, const std::vector<Field>& f, const Line& line, const char* what,
+                        model::DloadEntry& e) {
+  const std::string expected =
+      fmt::format("element or element set, {}, axis point x, y, z, axis direction x, y, z", what);
+  return ctx.check_count(f, line, 9, 9, expected.c_str()) && read_vector(ctx, f, 3, "rotation axis point", e.point) &&
+         read_vector(ctx, f, 6, "rotation axis direction", e.direction) &&
+         normalize(ctx, f[6], "rotation axis direction", e.direction);
+}
+
+/// A rotary acceleration keeps a plane model in its plane only about an axis normal to it, and
+/// an axisymmetric model has no circumferential displacement to carry it (Abaqus: ROTA is for
+/// two- and three-dimensional models).
+bool rotary_axis_fits(KeywordContext& ctx, const Field& at, const model::DloadEntry& e,
+                      const std::vector<std::int32_t>& elements) {
+  const auto& el = ctx.mesh().elements;
+  bool axisymmetric = false, planar = false;
+  for (std::int32_t row : elements) {
+    const auto& type = model::element_type(el.type[row]);
+    axisymmetric |= type.family == model::ElementFamily::Axisymmetric;
+    planar |= type.dim == 2 && type.family != model::ElementFamily::Axisymmetric;
+  }
+  if (axisymmetric) {
+    ctx.error(at.loc, "ROTA is not available for axisymmetric elements (they carry no circumferential displacement)");
+    return false;
+  }
+  if (planar && (e.direction[0] != 0.0 || e.direction[1] != 0.0)) {
+    ctx.error(at.loc, "on plane elements the axis of ROTA must be normal to the plane (direction 0, 0, 1)");
+    return false;
+  }
+  return true;
+}
+
 // *DLOAD, OP=, AMPLITUDE=: `element|elset, Pn, p` (pressure on face n, positive into the
 // element), `element|elset, GRAV, g, n1, n2, n3` (gravity: g along the direction n, which is
 // normalised; needs *DENSITY), `element|elset, CENTRIF, ω², x0, y0, z0, n1, n2, n3` (the
 // centrifugal force ρ ω² r of a rotation about the axis through x0 along n; needs *DENSITY),
-// `element|elset, BX|BY|BZ, b` (force per unit volume).
+// `element|elset, ROTA, α, x0, y0, z0, n1, n2, n3` (the rotary acceleration α about that axis;
+// its d'Alembert force −ρ α n × r; needs *DENSITY), `element|elset, BX|BY|BZ, b` (force per unit
+// volume).
 void dload(KeywordContext& ctx) {
   if (!data_or_new(ctx)) return;
   model::DloadBlock b = dload_block(ctx);
@@ -282,23 +317,21 @@ void dload(KeywordContext& ctx) {
         continue;
       e.kind = model::DloadEntry::Kind::Gravity;
     } else if (label == "CENTRIF") {
-      if (!ctx.check_count(f, line, 9, 9,
-                           "element or element set, CENTRIF, omega squared, axis point x, y, z, axis direction x, y, z"))
-        continue;
-      if (!read_vector(ctx, f, 3, "rotation axis point", e.point) ||
-          !read_vector(ctx, f, 6, "rotation axis direction", e.direction) ||
-          !normalize(ctx, f[6], "rotation axis direction", e.direction))
-        continue;
+      if (!read_rotation_axis(ctx, f, line, "CENTRIF, omega squared", e)) continue;
       if (!centrifugal_axis_fits(ctx, f[6], e, *elements)) continue;
       e.kind = model::DloadEntry::Kind::Centrifugal;
+    } else if (label == "ROTA") {
+      if (!read_rotation_axis(ctx, f, line, "ROTA, rotary acceleration", e)) continue;
+      if (!rotary_axis_fits(ctx, f[6], e, *elements)) continue;
+      e.kind = model::DloadEntry::Kind::RotaryAcceleration;
     } else if (label == "BX" || label == "BY" || label == "BZ") {
       if (!ctx.check_count(f, line, 3, 3, "element or element set, BX|BY|BZ, magnitude")) continue;
       e.kind = model::DloadEntry::Kind::BodyForce;
       e.direction[label[1] - 'X'] = 1.0;
     } else {
-      std::vector<std::string> names{"GRAV", "CENTRIF", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6"};
+      std::vector<std::string> names{"GRAV", "CENTRIF", "ROTA", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6"};
       const std::string guess = did_you_mean(label, names);
-      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, CENTRIF, BX, BY, BZ){}",
+      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, CENTRIF, ROTA, BX, BY, BZ){}",
                                       f[1].text, guess.empty() ? "" : fmt::format("; did you mean {}?", guess)));
       continue;
     }

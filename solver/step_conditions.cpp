@@ -21,6 +21,7 @@ int dload_key(const model::DloadEntry& e, std::size_t i) {
                                     e.direction.begin());
     case model::DloadEntry::Kind::Gravity: return 200;
     case model::DloadEntry::Kind::Centrifugal: return 300;
+    case model::DloadEntry::Kind::RotaryAcceleration: return 400;
   }
   return 0;
 }
@@ -78,8 +79,7 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
       for (std::size_t i = 0; i < e.elements.size(); ++i) {
         const Key key{e.elements[i], dload_key(e, i), b.surface_load};
         double magnitude = e.magnitude;
-        if (e.kind == model::DloadEntry::Kind::Gravity || e.kind == model::DloadEntry::Kind::Centrifugal)
-          magnitude *= am.elements[e.elements[i]].density;
+        if (model::scales_with_density(e.kind)) magnitude *= am.elements[e.elements[i]].density;
         target_.dload[key] = {magnitude, e.direction, e.point, b.amplitude, magnitude};
       }
   }
@@ -99,14 +99,14 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
 }
 
 void StepConditions::add_dload_shape(const Key& key) {
-  if (dload_shape_.count(key) || centrifugal_moments_.count(key)) return;
+  if (dload_shape_.count(key) || rotation_moments_.count(key)) return;
   const ElementSetup& setup = am_.elements[key.element];
   if (setup.type->family == model::ElementFamily::Spring) return;  // springs have no mass: GRAV, CENTRIF add nothing
   const auto coords = am_.coords(key.element);
-  if (key.key == 300) {
+  if (key.key == 300 || key.key == 400) {
     const auto moments = elements::volume_moments(*setup.type, coords, setup.section);
     const auto nodes = am_.model->mesh.elements.nodes_of(key.element);
-    auto& m = centrifugal_moments_[key];
+    auto& m = rotation_moments_[key];
     for (std::size_t a = 0; a < nodes.size(); ++a) m.emplace_back(nodes[a], moments[a]);
     return;
   }
@@ -227,9 +227,9 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
     const double v = value_at(prev, target, t);
     if (v == 0.0) return;
     const auto& dir = (target ? target : prev)->direction;
-    if (k.key == 300) {
-      // (a CENTRIF redefined with another axis takes the new axis for the whole step)
-      add_centrifugal_force(k, v, dir, (target ? target : prev)->point, f);
+    if (k.key == 300 || k.key == 400) {
+      // (a CENTRIF or ROTA redefined with another axis takes the new axis for the whole step)
+      add_rotation_force(k, v, dir, (target ? target : prev)->point, f);
       return;
     }
     if (k.key < 100 && !u.empty()) {  // follower pressure
@@ -252,16 +252,27 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
   }
 }
 
-/// f_a = ρω² (I − nnᵀ)(∫N_a x dV − x0 ∫N_a dV): the centrifugal force ρω² r, r the distance
-/// vector from the axis, integrated exactly (it is linear in x). On the reference geometry: the
-/// stiffening or softening of the load by the displacement (spin softening) is not included.
-void StepConditions::add_centrifugal_force(const Key& key, double v, const std::array<double, 3>& axis,
-                                           const std::array<double, 3>& point, std::span<double> f) const {
-  for (const auto& [node, m] : centrifugal_moments_.at(key)) {
+/// With r_a = ∫N_a x dV − x0 ∫N_a dV (both loads are linear in x, so integrated exactly):
+///  - CENTRIF, f_a = ρω² (I − nnᵀ) r_a: the centrifugal force ρω² times the distance vector from
+///    the axis;
+///  - ROTA, f_a = −ρα n × r_a: the d'Alembert force of the rotary acceleration α about n, as
+///    the centrifugal force is the d'Alembert force of ω (Abaqus Theory Manual, "Centrifugal,
+///    Coriolis and rotary acceleration loads").
+/// On the reference geometry: the change of the load with the displacement (spin softening) is
+/// not included.
+void StepConditions::add_rotation_force(const Key& key, double v, const std::array<double, 3>& axis,
+                                        const std::array<double, 3>& point, std::span<double> f) const {
+  for (const auto& [node, m] : rotation_moments_.at(key)) {
     std::array<double, 3> r{};
     for (int i = 0; i < 3; ++i) r[i] = m.first[i] - point[i] * m.volume;
-    const double along = r[0] * axis[0] + r[1] * axis[1] + r[2] * axis[2];
-    for (int i = 0; i < am_.dim; ++i) f[static_cast<std::int64_t>(node) * am_.dim + i] += v * (r[i] - along * axis[i]);
+    std::array<double, 3> load{};
+    if (key.key == 300) {
+      const double along = r[0] * axis[0] + r[1] * axis[1] + r[2] * axis[2];
+      for (int i = 0; i < 3; ++i) load[i] = r[i] - along * axis[i];
+    } else {
+      load = {-(axis[1] * r[2] - axis[2] * r[1]), -(axis[2] * r[0] - axis[0] * r[2]), -(axis[0] * r[1] - axis[1] * r[0])};
+    }
+    for (int i = 0; i < am_.dim; ++i) f[static_cast<std::int64_t>(node) * am_.dim + i] += v * load[i];
   }
 }
 

@@ -39,8 +39,8 @@ struct ConditionHistory {
   std::map<std::int64_t, Value> boundary;  ///< key: global DOF
   std::map<std::int64_t, Value> cload;     ///< key: global DOF
   /// Distributed loads by (element row, load key): key = face (0..5) for pressure, 100 + axis
-  /// for body forces, 200 for gravity, 300 for CENTRIF; the value holds the magnitude (with the
-  /// density for GRAV and CENTRIF).
+  /// for body forces, 200 for gravity, 300 for CENTRIF, 400 for ROTA; the value holds the
+  /// magnitude (with the density for GRAV, CENTRIF and ROTA).
   struct DloadKey {
     std::int32_t element;
     int key;
@@ -49,8 +49,8 @@ struct ConditionHistory {
   };
   struct DloadValue {
     double value = 0.0;
-    std::array<double, 3> direction{0, 0, 0};  ///< GRAV's direction, CENTRIF's axis
-    std::array<double, 3> point{0, 0, 0};      ///< CENTRIF: a point on the axis
+    std::array<double, 3> direction{0, 0, 0};  ///< GRAV's direction, CENTRIF's and ROTA's axis
+    std::array<double, 3> point{0, 0, 0};      ///< CENTRIF, ROTA: a point on the axis
     std::string amplitude;
     double end_value = 0.0;
   };
@@ -118,11 +118,12 @@ class StepConditions {
   std::vector<double> initial_temperature_;
   /// Global nodal forces of each distributed load at unit magnitude (reference geometry).
   std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int64_t, double>>> dload_shape_;
-  /// CENTRIF's loads per element: each node's volume moments (reference geometry), folded with
-  /// the axis when evaluated (centrifugal_force).
-  std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int32_t, elements::VolumeMoments>>> centrifugal_moments_;
-  /// Adds v × the centrifugal load of the element of `key` about `axis` through `point` to f.
-  void add_centrifugal_force(const ConditionHistory::DloadKey& key, double v, const std::array<double, 3>& axis,
+  /// CENTRIF's and ROTA's loads per element: each node's volume moments (reference geometry),
+  /// folded with the axis when evaluated (add_rotation_force).
+  std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int32_t, elements::VolumeMoments>>> rotation_moments_;
+  /// Adds v × the centrifugal (CENTRIF) or rotary acceleration (ROTA) load of the element of
+  /// `key` about `axis` through `point` to f.
+  void add_rotation_force(const ConditionHistory::DloadKey& key, double v, const std::array<double, 3>& axis,
                              const std::array<double, 3>& point, std::span<double> f) const;
 };
 

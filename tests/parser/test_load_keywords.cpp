@@ -151,6 +151,24 @@ TEST(Loads, CentrifugalLoadNeedsADensityAnAxisAndAllNineFields) {
       << short_line.report();
 }
 
+TEST(Loads, RotaryAccelerationReadsItsAxisAndNeedsADensity) {
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck("*DENSITY\n7.8e-9\n*STEP\n*STATIC\n*DLOAD\nCUBE, ROTA, 50., 1, 2, 0, 0, 0, 2\n"
+                                  "*END STEP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& e = r.model.steps[0].dloads[0].entries[0];
+  EXPECT_EQ(e.kind, model::DloadEntry::Kind::RotaryAcceleration);
+  EXPECT_EQ(e.magnitude, 50.0);
+  EXPECT_EQ(e.point, (std::array<double, 3>{1, 2, 0}));
+  EXPECT_EQ(e.direction, (std::array<double, 3>{0, 0, 1}));
+  auto no_density = dir.read(cube_step("", "*DLOAD\nCUBE, ROTA, 50., 0, 0, 0, 0, 0, 1\n"));
+  EXPECT_TRUE(has_diagnostic(no_density, "ROTA needs the density of material 'STEEL' (add *DENSITY to it)"))
+      << no_density.report();
+  auto short_line = dir.read(cube_step("", "*DLOAD\nCUBE, ROTA, 50., 0, 0, 0\n"));
+  EXPECT_TRUE(has_diagnostic(short_line, "ROTA, rotary acceleration, axis point x, y, z, axis direction x, y, z"))
+      << short_line.report();
+}
+
 TEST(Loads, DsloadPutsThePressureOnTheSurfaceFaces) {
   DeckDir dir;
   auto r = dir.read(cube_step("", "*DSLOAD, AMPLITUDE=A\nTOP, P, 2.5\n*AMPLITUDE, NAME=A\n0,0,1,1\n"));
@@ -175,7 +193,7 @@ TEST(Loads, PressureLabelsAreCheckedAgainstTheElementFaces) {
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:7: error: *DLOAD: element 1 (C3D8) has no face 7: its pressure labels are P1..P6"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:25:7: error: *DLOAD: load type 'GRV' is not supported (inpact supports Pn, "
-                                "GRAV, CENTRIF, BX, BY, BZ); did you mean GRAV?"))
+                                "GRAV, CENTRIF, ROTA, BX, BY, BZ); did you mean GRAV?"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:27:1: error: *DSLOAD: surface 'TOPP' is not defined (did you mean 'TOP'?)"))
       << r.report();
