@@ -10,6 +10,7 @@
 #include "loads.hpp"
 #include "material.hpp"
 #include "mesh.hpp"
+#include "rigid_body.hpp"
 #include "source_loc.hpp"
 #include "step.hpp"
 
@@ -30,6 +31,7 @@ struct Model {
   std::vector<Equation> equations;
   std::vector<Tie> ties;  ///< *TIE, one per data line, in deck order
   std::vector<PretensionSection> pretension_sections;  ///< in deck order
+  std::vector<RigidBody> rigid_bodies;                 ///< *RIGID BODY, in deck order
 
   // Initial (model-level) conditions, in force from the first step on.
   std::vector<BoundaryBlock> boundaries;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "pretension_split.hpp"
+#include "rigid_bodies.hpp"
 #include "text.hpp"
 
 namespace inpact::parser {
@@ -282,6 +283,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   check_ties(m, diags);
   check_steps(m, diags);
   split_pretension_sections(m, diags);
+  finalize_rigid_bodies(m, diags);
   switch_on_nlgeom_for_hyperelasticity(m);
 }
 

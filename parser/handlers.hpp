@@ -26,5 +26,6 @@ void add_combined_hardening_keywords(std::vector<KeywordSpec>& table);  // kw_co
 void combined_plastic(KeywordContext& ctx, model::Plastic& p);
 void add_pretension_keywords(std::vector<KeywordSpec>& table);  // kw_pretension.cpp
 void add_spring_keywords(std::vector<KeywordSpec>& table);    // kw_spring.cpp
+void add_rigid_body_keywords(std::vector<KeywordSpec>& table);  // kw_rigid_body.cpp
 
 }  // namespace inpact::parser

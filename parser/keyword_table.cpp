@@ -23,6 +23,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_combined_hardening_keywords(t);
     add_pretension_keywords(t);
     add_spring_keywords(t);
+    add_rigid_body_keywords(t);
     return t;
   }();
   return table;
@@ -38,7 +39,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
       "BEAMGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
       "TRANSFORM", "COUPLING", "KINEMATIC", "DISTRIBUTING", "MPC",
-      "RIGIDBODY", "MASS", "DASHPOT", "CONNECTORSECTION",
+      "MASS", "DASHPOT", "CONNECTORSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
   return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);
 }

@@ -171,7 +171,11 @@ void cload(KeywordContext& ctx) {
     auto dof = ctx.dof(f[1]);
     auto magnitude = ctx.real(f[2], "magnitude");
     if (!nodes || !dof || !magnitude) continue;
-    if (*dof > 3)
+    const auto& bodies = ctx.model().rigid_bodies;
+    const bool reference_nodes = std::all_of(nodes->begin(), nodes->end(), [&](std::int32_t n) {
+      return model::rigid_body_of_ref_node(bodies, n) != nullptr;
+    });
+    if (*dof > 3 && !reference_nodes)
       ctx.warning(f[1].loc, fmt::format("DOF {} is a rotation: inpact's solid and plane elements have none, so "
                                         "this moment acts on nothing", *dof));
     b.entries.push_back({std::string(f[0].text), std::move(*nodes), *dof, *magnitude, line.loc});

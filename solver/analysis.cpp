@@ -37,7 +37,7 @@ struct StepRun {
         number(static_cast<int>(index + 1)),
         start_time(total_time),
         conditions(am, step, history, total_time),
-        dofs(DofMap::build(am, conditions.prescribed())),
+        dofs(DofMap::build(am, conditions.prescribed(), step.nlgeom)),
         assembler(am, dofs, threads, &material_states),
         controls(solution_controls(step)),
         output(am, index),
@@ -173,7 +173,8 @@ NewtonOutcome run_attempt(const AnalysisModel& am, StepRun& run, const Increment
                     .force_history = force,
                     .at = {run.number, inc.increment(), inc.attempt()},
                     .keep_points = run.output.points_due(inc.increment(), inc.end(), inc.ends_step()),
-                    .stabilization = run.stabilization ? run.stabilization->for_attempt(inc.size(), trial.u) : nullptr};
+                    .stabilization = run.stabilization ? run.stabilization->for_attempt(inc.size(), trial.u) : nullptr,
+                    .rotating_dofs = run.dofs.has_finite_rotations() ? &run.dofs : nullptr};
   if (run.contact && run.contact->has_damping())  // contact stabilization: this attempt's damping
     run.contact->set_damping(run.conditions, trial.u, inc.end(), inc.size(), inc.increment(),
                              run.step.static_procedure->time_period);

@@ -163,6 +163,15 @@ void warn_about_locking(AnalysisModel& am) {
 
 }  // namespace
 
+std::int64_t AnalysisModel::dof_index(std::int32_t node, int dof) const {
+  if (dof >= 1 && dof <= dim) return static_cast<std::int64_t>(node) * dim + dof - 1;
+  const std::int32_t rot = rotation_node_of.empty() ? -1 : rotation_node_of[static_cast<std::size_t>(node)];
+  if (rot < 0) return -1;
+  const int component = dim == 3 ? dof - 4 : dof == 6 ? 0 : -1;  // 2D: the in-plane rotation is DOF 6
+  if (component < 0 || component >= dim) return -1;
+  return static_cast<std::int64_t>(rot) * dim + component;
+}
+
 AnalysisModel build_analysis_model(const model::Model& m) {
   AnalysisModel am;
   am.model = &m;
@@ -213,6 +222,8 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   }
   for (auto& w : contact::tie_warnings(m, am.ties)) am.warnings.push_back(std::move(w));
 
+  am.rotation_node_of.assign(m.mesh.nodes.size(), -1);
+  for (const model::RigidBody& b : m.rigid_bodies) am.rotation_node_of[static_cast<std::size_t>(b.ref_node)] = b.rot_node;
   assign_materials(m, am);
   setup_line_elements(m, am);
   check_initial_plastic_strains(m, am);

@@ -47,8 +47,16 @@ struct AnalysisModel {
   /// Warnings about the model as given (e.g. volumetric locking), for `check` and `run`.
   std::vector<std::string> warnings;
 
+  /// Per node row: the rotation node of the rigid body it is the reference node of, else −1
+  /// (model/rigid_body.hpp). Only these nodes have rotations.
+  std::vector<std::int32_t> rotation_node_of;
+
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }
+  /// The global DOF of a node's Abaqus DOF `dof` (1-based): a translation 1..dim, or a rotation
+  /// of a rigid body's reference node (4–6 in 3D, 6 in 2D: the rotation node's translations);
+  /// −1 when the node has no such DOF.
+  std::int64_t dof_index(std::int32_t node, int dof) const;
   /// Reference coordinates of element e's nodes.
   std::vector<elements::Vec3> coords(std::size_t e) const;
 };

@@ -5,8 +5,23 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "rigid_motion.hpp"
 
 namespace inpact::solver {
+
+namespace {
+
+using Dependents = std::map<std::int64_t, std::vector<MasterTerm>>;
+
+/// The rotation vector a rotation node holds (θ3 in [0] in 2D).
+Vec3d rotation_of(const std::vector<double>& u, std::int32_t rot, int dim) {
+  Vec3d theta{0, 0, 0};
+  for (int k = 0; k < dim; ++k) theta[k] = u[static_cast<std::size_t>(rot) * dim + k];
+  if (dim == 2) theta[1] = 0.0;  // a 2D rotation node's second DOF is not a rotation
+  return theta;
+}
+
+}  // namespace
 
 std::span<const MasterTerm> DofMap::masters(std::int64_t d) const {
   return {master_.data() + master_ptr_[d], static_cast<std::size_t>(master_ptr_[d + 1] - master_ptr_[d])};
@@ -18,6 +33,15 @@ void DofMap::update_dependent(std::vector<double>& u) const {
     double v = 0.0;
     for (const auto& m : masters(d)) v += m.weight * u[m.dof];
     u[d] = v;
+  }
+  if (!has_finite_rotations()) return;
+  // u = u_R + (R(θ) − I) r is not linear in θ: the weights are its derivatives only.
+  const int dim = dim_;
+  for (const RigidNode& n : rigid_) {
+    const RigidMotion motion = rigid_motion(rotation_of(u, n.rot, dim), n.r, dim, true);
+    for (int c = 0; c < dim; ++c)
+      if (kind_[static_cast<std::int64_t>(n.node) * dim + c] == Kind::Dependent)
+        u[static_cast<std::int64_t>(n.node) * dim + c] = u[static_cast<std::int64_t>(n.ref) * dim + c] + motion.offset[c];
   }
 }
 
@@ -63,49 +87,46 @@ void add_pretension_dependents(const AnalysisModel& am, std::vector<DofMap::Kind
   }
 }
 
-}  // namespace
+/// The nodes that follow rigid bodies, with their offsets from the reference nodes.
+std::vector<DofMap::RigidNode> rigid_nodes(const AnalysisModel& am) {
+  const auto& coords = am.model->mesh.nodes.coords;
+  std::vector<DofMap::RigidNode> out;
+  for (const model::RigidBody& b : am.model->rigid_bodies)
+    for (std::int32_t n : b.nodes) {
+      std::array<double, 3> r;
+      for (int c = 0; c < 3; ++c) r[c] = coords[n][c] - coords[b.ref_node][c];
+      out.push_back({n, b.ref_node, b.rot_node, r});
+    }
+  return out;
+}
 
-DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed) {
+/// *RIGID BODY: u_c = u_R,c + Σ_k ∂(R r)_c/∂θ_k θ_k (small rotations: exactly the motion). Every
+/// rotation term is kept, zero weights too, so that finite rotations keep the same masters.
+void add_rigid_dependents(const AnalysisModel& am, std::span<const DofMap::RigidNode> nodes, const std::vector<double>* u,
+                          bool finite, std::vector<DofMap::Kind>& kind, Dependents& dependent) {
   const model::Model& m = *am.model;
-  const std::int64_t n = static_cast<std::int64_t>(am.n_dof());
-  DofMap map;
-  map.kind_.assign(n, Kind::Unused);
-  // A DOF is used when an element connects its node.
-  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
-    for (std::int32_t node : m.mesh.elements.nodes_of(e))
-      for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(node) * am.dim + c] = Kind::Free;
-  for (const model::PretensionSection& s : m.pretension_sections)
-    map.kind_[static_cast<std::int64_t>(s.node) * am.dim] = Kind::Free;
-  for (std::int64_t d = 0; d < n; ++d)
-    if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
-
-  // *EQUATION: the first term's DOF is eliminated: u0 = −Σ_{k≥1} (c_k / c_0) u_k.
-  std::map<std::int64_t, std::vector<MasterTerm>> dependent;
-  auto dof_of = [&](const model::Equation::Term& t) { return static_cast<std::int64_t>(t.node) * am.dim + (t.dof - 1); };
-  for (const auto& eq : m.equations) {
-    const std::string where = m.sources.describe(eq.loc);
-    for (const auto& t : eq.terms)
-      if (t.dof > am.dim)
-        throw AnalysisError(fmt::format("{}: error: *EQUATION: degree of freedom {} does not exist in this model (nodes have {})",
-                                        where, t.dof, am.dim));
-    const std::int64_t d0 = dof_of(eq.terms[0]);
-    if (map.kind_[d0] == Kind::Prescribed)
-      throw AnalysisError(fmt::format("{}: error: *EQUATION: the first (eliminated) degree of freedom, node {} dof {}, also "
-                                      "has a boundary condition; put another DOF first", where,
-                                      m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
-    if (dependent.count(d0))
-      throw AnalysisError(fmt::format("{}: error: *EQUATION: node {} dof {} is already eliminated by another equation", where,
-                                      m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
-    std::vector<MasterTerm> terms;
-    for (std::size_t k = 1; k < eq.terms.size(); ++k)
-      terms.push_back({dof_of(eq.terms[k]), -eq.terms[k].coefficient / eq.terms[0].coefficient});
-    dependent[d0] = std::move(terms);
-    map.kind_[d0] = Kind::Dependent;
+  const int n_rot = am.dim == 3 ? 3 : 1;
+  for (const DofMap::RigidNode& n : nodes) {
+    const Vec3d theta = u ? rotation_of(*u, n.rot, am.dim) : Vec3d{0, 0, 0};
+    const RigidMotion motion = rigid_motion(theta, n.r, am.dim, finite);
+    for (int c = 0; c < am.dim; ++c) {
+      const std::int64_t d = static_cast<std::int64_t>(n.node) * am.dim + c;
+      if (kind[d] == DofMap::Kind::Prescribed || dependent.count(d))
+        throw AnalysisError(fmt::format("error: *RIGID BODY: node {} follows a rigid body and also has a boundary "
+                                        "condition or another constraint; constrain the body at its reference node {}",
+                                        m.mesh.nodes.labels[n.node], m.mesh.nodes.labels[n.ref]));
+      std::vector<MasterTerm> terms{{static_cast<std::int64_t>(n.ref) * am.dim + c, 1.0}};
+      for (int k = 0; k < n_rot; ++k)
+        terms.push_back({static_cast<std::int64_t>(n.rot) * am.dim + k, motion.d_dtheta[k][c]});
+      dependent[d] = std::move(terms);
+      kind[d] = DofMap::Kind::Dependent;
+    }
   }
-  add_tie_dependents(am, map.kind_, dependent);
-  add_pretension_dependents(am, map.kind_, dependent);
-  // Substitute dependents into each other until every term is independent (a tie's master node
-  // that is itself tied elsewhere, an equation on a tied node: chains resolve here).
+}
+
+/// Substitutes dependents into each other until every term is independent (a tie's master node
+/// that is itself tied elsewhere, an equation on a tied node: chains resolve here).
+void substitute_chains(Dependents& dependent) {
   for (auto& [d, terms] : dependent) {
     for (int pass = 0;; ++pass) {
       if (pass > static_cast<int>(dependent.size()))
@@ -125,19 +146,114 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
       if (!substituted) break;
     }
   }
+}
 
-  map.eq_.assign(n, -1);
-  map.master_ptr_.assign(n + 1, 0);
-  for (std::int64_t d = 0; d < n; ++d) {
-    if (map.kind_[d] == Kind::Free) map.eq_[d] = map.n_eq_++;
-    if (map.kind_[d] == Kind::Dependent) {
-      for (const auto& t : dependent[d]) map.master_.push_back(t);
-    } else if (map.kind_[d] != Kind::Unused) {
-      map.master_.push_back({d, 1.0});
-    }
-    map.master_ptr_[d + 1] = static_cast<std::int64_t>(map.master_.size());
+/// Finite rotations move a rigid node nonlinearly in θ (update_dependent sets it from R(θ)): a
+/// constraint built on such a node would need its chain re-evaluated, which is not done yet.
+void check_no_chain_through_rigid_nodes(const AnalysisModel& am, std::span<const DofMap::RigidNode> nodes,
+                                        const Dependents& dependent) {
+  std::vector<std::uint8_t> rigid(am.n_dof(), 0);
+  for (const auto& n : nodes)
+    for (int c = 0; c < am.dim; ++c) rigid[static_cast<std::size_t>(n.node) * am.dim + c] = 1;
+  for (const auto& [d, terms] : dependent) {
+    if (rigid[static_cast<std::size_t>(d)]) continue;
+    for (const auto& t : terms)
+      if (rigid[static_cast<std::size_t>(t.dof)])
+        throw AnalysisError(fmt::format(
+            "error: *RIGID BODY: with NLGEOM, node {} of a rigid body is the master of another constraint (*TIE, "
+            "*EQUATION); constraints on the nodes of a finitely rotating body are not supported yet",
+            am.model->mesh.nodes.labels[static_cast<std::size_t>(t.dof / am.dim)]));
   }
+}
+
+}  // namespace
+
+DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector<double>* u) {
+  const model::Model& m = *am.model;
+  // *EQUATION: the first term's DOF is eliminated: u0 = −Σ_{k≥1} (c_k / c_0) u_k.
+  Dependents dependent;
+  for (const auto& eq : m.equations) {
+    const std::string where = m.sources.describe(eq.loc);
+    auto dof_of = [&](const model::Equation::Term& t) {
+      const std::int64_t d = am.dof_index(t.node, t.dof);
+      if (d < 0)
+        throw AnalysisError(fmt::format("{}: error: *EQUATION: node {} has no degree of freedom {} in this model (nodes "
+                                        "have {}; rotations only at rigid bodies' reference nodes)",
+                                        where, m.mesh.nodes.labels[t.node], t.dof, am.dim));
+      return d;
+    };
+    for (const auto& t : eq.terms) dof_of(t);
+    const std::int64_t d0 = dof_of(eq.terms[0]);
+    if (kind_[d0] == Kind::Prescribed)
+      throw AnalysisError(fmt::format("{}: error: *EQUATION: the first (eliminated) degree of freedom, node {} dof {}, also "
+                                      "has a boundary condition; put another DOF first", where,
+                                      m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
+    if (dependent.count(d0))
+      throw AnalysisError(fmt::format("{}: error: *EQUATION: node {} dof {} is already eliminated by another equation", where,
+                                      m.mesh.nodes.labels[eq.terms[0].node], eq.terms[0].dof));
+    std::vector<MasterTerm> terms;
+    for (std::size_t k = 1; k < eq.terms.size(); ++k)
+      terms.push_back({dof_of(eq.terms[k]), -eq.terms[k].coefficient / eq.terms[0].coefficient});
+    dependent[d0] = std::move(terms);
+    kind_[d0] = Kind::Dependent;
+  }
+  add_tie_dependents(am, kind_, dependent);
+  add_pretension_dependents(am, kind_, dependent);
+  add_rigid_dependents(am, rigid_, u, finite_rotations_, kind_, dependent);
+  if (has_finite_rotations()) check_no_chain_through_rigid_nodes(am, rigid_, dependent);
+  substitute_chains(dependent);
+  return dependent;
+}
+
+void DofMap::lay_out(const Dependents& dependent) {
+  const std::int64_t n = n_dof();
+  eq_.assign(n, -1);
+  master_ptr_.assign(n + 1, 0);
+  master_.clear();
+  n_eq_ = 0;
+  for (std::int64_t d = 0; d < n; ++d) {
+    if (kind_[d] == Kind::Free) eq_[d] = n_eq_++;
+    if (kind_[d] == Kind::Dependent) {
+      for (const auto& t : dependent.at(d)) master_.push_back(t);
+    } else if (kind_[d] != Kind::Unused) {
+      master_.push_back({d, 1.0});
+    }
+    master_ptr_[d + 1] = static_cast<std::int64_t>(master_.size());
+  }
+}
+
+DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed, bool finite_rotations) {
+  const model::Model& m = *am.model;
+  const std::int64_t n = static_cast<std::int64_t>(am.n_dof());
+  DofMap map;
+  map.dim_ = am.dim;
+  map.finite_rotations_ = finite_rotations;
+  map.rigid_ = rigid_nodes(am);
+  map.kind_.assign(n, Kind::Unused);
+  // A DOF is used when an element connects its node.
+  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
+    for (std::int32_t node : m.mesh.elements.nodes_of(e))
+      for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(node) * am.dim + c] = Kind::Free;
+  for (const model::PretensionSection& s : m.pretension_sections)
+    map.kind_[static_cast<std::int64_t>(s.node) * am.dim] = Kind::Free;
+  // A rigid body's reference node and its rotations are unknowns though no element connects them.
+  for (const model::RigidBody& b : m.rigid_bodies)
+    for (int c = 0; c < am.dim; ++c) {
+      map.kind_[static_cast<std::int64_t>(b.ref_node) * am.dim + c] = Kind::Free;
+      if (c == 0 || am.dim == 3) map.kind_[static_cast<std::int64_t>(b.rot_node) * am.dim + c] = Kind::Free;
+    }
+  for (std::int64_t d = 0; d < n; ++d)
+    if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
+  map.lay_out(map.dependents(am, nullptr));
   return map;
+}
+
+void DofMap::relinearize(const AnalysisModel& am, const std::vector<double>& u) {
+  if (!has_finite_rotations()) return;
+  const std::vector<MasterTerm> before = master_;
+  lay_out(dependents(am, &u));
+  // Same masters in the same order (the assembler's pattern holds); only the weights change.
+  if (master_.size() != before.size()) throw AnalysisError("internal error: a rigid body's masters changed");
 }
 
 }  // namespace inpact::solver

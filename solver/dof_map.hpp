@@ -5,11 +5,15 @@
 ///  - free: an unknown of the linear system (equation number eq(d) >= 0);
 ///  - prescribed: its value comes from a boundary condition (no equation);
 ///  - dependent: eliminated by a *EQUATION, *TIE or *PRE-TENSION SECTION, u_d = Σ w_i u_i over
-///    independent DOFs;
+///    independent DOFs, or by a *RIGID BODY, u = u_R + (R(θ) − I) r (rigid_motion.hpp): linear
+///    for small rotations; with finite rotations (NLGEOM) the weights are ∂u/∂(u_R, θ) at the
+///    current θ, renewed by relinearize() each iteration;
 ///  - unused: a node no element connects (no stiffness; held at zero, not reported).
 /// Assembly expands each element DOF into its independent DOFs ("masters") with weights, so
 /// K_reduced = Tᵀ K T without ever forming T.
+#include <array>
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,7 +34,9 @@ class DofMap {
   /// `prescribed[d]`: DOF d has a boundary condition in this step.
   /// Throws AnalysisError when an equation's dependent DOF is also prescribed, or appears as
   /// the dependent DOF of two equations, or the equations form a cycle.
-  static DofMap build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed);
+  /// `finite_rotations`: rigid bodies turn by R(θ) (NLGEOM) instead of θ × r.
+  static DofMap build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed,
+                      bool finite_rotations = false);
 
   std::int64_t n_dof() const { return static_cast<std::int64_t>(kind_.size()); }
   std::int64_t n_equations() const { return n_eq_; }
@@ -40,8 +46,27 @@ class DofMap {
   std::span<const MasterTerm> masters(std::int64_t d) const;
   /// Sets every dependent DOF of u from its masters (after the independent ones changed).
   void update_dependent(std::vector<double>& u) const;
+  /// Finite rotations: the rigid bodies' weights linearised at the θ of `u` (same masters, new
+  /// weights); nothing to do otherwise.
+  void relinearize(const AnalysisModel& am, const std::vector<double>& u);
+  bool has_finite_rotations() const { return finite_rotations_ && !rigid_.empty(); }
+
+  /// One node of a rigid body: its offset r from the reference node.
+  struct RigidNode {
+    std::int32_t node, ref, rot;
+    std::array<double, 3> r;
+  };
 
  private:
+  using Dependents = std::map<std::int64_t, std::vector<MasterTerm>>;
+  /// The rules of every dependent DOF, each over independent DOFs only; the rigid bodies'
+  /// linearised at `u` (null: θ = 0).
+  Dependents dependents(const AnalysisModel& am, const std::vector<double>* u);
+  void lay_out(const Dependents& dependent);
+
+  std::vector<RigidNode> rigid_;
+  bool finite_rotations_ = false;
+  int dim_ = 3;
   std::vector<Kind> kind_;
   std::vector<std::int64_t> eq_;
   std::vector<std::int64_t> master_ptr_;  ///< masters of d: master_[master_ptr_[d] .. master_ptr_[d+1])

@@ -72,7 +72,7 @@ std::string field_key(std::string_view v, Domain d) {
   const bool node = d == Domain::Node || d == Domain::Model;
   const bool element = d == Domain::Element || d == Domain::Model;
   if (node) {
-    for (std::string_view k : {"U", "RF", "COORD"})
+    for (std::string_view k : {"UR", "RM", "U", "RF", "COORD"})
       if (is_variable(v, k, 1)) return std::string(k);
   }
   if (d == Domain::Contact || d == Domain::Model) {
@@ -106,6 +106,14 @@ std::vector<std::string> vector_labels(const std::string& key, int dim) {
   return l;
 }
 
+/// A rotation vector's components: UR1 UR2 UR3 in 3D, UR3 alone in 2D (the in-plane rotation).
+std::vector<std::string> rotation_labels(const std::string& key, int dim) {
+  if (dim == 2) return {key + "3"};
+  return vector_labels(key, 3);
+}
+
+bool rotation_key(const std::string& key) { return key == "UR" || key == "RM"; }
+
 /// The printed columns of a print request's variable (U → U1 U2 U3, S33 → S33), or none
 /// when inpact does not print it.
 std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) {
@@ -114,6 +122,10 @@ std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) 
     return {};
   };
   if (d == Domain::Node) {
+    for (const char* k : {"UR", "RM"}) {
+      if (v == k) return rotation_labels(k, dim);
+      if (is_variable(v, k, 1)) return component(rotation_labels(k, dim));
+    }
     for (const char* k : {"U", "RF", "COORD"}) {
       if (v == k) return vector_labels(k, dim);
       if (is_variable(v, k, 1)) return component(vector_labels(k, dim));
@@ -145,9 +157,9 @@ void add_unique(std::vector<std::string>& list, const std::string& v) {
 
 /// LE is E's values under Abaqus's name for them with NLGEOM (the logarithmic strain; without
 /// NLGEOM the small strain, which it equals to first order).
-constexpr const char* kFieldKeys[] = {"U", "RF", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG", "SF"};
+constexpr const char* kFieldKeys[] = {"U", "UR", "RF", "RM", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG", "SF"};
 
-bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD"; }
+bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD" || rotation_key(key); }
 
 /// Keys of integration-point values (computed by the element kernels).
 bool point_key(const std::string& key) {
@@ -282,6 +294,12 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if ((stress || disp) && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
           for (const char* t : stress ? std::array{"CSHEAR1", "CSHEAR2"} : std::array{"CSLIP1", "CSLIP2"})
             add_unique(a.variables, t);
+      }
+      // Abaqus's U and RF hold the rotations and moments too: UR and RM of the reference nodes.
+      if (!model.rigid_bodies.empty()) {
+        const auto& v = a.variables;
+        if (std::find(v.begin(), v.end(), "U") != v.end()) add_unique(a.variables, "UR");
+        if (std::find(v.begin(), v.end(), "RF") != v.end()) add_unique(a.variables, "RM");
       }
       field_timing_.emplace_back(r, period);
       field_.push_back(std::move(a));
@@ -422,18 +440,46 @@ bool key_due(const StepOutput& output, const OutputDue& due, const std::string& 
 
 /// A nodal value: U, RF or COORD (current coordinates under NLGEOM, original otherwise, as
 /// Abaqus's COORD), component c.
-enum class NodalKey : std::uint8_t { U, RF, Coord };
+enum class NodalKey : std::uint8_t { U, RF, Coord, UR, RM };
+
+/// UR, RM: component c of rotation_labels() (c = 0 is UR3 in 2D).
+double rotation_value(const AnalysisModel& am, NodalKey key, std::size_t row, int c, std::span<const double> u,
+                      std::span<const double> rf) {
+  const std::int64_t d = am.dof_index(static_cast<std::int32_t>(row), am.dim == 3 ? 4 + c : 6);
+  if (d < 0) return 0.0;  // a node without rotations
+  return key == NodalKey::UR ? u[d] : rf[d];
+}
 
 double nodal_value(const AnalysisModel& am, NodalKey key, std::size_t row, int c, std::span<const double> u,
                    std::span<const double> rf, bool nlgeom) {
+  if (key == NodalKey::UR || key == NodalKey::RM) return rotation_value(am, key, row, c, u, rf);
   const std::size_t dof = row * am.dim + c;
   if (key == NodalKey::U) return u[dof];
   if (key == NodalKey::RF) return rf[dof];
   return am.model->mesh.nodes.coords[row][c] + (nlgeom ? u[dof] : 0.0);
 }
 
+/// UR and RM are written at the nodes with rotations only (the rigid bodies' reference nodes).
+FieldData rotation_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where,
+                         std::span<const double> u, std::span<const double> rf) {
+  FieldData f;
+  f.key = key;
+  f.position = Position::Nodal;
+  f.component_labels = rotation_labels(key, am.dim);
+  f.region = where.region;
+  const NodalKey k = key == "UR" ? NodalKey::UR : NodalKey::RM;
+  const int n_comp = static_cast<int>(f.component_labels.size());
+  for (const model::RigidBody& b : am.model->rigid_bodies) {
+    if (!where.whole && !std::binary_search(where.rows.begin(), where.rows.end(), b.ref_node)) continue;
+    f.nodes.push_back(b.ref_node);
+    for (int c = 0; c < n_comp; ++c) f.values.push_back(rotation_value(am, k, static_cast<std::size_t>(b.ref_node), c, u, rf));
+  }
+  return f;
+}
+
 FieldData nodal_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where,
                       std::span<const double> u, std::span<const double> rf, bool nlgeom) {
+  if (rotation_key(key)) return rotation_field(am, key, where, u, rf);
   FieldData f;
   f.key = key;
   f.position = Position::Nodal;
@@ -514,7 +560,7 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
 
 /// A printed column: its source and component (0-based).
 struct Column {
-  enum class Source : std::uint8_t { U, RF, Coord, S, E, Mises, PE, Peeq, Pemag, SF } source;
+  enum class Source : std::uint8_t { U, RF, Coord, UR, RM, S, E, Mises, PE, Peeq, Pemag, SF } source;
   int component = 0;
 };
 
@@ -525,6 +571,9 @@ Column parse_column(const std::string& name) {
   if (name == "PEMAG") return {S::Pemag, 0};
   if (name == "SF1") return {S::SF, 0};
   if (name.rfind("COORD", 0) == 0) return {S::Coord, name[5] - '1'};
+  // UR3 alone in 2D is component 0 there: node_table maps it (rotation_labels()).
+  if (name.rfind("UR", 0) == 0) return {S::UR, name[2] - '1'};
+  if (name.rfind("RM", 0) == 0) return {S::RM, name[2] - '1'};
   if (name.rfind("RF", 0) == 0) return {S::RF, name[2] - '1'};
   if (name[0] == 'U') return {S::U, name[1] - '1'};
   // Tensor 11 22 33 12 13 23 → Abaqus-ordered slots 0..5.
@@ -550,8 +599,12 @@ PrintTable node_table(const AnalysisModel& am, const ActiveRequest& a, std::span
     for (const Column& c : cols) {
       const NodalKey key = c.source == Column::Source::U    ? NodalKey::U
                            : c.source == Column::Source::RF ? NodalKey::RF
+                           : c.source == Column::Source::UR ? NodalKey::UR
+                           : c.source == Column::Source::RM ? NodalKey::RM
                                                             : NodalKey::Coord;
-      t.values.push_back(nodal_value(am, key, row, c.component, u, rf, nlgeom));
+      const bool rotation = key == NodalKey::UR || key == NodalKey::RM;
+      const int component = rotation && am.dim == 2 ? 0 : c.component;  // 2D: UR3 is the one rotation
+      t.values.push_back(nodal_value(am, key, row, component, u, rf, nlgeom));
     }
   };
   if (a.whole_model)

@@ -66,6 +66,7 @@ NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState&
   // Impose the boundary conditions of time t, then iterate on the free DOFs.
   ctx.conditions.apply_prescribed(t, u_start_, state.u);
   dofs_.update_dependent(state.u);
+  if (ctx.rotating_dofs) ctx.rotating_dofs->relinearize(ctx.am, state.u);
   state.f_ext.assign(n_, 0.0);
   ctx.conditions.external_force(t, state.f_ext);
   state.f_int.assign(n_, 0.0);
@@ -224,6 +225,7 @@ void NewtonIterations::apply_correction() {
     if (eq >= 0) state_.u[d] += du_[eq];
   }
   dofs_.update_dependent(state_.u);
+  if (ctx_.rotating_dofs) ctx_.rotating_dofs->relinearize(ctx_.am, state_.u);
   if (ctx_.contact) ctx_.contact->apply_correction(std::span<const double>(du_).subspan(n_eq_), state_.contact);
 }
 

@@ -68,6 +68,9 @@ struct NewtonContext {
   bool keep_points = false;
   /// *STATIC, STABILIZE: the viscous forces c M* Δu/Δt of this attempt, or null.
   const ViscousForces* stabilization = nullptr;
+  /// The step's DOF map when rigid bodies rotate finitely (NLGEOM): its weights follow θ,
+  /// relinearised after every change of u; null otherwise.
+  DofMap* rotating_dofs = nullptr;
 };
 
 /// Runs the iterations from `state.u` (the converged state at the increment start) to step

@@ -38,9 +38,9 @@ void apply_boundaries(const AnalysisModel& am, const std::vector<model::Boundary
     }
     for (const auto& e : b.entries)
       for (std::int32_t node : e.nodes)
-        for (int dof = e.first_dof; dof <= std::min(e.last_dof, am.dim); ++dof) {
-          const std::int64_t d = static_cast<std::int64_t>(node) * am.dim + dof - 1;
-          defs[d] = {e.value, b.fixed ? "" : b.amplitude, e.value, b.fixed};
+        for (int dof = e.first_dof; dof <= e.last_dof; ++dof) {
+          const std::int64_t d = am.dof_index(node, dof);  // −1: a DOF the node does not have
+          if (d >= 0) defs[d] = {e.value, b.fixed ? "" : b.amplitude, e.value, b.fixed};
         }
   }
 }
@@ -68,9 +68,9 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
   for (const auto& b : step.cloads) {
     if (b.op == model::Op::New) target_.cload.clear();
     for (const auto& e : b.entries)
-      if (e.dof <= am.dim)
-        for (std::int32_t node : e.nodes)
-          target_.cload[static_cast<std::int64_t>(node) * am.dim + e.dof - 1] = {e.magnitude, b.amplitude, e.magnitude};
+      for (std::int32_t node : e.nodes)
+        if (const std::int64_t d = am.dof_index(node, e.dof); d >= 0)
+          target_.cload[d] = {e.magnitude, b.amplitude, e.magnitude};
   }
   for (const auto& b : step.dloads) {
     if (b.op == model::Op::New)

@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""Generator of the *RIGID BODY verification decks (decks/verification/rigid_*.inp).
+
+    gen_rigid_bodies.py --out DIR
+
+Each deck states its reference in its header; tests/verification/test_rigid_bodies.cpp checks
+them. Uses gen_verification.py's deck writer and structured meshes.
+"""
+import argparse
+import math
+import os
+
+from gen_verification import Deck, grid_hex, grid_quad, select
+
+EPS = 1e-9
+MATERIAL = ["*MATERIAL, NAME=STEEL", "*ELASTIC", "210000., 0.3"]
+
+
+def moment_block():
+    """A 1 x 1 x 4 column built in at z = 0 whose top face is tied to a reference node above it,
+    loaded there by a force and a moment (*CLOAD DOFs 1 and 5)."""
+    coords, conn = grid_hex(2, 2, 8, (0, 0, 0), (1, 1, 4), False)[:2]
+    ref = max(coords) + 1
+    coords[ref] = (0.5, 0.5, 4.5)
+    d = Deck("A column with a rigid top face, loaded through the reference node by F1 = 10 and M2 = 100",
+             ["Reference: the base carries the whole load, sum RF = (-10, 0, 0) and sum (x - x_ref) x RF",
+              "= -(0, 100, 0) - (x_b - x_ref) x F; the top face moves rigidly (u = u_R + UR x r)."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "COLUMN", conn)
+    d.nset("BASE", select(coords, lambda x: abs(x[2]) < EPS))
+    d.nset("TOP", select(coords, lambda x: abs(x[2] - 4) < EPS))
+    d.nset("REF", [ref])
+    d.add("*SOLID SECTION, ELSET=COLUMN, MATERIAL=STEEL", *MATERIAL)
+    d.add("*RIGID BODY, REF NODE=REF, TIE NSET=TOP")
+    d.add("*BOUNDARY", "BASE, ENCASTRE")
+    d.add("*STEP", "*STATIC", "*CLOAD", "REF, 1, 10.", "REF, 5, 100.")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*NODE PRINT, NSET=REF", "U, UR", "*END STEP")
+    return d
+
+
+def spin_block(increments=4):
+    """A block made rigid as a whole (ELSET) turned by 90 degrees about z through its reference
+    node, NLGEOM: no support but the reference node's."""
+    coords, conn = grid_hex(2, 2, 2, (1, 0, 0), (2, 1, 1), False)[:2]
+    ref = max(coords) + 1
+    coords[ref] = (0.0, 0.0, 0.0)
+    d = Deck("A rigid block turned by 90 degrees about z through its reference node at the origin, NLGEOM",
+             ["Reference: every node at R X (u = (R - I) X, R the rotation by UR3 = pi/2 * t about z),",
+              "no reaction at the reference node: the rigid elements carry no force."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BLOCK", conn)
+    d.nset("REF", [ref])
+    d.add("*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", *MATERIAL)
+    d.add("*RIGID BODY, REF NODE=REF, ELSET=BLOCK")
+    d.add("*STEP, NLGEOM", "*STATIC, DIRECT", f"{1 / increments:.17g}, 1.")
+    d.add("*BOUNDARY", "REF, 1, 5", f"REF, 6, 6, {math.pi / 2:.17g}")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*END STEP")
+    return d
+
+
+def spin_plate(increments=4):
+    """The plane-strain counterpart: CPE4 elements made rigid, turned by DOF 6 (the 2D rotation)."""
+    coords, conn = grid_quad(2, 2, lambda s, t: (1 + s, t), False)[:2]
+    ref = max(coords) + 1
+    coords[ref] = (0.0, 0.0)
+    d = Deck("A rigid plane-strain plate turned by 90 degrees about the origin through DOF 6, NLGEOM",
+             ["Reference: every node at R X, no reaction at the reference node."])
+    d.nodes(coords, 2)
+    d.elements("CPE4", "PLATE", conn)
+    d.nset("REF", [ref])
+    d.add("*SOLID SECTION, ELSET=PLATE, MATERIAL=STEEL", *MATERIAL)
+    d.add("*RIGID BODY, REF NODE=REF, ELSET=PLATE")
+    d.add("*STEP, NLGEOM", "*STATIC, DIRECT", f"{1 / increments:.17g}, 1.")
+    d.add("*BOUNDARY", "REF, 1, 2", f"REF, 6, 6, {math.pi / 2:.17g}")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*END STEP")
+    return d
+
+
+def punch(ccx=False):
+    """A flat rigid punch (C3D8 elements made rigid) pressed 0.01 into a block through its
+    reference node; frictionless surface-to-surface contact, the punch the master."""
+    coords, conn = grid_hex(8, 8, 4, (0, 0, 0), (4, 4, 2), False)[:2]
+    base = max(coords)
+    pc, pconn = grid_hex(4, 4, 1, (1, 1, 2), (3, 3, 2.5), False)[:2]
+    coords.update({base + k: x for k, x in pc.items()})
+    ref = max(coords) + 1
+    coords[ref] = (2.0, 2.0, 3.0)
+    first_punch = len(conn) + 1
+    d = Deck("A rigid flat punch 2 x 2 pressed 0.01 into a 4 x 4 x 2 block through its reference node",
+             ["Reference: the reaction at the reference node balances the contact force,",
+              "RF3 = sum CPRESS * CNAREA (1e-9); CalculiX 2.20 on the same deck in its dialect",
+              "(*RIGID BODY with ROT NODE, gen_rigid_bodies.py --ccx): RF3 = -1.017847E+04."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BLOCK", conn)
+    d.elements("C3D8", "PUNCH", [[n + base for n in c] for c in pconn], first=first_punch)
+    d.nset("BASE", select(coords, lambda x: abs(x[2]) < EPS))
+    d.nset("REF", [ref])
+    d.elset("BLOCK_TOP_EL", [e + 1 for e, c in enumerate(conn) if all(abs(coords[n][2] - 2) < EPS for n in c[4:8])])
+    d.elset("PUNCH_BOTTOM_EL", range(first_punch, first_punch + len(pconn)))
+    d.add("*SURFACE, NAME=BLOCK_TOP", "BLOCK_TOP_EL, S2", "*SURFACE, NAME=PUNCH_BOTTOM", "PUNCH_BOTTOM_EL, S1")
+    d.add("*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", "*SOLID SECTION, ELSET=PUNCH, MATERIAL=STEEL", *MATERIAL)
+    if ccx:
+        rot = ref + 1
+        d.lines[d.lines.index(f"{ref}, 2, 2, 3")] += f"\n{rot}, 2, 2, 3"
+        d.add(f"*RIGID BODY, ELSET=PUNCH, REF NODE={ref}, ROT NODE={rot}")
+    else:
+        d.add("*RIGID BODY, REF NODE=REF, ELSET=PUNCH")
+    # A linear law stiff enough to penetrate by 1e-4 of the indentation, the same in both
+    # dialects (CalculiX's hard surface-to-surface contact is a penalty of its own stiffness).
+    d.add("*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11")
+    d.add("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
+    d.add("*BOUNDARY", "BASE, 1, 3")
+    d.add("*STEP", "*STATIC", "*BOUNDARY", "REF, 1, 2", "REF, 3, 3, -0.01")
+    d.add(f"{rot}, 1, 3" if ccx else "REF, 4, 6")
+    if ccx:
+        d.add(f"*NODE PRINT, NSET=REF, TOTALS=NO", "RF", "*NODE FILE", "U", "*END STEP")
+    else:
+        d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*CONTACT OUTPUT", "CPRESS, CNAREA, CSTATUS",
+              "*NODE PRINT, NSET=REF", "RF", "*END STEP")
+    return d
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--ccx", action="store_true", help="also write the punch in CalculiX's dialect")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    decks = {"rigid_moment_block_c3d8.inp": moment_block(), "rigid_spin_block_c3d8.inp": spin_block(),
+             "rigid_spin_plate_cpe4.inp": spin_plate(), "rigid_punch_c3d8.inp": punch()}
+    if a.ccx:
+        decks["rigid_punch_c3d8_ccx.inp"] = punch(ccx=True)
+    for name, d in decks.items():
+        d.write(os.path.join(a.out, name))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,94 @@
+/// *RIGID BODY: a set of nodes or elements that moves with a reference node [K16 *RIGID BODY],
+/// [CCX *RIGID BODY]. The checks against the whole mesh and the rotation node inpact adds for
+/// an Abaqus deck are in rigid_bodies.cpp (they need the complete deck).
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "handlers.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+/// REF NODE= / ROT NODE=: a node label or a node set of exactly one node; -1 on error.
+std::int32_t one_node(KeywordContext& ctx, std::string_view param, std::string_view role) {
+  const KeywordParam* p = ctx.param(param);
+  const Field field{*p->value, p->value_loc};
+  auto rows = ctx.nodes(field);
+  if (!rows) return -1;
+  if (rows->size() != 1) {
+    ctx.error(p->value_loc, fmt::format("{}='{}' holds {} nodes; the {} must be exactly one node", param, *p->value,
+                                        rows->size(), role));
+    return -1;
+  }
+  return rows->front();
+}
+
+/// The nodes of a node-set parameter (TIE NSET, PIN NSET, NSET) added to `nodes`.
+bool add_set_nodes(KeywordContext& ctx, std::string_view param, std::vector<std::int32_t>& nodes) {
+  const KeywordParam* p = ctx.param(param);
+  if (!p) return true;
+  auto rows = ctx.nodes(Field{*p->value, p->value_loc});
+  if (!rows) return false;
+  nodes.insert(nodes.end(), rows->begin(), rows->end());
+  return true;
+}
+
+// *RIGID BODY, REF NODE=, ELSET= | TIE NSET= | PIN NSET= [, ROT NODE=, NSET= (CalculiX)].
+// The nodes of TIE NSET and PIN NSET both follow the body in translation; inpact's nodes have no
+// rotations of their own, so tying and pinning are the same. CalculiX's NSET is a TIE NSET, and
+// its ROT NODE holds the rotations (in its translations) instead of the reference node's 4–6.
+void rigid_body(KeywordContext& ctx) {
+  for (std::string_view p : {"ANALYTICAL SURFACE", "ISOTHERMAL", "POSITION", "DENSITY"})
+    if (ctx.has(p)) {
+      ctx.error_param(p, fmt::format("{} is not supported yet", p));
+      return;
+    }
+  model::RigidBody b;
+  b.loc = ctx.keyword.loc;
+  b.ref_loc = ctx.param_loc("REF NODE");
+  b.ref_node = one_node(ctx, "REF NODE", "reference node");
+  if (b.ref_node < 0) return;
+  if (ctx.has("ROT NODE") && (b.rot_node = one_node(ctx, "ROT NODE", "rotation node")) < 0) return;
+  if (b.rot_node == b.ref_node) {
+    ctx.error_param("ROT NODE", "the rotation node must not be the reference node");
+    return;
+  }
+  if (!add_set_nodes(ctx, "TIE NSET", b.nodes) || !add_set_nodes(ctx, "PIN NSET", b.nodes) ||
+      !add_set_nodes(ctx, "NSET", b.nodes))
+    return;
+  if (const KeywordParam* p = ctx.param("ELSET")) {
+    auto rows = ctx.elements(Field{*p->value, p->value_loc});
+    if (!rows) return;
+    b.elements = std::move(*rows);
+  }
+  if (b.nodes.empty() && b.elements.empty()) {
+    ctx.error(ctx.keyword.loc, "the rigid body has no nodes: give ELSET=, TIE NSET= or PIN NSET= (NSET= in CalculiX)");
+    return;
+  }
+  std::sort(b.elements.begin(), b.elements.end());
+  b.elements.erase(std::unique(b.elements.begin(), b.elements.end()), b.elements.end());
+  ctx.model().rigid_bodies.push_back(std::move(b));
+}
+
+}  // namespace
+
+void add_rigid_body_keywords(std::vector<KeywordSpec>& t) {
+  using VK = ValueKind;
+  using VT = ValueType;
+  t.push_back({"*RIGID BODY", kModelDataScopes,
+               {{"REF NODE", VK::Required, VT::Text, {}, true},
+                {"ROT NODE", VK::Required, VT::Text},
+                {"ELSET", VK::Required, VT::Text},
+                {"TIE NSET", VK::Required, VT::Text},
+                {"PIN NSET", VK::Required, VT::Text},
+                {"NSET", VK::Required, VT::Text},
+                {"ANALYTICAL SURFACE", VK::Required, VT::Text},
+                {"ISOTHERMAL", VK::Optional, VT::Text},
+                {"POSITION", VK::Required, VT::Text},
+                {"DENSITY", VK::Required, VT::Text}},
+               DataLines::None, rigid_body});
+}
+
+}  // namespace inpact::parser

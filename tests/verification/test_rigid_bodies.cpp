@@ -1,0 +1,109 @@
+// *RIGID BODY (model/rigid_body.hpp, solver/rigid_motion.hpp): nodes that follow a reference
+// node, u = u_R + (R(θ) − I) r.
+//
+// References (decks/verification/gen_rigid_bodies.py):
+//  - a column built in at its base, its top face tied to a reference node loaded by a force and
+//    a moment: the base carries both (Σ RF and Σ r × RF exact), the top face moves rigidly;
+//  - a block and a plane-strain plate made rigid as a whole and turned by 90° (NLGEOM) through
+//    the reference node's rotation: every node at R X, no reaction;
+//  - a rigid flat punch pressed into a block through its reference node: the reaction there is
+//    the contact force Σ CPRESS·CNAREA, and CalculiX 2.20 on the same deck in its dialect gives
+//    RF3 = −1.017847E+04.
+#include "verification_fixture.hpp"
+
+#include <cmath>
+
+namespace inpact::verification {
+namespace {
+
+std::int32_t only_node(const model::Model& m, const std::string& set) {
+  const auto rows = nset(m, set);
+  EXPECT_EQ(rows.size(), 1u);
+  return rows.front();
+}
+
+std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Measured: Σ RF 2.2e-13 of the load, Σ r × RF 1.6e-13 of the moment (the column's round-off).
+TEST(RigidBody, ColumnBaseCarriesTheForceAndMomentOfTheReferenceNode) {
+  const auto r = run_deck(deck_path("rigid_moment_block_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& m = r->model();
+  const auto& f = r->capture.last();
+  const std::int32_t ref = only_node(m, "REF");
+  const auto x_ref = coords(m, ref);
+  std::array<double, 3> force{0, 0, 0}, moment{0, 0, 0};
+  for (std::int32_t n : nset(m, "BASE")) {
+    const std::array<double, 3> rf{nodal(f, "RF", n, 0), nodal(f, "RF", n, 1), nodal(f, "RF", n, 2)};
+    const auto x = coords(m, n);
+    const auto mo = cross({x[0] - x_ref[0], x[1] - x_ref[1], x[2] - x_ref[2]}, rf);
+    for (int c = 0; c < 3; ++c) force[c] += rf[c], moment[c] += mo[c];
+  }
+  // Applied: F = (10, 0, 0), M = (0, 100, 0) at the reference node.
+  const double force_error = std::hypot(force[0] + 10.0, force[1], force[2]) / 10.0;
+  const double moment_error = std::hypot(moment[0], moment[1] + 100.0, moment[2]) / 100.0;
+  report("rigid column: |sum RF + F| / |F|", force_error);
+  report("rigid column: |sum r x RF + M| / |M|", moment_error);
+  EXPECT_LE(force_error, 1e-10);
+  EXPECT_LE(moment_error, 1e-10);
+  // The top face follows u_R + UR × r.
+  const std::array<double, 3> uR{nodal(f, "U", ref, 0), nodal(f, "U", ref, 1), nodal(f, "U", ref, 2)};
+  const std::array<double, 3> th{nodal(f, "UR", ref, 0), nodal(f, "UR", ref, 1), nodal(f, "UR", ref, 2)};
+  EXPECT_GT(std::abs(th[1]), 1e-3);  // the moment turns the face about y
+  double worst = 0.0;
+  for (std::int32_t n : nset(m, "TOP")) {
+    const auto x = coords(m, n);
+    const auto rot = cross(th, {x[0] - x_ref[0], x[1] - x_ref[1], x[2] - x_ref[2]});
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(nodal(f, "U", n, c) - uR[c] - rot[c]));
+  }
+  EXPECT_LE(worst, 1e-12 * std::abs(uR[0]));
+}
+
+/// Every node but the reference and rotation nodes at R(π/2 about z) X: |U − (R − I) X|.
+double worst_off_rotation(const Run& r) {
+  const auto& m = r.model();
+  const auto& f = r.capture.last();
+  const std::int32_t ref = only_node(m, "REF");
+  double worst = 0.0;
+  for (const model::RigidBody& b : m.rigid_bodies)
+    for (std::int32_t n : b.nodes) {
+      const auto x = coords(m, n);
+      worst = std::max({worst, std::abs(nodal(f, "U", n, 0) - (-x[1] - x[0])), std::abs(nodal(f, "U", n, 1) - (x[0] - x[1]))});
+    }
+  EXPECT_NEAR(nodal(f, "UR", ref, r.dim() == 3 ? 2 : 0), M_PI / 2, 1e-15);
+  return worst;
+}
+
+TEST(RigidBody, WholeBlockTurnsByAFiniteRotationWithoutForce) {
+  for (const char* deck : {"rigid_spin_block_c3d8.inp", "rigid_spin_plate_cpe4.inp"}) {
+    const auto r = run_deck(deck_path(deck));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const double worst = worst_off_rotation(*r);
+    report(std::string(deck) + ": worst |U - (R - I) X|", worst);
+    EXPECT_LE(worst, 1e-14) << deck;
+    const std::int32_t ref = only_node(r->model(), "REF");
+    for (int c = 0; c < r->dim(); ++c) EXPECT_LE(std::abs(nodal(r->capture.last(), "RF", ref, c)), 1e-12) << deck;
+  }
+}
+
+// Measured: balance 2e-16 of the force; 7.4e-5 off CalculiX (its contact discretisation).
+TEST(RigidBody, PunchReactionIsTheContactForceAndCalculiXs) {
+  const auto r = run_deck(deck_path("rigid_punch_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& f = r->capture.last();
+  const auto* cpress = field(f, "CPRESS");
+  const auto* cnarea = field(f, "CNAREA");
+  ASSERT_TRUE(cpress && cnarea);
+  double contact_force = 0.0;
+  for (std::size_t i = 0; i < cpress->values.size(); ++i) contact_force += cpress->values[i] * cnarea->values[i];
+  const double rf3 = nodal(f, "RF", only_node(r->model(), "REF"), 2);
+  report("rigid punch: |RF3 + sum CPRESS*CNAREA| / RF3", std::abs(rf3 + contact_force) / std::abs(rf3));
+  report("rigid punch: RF3 / RF3(CalculiX) - 1", rf3 / -1.017847e4 - 1.0);
+  EXPECT_LE(std::abs(rf3 + contact_force), 1e-9 * std::abs(rf3));
+  EXPECT_NEAR(rf3 / -1.017847e4, 1.0, 0.02);
+}
+
+}  // namespace
+}  // namespace inpact::verification
