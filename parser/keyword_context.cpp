@@ -200,6 +200,18 @@ std::vector<std::string> keys_of(const std::map<std::string, model::Set>& sets) 
 
 }  // namespace
 
+std::int32_t KeywordContext::single_node(std::string_view canonical, std::string_view role) {
+  const KeywordParam* p = param(canonical);
+  auto rows = nodes(Field{*p->value, p->value_loc});
+  if (!rows) return -1;
+  if (rows->size() != 1) {
+    error(p->value_loc, fmt::format("{}='{}' holds {} nodes; the {} must be exactly one node", canonical, *p->value,
+                                    rows->size(), role));
+    return -1;
+  }
+  return rows->front();
+}
+
 std::optional<std::vector<std::int32_t>> KeywordContext::nodes(const Field& f) {
   const auto& sets = mesh().nsets;
   return resolve(*this, f, sets, mesh().nodes.index, "node", [&] { return keys_of(sets); });

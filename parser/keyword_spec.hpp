@@ -124,6 +124,9 @@ struct KeywordContext {
   std::optional<std::vector<std::int32_t>> nodes(const Field& f);
   /// Same for elements and element sets.
   std::optional<std::vector<std::int32_t>> elements(const Field& f);
+  /// The node a parameter names (`REF NODE=12`, `NODE=PT`: a label or a set of exactly one
+  /// node), or −1 after an error that calls it the `role` ("pre-tension node").
+  std::int32_t single_node(std::string_view canonical, std::string_view role);
 };
 
 }  // namespace inpact::parser

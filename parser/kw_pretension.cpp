@@ -9,22 +9,6 @@ namespace inpact::parser {
 
 namespace {
 
-/// NODE=: a node label or a node set of exactly one node.
-bool read_pretension_node(KeywordContext& ctx, model::PretensionSection& s) {
-  const KeywordParam* p = ctx.param("NODE");
-  s.node_loc = p->value_loc;
-  const Field field{*p->value, p->value_loc};
-  auto rows = ctx.nodes(field);
-  if (!rows) return false;
-  if (rows->size() != 1) {
-    ctx.error(p->value_loc, fmt::format("NODE='{}' holds {} nodes; the pre-tension node must be exactly one node",
-                                        *p->value, rows->size()));
-    return false;
-  }
-  s.node = rows->front();
-  return true;
-}
-
 /// The optional data line: the normal's three components (the default is the surface's average
 /// normal, computed by the split).
 bool read_normal(KeywordContext& ctx, model::PretensionSection& s) {
@@ -73,7 +57,9 @@ void pretension_section(KeywordContext& ctx) {
   s.loc = ctx.keyword.loc;
   s.surface = ctx.name_value("SURFACE");
   s.surface_loc = ctx.param_loc("SURFACE");
-  if (!read_pretension_node(ctx, s) || !read_normal(ctx, s)) return;
+  s.node_loc = ctx.param_loc("NODE");
+  s.node = ctx.single_node("NODE", "pre-tension node");
+  if (s.node < 0 || !read_normal(ctx, s)) return;
   ctx.model().pretension_sections.push_back(std::move(s));
 }
 

@@ -11,20 +11,6 @@ namespace inpact::parser {
 
 namespace {
 
-/// REF NODE= / ROT NODE=: a node label or a node set of exactly one node; -1 on error.
-std::int32_t one_node(KeywordContext& ctx, std::string_view param, std::string_view role) {
-  const KeywordParam* p = ctx.param(param);
-  const Field field{*p->value, p->value_loc};
-  auto rows = ctx.nodes(field);
-  if (!rows) return -1;
-  if (rows->size() != 1) {
-    ctx.error(p->value_loc, fmt::format("{}='{}' holds {} nodes; the {} must be exactly one node", param, *p->value,
-                                        rows->size(), role));
-    return -1;
-  }
-  return rows->front();
-}
-
 /// The nodes of a node-set parameter (TIE NSET, PIN NSET, NSET) added to `nodes`.
 bool add_set_nodes(KeywordContext& ctx, std::string_view param, std::vector<std::int32_t>& nodes) {
   const KeywordParam* p = ctx.param(param);
@@ -48,9 +34,9 @@ void rigid_body(KeywordContext& ctx) {
   model::RigidBody b;
   b.loc = ctx.keyword.loc;
   b.ref_loc = ctx.param_loc("REF NODE");
-  b.ref_node = one_node(ctx, "REF NODE", "reference node");
+  b.ref_node = ctx.single_node("REF NODE", "reference node");
   if (b.ref_node < 0) return;
-  if (ctx.has("ROT NODE") && (b.rot_node = one_node(ctx, "ROT NODE", "rotation node")) < 0) return;
+  if (ctx.has("ROT NODE") && (b.rot_node = ctx.single_node("ROT NODE", "rotation node")) < 0) return;
   if (b.rot_node == b.ref_node) {
     ctx.error_param("ROT NODE", "the rotation node must not be the reference node");
     return;
