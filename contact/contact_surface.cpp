@@ -138,11 +138,17 @@ double ContactSurface::area(std::span<const Vec3> x) const {
   return total;
 }
 
-std::vector<double> ContactSurface::nodal_areas(std::span<const Vec3> x) const {
+std::vector<double> ContactSurface::nodal_areas(std::span<const Vec3> x) const { return nodal_shares(x, true); }
+
+std::vector<double> ContactSurface::consistent_nodal_areas(std::span<const Vec3> x) const {
+  return nodal_shares(x, false);
+}
+
+std::vector<double> ContactSurface::nodal_shares(std::span<const Vec3> x, bool lumped) const {
   if (node_based_) return given_areas_;
   std::vector<double> out(nodes_.size(), 0.0);
   for (const Facet& f : facets_) {
-    const bool hrz = facet_is_quadratic(f.shape);
+    const bool hrz = lumped && facet_is_quadratic(f.shape);
     std::array<double, 8> share{};
     double area = 0.0, sum = 0.0;
     for (const QuadPoint& q : facet_rule(f.shape, rule_points(f.shape))) {

@@ -51,6 +51,10 @@ class ContactSurface {
   /// total exactly the facet area (flat Quad8: corners 3/76, midsides 16/76 of the area; flat
   /// Tri6: corners 1/19, midsides 16/57; straight Line3: 1/6, 2/3, 1/6, the consistent values).
   std::vector<double> nodal_areas(std::span<const Vec3> x) const;
+  /// The consistent shares ∫ N_a dA on every facet, also for second-order facets (zero or
+  /// negative at their corners): the nodal forces of a uniform unit traction. Node-based: the
+  /// given areas.
+  std::vector<double> consistent_nodal_areas(std::span<const Vec3> x) const;
   /// Area of one facet (2D: × thickness or × 2π r).
   double facet_area(std::size_t facet, std::span<const Vec3> x) const;
   /// Total area of the surface (node-based: the sum of the given nodal areas).
@@ -66,6 +70,8 @@ class ContactSurface {
   void add_facets(const model::Elements& elements, const model::Surface& surface);
   /// The unique nodes of the facets and the facets around each (compressed rows).
   void index_node_facets();
+  /// nodal_areas() (`lumped`) or consistent_nodal_areas().
+  std::vector<double> nodal_shares(std::span<const Vec3> x, bool lumped) const;
 
   std::string name_;
   bool node_based_ = false;

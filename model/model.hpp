@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contact.hpp"
+#include "coupling.hpp"
 #include "element_types.hpp"
 #include "loads.hpp"
 #include "material.hpp"
@@ -32,6 +33,7 @@ struct Model {
   std::vector<Tie> ties;  ///< *TIE, one per data line, in deck order
   std::vector<PretensionSection> pretension_sections;  ///< in deck order
   std::vector<RigidBody> rigid_bodies;                 ///< *RIGID BODY, in deck order
+  std::vector<Coupling> couplings;                     ///< *COUPLING, in deck order
 
   // Initial (model-level) conditions, in force from the first step on.
   std::vector<BoundaryBlock> boundaries;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "couplings.hpp"
 #include "pretension_split.hpp"
 #include "rigid_bodies.hpp"
 #include "text.hpp"
@@ -284,6 +285,8 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   check_steps(m, diags);
   split_pretension_sections(m, diags);
   finalize_rigid_bodies(m, diags);
+  for (const model::Coupling& c : m.couplings) check_surface(m, diags, c.surface, c.surface_loc, "*COUPLING");
+  finalize_couplings(m, diags);
   switch_on_nlgeom_for_hyperelasticity(m);
 }
 

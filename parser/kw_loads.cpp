@@ -9,6 +9,7 @@
 
 #include "handlers.hpp"
 #include "model/element_types.hpp"
+#include "model/reference_nodes.hpp"
 #include "text.hpp"
 
 namespace inpact::parser {
@@ -171,9 +172,8 @@ void cload(KeywordContext& ctx) {
     auto dof = ctx.dof(f[1]);
     auto magnitude = ctx.real(f[2], "magnitude");
     if (!nodes || !dof || !magnitude) continue;
-    const auto& bodies = ctx.model().rigid_bodies;
     const bool reference_nodes = std::all_of(nodes->begin(), nodes->end(), [&](std::int32_t n) {
-      return model::rigid_body_of_ref_node(bodies, n) != nullptr;
+      return model::is_reference_node(ctx.model(), n);
     });
     if (*dof > 3 && !reference_nodes)
       ctx.warning(f[1].loc, fmt::format("DOF {} is a rotation: inpact's solid and plane elements have none, so "

@@ -251,6 +251,12 @@ void contact_print(KeywordContext& ctx, Kind kind) {
   ctx.state.step->output.push_back(std::move(r));
 }
 
+// *SECTION PRINT, SURFACE=, NAME= (Abaqus's integrated output section, CalculiX's section
+// forces SOF, SOM, ...): read so that the deck runs, not written yet.
+void section_print(KeywordContext& ctx) {
+  ctx.warning(ctx.keyword.loc, "section output (SOF, SOM, SOAREA, ...) is not written yet; the request is ignored");
+}
+
 }  // namespace
 
 void add_output_keywords(std::vector<KeywordSpec>& t) {
@@ -299,6 +305,10 @@ void add_output_keywords(std::vector<KeywordSpec>& t) {
                DataLines::Required, [](KeywordContext& c) { element_print(c, Kind::ElementPrint); }});
   t.push_back({"*CONTACT PRINT", kStepScope, with(surfaces, {frequency, yes_no_summary, totals, time_points}),
                DataLines::Optional, [](KeywordContext& c) { contact_print(c, Kind::ContactPrint); }});
+  t.push_back({"*SECTION PRINT", kStepScope,
+               {{"SURFACE", VK::Required, VT::Text, {}, true}, {"NAME", VK::Required}, {"AXES", VK::Required},
+                {"UPDATE", VK::Required}, frequency, time_points},
+               DataLines::Required, section_print});
   t.push_back({"*NODE FILE", kStepScope, with({{"NSET", VK::Required}}, calculix_file), DataLines::Required,
                [](KeywordContext& c) { node_print(c, Kind::NodeFile); }});
   t.push_back({"*EL FILE", kStepScope,

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis_error.hpp"
 #include "analysis_model.hpp"
 #include "assembler.hpp"
 #include "augmentation.hpp"
@@ -28,6 +29,27 @@ namespace inpact::solver {
 
 namespace {
 
+/// "node 262 DOF 5" for a global DOF; a rotation node's DOFs are its reference node's 4–6 (6 in 2D).
+std::string node_dof(const AnalysisModel& am, std::int64_t d) {
+  const auto node = static_cast<std::int32_t>(d / am.dim);
+  const int c = static_cast<int>(d % am.dim);
+  const auto& labels = am.model->mesh.nodes.labels;
+  for (std::size_t ref = 0; ref < am.rotation_node_of.size(); ++ref)
+    if (am.rotation_node_of[ref] == node) return fmt::format("node {} DOF {}", labels[ref], am.dim == 3 ? 4 + c : 6);
+  return fmt::format("node {} DOF {}", labels[static_cast<std::size_t>(node)], c + 1);
+}
+
+/// A *CLOAD on a DOF that nothing connects (no element, and not a DOF its reference node's
+/// coupling couples) would act on nothing: a deck error rather than a lost load.
+void check_loads_act_on_something(const AnalysisModel& am, const StepConditions& conditions, const DofMap& dofs) {
+  for (std::int64_t d : conditions.loaded_dofs())
+    if (dofs.kind(d) == DofMap::Kind::Unused)
+      throw AnalysisError(fmt::format("error: *CLOAD: {} carries a load but nothing connects that degree of freedom "
+                                      "(no element; for a coupling's reference node, the DOF is not among the coupled "
+                                      "ones), so the load would act on nothing",
+                                      node_dof(am, d)));
+}
+
 /// What a step needs while it runs, built when it starts. Not movable: the assembler keeps a
 /// reference to the DOF map beside it.
 struct StepRun {
@@ -45,6 +67,7 @@ struct StepRun {
         states(material_states) {
     if (contact->empty()) contact.reset();
     else contact->set_threads(threads);
+    check_loads_act_on_something(am, conditions, dofs);
   }
   StepRun(const StepRun&) = delete;
 

@@ -21,6 +21,7 @@
 #include "elements/quadrature.hpp"
 #include "hyperelastic_material.hpp"
 #include "line_element_setup.hpp"
+#include "model/reference_nodes.hpp"
 
 namespace inpact::solver {
 
@@ -223,7 +224,8 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   for (auto& w : contact::tie_warnings(m, am.ties)) am.warnings.push_back(std::move(w));
 
   am.rotation_node_of.assign(m.mesh.nodes.size(), -1);
-  for (const model::RigidBody& b : m.rigid_bodies) am.rotation_node_of[static_cast<std::size_t>(b.ref_node)] = b.rot_node;
+  for (const model::RotatingNode& r : model::rotating_nodes(m, am.dim))
+    am.rotation_node_of[static_cast<std::size_t>(r.ref_node)] = r.rot_node;
   assign_materials(m, am);
   setup_line_elements(m, am);
   check_initial_plastic_strains(m, am);

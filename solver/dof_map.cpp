@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "distributing_coupling.hpp"
 #include "rigid_motion.hpp"
 
 namespace inpact::solver {
@@ -87,17 +88,38 @@ void add_pretension_dependents(const AnalysisModel& am, std::vector<DofMap::Kind
   }
 }
 
-/// The nodes that follow rigid bodies, with their offsets from the reference nodes.
+/// The nodes that follow rigid bodies and kinematic couplings, with their offsets from the
+/// reference nodes.
 std::vector<DofMap::RigidNode> rigid_nodes(const AnalysisModel& am) {
   const auto& coords = am.model->mesh.nodes.coords;
   std::vector<DofMap::RigidNode> out;
+  auto add = [&](std::int32_t n, std::int32_t ref, std::int32_t rot, std::array<bool, 3> follows) {
+    std::array<double, 3> r;
+    for (int c = 0; c < 3; ++c) r[c] = coords[n][c] - coords[ref][c];
+    out.push_back({n, ref, rot, r, follows});
+  };
   for (const model::RigidBody& b : am.model->rigid_bodies)
-    for (std::int32_t n : b.nodes) {
-      std::array<double, 3> r;
-      for (int c = 0; c < 3; ++c) r[c] = coords[n][c] - coords[b.ref_node][c];
-      out.push_back({n, b.ref_node, b.rot_node, r});
-    }
+    for (std::int32_t n : b.nodes) add(n, b.ref_node, b.rot_node, {true, true, true});
+  for (const model::Coupling& c : am.model->couplings)
+    if (c.kind == model::Coupling::Kind::Kinematic)
+      for (std::int32_t n : c.nodes) add(n, c.ref_node, c.rot_node, {c.dofs[0], c.dofs[1], c.dofs[2]});
   return out;
+}
+
+/// The reference-node DOFs a rigid node's followed translations use: u_R,c and the rotations
+/// with a non-zero weight at θ = 0. A coupling's other reference DOFs stay unused (no rule, no
+/// stiffness); a rigid body's are all used.
+void mark_reference_dofs_used(int dim, std::span<const DofMap::RigidNode> nodes, std::vector<DofMap::Kind>& kind) {
+  const int n_rot = dim == 3 ? 3 : 1;
+  for (const DofMap::RigidNode& n : nodes) {
+    const RigidMotion motion = rigid_motion({0, 0, 0}, n.r, dim, false);
+    for (int c = 0; c < dim; ++c) {
+      if (!n.follows[c]) continue;
+      kind[static_cast<std::size_t>(n.ref) * dim + c] = DofMap::Kind::Free;
+      for (int k = 0; k < n_rot; ++k)
+        if (motion.d_dtheta[k][c] != 0.0) kind[static_cast<std::size_t>(n.rot) * dim + k] = DofMap::Kind::Free;
+    }
+  }
 }
 
 /// *RIGID BODY: u_c = u_R,c + Σ_k ∂(R r)_c/∂θ_k θ_k (small rotations: exactly the motion). Every
@@ -110,6 +132,7 @@ void add_rigid_dependents(const AnalysisModel& am, std::span<const DofMap::Rigid
     const Vec3d theta = u ? rotation_of(*u, n.rot, am.dim) : Vec3d{0, 0, 0};
     const RigidMotion motion = rigid_motion(theta, n.r, am.dim, finite);
     for (int c = 0; c < am.dim; ++c) {
+      if (!n.follows[c]) continue;
       const std::int64_t d = static_cast<std::int64_t>(n.node) * am.dim + c;
       if (kind[d] == DofMap::Kind::Prescribed || dependent.count(d))
         throw AnalysisError(fmt::format("error: *RIGID BODY: node {} follows a rigid body and also has a boundary "
@@ -117,10 +140,30 @@ void add_rigid_dependents(const AnalysisModel& am, std::span<const DofMap::Rigid
                                         m.mesh.nodes.labels[n.node], m.mesh.nodes.labels[n.ref]));
       std::vector<MasterTerm> terms{{static_cast<std::int64_t>(n.ref) * am.dim + c, 1.0}};
       for (int k = 0; k < n_rot; ++k)
-        terms.push_back({static_cast<std::int64_t>(n.rot) * am.dim + k, motion.d_dtheta[k][c]});
+        if (kind[static_cast<std::size_t>(n.rot) * am.dim + k] != DofMap::Kind::Unused)
+          terms.push_back({static_cast<std::int64_t>(n.rot) * am.dim + k, motion.d_dtheta[k][c]});
       dependent[d] = std::move(terms);
       kind[d] = DofMap::Kind::Dependent;
     }
+  }
+}
+
+/// A distributing coupling's coupled reference DOFs get a rule (distributing_coupling.hpp): they
+/// take part though no element connects them. Its rotations are linear in u, so a step with
+/// NLGEOM refuses them.
+void mark_distributing_reference_dofs(const AnalysisModel& am, bool finite_rotations, std::vector<DofMap::Kind>& kind) {
+  const model::Model& m = *am.model;
+  for (const model::Coupling& c : m.couplings) {
+    if (c.kind != model::Coupling::Kind::Distributing) continue;
+    if (finite_rotations && c.needs_rotations(am.dim))
+      throw AnalysisError(fmt::format("{}: error: *COUPLING: coupling '{}' distributes rotations, which inpact does for "
+                                      "small rotations only; with NLGEOM couple the translations only (DOFs 1–{})",
+                                      m.sources.describe(c.loc), c.name, am.dim));
+    for (int k = 0; k < am.dim; ++k)
+      if (c.dofs[static_cast<std::size_t>(k)]) kind[static_cast<std::size_t>(c.ref_node) * am.dim + k] = DofMap::Kind::Free;
+    for (int k = 0; k < 3; ++k)
+      if ((am.dim == 3 || k == 2) && c.dofs[static_cast<std::size_t>(3 + k)])
+        kind[static_cast<std::size_t>(c.rot_node) * am.dim + (am.dim == 3 ? k : 0)] = DofMap::Kind::Free;
   }
 }
 
@@ -154,7 +197,7 @@ void check_no_chain_through_rigid_nodes(const AnalysisModel& am, std::span<const
                                         const Dependents& dependent) {
   std::vector<std::uint8_t> rigid(am.n_dof(), 0);
   for (const auto& n : nodes)
-    for (int c = 0; c < am.dim; ++c) rigid[static_cast<std::size_t>(n.node) * am.dim + c] = 1;
+    for (int c = 0; c < am.dim; ++c) rigid[static_cast<std::size_t>(n.node) * am.dim + c] = n.follows[c];
   for (const auto& [d, terms] : dependent) {
     if (rigid[static_cast<std::size_t>(d)]) continue;
     for (const auto& t : terms)
@@ -201,6 +244,7 @@ DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector
   add_pretension_dependents(am, kind_, dependent);
   add_rigid_dependents(am, rigid_, u, finite_rotations_, kind_, dependent);
   if (has_finite_rotations()) check_no_chain_through_rigid_nodes(am, rigid_, dependent);
+  add_distributing_dependents(am, kind_, dependent);
   substitute_chains(dependent);
   return dependent;
 }
@@ -242,6 +286,8 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
       map.kind_[static_cast<std::int64_t>(b.ref_node) * am.dim + c] = Kind::Free;
       if (c == 0 || am.dim == 3) map.kind_[static_cast<std::int64_t>(b.rot_node) * am.dim + c] = Kind::Free;
     }
+  mark_reference_dofs_used(am.dim, map.rigid_, map.kind_);
+  mark_distributing_reference_dofs(am, finite_rotations, map.kind_);
   for (std::int64_t d = 0; d < n; ++d)
     if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
   map.lay_out(map.dependents(am, nullptr));

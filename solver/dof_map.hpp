@@ -4,10 +4,11 @@
 /// Global DOF d = node_row · dim + component. Each DOF is one of
 ///  - free: an unknown of the linear system (equation number eq(d) >= 0);
 ///  - prescribed: its value comes from a boundary condition (no equation);
-///  - dependent: eliminated by a *EQUATION, *TIE or *PRE-TENSION SECTION, u_d = Σ w_i u_i over
-///    independent DOFs, or by a *RIGID BODY, u = u_R + (R(θ) − I) r (rigid_motion.hpp): linear
-///    for small rotations; with finite rotations (NLGEOM) the weights are ∂u/∂(u_R, θ) at the
-///    current θ, renewed by relinearize() each iteration;
+///  - dependent: eliminated by a *EQUATION, *TIE, *PRE-TENSION SECTION or distributing
+///    *COUPLING, u_d = Σ w_i u_i over independent DOFs, or by a *RIGID BODY or kinematic
+///    *COUPLING, u = u_R + (R(θ) − I) r (rigid_motion.hpp): linear for small rotations; with
+///    finite rotations (NLGEOM) the weights are ∂u/∂(u_R, θ) at the current θ, renewed by
+///    relinearize() each iteration;
 ///  - unused: a node no element connects (no stiffness; held at zero, not reported).
 /// Assembly expands each element DOF into its independent DOFs ("masters") with weights, so
 /// K_reduced = Tᵀ K T without ever forming T.
@@ -51,10 +52,12 @@ class DofMap {
   void relinearize(const AnalysisModel& am, const std::vector<double>& u);
   bool has_finite_rotations() const { return finite_rotations_ && !rigid_.empty(); }
 
-  /// One node of a rigid body: its offset r from the reference node.
+  /// One node of a rigid body or kinematic coupling: its offset r from the reference node and
+  /// which of its translations follow the body (a coupling's DOF subset; a body: all).
   struct RigidNode {
     std::int32_t node, ref, rot;
     std::array<double, 3> r;
+    std::array<bool, 3> follows{true, true, true};
   };
 
  private:

@@ -9,6 +9,7 @@
 #include "elements/element_kernel.hpp"
 #include "elements/material.hpp"
 #include "material_states.hpp"
+#include "model/reference_nodes.hpp"
 
 namespace inpact::solver {
 
@@ -296,7 +297,7 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
             add_unique(a.variables, t);
       }
       // Abaqus's U and RF hold the rotations and moments too: UR and RM of the reference nodes.
-      if (!model.rigid_bodies.empty()) {
+      if (!model::rotating_nodes(model, am.dim).empty()) {
         const auto& v = a.variables;
         if (std::find(v.begin(), v.end(), "U") != v.end()) add_unique(a.variables, "UR");
         if (std::find(v.begin(), v.end(), "RF") != v.end()) add_unique(a.variables, "RM");
@@ -469,10 +470,10 @@ FieldData rotation_field(const AnalysisModel& am, const std::string& key, const 
   f.region = where.region;
   const NodalKey k = key == "UR" ? NodalKey::UR : NodalKey::RM;
   const int n_comp = static_cast<int>(f.component_labels.size());
-  for (const model::RigidBody& b : am.model->rigid_bodies) {
-    if (!where.whole && !std::binary_search(where.rows.begin(), where.rows.end(), b.ref_node)) continue;
-    f.nodes.push_back(b.ref_node);
-    for (int c = 0; c < n_comp; ++c) f.values.push_back(rotation_value(am, k, static_cast<std::size_t>(b.ref_node), c, u, rf));
+  for (const model::RotatingNode& r : model::rotating_nodes(*am.model, am.dim)) {
+    if (!where.whole && !std::binary_search(where.rows.begin(), where.rows.end(), r.ref_node)) continue;
+    f.nodes.push_back(r.ref_node);
+    for (int c = 0; c < n_comp; ++c) f.values.push_back(rotation_value(am, k, static_cast<std::size_t>(r.ref_node), c, u, rf));
   }
   return f;
 }

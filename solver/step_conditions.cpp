@@ -56,6 +56,13 @@ ConditionHistory initial_history(const AnalysisModel& am) {
   return h;
 }
 
+std::vector<std::int64_t> StepConditions::loaded_dofs() const {
+  std::vector<std::int64_t> out;
+  for (const auto& [d, v] : target_.cload)
+    if (v.value != 0.0) out.push_back(d);
+  return out;
+}
+
 StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step, const ConditionHistory& previous,
                                double step_start_time)
     : am_(am), step_(step), start_time_(step_start_time), previous_(previous), target_(previous) {

@@ -75,6 +75,8 @@ class StepConditions {
 
   /// Per global DOF: 1 when a boundary condition prescribes it in this step.
   const std::vector<std::uint8_t>& prescribed() const { return prescribed_; }
+  /// The DOFs a *CLOAD in force this step loads (non-zero magnitude), ascending.
+  std::vector<std::int64_t> loaded_dofs() const;
   /// Writes the prescribed DOFs' values at step time t into u. `u_start` is u at the start of
   /// the increment; the first call of the step (increment 1: every attempt of it starts from
   /// the step start) records where each ramped DOF starts, so that later increments ramp from

@@ -403,34 +403,36 @@ TEST_F(FieldOutput, PreselectBringsPlasticStrainsOnlyWhenASectionIsPlastic) {
 }
 
 TEST_F(FieldOutput, PlasticStrainsInTheResultsAndInElPrint) {
-  const auto m = read(kPlastic + pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT, ELSET=TOPEL\nPE, PEEQ, PEMAG\n"
-                                           "*EL PRINT, ELSET=TOPEL\nPEEQ, PE33, PE11, PEMAG\n"));
-  // Δε̄ᵖ = 0.05 in one increment is beyond fifty times the yield strain (1e-3): the step is cut
-  // back to quarters, and the proportional load path ends where one increment would.
+  // σ_y = 200 + 1250 ε̄ᵖ: σ33 = 250 gives ε̄ᵖ = 0.04 in one increment, clear of the cut-back at
+  // fifty times the yield strain (50 · 200 / 200000 = 0.05), which round-off would decide for
+  // the table above (exactly 0.05).
+  const std::string plastic = "*PLASTIC\n200., 0.\n325., 0.1\n";
+  const auto m = read(plastic + pull_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT, ELSET=TOPEL\nPE, PEEQ, PEMAG\n"
+                                          "*EL PRINT, ELSET=TOPEL\nPEEQ, PE33, PE11, PEMAG\n"));
   const Recorder rec = run(m);
-  ASSERT_EQ(rec.frames.size(), 4u);
+  ASSERT_EQ(rec.frames.size(), 1u);
   const Frame& f = rec.frames.back();
   for (const auto& fd : f.fields) {
     ASSERT_EQ(fd.elements.size(), 8u) << fd.key;  // TOPEL's 8 points
     if (fd.key == "PE") {
       EXPECT_EQ(fd.component_labels, (std::vector<std::string>{"PE11", "PE22", "PE33", "PE12", "PE13", "PE23"}));
-      EXPECT_NEAR(fd.values[2], 0.05, 1e-9);
-      EXPECT_NEAR(fd.values[0], -0.025, 1e-9);
+      EXPECT_NEAR(fd.values[2], 0.04, 1e-9);
+      EXPECT_NEAR(fd.values[0], -0.02, 1e-9);
     } else {
       EXPECT_EQ(fd.component_labels, (std::vector<std::string>{fd.key}));
       ASSERT_EQ(fd.values.size(), 8u);
-      for (double v : fd.values) EXPECT_NEAR(v, 0.05, 1e-9) << fd.key;
+      for (double v : fd.values) EXPECT_NEAR(v, 0.04, 1e-9) << fd.key;
     }
   }
-  ASSERT_EQ(rec.prints.size(), 4u);
+  ASSERT_EQ(rec.prints.size(), 1u);
   const auto& t = rec.prints.back().tables.at(0);
   EXPECT_EQ(t.columns, (std::vector<std::string>{"PEEQ", "PE33", "PE11", "PEMAG"}));
   ASSERT_EQ(t.values.size(), 32u);
   for (std::size_t p = 0; p < 8; ++p) {
-    EXPECT_NEAR(t.values[4 * p], 0.05, 1e-9);
-    EXPECT_NEAR(t.values[4 * p + 1], 0.05, 1e-9);
-    EXPECT_NEAR(t.values[4 * p + 2], -0.025, 1e-9);
-    EXPECT_NEAR(t.values[4 * p + 3], 0.05, 1e-9);
+    EXPECT_NEAR(t.values[4 * p], 0.04, 1e-9);
+    EXPECT_NEAR(t.values[4 * p + 1], 0.04, 1e-9);
+    EXPECT_NEAR(t.values[4 * p + 2], -0.02, 1e-9);
+    EXPECT_NEAR(t.values[4 * p + 3], 0.04, 1e-9);
   }
 }
 

@@ -1,0 +1,82 @@
+#include "couplings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "model/mesh_queries.hpp"
+#include "rotation_nodes.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+constexpr const char* kKeyword = "*COUPLING";
+
+/// The surface's nodes within the influence radius of the reference node, without it.
+std::vector<std::int32_t> coupling_nodes(const model::Model& m, const model::Coupling& c) {
+  const model::Surface& s = m.mesh.surfaces.at(c.surface);
+  std::vector<std::int32_t> nodes = s.nodes;
+  for (const model::Face& f : s.faces)
+    for (std::int32_t n : model::face_nodes(m.mesh.elements, f)) nodes.push_back(n);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const auto& x = m.mesh.nodes.coords;
+  const auto& xr = x[static_cast<std::size_t>(c.ref_node)];
+  std::erase_if(nodes, [&](std::int32_t n) {
+    if (n == c.ref_node) return true;
+    if (c.influence_radius <= 0) return false;
+    const auto& xn = x[static_cast<std::size_t>(n)];
+    return std::hypot(xn[0] - xr[0], xn[1] - xr[1], xn[2] - xr[2]) > c.influence_radius;
+  });
+  return nodes;
+}
+
+/// A reference node serves one constraint: a second coupling or a rigid body on it would give
+/// its DOFs two rules.
+void check_reference_nodes_distinct(const model::Model& m, Diagnostics& diags) {
+  std::set<std::int32_t> taken;
+  for (const model::RigidBody& b : m.rigid_bodies) {
+    taken.insert(b.ref_node);
+    taken.insert(b.nodes.begin(), b.nodes.end());
+  }
+  for (const model::Coupling& c : m.couplings)
+    if (c.ref_node >= 0 && !taken.insert(c.ref_node).second)
+      diags.error(c.ref_loc, kKeyword, fmt::format("coupling '{}': the reference node {} is already a rigid body's node or "
+                                                   "another coupling's reference node; give each constraint its own",
+                                                   c.name, m.mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
+}
+
+}  // namespace
+
+void finalize_couplings(model::Model& m, Diagnostics& diags) {
+  if (m.couplings.empty()) return;
+  const std::vector<std::uint8_t> on_continuum = continuum_nodes(m);
+  for (model::Coupling& c : m.couplings) {
+    if (c.kind == model::Coupling::Kind::Unset) {
+      diags.error(c.loc, kKeyword, fmt::format("coupling '{}' is followed by neither *KINEMATIC nor *DISTRIBUTING", c.name));
+      continue;
+    }
+    // An unknown reference node or surface is reported already.
+    if (c.ref_node < 0 || !m.mesh.surfaces.count(c.surface)) continue;
+    c.nodes = coupling_nodes(m, c);
+    if (c.nodes.empty())
+      diags.error(c.surface_loc, kKeyword, fmt::format("coupling '{}' has no coupling node: surface '{}' has no node{}",
+                                                       c.name, c.surface,
+                                                       c.influence_radius > 0 ? " within the influence radius" : ""));
+    check_not_on_continuum(m, on_continuum, c.ref_node, c.ref_loc, kKeyword, "reference node", diags);
+  }
+  check_reference_nodes_distinct(m, diags);
+  if (diags.has_errors()) return;
+  const int dim = model::spatial_dimension(m.mesh.elements);
+  for (model::Coupling& c : m.couplings) {
+    if (c.needs_rotations(dim)) {
+      c.rot_node = add_rotation_node(m, c.ref_node, fmt::format("{} '{}' (line {})", kKeyword, c.name, c.loc.line));
+      c.rot_node_added = true;
+    }
+  }
+}
+
+}  // namespace inpact::parser
