@@ -58,7 +58,7 @@ void ContactSurface::add_facets(const model::Elements& elements, const model::Su
     if (face.face >= info.faces.size())
       throw std::invalid_argument(where(surface) + ": element face S" + std::to_string(face.face + 1) +
                                   " does not exist on " + std::string(info.name));
-    const bool axi = info.family == model::ElementFamily::Axisymmetric;
+    const bool axi = model::is_axisymmetric(info);
     if (first) {
       dim_ = info.dim;
       axisymmetric_ = axi;

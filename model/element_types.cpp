@@ -32,6 +32,13 @@ constexpr std::array<FaceDef, 4> kQuad4 = {face({1, 2}), face({2, 3}), face({3, 
 constexpr std::array<FaceDef, 4> kQuad8 = {face({1, 2}, {5}), face({2, 3}, {6}), face({3, 4}, {7}),
                                            face({4, 1}, {8})};
 constexpr std::array<FaceDef, 3> kTri3 = {face({1, 2}), face({2, 3}), face({3, 1})};
+// Rigid elements (R3D3, R3D4, R2D2, RAX2): the element is its own surface, S1 = SNEG and
+// S2 = SPOS. Abaqus's positive normal follows the node order by the right-hand rule (2D: the
+// direction 1 → 2 turned counter-clockwise), so SPOS lists the nodes reversed in the solids'
+// convention above (its normal out of the face) and SNEG as given.
+constexpr std::array<FaceDef, 2> kRigidTri = {face({1, 2, 3}), face({1, 3, 2})};
+constexpr std::array<FaceDef, 2> kRigidQuad = {face({1, 2, 3, 4}), face({1, 4, 3, 2})};
+constexpr std::array<FaceDef, 2> kRigidLine = {face({1, 2}), face({2, 1})};
 constexpr std::array<FaceDef, 3> kTri6 = {face({1, 2}, {4}), face({2, 3}, {5}), face({3, 1}, {6})};
 
 using F = ElementFamily;
@@ -86,6 +93,10 @@ constexpr ElementTypeInfo kTypes[] = {
     {"SPRINGA", F::Spring, I::Full, 0, 2, 1, {}},
     {"SPRING1", F::Spring, I::Full, 0, 1, 1, {}},
     {"SPRING2", F::Spring, I::Full, 0, 2, 1, {}},
+    {"R3D3", F::Rigid, I::Full, 3, 3, 1, kRigidTri},
+    {"R3D4", F::Rigid, I::Full, 3, 4, 1, kRigidQuad},
+    {"R2D2", F::Rigid, I::Full, 2, 2, 1, kRigidLine},
+    {"RAX2", F::Rigid, I::Full, 2, 2, 1, kRigidLine},
 };
 
 }  // namespace

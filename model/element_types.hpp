@@ -13,7 +13,8 @@ enum class ElementFamily : std::uint8_t {
   PlaneStress,  ///< CPS*
   Axisymmetric, ///< CAX*
   Truss,        ///< T2D2, T3D2, T3D3: axial force only, cross-section area from *SOLID SECTION
-  Spring        ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
+  Spring,       ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
+  Rigid         ///< R3D3, R3D4, R2D2, RAX2: no stiffness, a surface of a *RIGID BODY (faces SNEG, SPOS)
 };
 
 enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
@@ -44,7 +45,15 @@ struct ElementTypeInfo {
 /// Solids, plane and axisymmetric elements: the types with faces, sections of a material and
 /// the continuum kernels (not trusses or springs).
 inline bool is_continuum(const ElementTypeInfo& t) {
-  return t.family != ElementFamily::Truss && t.family != ElementFamily::Spring;
+  return t.family != ElementFamily::Truss && t.family != ElementFamily::Spring && t.family != ElementFamily::Rigid;
+}
+
+/// R3D3, R3D4, R2D2, RAX2: nodes that follow their *RIGID BODY, faces for contact, no stiffness.
+inline bool is_rigid(const ElementTypeInfo& t) { return t.family == ElementFamily::Rigid; }
+
+/// Elements of an axisymmetric model: CAX* and the axisymmetric rigid element RAX2.
+inline bool is_axisymmetric(const ElementTypeInfo& t) {
+  return t.family == ElementFamily::Axisymmetric || t.name == "RAX2";
 }
 
 /// The type with this (upper-case) name, or nullptr when inpact does not support it.

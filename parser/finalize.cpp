@@ -105,6 +105,13 @@ void check_sections(model::Model& m, Diagnostics& diags) {
   int reported = 0;
   std::size_t missing = 0;
   for (std::size_t e = 0; e < has_section.size(); ++e) {
+    if (model::is_rigid(model::element_type(m.mesh.elements.type[e]))) {
+      if (has_section[e])
+        diags.error(m.mesh.elements.loc[e], "*ELEMENT", fmt::format("element {} is a rigid element and takes no "
+                                                                     "section (its *RIGID BODY defines it)",
+                                                                     m.mesh.elements.labels[e]));
+      continue;
+    }
     if (has_section[e]) continue;
     ++missing;
     if (reported < 3) {

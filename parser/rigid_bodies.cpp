@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "model/element_types.hpp"
 #include "rotation_nodes.hpp"
 
 namespace inpact::parser {
@@ -44,9 +45,28 @@ void check_disjoint(const model::Model& m, Diagnostics& diags) {
                                                    m.mesh.nodes.labels[static_cast<std::size_t>(b.ref_node)]));
 }
 
+/// A rigid element (R3D4, ...) has no stiffness: without a body to follow, its nodes would be
+/// held by nothing. The first few are reported.
+void check_rigid_elements_in_bodies(const model::Model& m, Diagnostics& diags) {
+  std::vector<std::uint8_t> in_body(m.mesh.elements.size(), 0);
+  for (const model::RigidBody& b : m.rigid_bodies)
+    for (std::int32_t e : b.elements) in_body[static_cast<std::size_t>(e)] = 1;
+  int reported = 0;
+  for (std::size_t e = 0; e < m.mesh.elements.size() && reported < 3; ++e) {
+    const auto& type = model::element_type(m.mesh.elements.type[e]);
+    if (!model::is_rigid(type) || in_body[e]) continue;
+    diags.error(m.mesh.elements.loc[e], "*ELEMENT",
+                fmt::format("element {} ({}) is a rigid element, and no *RIGID BODY, ELSET= holds it: its nodes would "
+                            "follow nothing",
+                            m.mesh.elements.labels[e], type.name));
+    ++reported;
+  }
+}
+
 }  // namespace
 
 void finalize_rigid_bodies(model::Model& m, Diagnostics& diags) {
+  check_rigid_elements_in_bodies(m, diags);
   if (m.rigid_bodies.empty()) return;
   const std::vector<std::uint8_t> on_continuum = continuum_nodes(m);
   for (model::RigidBody& b : m.rigid_bodies) {

@@ -182,17 +182,20 @@ AnalysisModel build_analysis_model(const model::Model& m) {
 
   // One kind of model at a time: the DOFs per node and the axisymmetric ring integration
   // apply to the whole model. Springs take the dimension of the rest (3 in a model of springs).
+  // Rigid elements take the model's kind too, as long as their dimension is its.
   std::size_t first_row = 0;
-  while (first_row + 1 < el.size() && model::element_type(el.type[first_row]).family == model::ElementFamily::Spring)
-    ++first_row;
+  auto takes_the_models = [](const model::ElementTypeInfo& t) {
+    return t.family == model::ElementFamily::Spring || model::is_rigid(t);
+  };
+  while (first_row + 1 < el.size() && takes_the_models(model::element_type(el.type[first_row]))) ++first_row;
   const auto& first = model::element_type(el.type[first_row]);
   am.dim = first.dim ? first.dim : 3;
-  am.axisymmetric = first.family == model::ElementFamily::Axisymmetric;
+  am.axisymmetric = model::is_axisymmetric(first);
   for (std::size_t e = 0; e < el.size(); ++e) {
     const auto& t = model::element_type(el.type[e]);
     am.elements[e].type = &t;
     if (t.family == model::ElementFamily::Spring) continue;
-    if (t.dim != am.dim || (t.family == model::ElementFamily::Axisymmetric) != am.axisymmetric)
+    if (t.dim != am.dim || (!model::is_rigid(t) && model::is_axisymmetric(t) != am.axisymmetric))
       throw AnalysisError(fmt::format("{}: error: *ELEMENT: element {} ({}) cannot be combined with {} elements in one model",
                                       m.sources.describe(el.loc[e]), el.labels[e], t.name, first.name));
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <thread>
 
 #include "elements/element_kernel.hpp"
@@ -118,6 +119,11 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   er.internal_force = true;
   er.nlgeom = request.nlgeom;
   er.point_output = request.points;
+  if (model::is_rigid(*setup.type)) {  // no stiffness, no points: its nodes follow the body
+    out = elements::ElementSystem{};
+    out.min_jacobian = std::numeric_limits<double>::infinity();
+    return;
+  }
   const auto nodes = mesh.elements.nodes_of(e);
   // Gathered on the stack: no allocation per element (at most 20 nodes × 3 DOFs).
   constexpr std::size_t kMaxNodes = 32;

@@ -377,6 +377,7 @@ class PointCache {
       if (auto p = kept_->of(el); !p.empty()) return p;
     if (have_[el]) return points_[el];
     const ElementSetup& setup = am_.elements[el];
+    if (model::is_rigid(*setup.type)) return {};  // no points: a rigid element is not integrated
     std::vector<double> u_el, dt_el;
     for (std::int32_t node : am_.model->mesh.elements.nodes_of(el)) {
       for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(node) * am_.dim + c]);
@@ -711,6 +712,7 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
   std::map<std::uint8_t, std::size_t> table_of_type;
   auto add = [&](std::size_t el) {
     const std::uint8_t type = elements.type[el];
+    if (model::is_rigid(model::element_type(type))) return;  // rigid elements have no points
     auto [it, inserted] = table_of_type.emplace(type, tables.size());
     if (inserted) {
       PrintTable t;

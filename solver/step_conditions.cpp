@@ -109,6 +109,8 @@ void StepConditions::add_dload_shape(const Key& key) {
   if (dload_shape_.count(key) || rotation_moments_.count(key)) return;
   const ElementSetup& setup = am_.elements[key.element];
   if (setup.type->family == model::ElementFamily::Spring) return;  // springs have no mass: GRAV, CENTRIF add nothing
+  // Rigid elements have no volume (inpact gives rigid bodies no mass): only pressure loads them.
+  if (model::is_rigid(*setup.type) && key.key >= 100) return;
   const auto coords = am_.coords(key.element);
   if (key.key == 300 || key.key == 400) {
     const auto moments = elements::volume_moments(*setup.type, coords, setup.section);

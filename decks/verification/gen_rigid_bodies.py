@@ -120,6 +120,82 @@ def punch(ccx=False):
     return d
 
 
+def punch_r3d4():
+    """The same punch as a sheet of R3D4 rigid elements (its bottom face alone), the surface
+    their SNEG side: the node order turns counter-clockwise seen from above, so SPOS faces up."""
+    coords, conn = grid_hex(8, 8, 4, (0, 0, 0), (4, 4, 2), False)[:2]
+    base = max(coords)
+    pc, pconn = grid_hex(4, 4, 1, (1, 1, 2), (3, 3, 2.5), False)[:2]
+    pc = {k: x for k, x in pc.items() if abs(x[2] - 2) < EPS}  # the bottom layer of nodes
+    coords.update({base + k: x for k, x in pc.items()})
+    ref = max(coords) + 1
+    coords[ref] = (2.0, 2.0, 3.0)
+    first_punch = len(conn) + 1
+    d = Deck("The rigid flat punch of rigid_punch_c3d8.inp as R3D4 elements, pressed 0.01 into the block",
+             ["Reference: the punch made of C3D8 elements (rigid_punch_c3d8.inp): its bottom face is",
+              "this sheet, so RF3 and the contact pressures are the same; RF3 = sum CPRESS * CNAREA."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BLOCK", conn)
+    d.elements("R3D4", "PUNCH", [[n + base for n in c[:4]] for c in pconn], first=first_punch)
+    d.nset("BASE", select(coords, lambda x: abs(x[2]) < EPS))
+    d.nset("REF", [ref])
+    d.elset("BLOCK_TOP_EL", [e + 1 for e, c in enumerate(conn) if all(abs(coords[n][2] - 2) < EPS for n in c[4:8])])
+    d.add("*SURFACE, NAME=BLOCK_TOP", "BLOCK_TOP_EL, S2", "*SURFACE, NAME=PUNCH_BOTTOM", "PUNCH, SNEG")
+    d.add("*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", *MATERIAL)
+    d.add("*RIGID BODY, REF NODE=REF, ELSET=PUNCH")
+    d.add("*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11")
+    d.add("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
+    d.add("*BOUNDARY", "BASE, 1, 3")
+    d.add("*STEP", "*STATIC", "*BOUNDARY", "REF, 1, 2", "REF, 3, 3, -0.01", "REF, 4, 6")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*CONTACT OUTPUT", "CPRESS, CNAREA, CSTATUS",
+          "*NODE PRINT, NSET=REF", "RF", "*END STEP")
+    return d
+
+
+def punch_2d(block_type, sheet):
+    """A flat rigid punch 2 wide pressed 0.01 into a 4 x 2 plane-strain or axisymmetric block:
+    made of rigid quads (sheet=False) or of R2D2 / RAX2 line elements along its bottom edge,
+    their SNEG side down (node order +x, so the positive normal, turned counter-clockwise, is up)."""
+    coords, conn = grid_quad(8, 4, lambda s, t: (4 * s, 2 * t), False)
+    base = max(coords)
+    pc, pconn = grid_quad(4, 1, lambda s, t: (2 * s, 2 + 0.5 * t), False)
+    if sheet:
+        pc = {k: x for k, x in pc.items() if abs(x[1] - 2) < EPS}
+        pconn = [c[:2] for c in pconn]
+    coords.update({base + k: x for k, x in pc.items()})
+    ref = max(coords) + 1
+    coords[ref] = (1.0, 3.0, 0.0)
+    axi = block_type.startswith("CAX")
+    line_type = "RAX2" if axi else "R2D2"
+    first_punch = len(conn) + 1
+    what = f"{line_type} elements" if sheet else f"{block_type} elements made rigid"
+    d = Deck(f"A rigid flat punch ({what}) pressed 0.01 into a {block_type} block through its reference node",
+             ["Reference: the punch of rigid quads and the one of rigid line elements along its bottom edge",
+              "give the same RF2; RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX)."])
+    d.nodes(coords, 2)
+    d.elements(block_type, "BLOCK", conn)
+    d.elements(line_type if sheet else block_type, "PUNCH", [[n + base for n in c] for c in pconn], first=first_punch)
+    d.nset("BASE", select(coords, lambda x: abs(x[1]) < EPS))
+    d.nset("REF", [ref])
+    d.elset("BLOCK_TOP_EL", [e + 1 for e, c in enumerate(conn) if all(abs(coords[n][1] - 2) < EPS for n in c[2:4])])
+    d.add("*SURFACE, NAME=BLOCK_TOP", "BLOCK_TOP_EL, S3",
+          "*SURFACE, NAME=PUNCH_BOTTOM", "PUNCH, SNEG" if sheet else "PUNCH, S1")
+    d.add("*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL")
+    if not sheet:
+        d.add("*SOLID SECTION, ELSET=PUNCH, MATERIAL=STEEL")
+    d.add(*MATERIAL)
+    d.add("*RIGID BODY, REF NODE=REF, ELSET=PUNCH")
+    d.add("*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11")
+    d.add("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
+    d.add("*BOUNDARY", "BASE, 1, 2", "REF, 1, 1", "REF, 6, 6")
+    if axi:
+        d.add("*NSET, NSET=AXIS", ", ".join(str(n) for n in select({k: x for k, x in coords.items() if k <= base}, lambda x: abs(x[0]) < EPS)),
+              "*BOUNDARY", "AXIS, 1, 1")
+    d.add("*STEP", "*STATIC", "*BOUNDARY", "REF, 2, 2, -0.01")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*CONTACT OUTPUT", "CPRESS, CNAREA", "*END STEP")
+    return d
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", required=True)
@@ -127,7 +203,10 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     decks = {"rigid_moment_block_c3d8.inp": moment_block(), "rigid_spin_block_c3d8.inp": spin_block(),
-             "rigid_spin_plate_cpe4.inp": spin_plate(), "rigid_punch_c3d8.inp": punch()}
+             "rigid_spin_plate_cpe4.inp": spin_plate(), "rigid_punch_c3d8.inp": punch(),
+             "rigid_punch_r3d4.inp": punch_r3d4(),
+             "rigid_punch_cpe4.inp": punch_2d("CPE4", False), "rigid_punch_r2d2.inp": punch_2d("CPE4", True),
+             "rigid_punch_cax4.inp": punch_2d("CAX4", False), "rigid_punch_rax2.inp": punch_2d("CAX4", True)}
     if a.ccx:
         decks["rigid_punch_c3d8_ccx.inp"] = punch(ccx=True)
     for name, d in decks.items():

@@ -58,7 +58,8 @@ double out_of_plane_measure(ElementFamily family, const SectionData& section, do
     case ElementFamily::PlaneStress: return section.thickness;
     case ElementFamily::Solid3D:
     case ElementFamily::Truss:  // (line elements take line_elements.cpp's kernels)
-    case ElementFamily::Spring: return 1.0;
+    case ElementFamily::Spring:
+    case ElementFamily::Rigid: return 1.0;  // (rigid elements are never integrated)
   }
   return 1.0;
 }

@@ -93,3 +93,39 @@ TEST(RigidBodyKeyword, DeckErrorsNameTheNodeAndTheLine) {
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.report().find("ANALYTICAL SURFACE is not supported yet"), std::string::npos) << r.report();
 }
+
+namespace {
+
+/// The cube with an R3D4 sheet (element 2, nodes 60–63) above it; `rest` adds the body, the
+/// surface or what else a case needs.
+std::string cube_with_sheet(const std::string& rest) {
+  return cube("*NODE\n60, 0., 0., 3.\n61, 1., 0., 3.\n62, 1., 1., 3.\n63, 0., 1., 3.\n"
+              "*ELEMENT, TYPE=R3D4, ELSET=SHEET\n2, 60, 61, 62, 63\n" +
+              rest);
+}
+
+}  // namespace
+
+TEST(RigidBodyKeyword, RigidElementsHaveSposAndSnegFacesAndNeedABody) {
+  DeckDir dir;
+  auto r = dir.read(cube_with_sheet("*RIGID BODY, REF NODE=50, ELSET=SHEET\n*SURFACE, NAME=DOWN\nSHEET, SNEG\n"
+                                    "*SURFACE, NAME=UP\nSHEET, SPOS\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  EXPECT_EQ(r.model.mesh.surfaces.at("DOWN").faces.at(0).face, 0);  // S1 = SNEG
+  EXPECT_EQ(r.model.mesh.surfaces.at("UP").faces.at(0).face, 1);    // S2 = SPOS
+  EXPECT_EQ(r.model.rigid_bodies.at(0).nodes.size(), 4u);
+  // A solid's face name, no face at all, no body, a section.
+  r = dir.read(cube_with_sheet("*RIGID BODY, REF NODE=50, ELSET=SHEET\n*SURFACE, NAME=S\nSHEET, S1\n"));
+  EXPECT_NE(r.report().find("element 2 (R3D4) is a rigid element: its faces are SPOS and SNEG, not 'S1'"),
+            std::string::npos)
+      << r.report();
+  r = dir.read(cube_with_sheet("*RIGID BODY, REF NODE=50, ELSET=SHEET\n*SURFACE, NAME=S\nSHEET\n"));
+  EXPECT_NE(r.report().find("element 2 is a rigid element: give its face, SPOS or SNEG"), std::string::npos)
+      << r.report();
+  r = dir.read(cube_with_sheet(""));
+  EXPECT_NE(r.report().find("element 2 (R3D4) is a rigid element, and no *RIGID BODY, ELSET= holds it"),
+            std::string::npos)
+      << r.report();
+  r = dir.read(cube_with_sheet("*RIGID BODY, REF NODE=50, ELSET=SHEET\n*SOLID SECTION, ELSET=SHEET, MATERIAL=STEEL\n"));
+  EXPECT_NE(r.report().find("element 2 is a rigid element and takes no section"), std::string::npos) << r.report();
+}

@@ -8,7 +8,7 @@
 //    the reference node's rotation: every node at R X, no reaction;
 //  - a rigid flat punch pressed into a block through its reference node: the reaction there is
 //    the contact force Σ CPRESS·CNAREA, and CalculiX 2.20 on the same deck in its dialect gives
-//    RF3 = −1.017847E+04.
+//    RF3 = −1.017847E+04; the same punch as R3D4 rigid elements gives the same answer.
 #include "verification_fixture.hpp"
 
 #include <cmath>
@@ -103,6 +103,54 @@ TEST(RigidBody, PunchReactionIsTheContactForceAndCalculiXs) {
   report("rigid punch: RF3 / RF3(CalculiX) - 1", rf3 / -1.017847e4 - 1.0);
   EXPECT_LE(std::abs(rf3 + contact_force), 1e-9 * std::abs(rf3));
   EXPECT_NEAR(rf3 / -1.017847e4, 1.0, 0.02);
+}
+
+/// RF at the reference node along the punch's axis (3D: 3, 2D: 2) and Σ CPRESS·CNAREA of a
+/// punch deck's last frame.
+std::pair<double, double> punch_forces(const Run& r) {
+  const auto& f = r.capture.last();
+  const auto* cpress = field(f, "CPRESS");
+  const auto* cnarea = field(f, "CNAREA");
+  EXPECT_TRUE(cpress && cnarea);
+  double contact_force = 0.0;
+  if (cpress && cnarea)
+    for (std::size_t i = 0; i < cpress->values.size(); ++i) contact_force += cpress->values[i] * cnarea->values[i];
+  return {nodal(f, "RF", only_node(r.model(), "REF"), r.dim() - 1), contact_force};
+}
+
+// The punch as a sheet of R3D4 rigid elements (SNEG facing the block) is the C3D8 punch's bottom
+// face: the same answer. Measured: RF3 equal to 2.2e-16, balance 1.8e-16.
+TEST(RigidBody, R3d4PunchIsTheSolidPunchsBottomFace) {
+  const auto sheet = run_deck(deck_path("rigid_punch_r3d4.inp"));
+  const auto solid = run_deck(deck_path("rigid_punch_c3d8.inp"));
+  ASSERT_TRUE(sheet->outcome.completed) << sheet->outcome.message;
+  ASSERT_TRUE(solid->outcome.completed) << solid->outcome.message;
+  const auto [rf3, contact_force] = punch_forces(*sheet);
+  const double rf3_solid = punch_forces(*solid).first;
+  report("R3D4 punch: |RF3 / RF3(C3D8 punch) - 1|", std::abs(rf3 / rf3_solid - 1.0));
+  report("R3D4 punch: |RF3 + sum CPRESS*CNAREA| / RF3", std::abs(rf3 + contact_force) / std::abs(rf3));
+  EXPECT_LT(rf3, -1e3);
+  EXPECT_NEAR(rf3 / rf3_solid, 1.0, 1e-10);
+  EXPECT_LE(std::abs(rf3 + contact_force), 1e-9 * std::abs(rf3));
+}
+
+// The 2D counterparts: a punch of R2D2 (plane strain) or RAX2 (axisymmetric) line elements is
+// the rigid quad punch's bottom edge. Measured: RF2 equal to 2.2e-16, balance 1.5e-16.
+TEST(RigidBody, LineElementPunchesAreTheQuadPunchsBottomEdge) {
+  for (const auto& [lines, quads] : {std::pair{"rigid_punch_r2d2.inp", "rigid_punch_cpe4.inp"},
+                                     std::pair{"rigid_punch_rax2.inp", "rigid_punch_cax4.inp"}}) {
+    const auto sheet = run_deck(deck_path(lines));
+    const auto solid = run_deck(deck_path(quads));
+    ASSERT_TRUE(sheet->outcome.completed) << sheet->outcome.message;
+    ASSERT_TRUE(solid->outcome.completed) << solid->outcome.message;
+    const auto [rf2, contact_force] = punch_forces(*sheet);
+    const double rf2_solid = punch_forces(*solid).first;
+    report(std::string(lines) + ": |RF2 / RF2(quads) - 1|", std::abs(rf2 / rf2_solid - 1.0));
+    report(std::string(lines) + ": |RF2 + sum CPRESS*CNAREA| / RF2", std::abs(rf2 + contact_force) / std::abs(rf2));
+    EXPECT_LT(rf2, -1e3) << lines;
+    EXPECT_NEAR(rf2 / rf2_solid, 1.0, 1e-10) << lines;
+    EXPECT_LE(std::abs(rf2 + contact_force), 1e-9 * std::abs(rf2)) << lines;
+  }
 }
 
 }  // namespace
