@@ -15,6 +15,8 @@ every variant of it:
   hertz_2d_force    the same cylinder held only by its contact (touching the block at one node)
                     and pushed down by a force, surface to surface (issue 14: the first system
                     of a force-driven contact problem); parameters method, type, inc0
+  hertz_2d_rigid    hertz_2d_force with a rigid cylinder: R2D2 elements of a *RIGID BODY loaded at
+                    its reference node, the block the slave (rigid-indenter Hertz)
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
   sphere_3d_force   the same sphere resting on the block (touching at the pole) and held only by its
                     contact and the symmetry planes, pushed down by a force; parameters method,
@@ -254,6 +256,55 @@ def hertz_2d_force(level):
     forces = [0.5 * q * ((xs[min(i + 1, nx - 1)] - xs[i]) + (xs[i] - xs[max(i - 1, 0)])) for i in range(nx)]
     out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD"]
     out += [f"{sid(i, ny - 1)}, 2, {-f:.17g}" for i, f in enumerate(forces)]
+    out += OUTPUT + ["*END STEP"]
+    return out
+
+
+def hertz_2d_rigid(level):
+    """hertz_2d_force with a rigid indenter: the cylinder is its bottom arc alone, R2D2 elements of
+    a *RIGID BODY whose reference node (the centre, x = 0, y = R) carries the force P/2 of this
+    half model and is held in x and in rotation (the symmetry plane). The block is the slave (a
+    rigid surface is always the master), with the same nodes along x as the arc. Reference: the
+    rigid-indenter Hertz solution, E* = E/(1 - nu^2), P chosen for a = 1. Level L: h = a / 2^(L+2)."""
+    h = A_FORCE / 2 ** (level + 2)
+    xs = graded(h, 2.0, HERTZ_W)
+    ys = graded(h, 2.0, HERTZ_H)
+    e_star = E / (1.0 - NU * NU)
+    load = math.pi * e_star * A_FORCE ** 2 / (4.0 * R_HERTZ)
+    out = header(f"Hertz line contact under a force, plane strain: a rigid cylinder R = {R_HERTZ:g} (R2D2 elements) "
+                 f"resting on a block, E = {E:g}, nu = {NU:g}; half model, surface to surface",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2 with a rigid indenter: a = sqrt(4PR/(pi E*)), "
+                 f"p0 = 2P/(pi a), E* = E/(1-nu^2); P = {load:.10g} per unit length (this half model carries P/2): "
+                 f"a = {A_FORCE:g}, p0 = {2 * load / (math.pi * A_FORCE):.10g}.", level, h)
+    out[-1] = "** tolerances in tests/contact_verification/test_hertz_force.cpp."
+    out += ["*PARAMETER", 'method = "PENALTY"', 'type = "SURFACE TO SURFACE"', "inc0 = 0.25"]
+    nx, ny = len(xs), len(ys)
+    arc = lambda i: 1 + i
+    mid = lambda i, j: 100001 + j * nx + i
+    ref = nx + 1
+    nodes = [(arc(i), x, R_HERTZ - math.sqrt(R_HERTZ ** 2 - x * x)) for i, x in enumerate(xs)]
+    nodes.append((ref, 0.0, R_HERTZ))
+    for j, d in enumerate(reversed(ys)):  # block: bottom (−H) to top (0)
+        for i, x in enumerate(xs):
+            nodes.append((mid(i, j), x, -d))
+    master = [(100001 + j * (nx - 1) + i, mid(i, j), mid(i + 1, j), mid(i + 1, j + 1), mid(i, j + 1))
+              for j in range(ny - 1) for i in range(nx - 1)]
+    # Node order +x: the positive normal (1 → 2 turned counter-clockwise) points up, into the
+    # cylinder; the surface facing the block is SNEG.
+    segments = [(1 + i, arc(i), arc(i + 1)) for i in range(nx - 1)]
+    out += ["*NODE, NSET=ALL"] + [f"{n}, {x:.15g}, {y:.15g}" for n, x, y in nodes]
+    out += ["*ELEMENT, TYPE=R2D2, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in segments]
+    out += ["*ELEMENT, TYPE=CPE4, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in master]
+    out += ["*ELSET, ELSET=BLOCK_TOP"] + lines_of([e[0] for e in master[-(nx - 1):]])
+    out += ["*SURFACE, NAME=INDENTER_S", "INDENTER, SNEG", "*SURFACE, NAME=BLOCK_S", "BLOCK_TOP, S3"]
+    out += ["*NSET, NSET=SYMMETRY"] + lines_of([mid(0, j) for j in range(ny)])
+    out += ["*NSET, NSET=REF", str(ref), "*NSET, NSET=BLOCK_BOTTOM"] + lines_of([mid(i, 0) for i in range(nx)])
+    out += ["*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
+    out += ["*RIGID BODY, REF NODE=REF, ELSET=INDENTER"]
+    out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>",
+            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>", "BLOCK_S, INDENTER_S"]
+    out += ["*BOUNDARY", "SYMMETRY, 1", "BLOCK_BOTTOM, 1, 2", "REF, 1", "REF, 6"]
+    out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD", f"REF, 2, {-0.5 * load:.17g}"]
     out += OUTPUT + ["*END STEP"]
     return out
 
@@ -735,7 +786,8 @@ def oring_axi(level, smoothed=False):
 
 
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25),
-         "hertz_2d_force": hertz_2d_force, "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force,
+         "hertz_2d_force": hertz_2d_force,
+         "hertz_2d_rigid": hertz_2d_rigid, "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
          "interference_2d_general": lambda level: interference_2d(level, smoothed=True, general=True),

@@ -141,6 +141,38 @@ TEST(HertzUnderAForce, EveryMethodStartsFromTheTouchingNodeAndGivesHertz) {
   }
 }
 
+// The rigid cylinder (hertz_2d_rigid): R2D2 elements of a rigid body loaded at its reference
+// node, the block the slave. Rigid-indenter Hertz: E* = E/(1 − ν²), twice the deformable pair's,
+// and P chosen for a = 1 again; a/h = 8, the first increment 1 % of the load. Measured (p0 and
+// a by the fit against Hertz; the foundation carries P/2 to round-off; Newton iterations):
+//   direct                 +1.38 %  −0.66 %   33
+//   penalty                +1.12 %  −0.26 %   34
+//   augmented Lagrange     +1.38 %  −0.65 %   33
+const std::map<std::string, Params> kRigidRuns = {
+    {"direct", {{"method", "DIRECT"}, {"inc0", "0.01"}}},
+    {"penalty", {{"method", "PENALTY"}, {"inc0", "0.01"}}},
+    {"augmented Lagrange", {{"method", "AUGMENTED LAGRANGE"}, {"inc0", "0.01"}}},
+};
+
+TEST(HertzUnderAForce, RigidCylinderOfR2d2ElementsGivesRigidIndenterHertz) {
+  const double e_star = 2.0 * kEStar;
+  const double load = std::numbers::pi * e_star * kHalfWidth * kHalfWidth / (4.0 * kRadius);
+  const double p0_ref = 2.0 * load / (std::numbers::pi * kHalfWidth);
+  for (const auto& [name, params] : kRigidRuns) {
+    auto r = run(deck_path("hertz_2d_rigid"), params);
+    ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
+    const ForceFigures f = force_figures(*r);
+    const std::string label = "hertz_2d_rigid " + name;
+    report(label + ": p0 / p0 Hertz - 1", f.p0 / p0_ref - 1.0);
+    report(label + ": a (fitted ellipse) / a Hertz - 1", f.a_fit / kHalfWidth - 1.0);
+    report(label + ": foundation / (P/2) - 1", f.foundation / (0.5 * load) - 1.0);
+    report(label + ": Newton iterations", r->iterations);
+    EXPECT_NEAR(f.p0, p0_ref, 0.02 * p0_ref) << label;
+    EXPECT_NEAR(f.a_fit, kHalfWidth, 0.02 * kHalfWidth) << label;
+    EXPECT_NEAR(f.foundation, 0.5 * load, 1e-9 * load) << label;
+  }
+}
+
 /// hertz_2d_force with the indenter (node labels below 100001) lifted by `lift`, written into the
 /// temporary folder (named by `tag`).
 std::string lifted_deck(double lift, const std::string& tag) {
