@@ -29,6 +29,10 @@ struct Coupling {
   bool rot_node_added = false;  ///< always: inpact's own, reported as the reference node's UR/RM
   std::string surface;          ///< upper-case name; resolved by parser/couplings.cpp
   double influence_radius = 0;  ///< 0: every node of the surface
+  /// ORIENTATION (upper-case name; empty: global): the local axes at each coupling node in which
+  /// a kinematic coupling's DOFs 1–3 are meant.
+  std::string orientation;
+  SourceLoc orientation_loc;
   /// DOFs 1–6 the coupling constrains (data lines "first, last"; none: all of them).
   std::array<bool, 6> dofs{true, true, true, true, true, true};
   Weighting weighting = Weighting::Uniform;

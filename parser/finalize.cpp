@@ -292,7 +292,11 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   check_steps(m, diags);
   split_pretension_sections(m, diags);
   finalize_rigid_bodies(m, diags);
-  for (const model::Coupling& c : m.couplings) check_surface(m, diags, c.surface, c.surface_loc, "*COUPLING");
+  for (const model::Coupling& c : m.couplings) {
+    check_surface(m, diags, c.surface, c.surface_loc, "*COUPLING");
+    if (!c.orientation.empty())
+      check_defined(diags, m.orientations, c.orientation, c.orientation_loc, "*COUPLING", "orientation");
+  }
   finalize_couplings(m, diags);
   switch_on_nlgeom_for_hyperelasticity(m);
 }

@@ -12,8 +12,8 @@ namespace {
 
 constexpr std::string_view kCoupling = "*COUPLING";
 
-// *COUPLING, CONSTRAINT NAME=, REF NODE=, SURFACE= [, INFLUENCE RADIUS=]. ORIENTATION (a local
-// system for the DOFs) is not supported yet.
+// *COUPLING, CONSTRAINT NAME=, REF NODE=, SURFACE= [, INFLUENCE RADIUS=, ORIENTATION=]: the
+// ORIENTATION's local axes at each coupling node are those of a kinematic coupling's DOFs.
 void coupling(KeywordContext& ctx) {
   model::Coupling c;
   c.name = ctx.name_value("CONSTRAINT NAME");
@@ -25,9 +25,10 @@ void coupling(KeywordContext& ctx) {
   // Kept even when wrong, so that its *KINEMATIC or *DISTRIBUTING is read and not reported too.
   ctx.model().couplings.push_back(c);
   ctx.state.open_parent = kCoupling;
-  if (ctx.has("ORIENTATION"))
-    ctx.error_param("ORIENTATION", "ORIENTATION= (coupled DOFs in a local system) is not supported yet; the DOFs are "
-                                   "global");
+  if (ctx.has("ORIENTATION")) {
+    ctx.model().couplings.back().orientation = ctx.name_value("ORIENTATION");
+    ctx.model().couplings.back().orientation_loc = ctx.param_loc("ORIENTATION");
+  }
   if (ctx.has("INFLUENCE RADIUS")) {
     const double radius = ctx.real_value("INFLUENCE RADIUS").value_or(0.0);
     if (radius > 0) ctx.model().couplings.back().influence_radius = radius;
@@ -85,6 +86,9 @@ void distributing(KeywordContext& ctx) {
   model::Coupling* c = open_coupling(ctx);
   if (!c) return;
   c->kind = model::Coupling::Kind::Distributing;  // set first: an error below is the only one
+  if (!c->orientation.empty())
+    ctx.error(ctx.keyword.loc, "ORIENTATION on the *COUPLING of a *DISTRIBUTING is not supported yet (CalculiX reads "
+                               "the reference node's loads in the local system, Abaqus in the global one)");
   if (ctx.has("COUPLING") && ctx.choice_value("COUPLING") != "CONTINUUM") {
     ctx.error_param("COUPLING", "COUPLING=STRUCTURAL (coupling nodes with rotations) is not supported yet: inpact's "
                                 "solid and plane nodes have no rotations; use COUPLING=CONTINUUM");

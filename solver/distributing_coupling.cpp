@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "constraint_elimination.hpp"
 #include "contact/contact_surface.hpp"
 
 namespace inpact::solver {
@@ -137,55 +138,6 @@ std::vector<CouplingRow> distributing_rows(const AnalysisModel& am, const model:
   return rows;
 }
 
-namespace {
-
-/// The prescribed rows u_ref = Σ a u solved for as many free coupling-node DOFs (full
-/// pivoting): u_p = B⁻¹ (u_ref − Σ_rest a u), B the rows' columns at the pivots.
-void eliminate_by_pivots(const AnalysisModel& am, const model::Coupling& c, const std::vector<CouplingRow>& rows,
-                         std::vector<DofMap::Kind>& kind, std::map<std::int64_t, std::vector<MasterTerm>>& dependent) {
-  std::vector<std::int64_t> candidates;
-  for (const CouplingRow& row : rows)
-    for (const MasterTerm& t : row.terms)
-      if (kind[static_cast<std::size_t>(t.dof)] == DofMap::Kind::Free && !dependent.count(t.dof)) candidates.push_back(t.dof);
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  const auto n_rows = static_cast<Eigen::Index>(rows.size());
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n_rows, static_cast<Eigen::Index>(candidates.size()));
-  for (Eigen::Index r = 0; r < n_rows; ++r)
-    for (const MasterTerm& t : rows[static_cast<std::size_t>(r)].terms)
-      if (auto it = std::lower_bound(candidates.begin(), candidates.end(), t.dof); it != candidates.end() && *it == t.dof)
-        A(r, it - candidates.begin()) += t.weight;
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-  if (lu.rank() < n_rows)
-    throw AnalysisError(fmt::format("{}: the boundary conditions on reference node {} leave no free coupling-node "
-                                    "degree of freedom to satisfy them (the coupling nodes are held already)",
-                                    where(am, c), am.model->mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
-  std::vector<std::int64_t> pivots;
-  Eigen::MatrixXd B(n_rows, n_rows);
-  for (Eigen::Index j = 0; j < n_rows; ++j) {
-    const Eigen::Index col = lu.permutationQ().indices()[j];
-    pivots.push_back(candidates[static_cast<std::size_t>(col)]);
-    B.col(j) = A.col(col);
-  }
-  const Eigen::MatrixXd B_inv = B.inverse();
-  for (Eigen::Index j = 0; j < n_rows; ++j) {
-    std::map<std::int64_t, double> rule;
-    for (Eigen::Index r = 0; r < n_rows; ++r) {
-      const CouplingRow& row = rows[static_cast<std::size_t>(r)];
-      rule[row.ref_dof] += B_inv(j, r);
-      for (const MasterTerm& t : row.terms)
-        if (std::find(pivots.begin(), pivots.end(), t.dof) == pivots.end()) rule[t.dof] -= B_inv(j, r) * t.weight;
-    }
-    std::vector<MasterTerm> terms;
-    for (const auto& [dof, weight] : rule)
-      if (weight != 0.0) terms.push_back({dof, weight});
-    dependent[pivots[static_cast<std::size_t>(j)]] = std::move(terms);
-    kind[static_cast<std::size_t>(pivots[static_cast<std::size_t>(j)])] = DofMap::Kind::Dependent;
-  }
-}
-
-}  // namespace
-
 void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>& kind,
                                  std::map<std::int64_t, std::vector<MasterTerm>>& dependent) {
   for (const model::Coupling& c : am.model->couplings) {
@@ -203,7 +155,14 @@ void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Ki
       dependent[row.ref_dof] = std::move(row.terms);
       kind[d] = DofMap::Kind::Dependent;
     }
-    if (!prescribed_rows.empty()) eliminate_by_pivots(am, c, prescribed_rows, kind, dependent);
+    if (prescribed_rows.empty()) continue;
+    // A *BOUNDARY on the reference node: Σ a u = u_ref, solved for coupling-node DOFs instead.
+    std::vector<LinearRow> rows;
+    for (CouplingRow& row : prescribed_rows) rows.push_back({std::move(row.terms), {{row.ref_dof, 1.0}}});
+    eliminate_rows(rows, kind, dependent,
+                   fmt::format("{}: the boundary conditions on reference node {} leave no free coupling-node degree "
+                               "of freedom to satisfy them (the coupling nodes are held already)",
+                               where(am, c), am.model->mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "analysis_error.hpp"
 #include "distributing_coupling.hpp"
+#include "oriented_coupling.hpp"
 #include "rigid_motion.hpp"
 
 namespace inpact::solver {
@@ -101,7 +102,7 @@ std::vector<DofMap::RigidNode> rigid_nodes(const AnalysisModel& am) {
   for (const model::RigidBody& b : am.model->rigid_bodies)
     for (std::int32_t n : b.nodes) add(n, b.ref_node, b.rot_node, {true, true, true});
   for (const model::Coupling& c : am.model->couplings)
-    if (c.kind == model::Coupling::Kind::Kinematic)
+    if (c.kind == model::Coupling::Kind::Kinematic && !is_oriented_kinematic(c, am.dim))
       for (std::int32_t n : c.nodes) add(n, c.ref_node, c.rot_node, {c.dofs[0], c.dofs[1], c.dofs[2]});
   return out;
 }
@@ -244,6 +245,7 @@ DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector
   add_pretension_dependents(am, kind_, dependent);
   add_rigid_dependents(am, rigid_, u, finite_rotations_, kind_, dependent);
   if (has_finite_rotations()) check_no_chain_through_rigid_nodes(am, rigid_, dependent);
+  add_oriented_kinematic_dependents(am, kind_, dependent);
   add_distributing_dependents(am, kind_, dependent);
   substitute_chains(dependent);
   return dependent;
@@ -288,6 +290,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
     }
   mark_reference_dofs_used(am.dim, map.rigid_, map.kind_);
   mark_distributing_reference_dofs(am, finite_rotations, map.kind_);
+  mark_oriented_reference_dofs(am, finite_rotations, map.kind_);
   for (std::int64_t d = 0; d < n; ++d)
     if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
   map.lay_out(map.dependents(am, nullptr));

@@ -59,6 +59,23 @@ def kinematic_push():
     return d
 
 
+def kinematic_twist():
+    """Only the tangential DOF (2) of a cylindrical ORIENTATION about the column's axis coupled:
+    the top face is twisted by the reference node's UR3 and free to move radially and axially."""
+    d = column("A column whose top face is twisted by 0.01 about its axis through a kinematic coupling of the "
+               "tangential DOF of a cylindrical orientation",
+               ["Reference: each top node's tangential displacement e_t . u = e_t . (u_R + UR x r) (r from the",
+                "reference node), radial and axial free; CalculiX 2.20 on the same deck in its dialect."])
+    d.add("*ORIENTATION, NAME=AXIS, SYSTEM=CYLINDRICAL", "0.5, 0.5, 0., 0.5, 0.5, 1.")
+    d.add("*COUPLING, CONSTRAINT NAME=TWIST, REF NODE=REF, SURFACE=TOPS, ORIENTATION=AXIS", "*KINEMATIC", "2")
+    # The tangential rows alone leave a tilt of the reference node with the matching sideways
+    # move free (the face's axial motion is not coupled): held, as Abaqus wants it.
+    d.add("*BOUNDARY", "BASE, ENCASTRE", "REF, 1, 5")
+    d.add("*STEP", "*STATIC", "*BOUNDARY", "REF, 6, 6, 0.01")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*END STEP")
+    return d
+
+
 def distributing_column():
     d = column("A column loaded through a distributing coupling of its top face: F1 = 10, M2 = 100, M3 = 20",
                ["Reference: the base carries the whole load (sum RF and sum r x RF exact); the reference node",
@@ -123,6 +140,7 @@ def distributing_plate():
 DECKS = {
     "coupling_kinematic_column_c3d8.inp": kinematic_column,
     "coupling_kinematic_push_c3d8.inp": kinematic_push,
+    "coupling_kinematic_twist_c3d8.inp": kinematic_twist,
     "coupling_distributing_column_c3d8.inp": distributing_column,
     "coupling_distributing_held_c3d8.inp": distributing_held,
     "coupling_distributing_pull_c3d8.inp": distributing_pull,
@@ -138,16 +156,17 @@ def calculix_dialect(deck):
         if line == "*NSET, NSET=REF":
             ref = deck.lines[i + 1].strip()
     out = []
-    for line in deck.lines:
+    for i, line in enumerate(deck.lines):
         line = line.replace("REF NODE=REF", f"REF NODE={ref}").replace(", ENCASTRE", ", 1, 3")
         if line.startswith("REF, "):
             line = ref + line[3:]
         if line == "*END STEP":
             out += ["*NODE PRINT, NSET=TOP", "U"]
         out.append(line)
-        if line == "*KINEMATIC":
+        given = i + 1 < len(deck.lines) and not deck.lines[i + 1].startswith("*")
+        if line == "*KINEMATIC" and not given:
             out.append("1, 3")
-        if line == "*DISTRIBUTING":
+        if line == "*DISTRIBUTING" and not given:
             out.append("1, 6")
     deck.lines = out
     return deck
@@ -160,7 +179,8 @@ def main():
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     if args.ccx:
-        for name in ("coupling_kinematic_column_c3d8.inp", "coupling_distributing_column_c3d8.inp"):
+        for name in ("coupling_kinematic_column_c3d8.inp", "coupling_distributing_column_c3d8.inp",
+                     "coupling_kinematic_twist_c3d8.inp"):
             calculix_dialect(DECKS[name]()).write(os.path.join(args.out, name.replace(".inp", "_ccx.inp")))
         return
     for name, make in DECKS.items():

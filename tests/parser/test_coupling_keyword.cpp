@@ -108,8 +108,10 @@ TEST(CouplingKeyword, DeckErrorsNameTheLineAndWhatIsExpected) {
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:22:4: error: *KINEMATIC: the last DOF 1 is below the first 3")) << r.report();
   EXPECT_EQ(r.report().find("is followed by neither"), std::string::npos) << r.report();  // one error, not two
   r = dir.read(cube("*COUPLING, CONSTRAINT NAME=C1, REF NODE=50, SURFACE=TOPS, ORIENTATION=OR\n*KINEMATIC\n"));
-  EXPECT_FALSE(r.ok());
-  EXPECT_NE(r.report().find("ORIENTATION= (coupled DOFs in a local system) is not supported yet"), std::string::npos)
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:71: error: *COUPLING: orientation 'OR' is not defined")) << r.report();
+  r = dir.read(cube("*ORIENTATION, NAME=OR\n1., 0., 0., 0., 1., 0.\n"
+                    "*COUPLING, CONSTRAINT NAME=C1, REF NODE=50, SURFACE=TOPS, ORIENTATION=OR\n*DISTRIBUTING\n"));
+  EXPECT_NE(r.report().find("ORIENTATION on the *COUPLING of a *DISTRIBUTING is not supported yet"), std::string::npos)
       << r.report();
   r = dir.read(cube("*COUPLING, CONSTRAINT NAME=C1, REF NODE=50, SURFACE=TOPS\n*DISTRIBUTING, COUPLING=STRUCTURAL\n"));
   EXPECT_NE(r.report().find("COUPLING=STRUCTURAL (coupling nodes with rotations) is not supported yet"),
