@@ -232,9 +232,12 @@ void write_pretension_sections(std::ostream& out, const model::Model& m) {
   print(out, "Pre-tension sections {:>4}\n", m.pretension_sections.size());
   for (const auto& s : m.pretension_sections) {
     const std::string inst = m.instances[m.mesh.nodes.instance[s.node]];
-    print(out, "  {}: pre-tension node {}{}, normal ({:.6g}, {:.6g}, {:.6g}){}, area {:.6g}\n", s.surface,
+    const std::string what =
+        s.element >= 0 ? fmt::format("truss element {}", m.mesh.elements.labels[static_cast<std::size_t>(s.element)])
+                       : s.surface;
+    print(out, "  {}: pre-tension node {}{}, normal ({:.6g}, {:.6g}, {:.6g}){}, area {:.6g}\n", what,
           inst.empty() ? "" : inst + ".", m.mesh.nodes.labels[s.node], s.normal[0], s.normal[1], s.normal[2],
-          s.given_normal ? "" : " (the surface's average)", s.area);
+          s.element >= 0 ? " (the truss's axis)" : s.given_normal ? "" : " (the surface's average)", s.area);
     print(out, "    {} section node(s) copied, {} element(s) on the underlying side use the copies\n", s.node_pairs.size(),
           s.n_rewired_elements);
   }

@@ -164,7 +164,8 @@ struct Tie {
 /// normal n (the tightening) and its conjugate force is the force carried across the section
 /// (positive = tension) [K16 *PRE-TENSION SECTION], [IG Prescribed assembly loads].
 struct PretensionSection {
-  std::string surface;  ///< upper-case surface name
+  std::string surface;  ///< upper-case surface name (empty for an ELEMENT= section)
+  std::int32_t element = -1;  ///< ELEMENT=: the truss that is the section (its row), else −1
   std::int32_t node = -1;  ///< the pre-tension node's row
   std::optional<std::array<double, 3>> given_normal;  ///< the data line, as written
   /// Resolved by the split: the unit normal (pointing out of the underlying elements, as the
@@ -174,7 +175,7 @@ struct PretensionSection {
   std::vector<std::array<std::int32_t, 2>> node_pairs;
   std::size_t n_rewired_elements = 0;  ///< elements that now use the copies
   SourceLoc loc;          ///< the keyword line
-  SourceLoc surface_loc;  ///< SURFACE='s value
+  SourceLoc surface_loc;  ///< SURFACE='s value (ELEMENT='s)
   SourceLoc node_loc;     ///< NODE='s value
   SourceLoc normal_loc;   ///< the data line
 };

@@ -35,17 +35,31 @@ bool read_normal(KeywordContext& ctx, model::PretensionSection& s) {
   return true;
 }
 
+/// ELEMENT=: the one truss element (a label or a set of one) that is the section, or −1.
+std::int32_t section_element(KeywordContext& ctx) {
+  const KeywordParam* p = ctx.param("ELEMENT");
+  auto rows = ctx.elements(Field{*p->value, p->value_loc});
+  if (!rows) return -1;
+  if (rows->size() != 1) {
+    ctx.error(p->value_loc, fmt::format("ELEMENT='{}' holds {} elements; the section must be exactly one truss element",
+                                        *p->value, rows->size()));
+    return -1;
+  }
+  return rows->front();
+}
+
 // *PRE-TENSION SECTION, SURFACE=name | ELEMENT=, NODE=node or one-node set [, FOLLOWER=NO];
-// optional data line n1, n2, n3. Only continuum sections (SURFACE=): inpact has no truss or beam
-// elements for ELEMENT=, and the normal stays fixed (FOLLOWER=NO, Abaqus's default).
+// optional data line n1, n2, n3 (SURFACE= only). A continuum is cut along the surface; a truss
+// (ELEMENT=) at its second node, its axis the normal. The normal stays fixed (FOLLOWER=NO,
+// Abaqus's default).
 void pretension_section(KeywordContext& ctx) {
-  if (ctx.has("ELEMENT")) {
-    ctx.error_param("ELEMENT", "ELEMENT= (a truss or beam pre-tension section) is not supported yet: inpact has no "
-                               "truss or beam elements; cut a solid fastener with SURFACE=");
+  if (ctx.has("ELEMENT") == ctx.has("SURFACE")) {
+    ctx.error(ctx.keyword.loc, "give one of SURFACE= (the element-based surface that cuts a solid fastener) and "
+                               "ELEMENT= (a truss element)");
     return;
   }
-  if (!ctx.has("SURFACE")) {
-    ctx.error(ctx.keyword.loc, "SURFACE= is required (the element-based surface that cuts the fastener)");
+  if (ctx.has("ELEMENT") && !ctx.data.empty()) {
+    ctx.error(ctx.data[0].loc, "a truss section's normal is its axis: ELEMENT= takes no data line");
     return;
   }
   if (ctx.has("FOLLOWER") && ctx.choice_value("FOLLOWER") != "NO") {
@@ -56,7 +70,8 @@ void pretension_section(KeywordContext& ctx) {
   model::PretensionSection s;
   s.loc = ctx.keyword.loc;
   s.surface = ctx.name_value("SURFACE");
-  s.surface_loc = ctx.param_loc("SURFACE");
+  s.surface_loc = ctx.param_loc(ctx.has("ELEMENT") ? "ELEMENT" : "SURFACE");
+  if (ctx.has("ELEMENT") && (s.element = section_element(ctx)) < 0) return;
   s.node_loc = ctx.param_loc("NODE");
   s.node = ctx.single_node("NODE", "pre-tension node");
   if (s.node < 0 || !read_normal(ctx, s)) return;

@@ -178,6 +178,34 @@ bool split_section(model::Model& m, Diagnostics& diags, model::PretensionSection
   return true;
 }
 
+/// ELEMENT= (a two-node truss, checked): the truss is cut at its second node, whose copy the truss alone uses; the normal
+/// is the truss's axis from its first node to its second (the bolt's tension positive).
+void split_truss_section(model::Model& m, model::PretensionSection& s, bool cut) {
+  model::Mesh& mesh = m.mesh;
+  const auto e = static_cast<std::size_t>(s.element);
+  const auto nodes = mesh.elements.nodes_of(e);
+  const Vec axis = sub(mesh.nodes.coords[nodes[1]], mesh.nodes.coords[nodes[0]]);
+  const double length = std::sqrt(dot(axis, axis));
+  for (int k = 0; k < 3; ++k) s.normal[k] = axis[k] / length;
+  for (const model::SolidSection& sec : mesh.sections)
+    if (std::binary_search(mesh.elsets.at(sec.elset).rows.begin(), mesh.elsets.at(sec.elset).rows.end(), s.element))
+      s.area = sec.thickness;  // a truss section's area
+  if (!cut) return;
+  const std::int32_t b = nodes[1];
+  const auto row = static_cast<std::int32_t>(mesh.nodes.size());
+  const std::int32_t inst = mesh.nodes.instance[static_cast<std::size_t>(b)];
+  std::int64_t label = 0;
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+    if (mesh.nodes.instance[n] == inst) label = std::max(label, mesh.nodes.labels[n]);
+  mesh.nodes.labels.push_back(++label);
+  mesh.nodes.coords.push_back(mesh.nodes.coords[static_cast<std::size_t>(b)]);
+  mesh.nodes.instance.push_back(inst);
+  mesh.nodes.index.insert(inst, label, row);
+  mesh.elements.conn[static_cast<std::size_t>(mesh.elements.offsets[e] + 1)] = row;
+  s.node_pairs.push_back({b, row});
+  s.n_rewired_elements = 1;
+}
+
 }  // namespace
 
 void split_pretension_sections(model::Model& m, Diagnostics& diags) {
@@ -186,6 +214,23 @@ void split_pretension_sections(model::Model& m, Diagnostics& diags) {
   for (std::int32_t n : m.mesh.elements.conn) connected[n] = 1;
   std::set<std::int32_t> pretension_nodes;
   for (model::PretensionSection& s : m.pretension_sections) {
+    if (s.element >= 0) {
+      const auto& type = model::element_type(m.mesh.elements.type[static_cast<std::size_t>(s.element)]);
+      if (type.family != model::ElementFamily::Truss || type.n_nodes != 2) {
+        diags.error(s.surface_loc, kKeyword,
+                    fmt::format("element {} is a {}; ELEMENT= takes a two-node truss (T2D2, T3D2), a solid fastener "
+                                "is cut with SURFACE=",
+                                m.mesh.elements.labels[static_cast<std::size_t>(s.element)], type.name));
+        continue;
+      }
+      if (!pretension_nodes.insert(s.node).second || connected[s.node]) {
+        diags.error(s.node_loc, kKeyword, fmt::format("the pre-tension node {} must be a node of its own (no element, no "
+                                                      "other section)", m.mesh.nodes.labels[s.node]));
+        continue;
+      }
+      split_truss_section(m, s, !diags.has_errors());
+      continue;
+    }
     if (!check_section(m, diags, s, connected)) continue;
     if (!pretension_nodes.insert(s.node).second) {
       diags.error(s.node_loc, kKeyword, fmt::format("the pre-tension node {} serves another section already; each "

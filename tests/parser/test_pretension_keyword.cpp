@@ -109,10 +109,19 @@ TEST(PretensionKeyword, BadSectionsAreReportedWithTheirPlace) {
                               "*PRE-TENSION SECTION, SURFACE=CUT_FROM_ABOVE, NODE=50\n"));
   EXPECT_FALSE(r.ok());
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:32:41: error: *PRE-TENSION SECTION: NODE='ALL' holds 13 nodes")) << r.report();
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:33:1: error: *PRE-TENSION SECTION: SURFACE= is required")) << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:33:1: error: *PRE-TENSION SECTION: give one of SURFACE= (the element-based "
+                                "surface that cuts a solid fastener) and ELEMENT= (a truss element)"))
+      << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:34:45: error: *PRE-TENSION SECTION: FOLLOWER=YES")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:36:5: error: *PRE-TENSION SECTION: data line has 2 fields")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:39:52: error: *PRE-TENSION SECTION: the pre-tension node 50 serves another "
                                 "section already"))
+      << r.report();
+  // ELEMENT= takes a two-node truss, and no normal.
+  r = dir.read(two_cubes("*PRE-TENSION SECTION, ELEMENT=1, NODE=50\n"));
+  EXPECT_NE(r.report().find("element 1 is a C3D8; ELEMENT= takes a two-node truss (T2D2, T3D2)"), std::string::npos)
+      << r.report();
+  r = dir.read(two_cubes("*PRE-TENSION SECTION, ELEMENT=1, NODE=50\n0., 0., 1.\n"));
+  EXPECT_NE(r.report().find("a truss section's normal is its axis: ELEMENT= takes no data line"), std::string::npos)
       << r.report();
 }

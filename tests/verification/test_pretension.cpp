@@ -191,3 +191,44 @@ TEST(Pretension, BoltedJointFollowsTheJointDiagramAndBalances) {
 
 }  // namespace
 }  // namespace inpact::verification
+
+namespace inpact::verification {
+namespace {
+
+// A T3D2 bolt along a column's axis cut by ELEMENT= (decks/verification/pretension_truss.inp):
+// step 1, the bolt carries the CLOAD of its pre-tension node and the base reactions cancel;
+// step 2, locked and the top pulled by 400, RF1 of the node is still the truss's force and the
+// base carries the 400. Measured: RF1 = S11 A exactly, base sums 1.4e-12 (step 1) and 4.5e-13 off (step 2).
+TEST(Pretension, TrussBoltCutByElementCarriesTheSectionForce) {
+  const auto r = run_deck(deck_path("pretension_truss.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& m = r->model();
+  ASSERT_EQ(m.pretension_sections.size(), 1u);
+  const auto& s = m.pretension_sections[0];
+  EXPECT_EQ(s.node_pairs.size(), 1u);
+  EXPECT_EQ(s.normal, (std::array<double, 3>{0, 0, 1}));
+  const std::size_t p = static_cast<std::size_t>(node_row(m, 82));
+  const std::int32_t bolt = s.element;
+  for (const auto& [step, base_load] : {std::pair{1, 0.0}, std::pair{2, -400.0}}) {
+    const solver::Frame& f = *r->capture.of_step(step).back();
+    double truss_force = 0.0;
+    for (const auto& v : point_values(*r, f))
+      if (v.element == m.mesh.elements.labels[static_cast<std::size_t>(bolt)]) truss_force = v.s[0] * 1.0;  // S11 A, A = 1
+    double base = 0.0;
+    for (std::int32_t n : nset(m, "BASE")) base += nodal(f, "RF", n, 2);
+    const double rf = nodal(f, "RF", p, 0);
+    const std::string label = "pretension truss step " + std::to_string(step);
+    report(label + ": |RF1(P) - S11 A|", std::abs(rf - truss_force));
+    report(label + ": |sum RF3(base) - expected|", std::abs(base - base_load));
+    EXPECT_NEAR(rf, truss_force, 1e-10 * 1000.0) << label;
+    EXPECT_NEAR(base, base_load, 1e-10 * 1000.0) << label;
+    if (step == 1) {
+      EXPECT_NEAR(truss_force, 1000.0, 1e-10 * 1000.0);
+    } else {
+      EXPECT_GT(truss_force, 1000.0);  // the external load stretches the locked bolt
+    }
+  }
+}
+
+}  // namespace
+}  // namespace inpact::verification
