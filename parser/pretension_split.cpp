@@ -9,6 +9,7 @@
 
 #include "model/element_types.hpp"
 #include "model/mesh_queries.hpp"
+#include "rotation_nodes.hpp"
 
 namespace inpact::parser {
 
@@ -192,15 +193,7 @@ void split_truss_section(model::Model& m, model::PretensionSection& s, bool cut)
       s.area = sec.thickness;  // a truss section's area
   if (!cut) return;
   const std::int32_t b = nodes[1];
-  const auto row = static_cast<std::int32_t>(mesh.nodes.size());
-  const std::int32_t inst = mesh.nodes.instance[static_cast<std::size_t>(b)];
-  std::int64_t label = 0;
-  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-    if (mesh.nodes.instance[n] == inst) label = std::max(label, mesh.nodes.labels[n]);
-  mesh.nodes.labels.push_back(++label);
-  mesh.nodes.coords.push_back(mesh.nodes.coords[static_cast<std::size_t>(b)]);
-  mesh.nodes.instance.push_back(inst);
-  mesh.nodes.index.insert(inst, label, row);
+  const std::int32_t row = add_node_beside(mesh, b);
   mesh.elements.conn[static_cast<std::size_t>(mesh.elements.offsets[e] + 1)] = row;
   s.node_pairs.push_back({b, row});
   s.n_rewired_elements = 1;

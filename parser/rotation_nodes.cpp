@@ -8,22 +8,27 @@
 
 namespace inpact::parser {
 
-std::int32_t add_rotation_node(model::Model& m, std::int32_t ref, std::string_view owner) {
-  model::Mesh& mesh = m.mesh;
-  const std::int32_t inst = mesh.nodes.instance[static_cast<std::size_t>(ref)];
+std::int32_t add_node_beside(model::Mesh& mesh, std::int32_t node) {
+  const std::int32_t inst = mesh.nodes.instance[static_cast<std::size_t>(node)];
   std::int64_t label = 0;
   for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
     if (mesh.nodes.instance[n] == inst) label = std::max(label, mesh.nodes.labels[n]);
   ++label;
   const auto row = static_cast<std::int32_t>(mesh.nodes.size());
   mesh.nodes.labels.push_back(label);
-  mesh.nodes.coords.push_back(mesh.nodes.coords[static_cast<std::size_t>(ref)]);
+  mesh.nodes.coords.push_back(mesh.nodes.coords[static_cast<std::size_t>(node)]);
   mesh.nodes.instance.push_back(inst);
   mesh.nodes.index.insert(inst, label, row);
+  return row;
+}
+
+std::int32_t add_rotation_node(model::Model& m, std::int32_t ref, std::string_view owner) {
+  const std::int32_t row = add_node_beside(m.mesh, ref);
+  const auto& labels = m.mesh.nodes.labels;
   m.preprocessing_notes.push_back(fmt::format(
       "{}: node {} added to hold the rotations of reference node {} (its U are the reference node's UR, its RF the "
       "moments RM, as CalculiX's ROT NODE)",
-      owner, label, mesh.nodes.labels[static_cast<std::size_t>(ref)]));
+      owner, labels[static_cast<std::size_t>(row)], labels[static_cast<std::size_t>(ref)]));
   return row;
 }
 

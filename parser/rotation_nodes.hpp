@@ -1,6 +1,7 @@
 #pragma once
-/// What rigid bodies and couplings share on the complete deck: the rotation node inpact adds for
-/// a reference node, and which nodes solid or plane elements connect (rotation_nodes.cpp).
+/// What rigid bodies, couplings and truss pre-tension sections share on the complete deck: the
+/// nodes inpact adds (a rotation node for a reference node, a truss's copy), and which nodes
+/// solid or plane elements connect (rotation_nodes.cpp).
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -10,6 +11,10 @@
 #include "model/model.hpp"
 
 namespace inpact::parser {
+
+/// A new node at `node`'s coordinates with the next free label of `node`'s instance (a
+/// rotation node, a pre-tension copy). Returns its row.
+std::int32_t add_node_beside(model::Mesh& mesh, std::int32_t node);
 
 /// A node to hold the rotations of reference node `ref` (model/rigid_body.hpp): the next free
 /// label of `ref`'s instance, at `ref`'s coordinates. Adds a preprocessing note that starts with
