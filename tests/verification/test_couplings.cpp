@@ -13,7 +13,11 @@
 //    --ccx): its *NODE PRINT of the top face, held below.
 #include "verification_fixture.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <span>
 
 namespace inpact::verification {
@@ -125,6 +129,36 @@ TEST(Coupling, DistributingSpreadsTheLoadByAreaWeightsAboutTheCentroid) {
   }
   report("distributing coupling: max |RF + f_by_hand| over the held face", worst);
   EXPECT_LE(worst, 1e-12);
+}
+
+// WEIGHTING METHOD=LINEAR: w = area (1 − r/r0), r0 the farthest coupling node's distance from the
+// reference node, so the face's four corners carry nothing; the resultant is still F and the
+// moment M (about the reference node), whatever the weights. Measured: corners 0, sums 6.6e-15.
+TEST(Coupling, LinearWeightingLeavesTheFarthestNodesUnloadedAndTheResultantExact) {
+  std::ifstream in(deck_path("coupling_distributing_held_c3d8.inp"));
+  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-linear-" + std::to_string(::getpid()) + ".inp");
+  {
+    std::ofstream out(path);
+    for (std::string line; std::getline(in, line);) out << (line == "*DISTRIBUTING" ? "*DISTRIBUTING, WEIGHTING METHOD=LINEAR" : line) << "\n";
+  }
+  const auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& m = r->model();
+  const auto& f = r->capture.last();
+  double corner = 0.0;
+  for (std::int32_t n : nset(m, "TOP")) {
+    const V3 x = coords(m, n);
+    if (std::abs(x[0] - 0.5) > 0.25 && std::abs(x[1] - 0.5) > 0.25)
+      for (int c = 0; c < 3; ++c) corner = std::max(corner, std::abs(nodal(f, "RF", n, c)));
+  }
+  const auto [force, moment] = resultant(m, f, "TOP", coords(m, ref_node(m)));
+  const double sum_error = std::max(norm({force[0] + 10, force[1], force[2]}), norm({moment[0], moment[1], moment[2] + 5}));
+  report("linear weighting: max |RF| at the corners", corner);
+  report("linear weighting: |sum RF + F|, |sum r x RF + M|", sum_error);
+  EXPECT_LE(corner, 1e-13);
+  EXPECT_LE(sum_error, 1e-12);
+  EXPECT_GT(std::abs(nodal(f, "RF", nset(m, "TOP")[1], 0)), 0.1);  // an edge node carries load
 }
 
 /// θ = J⁻¹ Σ ŵ r × u and ū = Σ ŵ u over the columns' top face (J is diagonal for the square).
