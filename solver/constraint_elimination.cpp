@@ -8,12 +8,20 @@
 
 namespace inpact::solver {
 
+namespace {
+
+/// A DOF the rows may eliminate: free, or dependent from an earlier layout of the same rules
+/// (DofMap::relinearize lays the rules out again; the same rows pick the same pivots).
+bool eligible(DofMap::Kind k) { return k == DofMap::Kind::Free || k == DofMap::Kind::Dependent; }
+
+}  // namespace
+
 void eliminate_rows(const std::vector<LinearRow>& rows, std::vector<DofMap::Kind>& kind,
                     std::map<std::int64_t, std::vector<MasterTerm>>& dependent, const std::string& no_pivot) {
   std::vector<std::int64_t> candidates;
   for (const LinearRow& row : rows)
     for (const MasterTerm& t : row.lhs)
-      if (kind[static_cast<std::size_t>(t.dof)] == DofMap::Kind::Free && !dependent.count(t.dof)) candidates.push_back(t.dof);
+      if (eligible(kind[static_cast<std::size_t>(t.dof)]) && !dependent.count(t.dof)) candidates.push_back(t.dof);
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   const auto n_rows = static_cast<Eigen::Index>(rows.size());

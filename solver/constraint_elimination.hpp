@@ -1,7 +1,8 @@
 #pragma once
 /// Linear constraints Σ a_j u_j = Σ b_k u_k solved for some of their left-hand DOFs: a
 /// distributing coupling's prescribed reference node, a kinematic coupling's DOFs in a local
-/// system. Full pivoting picks, among the left-hand DOFs that are free and not yet eliminated,
+/// system. Full pivoting picks, among the left-hand DOFs that are free and not yet eliminated in
+/// this layout (a DOF an earlier layout eliminated counts as free again),
 /// as many as there are rows; each becomes dependent on the right-hand DOFs and the other
 /// left-hand ones.
 #include <cstdint>

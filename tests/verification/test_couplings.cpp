@@ -226,6 +226,31 @@ TEST(Coupling, DistributingPrescribedReferenceNodeSetsTheFaceMeanMotion) {
   }
 }
 
+// Under NLGEOM the DOF map is laid out again every iteration (a rigid body turns finitely): a
+// distributing coupling's prescribed reference node must eliminate the same coupling-node DOFs
+// each time. The pull deck with translations only, NLGEOM, and a held one-node rigid body far
+// away (which makes the map re-linearise): the face's mean u3 is still the prescribed 0.001.
+TEST(Coupling, PrescribedReferenceNodeKeepsItsPivotsWhenTheMapIsLaidOutAgain) {
+  std::ifstream in(deck_path("coupling_distributing_pull_c3d8.inp"));
+  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-nlgeom-" + std::to_string(::getpid()) + ".inp");
+  {
+    std::ofstream out(path);
+    for (std::string line; std::getline(in, line);) {
+      if (line == "REF, 4, 4, 0.0005") continue;
+      out << (line == "*STEP" ? "*STEP, NLGEOM" : line) << "\n";
+      if (line == "*NODE, NSET=ALL") out << "900, 5., 5., 5.\n901, 6., 5., 5.\n";
+      if (line.rfind("*DISTRIBUTING", 0) == 0) out << "1, 3\n";
+      if (line.rfind("*SOLID SECTION", 0) == 0)
+        out << "*NSET, NSET=LONE\n901\n*RIGID BODY, REF NODE=900, TIE NSET=LONE\n*BOUNDARY\n900, 1, 6\n";
+    }
+  }
+  const auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto [mean, theta] = face_mean_motion(r->model(), r->capture.last());
+  EXPECT_NEAR(mean[2], 0.001, 1e-15);
+}
+
 // Measured: Σ RF 5.8e-13 of |F|, Σ r × RF 3.3e-13 of |M|.
 TEST(Coupling, DistributingPlaneStrainPlateCarriesAForceAndAMomentToItsRoot) {
   const auto r = run_deck(deck_path("coupling_distributing_plate_cpe4.inp"));
