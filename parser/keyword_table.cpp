@@ -39,7 +39,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
       "SHELLSECTION", "BEAMSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION",
       "BEAMGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
-      "TRANSFORM", "MPC",
+      "TRANSFORM",
       "MASS", "DASHPOT", "CONNECTORSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
   return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);

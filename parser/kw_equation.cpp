@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include "handlers.hpp"
+#include "model/mesh_queries.hpp"
+#include "text.hpp"
 
 namespace inpact::parser {
 
@@ -114,8 +116,41 @@ void equation(KeywordContext& ctx) {
 
 }  // namespace
 
+// *MPC: one constraint a data line, `type, dependent node|set, independent node|set`. TIE and PIN
+// join the translations of each dependent node to its independent one (solid and plane nodes
+// have no rotations, so the two are the same here): u_dep − u_ind = 0 per DOF, an *EQUATION
+// whose first, eliminated term is the dependent node's [K16 *MPC]. The other types are refused;
+// CalculiX's PLANE, STRAIGHT and BEAM mean other things than Abaqus's BEAM.
+void mpc(KeywordContext& ctx) {
+  if (ctx.has("USER")) {
+    ctx.error_param("USER", "user subroutine MPCs (USER) are not supported");
+    return;
+  }
+  const int dim = model::spatial_dimension(ctx.mesh().elements);
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 3, 3, "MPC type, dependent node or node set, independent node or node set")) continue;
+    const std::string type = normalize_name(f[0].text);
+    if (type != "TIE" && type != "PIN") {
+      ctx.error(f[0].loc, fmt::format("MPC type '{}' is not supported yet (TIE and PIN are; CalculiX's PLANE, STRAIGHT "
+                                      "and BEAM mean other things than Abaqus's BEAM)",
+                                      f[0].text));
+      continue;
+    }
+    auto dependent = ctx.nodes(f[1]);
+    auto independent = ctx.nodes(f[2]);
+    if (!dependent || !independent) continue;
+    sort_by_label(ctx.mesh().nodes, *dependent);
+    sort_by_label(ctx.mesh().nodes, *independent);
+    for (int dof = 1; dof <= dim; ++dof) add_equations(ctx, {{*dependent, dof, 1.0}, {*independent, dof, -1.0}}, line.loc);
+  }
+}
+
 void add_equation_keywords(std::vector<KeywordSpec>& t) {
   t.push_back({"*EQUATION", kModelDataScopes, {}, DataLines::Required, equation});
+  t.push_back({"*MPC", kModelDataScopes, {{"USER", ValueKind::None}, {"MODE", ValueKind::Required}}, DataLines::Required,
+               mpc});
 }
 
 }  // namespace inpact::parser
