@@ -39,15 +39,27 @@ std::string node_dof(const AnalysisModel& am, std::int64_t d) {
   return fmt::format("node {} DOF {}", labels[static_cast<std::size_t>(node)], c + 1);
 }
 
+/// The deck line of the last *CLOAD up to step `index` that loads global DOF d.
+model::SourceLoc cload_line(const AnalysisModel& am, std::size_t index, std::int64_t d) {
+  model::SourceLoc loc{};
+  for (std::size_t s = 0; s <= index; ++s)
+    for (const auto& block : am.model->steps[s].cloads)
+      for (const auto& e : block.entries)
+        for (std::int32_t n : e.nodes)
+          if (am.dof_index(n, e.dof) == d) loc = e.loc;
+  return loc;
+}
+
 /// A *CLOAD on a DOF that nothing connects (no element, and not a DOF its reference node's
 /// coupling couples) would act on nothing: a deck error rather than a lost load.
-void check_loads_act_on_something(const AnalysisModel& am, const StepConditions& conditions, const DofMap& dofs) {
+void check_loads_act_on_something(const AnalysisModel& am, std::size_t index, const StepConditions& conditions,
+                                  const DofMap& dofs) {
   for (std::int64_t d : conditions.loaded_dofs())
     if (dofs.kind(d) == DofMap::Kind::Unused)
-      throw AnalysisError(fmt::format("error: *CLOAD: {} carries a load but nothing connects that degree of freedom "
-                                      "(no element; for a coupling's reference node, the DOF is not among the coupled "
-                                      "ones), so the load would act on nothing",
-                                      node_dof(am, d)));
+      throw AnalysisError(fmt::format("{}: error: *CLOAD: {} carries a load but nothing connects that degree of "
+                                      "freedom (no element; for a coupling's reference node, the DOF is not among the "
+                                      "coupled ones), so the load would act on nothing",
+                                      am.model->sources.describe(cload_line(am, index, d)), node_dof(am, d)));
 }
 
 /// What a step needs while it runs, built when it starts. Not movable: the assembler keeps a
@@ -67,7 +79,7 @@ struct StepRun {
         states(material_states) {
     if (contact->empty()) contact.reset();
     else contact->set_threads(threads);
-    check_loads_act_on_something(am, conditions, dofs);
+    check_loads_act_on_something(am, index, conditions, dofs);
   }
   StepRun(const StepRun&) = delete;
 

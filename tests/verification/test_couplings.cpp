@@ -113,6 +113,38 @@ TEST(Coupling, KinematicTangentialDofOfACylindricalOrientationTwistsTheFace) {
   EXPECT_LE(worst, 1e-12 * 0.01);
 }
 
+// A *CLOAD on a reference DOF the coupling does not couple (DOF 1 of the push deck, which
+// couples DOF 3 only) would act on nothing: the run stops naming the load's line.
+TEST(Coupling, ALoadOnAnUncoupledReferenceDofIsADeckError) {
+  std::ifstream in(deck_path("coupling_kinematic_push_c3d8.inp"));
+  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-cload-" + std::to_string(::getpid()) + ".inp");
+  int line_no = 0, cload_line = 0;
+  {
+    std::ofstream out(path);
+    for (std::string line; std::getline(in, line);) {
+      out << line << "\n";
+      ++line_no;
+      if (line == "REF, 3, 3, -0.001") {
+        out << "*CLOAD\nREF, 1, 5.\n";
+        cload_line = line_no + 2;
+        line_no += 2;
+      }
+    }
+  }
+  std::string message;
+  try {
+    const auto r = run_deck(path.string());
+    message = r->outcome.completed ? "completed" : r->outcome.message;
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_NE(message.find(":" + std::to_string(cload_line) + ": error: *CLOAD: node 82 DOF 1 carries a load but nothing "
+                         "connects that degree of freedom"),
+            std::string::npos)
+      << message;
+}
+
 // The reactions of a held face are the coupling's distribution of F1 = 10, M3 = 5 (the deck's
 // header works it out). Measured: 4.4e-16 at worst (reactions of order 2).
 TEST(Coupling, DistributingSpreadsTheLoadByAreaWeightsAboutTheCentroid) {
