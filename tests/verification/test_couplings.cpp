@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <span>
 
 namespace inpact::verification {
@@ -34,6 +35,18 @@ V3 vec(const solver::Frame& f, const std::string& key, std::int32_t n, int dim =
 }
 
 std::int32_t ref_node(const model::Model& m) { return nset(m, "REF").front(); }
+
+/// A verification deck with its lines edited (each line replaced by the lines `edit` returns),
+/// written to the temporary folder under `tag`; the caller removes it.
+std::filesystem::path edited_deck(const std::string& name, const std::string& tag,
+                                  const std::function<std::vector<std::string>(const std::string&)>& edit) {
+  std::ifstream in(deck_path(name));
+  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-" + tag + "-" + std::to_string(::getpid()) + ".inp");
+  std::ofstream out(path);
+  for (std::string line; std::getline(in, line);)
+    for (const std::string& l : edit(line)) out << l << "\n";
+  return path;
+}
 
 /// The area weight of a node of the columns' 1 × 1 top face, meshed 2 × 2: ¼ at an edge of the
 /// square and ½ inside it, in each direction.
@@ -116,21 +129,13 @@ TEST(Coupling, KinematicTangentialDofOfACylindricalOrientationTwistsTheFace) {
 // A *CLOAD on a reference DOF the coupling does not couple (DOF 1 of the push deck, which
 // couples DOF 3 only) would act on nothing: the run stops naming the load's line.
 TEST(Coupling, ALoadOnAnUncoupledReferenceDofIsADeckError) {
-  std::ifstream in(deck_path("coupling_kinematic_push_c3d8.inp"));
-  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-cload-" + std::to_string(::getpid()) + ".inp");
   int line_no = 0, cload_line = 0;
-  {
-    std::ofstream out(path);
-    for (std::string line; std::getline(in, line);) {
-      out << line << "\n";
-      ++line_no;
-      if (line == "REF, 3, 3, -0.001") {
-        out << "*CLOAD\nREF, 1, 5.\n";
-        cload_line = line_no + 2;
-        line_no += 2;
-      }
-    }
-  }
+  const auto path = edited_deck("coupling_kinematic_push_c3d8.inp", "cload", [&](const std::string& line) {
+    ++line_no;
+    if (line != "REF, 3, 3, -0.001") return std::vector<std::string>{line};
+    cload_line = line_no + 2;
+    return std::vector<std::string>{line, "*CLOAD", "REF, 1, 5."};
+  });
   std::string message;
   try {
     const auto r = run_deck(path.string());
@@ -167,12 +172,9 @@ TEST(Coupling, DistributingSpreadsTheLoadByAreaWeightsAboutTheCentroid) {
 // reference node, so the face's four corners carry nothing; the resultant is still F and the
 // moment M (about the reference node), whatever the weights. Measured: corners 0, sums 6.6e-15.
 TEST(Coupling, LinearWeightingLeavesTheFarthestNodesUnloadedAndTheResultantExact) {
-  std::ifstream in(deck_path("coupling_distributing_held_c3d8.inp"));
-  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-linear-" + std::to_string(::getpid()) + ".inp");
-  {
-    std::ofstream out(path);
-    for (std::string line; std::getline(in, line);) out << (line == "*DISTRIBUTING" ? "*DISTRIBUTING, WEIGHTING METHOD=LINEAR" : line) << "\n";
-  }
+  const auto path = edited_deck("coupling_distributing_held_c3d8.inp", "linear", [](const std::string& line) {
+    return std::vector<std::string>{line == "*DISTRIBUTING" ? "*DISTRIBUTING, WEIGHTING METHOD=LINEAR" : line};
+  });
   const auto r = run_deck(path.string());
   std::filesystem::remove(path);
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
@@ -263,19 +265,16 @@ TEST(Coupling, DistributingPrescribedReferenceNodeSetsTheFaceMeanMotion) {
 // each time. The pull deck with translations only, NLGEOM, and a held one-node rigid body far
 // away (which makes the map re-linearise): the face's mean u3 is still the prescribed 0.001.
 TEST(Coupling, PrescribedReferenceNodeKeepsItsPivotsWhenTheMapIsLaidOutAgain) {
-  std::ifstream in(deck_path("coupling_distributing_pull_c3d8.inp"));
-  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-nlgeom-" + std::to_string(::getpid()) + ".inp");
-  {
-    std::ofstream out(path);
-    for (std::string line; std::getline(in, line);) {
-      if (line == "REF, 4, 4, 0.0005") continue;
-      out << (line == "*STEP" ? "*STEP, NLGEOM" : line) << "\n";
-      if (line == "*NODE, NSET=ALL") out << "900, 5., 5., 5.\n901, 6., 5., 5.\n";
-      if (line.rfind("*DISTRIBUTING", 0) == 0) out << "1, 3\n";
-      if (line.rfind("*SOLID SECTION", 0) == 0)
-        out << "*NSET, NSET=LONE\n901\n*RIGID BODY, REF NODE=900, TIE NSET=LONE\n*BOUNDARY\n900, 1, 6\n";
-    }
-  }
+  const auto path = edited_deck("coupling_distributing_pull_c3d8.inp", "nlgeom", [](const std::string& line) {
+    std::vector<std::string> out;
+    if (line == "REF, 4, 4, 0.0005") return out;
+    out.push_back(line == "*STEP" ? "*STEP, NLGEOM" : line);
+    if (line == "*NODE, NSET=ALL") out.insert(out.end(), {"900, 5., 5., 5.", "901, 6., 5., 5."});
+    if (line.rfind("*DISTRIBUTING", 0) == 0) out.push_back("1, 3");
+    if (line.rfind("*SOLID SECTION", 0) == 0)
+      out.insert(out.end(), {"*NSET, NSET=LONE", "901", "*RIGID BODY, REF NODE=900, TIE NSET=LONE", "*BOUNDARY", "900, 1, 6"});
+    return out;
+  });
   const auto r = run_deck(path.string());
   std::filesystem::remove(path);
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
