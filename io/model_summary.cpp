@@ -43,6 +43,9 @@ void write_mesh(std::ostream& out, const model::Model& m) {
   for (const auto& [k, s] : mesh.surfaces) {
     if (s.kind == model::Surface::Kind::Element)
       print(out, "  {:<32} {:>10} faces\n", s.name, s.faces.size());
+    else if (s.kind == model::Surface::Kind::Analytical)
+      print(out, "  {:<32} {:>10} segments (analytical)\n", s.name,
+            m.analytical_surfaces.at(static_cast<std::size_t>(s.analytical)).segments.size());
     else
       print(out, "  {:<32} {:>10} nodes\n", s.name, s.nodes.size());
   }

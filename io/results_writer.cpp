@@ -219,7 +219,8 @@ void ResultsWriter::Impl::write_model(const std::vector<std::string>& pair_names
       }
       Id ds = ctx.open_dataset(sg, name);
       ctx.attr_string(ds, "name", surf.name);
-      ctx.attr_string(ds, "kind", surf.kind == model::Surface::Kind::Element ? "ELEMENT" : "NODE");
+      ctx.attr_string(ds, "kind", surf.kind == model::Surface::Kind::Element ? "ELEMENT"
+                                 : surf.kind == model::Surface::Kind::Node ? "NODE" : "ANALYTICAL");
     }
   }
 

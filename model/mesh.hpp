@@ -55,12 +55,15 @@ struct Face {
 };
 
 struct Surface {
-  enum class Kind : std::uint8_t { Element, Node };
+  /// Analytical: *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION (model/analytical_surface.hpp),
+  /// no faces and no nodes.
+  enum class Kind : std::uint8_t { Element, Node, Analytical };
   std::string name;
   Kind kind = Kind::Element;
   std::vector<Face> faces;          ///< Kind::Element
   std::vector<std::int32_t> nodes;  ///< Kind::Node (rows)
   std::vector<double> node_areas;   ///< Kind::Node: area per node (1.0 when not given)
+  std::int32_t analytical = -1;     ///< Kind::Analytical: index into Model::analytical_surfaces
   SourceLoc loc;
 };
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "analytical_surface.hpp"
 #include "contact.hpp"
 #include "coupling.hpp"
 #include "element_types.hpp"
@@ -34,6 +35,8 @@ struct Model {
   std::vector<PretensionSection> pretension_sections;  ///< in deck order
   std::vector<RigidBody> rigid_bodies;                 ///< *RIGID BODY, in deck order
   std::vector<Coupling> couplings;                     ///< *COUPLING, in deck order
+  /// *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION, in deck order (Surface::analytical).
+  std::vector<AnalyticalSurface> analytical_surfaces;
 
   // Initial (model-level) conditions, in force from the first step on.
   std::vector<BoundaryBlock> boundaries;

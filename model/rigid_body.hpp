@@ -18,6 +18,7 @@ struct RigidBody {
   /// nodes): sorted, unique, without the reference and rotation nodes.
   std::vector<std::int32_t> nodes;
   std::vector<std::int32_t> elements;  ///< ELSET: elements made rigid (no stiffness), sorted
+  std::int32_t analytical_surface = -1;  ///< ANALYTICAL SURFACE: index into Model::analytical_surfaces
   SourceLoc loc;                       ///< the keyword line
   SourceLoc ref_loc;                   ///< REF NODE='s value
 };

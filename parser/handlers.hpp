@@ -8,6 +8,8 @@
 namespace inpact::parser {
 
 void add_mesh_keywords(std::vector<KeywordSpec>& table);      // kw_mesh.cpp
+/// *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION into `surf` (kw_analytical_surface.cpp; called by *SURFACE).
+void analytical_surface(KeywordContext& ctx, model::Surface& surf, std::string_view type);
 void add_assembly_keywords(std::vector<KeywordSpec>& table);  // kw_assembly.cpp
 void add_material_keywords(std::vector<KeywordSpec>& table);  // kw_material.cpp, calls the one below
 void add_hyperelastic_keyword(std::vector<KeywordSpec>& table);  // kw_hyperelastic.cpp

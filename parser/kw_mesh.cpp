@@ -1,4 +1,5 @@
-/// *HEADING *NODE *ELEMENT *NSET *ELSET *SURFACE: the mesh and its named regions.
+/// *HEADING *NODE *ELEMENT *NSET *ELSET *SURFACE: the mesh and its named regions (an analytical
+/// *SURFACE's profile: kw_analytical_surface.cpp).
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -276,6 +277,18 @@ void surface(KeywordContext& ctx) {
     surf.loc = ctx.keyword.loc;
   }
   const std::string type = ctx.choice_value("TYPE");
+  if (type == "SEGMENTS" || type == "CYLINDER" || type == "REVOLUTION") {
+    analytical_surface(ctx, surf, type);
+    return;
+  }
+  if (ctx.has("FILLET RADIUS")) {
+    ctx.error_param("FILLET RADIUS", "FILLET RADIUS belongs to an analytical surface (TYPE=SEGMENTS, CYLINDER or REVOLUTION)");
+    return;
+  }
+  if (surf.kind == model::Surface::Kind::Analytical) {
+    ctx.error(ctx.keyword.loc, fmt::format("surface '{}' is an analytical surface already; it cannot have faces or nodes too", surf.name));
+    return;
+  }
   surf.kind = type == "NODE" ? model::Surface::Kind::Node : model::Surface::Kind::Element;
   std::vector<Field> f;
   for (const Line& line : ctx.data) {
@@ -343,7 +356,8 @@ void add_mesh_keywords(std::vector<KeywordSpec>& t) {
                DataLines::Optional, elset, {}, true});
   t.push_back({"*SURFACE", kMeshScopes,
                {{"NAME", ValueKind::Required, ValueType::Text, {}, true},
-                {"TYPE", ValueKind::Required, ValueType::Choice, {"ELEMENT", "NODE"}},
+                {"TYPE", ValueKind::Required, ValueType::Choice, {"ELEMENT", "NODE", "SEGMENTS", "CYLINDER", "REVOLUTION"}},
+                {"FILLET RADIUS", ValueKind::Required, ValueType::Real},
                 {"INTERNAL"}},
                DataLines::Required, surface, {}, true});
 }

@@ -21,12 +21,32 @@ bool add_set_nodes(KeywordContext& ctx, std::string_view param, std::vector<std:
   return true;
 }
 
+/// ANALYTICAL SURFACE=: the analytical surface's index, −1 after an error (not one, or carried
+/// by another body already).
+std::int32_t analytical_surface_index(KeywordContext& ctx) {
+  const std::string name = ctx.name_value("ANALYTICAL SURFACE");
+  const auto it = ctx.mesh().surfaces.find(name);
+  if (it == ctx.mesh().surfaces.end() || it->second.kind != model::Surface::Kind::Analytical) {
+    ctx.error_param("ANALYTICAL SURFACE", fmt::format("'{}' is not an analytical surface: define it before the *RIGID "
+                                                      "BODY with *SURFACE, TYPE=SEGMENTS, CYLINDER or REVOLUTION",
+                                                      ctx.param("ANALYTICAL SURFACE")->value.value_or(name)));
+    return -1;
+  }
+  const std::int32_t index = it->second.analytical;
+  for (const model::RigidBody& other : ctx.model().rigid_bodies)
+    if (other.analytical_surface == index) {
+      ctx.error_param("ANALYTICAL SURFACE", fmt::format("surface '{}' is carried by another *RIGID BODY already", it->second.name));
+      return -1;
+    }
+  return index;
+}
+
 // *RIGID BODY, REF NODE=, ELSET= | TIE NSET= | PIN NSET= [, ROT NODE=, NSET= (CalculiX)].
 // The nodes of TIE NSET and PIN NSET both follow the body in translation; inpact's nodes have no
 // rotations of their own, so tying and pinning are the same. CalculiX's NSET is a TIE NSET, and
 // its ROT NODE holds the rotations (in its translations) instead of the reference node's 4–6.
 void rigid_body(KeywordContext& ctx) {
-  for (std::string_view p : {"ANALYTICAL SURFACE", "ISOTHERMAL", "POSITION", "DENSITY"})
+  for (std::string_view p : {"ISOTHERMAL", "POSITION", "DENSITY"})
     if (ctx.has(p)) {
       ctx.error_param(p, fmt::format("{} is not supported yet", p));
       return;
@@ -49,8 +69,10 @@ void rigid_body(KeywordContext& ctx) {
     if (!rows) return;
     b.elements = std::move(*rows);
   }
-  if (b.nodes.empty() && b.elements.empty()) {
-    ctx.error(ctx.keyword.loc, "the rigid body has no nodes: give ELSET=, TIE NSET= or PIN NSET= (NSET= in CalculiX)");
+  if (ctx.has("ANALYTICAL SURFACE") && (b.analytical_surface = analytical_surface_index(ctx)) < 0) return;
+  if (b.nodes.empty() && b.elements.empty() && b.analytical_surface < 0) {
+    ctx.error(ctx.keyword.loc, "the rigid body has no nodes: give ELSET=, TIE NSET=, PIN NSET= (NSET= in CalculiX) or "
+                               "ANALYTICAL SURFACE=");
     return;
   }
   std::sort(b.elements.begin(), b.elements.end());

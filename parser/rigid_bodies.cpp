@@ -73,7 +73,7 @@ void finalize_rigid_bodies(model::Model& m, Diagnostics& diags) {
     collect_nodes(m.mesh, b);
     check_not_on_continuum(m, on_continuum, b.ref_node, b.ref_loc, kKeyword, "reference node", diags);
     check_not_on_continuum(m, on_continuum, b.rot_node, b.loc, kKeyword, "rotation node", diags);
-    if (b.nodes.empty())
+    if (b.nodes.empty() && b.analytical_surface < 0)
       diags.error(b.loc, kKeyword, "the rigid body has no node other than its reference and rotation nodes");
   }
   check_disjoint(m, diags);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "analytical_contact.hpp"
 #include "anisotropic_law.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
@@ -218,6 +219,8 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   } catch (const contact::InteractionError& e) {
     throw AnalysisError(fmt::format("{}: error: {}: {}", m.sources.describe(e.loc), e.keyword, e.what()));
   }
+
+  check_analytical_surfaces(am);
 
   try {
     am.ties = contact::resolve_ties(m);

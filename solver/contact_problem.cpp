@@ -10,6 +10,7 @@
 
 #include "analysis_error.hpp"
 #include "step_conditions.hpp"
+#include "contact/analytical_pair.hpp"
 #include "contact/enforcement.hpp"
 #include "contact/friction.hpp"
 #include "contact/geometric_correction.hpp"
@@ -208,7 +209,10 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
                                                        const contact::ResolvedInteraction& r) {
   const model::Model& m = *am.model;
   std::unique_ptr<contact::PairKinematics> geometry;
-  if (r.surface_to_surface) {
+  if (entry.master->kind == model::Surface::Kind::Analytical) {
+    geometry = std::make_unique<contact::AnalyticalPair>(m, *entry.slave, *entry.master, am.dim, r.thickness,
+                                                         r.surface_to_surface);
+  } else if (r.surface_to_surface) {
     auto s2s = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
     if (r.smoothed) {
       const model::ContactPair* named = entry.general ? nullptr : &entry.pair;
@@ -298,6 +302,8 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
   for (const contact::ContactInteraction& e : table.rows) {
     const model::ContactPair& p = e.pair;
     const std::string kw = e.general ? "*CONTACT" : "*CONTACT PAIR";
+    if (e.slave->kind == model::Surface::Kind::Analytical)
+      refuse(m, p.loc, kw, fmt::format("the analytical surface {} can only be a master surface", p.slave));
     if (p.type == model::ContactDiscretization::SurfaceToSurface && e.slave->kind != model::Surface::Kind::Element)
       refuse(m, p.loc, kw, fmt::format("TYPE=SURFACE TO SURFACE needs an element-based slave surface; {} is node based "
                                        "(use TYPE=NODE TO SURFACE)", p.slave));
@@ -306,7 +312,7 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
                            "yet; define the pair in the model data");
     if ((p.adjust_distance || !p.adjust_nset.empty()) && !m.adjusted)
       refuse(m, p.loc, kw, "ADJUST: the model was not adjusted before the analysis (contact::apply_adjust)");
-    if (e.master->kind != model::Surface::Kind::Element)
+    if (e.master->kind == model::Surface::Kind::Node)
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
   }
 }

@@ -7,13 +7,16 @@
 #include "analysis_error.hpp"
 #include "distributing_coupling.hpp"
 #include "oriented_coupling.hpp"
-#include "rigid_motion.hpp"
+#include "model/rigid_motion.hpp"
 
 namespace inpact::solver {
 
 namespace {
 
 using Dependents = std::map<std::int64_t, std::vector<MasterTerm>>;
+using model::rigid_motion;
+using model::RigidMotion;
+using model::Vec3d;
 
 /// The rotation vector a rotation node holds (θ3 in [0] in 2D).
 Vec3d rotation_of(const std::vector<double>& u, std::int32_t rot, int dim) {

@@ -6,7 +6,7 @@
 ///  - prescribed: its value comes from a boundary condition (no equation);
 ///  - dependent: eliminated by a *EQUATION, *TIE, *PRE-TENSION SECTION or distributing
 ///    *COUPLING, u_d = Σ w_i u_i over independent DOFs, or by a *RIGID BODY or kinematic
-///    *COUPLING, u = u_R + (R(θ) − I) r (rigid_motion.hpp): linear for small rotations; with
+///    *COUPLING, u = u_R + (R(θ) − I) r (model/rigid_motion.hpp): linear for small rotations; with
 ///    finite rotations (NLGEOM) the weights are ∂u/∂(u_R, θ) at the current θ, renewed by
 ///    relinearize() each iteration;
 ///  - unused: a node no element connects (no stiffness; held at zero, not reported).

@@ -17,10 +17,14 @@ every variant of it:
                     of a force-driven contact problem); parameters method, type, inc0
   hertz_2d_rigid    hertz_2d_force with a rigid cylinder: R2D2 elements of a *RIGID BODY loaded at
                     its reference node, the block the slave (rigid-indenter Hertz)
+  hertz_2d_analytical  the same rigid cylinder as an analytical surface (*SURFACE, TYPE=SEGMENTS,
+                    one CIRCL arc): the exact circle instead of its chords
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
   sphere_3d_force   the same sphere resting on the block (touching at the pole) and held only by its
                     contact and the symmetry planes, pushed down by a force; parameters method,
                     type, inc0
+  sphere_3d_analytical  a rigid sphere (*SURFACE, TYPE=REVOLUTION) resting on the block of
+                    sphere_3d_force, pushed down through its reference node (rigid-indenter Hertz)
   interference_2d   thick-cylinder interference fit, plane strain, quarter model, non-matching
                     ring meshes, interference δ set up by the geometry (Lamé)
   interference_2d_smoothed  the same, both ring surfaces smoothed (CIRCUMFERENTIAL, [AX] 38.1.3)
@@ -260,12 +264,15 @@ def hertz_2d_force(level):
     return out
 
 
-def hertz_2d_rigid(level):
+def hertz_2d_rigid(level, analytical=False):
     """hertz_2d_force with a rigid indenter: the cylinder is its bottom arc alone, R2D2 elements of
     a *RIGID BODY whose reference node (the centre, x = 0, y = R) carries the force P/2 of this
     half model and is held in x and in rotation (the symmetry plane). The block is the slave (a
     rigid surface is always the master), with the same nodes along x as the arc. Reference: the
-    rigid-indenter Hertz solution, E* = E/(1 - nu^2), P chosen for a = 1. Level L: h = a / 2^(L+2)."""
+    rigid-indenter Hertz solution, E* = E/(1 - nu^2), P chosen for a = 1. Level L: h = a / 2^(L+2).
+    `analytical`: the cylinder is an analytical surface instead, one CIRCL arc about the centre
+    from x = W (where the chords end) across the symmetry plane to x = −2, travelled clockwise so
+    that its normal (the direction of travel turned counter-clockwise) points down, at the block."""
     h = A_FORCE / 2 ** (level + 2)
     xs = graded(h, 2.0, HERTZ_W)
     ys = graded(h, 2.0, HERTZ_H)
@@ -292,15 +299,26 @@ def hertz_2d_rigid(level):
     # Node order +x: the positive normal (1 → 2 turned counter-clockwise) points up, into the
     # cylinder; the surface facing the block is SNEG.
     segments = [(1 + i, arc(i), arc(i + 1)) for i in range(nx - 1)]
+    if analytical:
+        nodes = nodes[nx:]
+        out[1] = out[1].replace("(R2D2 elements)", "(an analytical surface)")
     out += ["*NODE, NSET=ALL"] + [f"{n}, {x:.15g}, {y:.15g}" for n, x, y in nodes]
-    out += ["*ELEMENT, TYPE=R2D2, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in segments]
+    if not analytical:
+        out += ["*ELEMENT, TYPE=R2D2, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in segments]
     out += ["*ELEMENT, TYPE=CPE4, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in master]
     out += ["*ELSET, ELSET=BLOCK_TOP"] + lines_of([e[0] for e in master[-(nx - 1):]])
-    out += ["*SURFACE, NAME=INDENTER_S", "INDENTER, SNEG", "*SURFACE, NAME=BLOCK_S", "BLOCK_TOP, S3"]
+    if analytical:
+        bottom = lambda x: R_HERTZ - math.sqrt(R_HERTZ ** 2 - x * x)
+        out += ["*SURFACE, TYPE=SEGMENTS, NAME=INDENTER_S", f"START, {HERTZ_W:.15g}, {bottom(HERTZ_W):.15g}",
+                f"CIRCL, -2, {bottom(2.0):.15g}, 0, {R_HERTZ:.15g}"]
+    else:
+        out += ["*SURFACE, NAME=INDENTER_S", "INDENTER, SNEG"]
+    out += ["*SURFACE, NAME=BLOCK_S", "BLOCK_TOP, S3"]
     out += ["*NSET, NSET=SYMMETRY"] + lines_of([mid(0, j) for j in range(ny)])
     out += ["*NSET, NSET=REF", str(ref), "*NSET, NSET=BLOCK_BOTTOM"] + lines_of([mid(i, 0) for i in range(nx)])
     out += ["*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
-    out += ["*RIGID BODY, REF NODE=REF, ELSET=INDENTER"]
+    out += ["*RIGID BODY, REF NODE=REF, ANALYTICAL SURFACE=INDENTER_S" if analytical else
+            "*RIGID BODY, REF NODE=REF, ELSET=INDENTER"]
     out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>",
             "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>", "BLOCK_S, INDENTER_S"]
     out += ["*BOUNDARY", "SYMMETRY, 1", "BLOCK_BOTTOM, 1, 2", "REF, 1", "REF, 6"]
@@ -311,29 +329,13 @@ def hertz_2d_rigid(level):
 
 # --------------------------------------------------------------------------- sphere on a block
 
-def sphere_bodies(h):
-    """The two bodies of the sphere decks, matching meshes at element size h at the contact:
-    indenter bottom z_b = R − √(R² − x² − y²), top z = H; block z ∈ [−H, 0]; quarter model
-    (x ≥ 0, y ≥ 0). Returns the mesh lines (nodes, elements, element sets, the surfaces
-    INDENTER_S and BLOCK_S, the node sets XSYM, YSYM, INDENTER_TOP, BLOCK_BOTTOM), the material,
-    and the grid (x positions) of the indenter's top with its node labels: (lines, xs, top_id)."""
-    xs_s = graded(h, 1.34, SPHERE_W, 1.5)
-    zs_s = graded(h, 1.34, SPHERE_H, 1.5)
+def sphere_block(h):
+    """The block of the sphere decks: x, y ∈ [0, W] (quarter model), z ∈ [−H, 0], element size h
+    at the contact (graded away from it), node labels from 1000001. Returns (nodes, elements,
+    label(i, j, k), number of grid lines along x and y, along z)."""
     xs_m = graded(h, 1.34, SPHERE_W, 1.5)
     zs_m = graded(h, 1.34, SPHERE_H, 1.5)
-    nodes, se, me = [], [], []
-    n, nz = len(xs_s), len(zs_s)
-    sid = lambda i, j, k: 1 + k * n * n + j * n + i
-    for k, s in enumerate(zs_s):
-        for j, y in enumerate(xs_s):
-            for i, x in enumerate(xs_s):
-                zb = R_SPHERE - math.sqrt(R_SPHERE ** 2 - x * x - y * y)
-                nodes.append((sid(i, j, k), x, y, zb + (SPHERE_H - zb) * s / SPHERE_H))
-    for k in range(nz - 1):
-        for j in range(n - 1):
-            for i in range(n - 1):
-                se.append((1 + len(se), sid(i, j, k), sid(i + 1, j, k), sid(i + 1, j + 1, k), sid(i, j + 1, k),
-                           sid(i, j, k + 1), sid(i + 1, j, k + 1), sid(i + 1, j + 1, k + 1), sid(i, j + 1, k + 1)))
+    nodes, me = [], []
     m, mz = len(xs_m), len(zs_m)
     zs_block = [-z for z in reversed(zs_m)]
     mid = lambda i, j, k: 1000001 + k * m * m + j * m + i
@@ -346,6 +348,32 @@ def sphere_bodies(h):
             for i in range(m - 1):
                 me.append((1000001 + len(me), mid(i, j, k), mid(i + 1, j, k), mid(i + 1, j + 1, k), mid(i, j + 1, k),
                            mid(i, j, k + 1), mid(i + 1, j, k + 1), mid(i + 1, j + 1, k + 1), mid(i, j + 1, k + 1)))
+    return nodes, me, mid, m, mz
+
+
+def sphere_bodies(h):
+    """The two bodies of the sphere decks, matching meshes at element size h at the contact:
+    indenter bottom z_b = R − √(R² − x² − y²), top z = H; block z ∈ [−H, 0]; quarter model
+    (x ≥ 0, y ≥ 0). Returns the mesh lines (nodes, elements, element sets, the surfaces
+    INDENTER_S and BLOCK_S, the node sets XSYM, YSYM, INDENTER_TOP, BLOCK_BOTTOM), the material,
+    and the grid (x positions) of the indenter's top with its node labels: (lines, xs, top_id)."""
+    xs_s = graded(h, 1.34, SPHERE_W, 1.5)
+    zs_s = graded(h, 1.34, SPHERE_H, 1.5)
+    nodes, se = [], []
+    n, nz = len(xs_s), len(zs_s)
+    sid = lambda i, j, k: 1 + k * n * n + j * n + i
+    for k, s in enumerate(zs_s):
+        for j, y in enumerate(xs_s):
+            for i, x in enumerate(xs_s):
+                zb = R_SPHERE - math.sqrt(R_SPHERE ** 2 - x * x - y * y)
+                nodes.append((sid(i, j, k), x, y, zb + (SPHERE_H - zb) * s / SPHERE_H))
+    for k in range(nz - 1):
+        for j in range(n - 1):
+            for i in range(n - 1):
+                se.append((1 + len(se), sid(i, j, k), sid(i + 1, j, k), sid(i + 1, j + 1, k), sid(i, j + 1, k),
+                           sid(i, j, k + 1), sid(i + 1, j, k + 1), sid(i + 1, j + 1, k + 1), sid(i, j + 1, k + 1)))
+    block_nodes, me, mid, m, mz = sphere_block(h)
+    nodes += block_nodes
     out = ["*NODE, NSET=ALL"] + [f"{a}, {x:.15g}, {y:.15g}, {z:.15g}" for a, x, y, z in nodes]
     out += ["*ELEMENT, TYPE=C3D8, ELSET=INDENTER"] + [", ".join(map(str, e)) for e in se]
     out += ["*ELEMENT, TYPE=C3D8, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in me]
@@ -417,6 +445,48 @@ def sphere_3d_force(level):
     width = [0.5 * ((xs[min(i + 1, nx - 1)] - xs[i]) + (xs[i] - xs[max(i - 1, 0)])) for i in range(nx)]
     out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD"]
     out += [f"{top(i, j)}, 3, {-q * width[i] * width[j]:.17g}" for j in range(nx) for i in range(nx)]
+    out += OUTPUT + ["*END STEP"]
+    return out
+
+
+def sphere_3d_analytical(level):
+    """A rigid sphere as an analytical surface (*SURFACE, TYPE=REVOLUTION about the z axis through
+    its centre (0, 0, R): one CIRCL arc in (r, z) from r = 6 at the bottom across the axis to
+    r = −0.5, travelled clockwise so that its normal points down, at the block) resting on the
+    block of sphere_3d_force (touching it at the pole) and pushed down through its reference node
+    (the centre, held but in z) by P/4 on this quarter model. The block is the slave; no
+    indenter mesh. Reference: rigid-indenter Hertz, E* = E/(1 - nu^2), P chosen for a = 1.
+    Level L: h = a / (4·2^(L−1))."""
+    h = 1.0 / (4 * 2 ** (level - 1))
+    e_star = E / (1.0 - NU * NU)
+    load = 4.0 * e_star * A_FORCE ** 3 / (3.0 * R_SPHERE)
+    p0 = 3.0 * load / (2.0 * math.pi * A_FORCE ** 2)
+    out = header(f"A rigid sphere R = {R_SPHERE:g} (an analytical surface of revolution) resting on a block under a "
+                 f"force, E = {E:g}, nu = {NU:g}; quarter model",
+                 "Reference: Johnson, Contact Mechanics (1985), §4.2 with a rigid indenter: a = (3PR/(4E*))^(1/3), "
+                 f"p0 = 3P/(2 pi a^2), E* = E/(1-nu^2); P = {load:.10g} (this quarter model carries P/4): "
+                 f"a = {A_FORCE:g}, p0 = {p0:.10g}.", level, h)
+    out[-1] = "** tolerances in tests/contact_verification/test_hertz_force.cpp."
+    out += ["*PARAMETER", 'method = "PENALTY"', 'type = "SURFACE TO SURFACE"', "inc0 = 0.25"]
+    nodes, me, mid, m, mz = sphere_block(h)
+    ref = 1
+    out += ["*NODE, NSET=ALL", f"{ref}, 0, 0, {R_SPHERE:g}"] + [f"{a}, {x:.15g}, {y:.15g}, {z:.15g}" for a, x, y, z in nodes]
+    out += ["*ELEMENT, TYPE=C3D8, ELSET=BLOCK"] + [", ".join(map(str, e)) for e in me]
+    out += ["*ELSET, ELSET=BLOCK_TOP"] + lines_of([e[0] for e in me[-(m - 1) ** 2:]])
+    lowest = lambda r: -math.sqrt(R_SPHERE ** 2 - r * r)
+    out += ["*SURFACE, NAME=BLOCK_S", "BLOCK_TOP, S2",
+            "*SURFACE, TYPE=REVOLUTION, NAME=SPHERE_S", f"0, 0, {R_SPHERE:g}, 0, 0, {R_SPHERE + 1:g}",
+            f"START, 6, {lowest(6.0):.15g}", f"CIRCL, -0.5, {lowest(0.5):.15g}, 0, 0"]
+    out += ["*NSET, NSET=XSYM"] + lines_of([mid(0, j, k) for k in range(mz) for j in range(m)])
+    out += ["*NSET, NSET=YSYM"] + lines_of([mid(i, 0, k) for k in range(mz) for i in range(m)])
+    out += ["*NSET, NSET=BLOCK_BOTTOM"] + lines_of([mid(i, j, 0) for j in range(m) for i in range(m)])
+    out += ["*NSET, NSET=REF", str(ref)]
+    out += ["*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:g}, {NU:g}"]
+    out += ["*RIGID BODY, REF NODE=REF, ANALYTICAL SURFACE=SPHERE_S"]
+    out += ["*SURFACE INTERACTION, NAME=SMOOTH", "*SURFACE BEHAVIOR, <method>",
+            "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=<type>", "BLOCK_S, SPHERE_S"]
+    out += ["*BOUNDARY", "XSYM, 1", "YSYM, 2", "BLOCK_BOTTOM, 3", "REF, 1, 2", "REF, 4, 6"]
+    out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD", f"REF, 3, {-0.25 * load:.17g}"]
     out += OUTPUT + ["*END STEP"]
     return out
 
@@ -787,7 +857,8 @@ def oring_axi(level, smoothed=False):
 
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25),
          "hertz_2d_force": hertz_2d_force,
-         "hertz_2d_rigid": hertz_2d_rigid, "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force,
+         "hertz_2d_rigid": hertz_2d_rigid, "hertz_2d_analytical": lambda level: hertz_2d_rigid(level, True),
+         "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force, "sphere_3d_analytical": sphere_3d_analytical,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),
          "interference_2d_general": lambda level: interference_2d(level, smoothed=True, general=True),

@@ -152,39 +152,59 @@ def punch_r3d4():
     return d
 
 
-def punch_2d(block_type, sheet):
+def punch_2d(block_type, sheet, analytical=False, fillet=0.0):
     """A flat rigid punch 2 wide pressed 0.01 into a 4 x 2 plane-strain or axisymmetric block:
     made of rigid quads (sheet=False) or of R2D2 / RAX2 line elements along its bottom edge,
-    their SNEG side down (node order +x, so the positive normal, turned counter-clockwise, is up)."""
+    their SNEG side down (node order +x, so the positive normal, turned counter-clockwise, is up),
+    or (analytical) an analytical surface, *SURFACE, TYPE=SEGMENTS: its bottom edge as one LINE
+    from x = 2 to x = 0 (travelled in −x, so that its normal, turned counter-clockwise, is down);
+    with a `fillet`, its side x = 2 comes down to the corner first, and FILLET RADIUS rounds it."""
     coords, conn = grid_quad(8, 4, lambda s, t: (4 * s, 2 * t), False)
     base = max(coords)
     pc, pconn = grid_quad(4, 1, lambda s, t: (2 * s, 2 + 0.5 * t), False)
     if sheet:
         pc = {k: x for k, x in pc.items() if abs(x[1] - 2) < EPS}
         pconn = [c[:2] for c in pconn]
+    if analytical:
+        pc, pconn = {}, []
     coords.update({base + k: x for k, x in pc.items()})
     ref = max(coords) + 1
     coords[ref] = (1.0, 3.0, 0.0)
     axi = block_type.startswith("CAX")
     line_type = "RAX2" if axi else "R2D2"
     first_punch = len(conn) + 1
-    what = f"{line_type} elements" if sheet else f"{block_type} elements made rigid"
-    d = Deck(f"A rigid flat punch ({what}) pressed 0.01 into a {block_type} block through its reference node",
-             ["Reference: the punch of rigid quads and the one of rigid line elements along its bottom edge",
-              "give the same RF2; RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX)."])
+    what = ("an analytical surface" if analytical else f"{line_type} elements" if sheet
+            else f"{block_type} elements made rigid")
+    reference = ["Reference: the punch of rigid quads and the one of rigid line elements along its bottom edge",
+                 "give the same RF2; RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX)."]
+    if analytical:
+        reference = ["Reference: RF2 = -sum RF2 of the base (the punch's force crosses the block)" if fillet else
+                     "Reference: RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX);",
+                     f"the edge rounded by r = {fillet:g} carries less than the sharp punch" if fillet else
+                     "the same RF2 as the punch of R2D2 / RAX2 elements along the same line"]
+    d = Deck(f"A rigid flat punch ({what}) pressed 0.01 into a {block_type} block through its reference node", reference)
     d.nodes(coords, 2)
     d.elements(block_type, "BLOCK", conn)
-    d.elements(line_type if sheet else block_type, "PUNCH", [[n + base for n in c] for c in pconn], first=first_punch)
+    if not analytical:
+        d.elements(line_type if sheet else block_type, "PUNCH", [[n + base for n in c] for c in pconn], first=first_punch)
     d.nset("BASE", select(coords, lambda x: abs(x[1]) < EPS))
     d.nset("REF", [ref])
     d.elset("BLOCK_TOP_EL", [e + 1 for e, c in enumerate(conn) if all(abs(coords[n][1] - 2) < EPS for n in c[2:4])])
-    d.add("*SURFACE, NAME=BLOCK_TOP", "BLOCK_TOP_EL, S3",
-          "*SURFACE, NAME=PUNCH_BOTTOM", "PUNCH, SNEG" if sheet else "PUNCH, S1")
+    d.add("*SURFACE, NAME=BLOCK_TOP", "BLOCK_TOP_EL, S3")
+    if analytical:
+        if fillet:
+            d.add(f"*SURFACE, TYPE=SEGMENTS, NAME=PUNCH_BOTTOM, FILLET RADIUS={fillet:g}", "START, 2, 2.5",
+                  "LINE, 2, 2", "LINE, 0, 2")
+        else:
+            d.add("*SURFACE, TYPE=SEGMENTS, NAME=PUNCH_BOTTOM", "START, 2, 2", "LINE, 0, 2")
+    else:
+        d.add("*SURFACE, NAME=PUNCH_BOTTOM", "PUNCH, SNEG" if sheet else "PUNCH, S1")
     d.add("*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL")
-    if not sheet:
+    if not sheet and not analytical:
         d.add("*SOLID SECTION, ELSET=PUNCH, MATERIAL=STEEL")
     d.add(*MATERIAL)
-    d.add("*RIGID BODY, REF NODE=REF, ELSET=PUNCH")
+    d.add("*RIGID BODY, REF NODE=REF, ANALYTICAL SURFACE=PUNCH_BOTTOM" if analytical else
+          "*RIGID BODY, REF NODE=REF, ELSET=PUNCH")
     d.add("*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11")
     d.add("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
     d.add("*BOUNDARY", "BASE, 1, 2", "REF, 1, 1", "REF, 6, 6")
@@ -192,7 +212,8 @@ def punch_2d(block_type, sheet):
         d.add("*NSET, NSET=AXIS", ", ".join(str(n) for n in select({k: x for k, x in coords.items() if k <= base}, lambda x: abs(x[0]) < EPS)),
               "*BOUNDARY", "AXIS, 1, 1")
     d.add("*STEP", "*STATIC", "*BOUNDARY", "REF, 2, 2, -0.01")
-    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*CONTACT OUTPUT", "CPRESS, CNAREA", "*END STEP")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*CONTACT OUTPUT", "CPRESS, CNAREA",
+          "*END STEP")
     return d
 
 
@@ -206,7 +227,10 @@ def main():
              "rigid_spin_plate_cpe4.inp": spin_plate(), "rigid_punch_c3d8.inp": punch(),
              "rigid_punch_r3d4.inp": punch_r3d4(),
              "rigid_punch_cpe4.inp": punch_2d("CPE4", False), "rigid_punch_r2d2.inp": punch_2d("CPE4", True),
-             "rigid_punch_cax4.inp": punch_2d("CAX4", False), "rigid_punch_rax2.inp": punch_2d("CAX4", True)}
+             "rigid_punch_cax4.inp": punch_2d("CAX4", False), "rigid_punch_rax2.inp": punch_2d("CAX4", True),
+             "rigid_punch_segments_cpe4.inp": punch_2d("CPE4", True, analytical=True),
+             "rigid_punch_segments_cax4.inp": punch_2d("CAX4", True, analytical=True),
+             "rigid_punch_fillet_cpe4.inp": punch_2d("CPE4", True, analytical=True, fillet=0.25)}
     if a.ccx:
         decks["rigid_punch_c3d8_ccx.inp"] = punch(ccx=True)
     for name, d in decks.items():

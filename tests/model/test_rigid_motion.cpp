@@ -1,12 +1,12 @@
-// solver/rigid_motion.hpp: the motion of a rigid body's node and its derivatives in θ.
+// model/rigid_motion.hpp: the motion of a rigid body's node and its derivatives in θ.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "solver/rigid_motion.hpp"
+#include "model/rigid_motion.hpp"
 
-using inpact::solver::rigid_motion;
-using inpact::solver::Vec3d;
+using inpact::model::rigid_motion;
+using inpact::model::Vec3d;
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace inpact::solver {
+namespace inpact::model {
 
 namespace {
 
@@ -71,4 +71,4 @@ RigidMotion rigid_motion(const Vec3d& theta, const Vec3d& r, int dim, bool finit
   return m;
 }
 
-}  // namespace inpact::solver
+}  // namespace inpact::model

@@ -5,7 +5,7 @@
 /// (NLGEOM): R = exp([θ]×), Rodrigues' formula. In 2D only θ3 exists (in θ[0]).
 #include <array>
 
-namespace inpact::solver {
+namespace inpact::model {
 
 using Vec3d = std::array<double, 3>;
 
@@ -17,4 +17,4 @@ struct RigidMotion {
 /// `theta`: θ1..θ3 in 3D, θ3 in theta[0] in 2D; `dim` 2 or 3.
 RigidMotion rigid_motion(const Vec3d& theta, const Vec3d& r, int dim, bool finite);
 
-}  // namespace inpact::solver
+}  // namespace inpact::model

@@ -1,0 +1,68 @@
+// What an analytical rigid surface must be before an analysis (solver/analytical_contact.hpp):
+// each violation a deck error naming the line, raised by build_analysis_model (so by check as
+// by run). The deck: decks/verification/rigid_punch_segments_cpe4.inp, edited.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "fixtures/deck_fixture.hpp"
+#include "solver/analysis_error.hpp"
+#include "solver/analysis_model.hpp"
+
+namespace inpact::test {
+namespace {
+
+std::string punch_deck() {
+  std::ifstream in(std::string(INPACT_SOURCE_DIR) + "/decks/verification/rigid_punch_segments_cpe4.inp");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The deck with `from` replaced by `to` (which must be there).
+std::string edited(const std::string& from, const std::string& to) {
+  std::string s = punch_deck();
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+/// The AnalysisError message building the analysis model of `deck` raises ("" when none).
+std::string analysis_error(const std::string& deck) {
+  const DeckDir dir;
+  const auto r = dir.read(deck);
+  EXPECT_TRUE(r.ok()) << r.report();
+  try {
+    (void)solver::build_analysis_model(r.model);
+  } catch (const solver::AnalysisError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AnalyticalContactChecks, TheDeckItselfPasses) { EXPECT_EQ(analysis_error(punch_deck()), ""); }
+
+TEST(AnalyticalContactChecks, ABadProfileNamesItsSegmentLine) {
+  const std::string e = analysis_error(edited("LINE, 0, 2", "CIRCL, 0, 2.2, 1, 2"));
+  EXPECT_NE(e.find("deck.inp:95:1: error: *SURFACE: analytical surface 'PUNCH_BOTTOM': CIRCL: the end point is"),
+            std::string::npos)
+      << e;
+}
+
+TEST(AnalyticalContactChecks, FrictionAnAnalyticalSlaveAndAnUncarriedSurfaceAreRefused) {
+  std::string e = analysis_error(edited("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e11",
+                                        "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e11\n*FRICTION\n0.1"));
+  EXPECT_NE(e.find("friction against an analytical surface is not supported yet"), std::string::npos) << e;
+  e = analysis_error(edited("BLOCK_TOP, PUNCH_BOTTOM", "PUNCH_BOTTOM, BLOCK_TOP"));
+  EXPECT_NE(e.find("the analytical surface PUNCH_BOTTOM can only be a master surface"), std::string::npos) << e;
+  e = analysis_error(edited("*RIGID BODY, REF NODE=REF, ANALYTICAL SURFACE=PUNCH_BOTTOM",
+                            "*SURFACE, TYPE=SEGMENTS, NAME=LOOSE\nSTART, 0, 3\nLINE, 1, 3\n"
+                            "*RIGID BODY, REF NODE=REF, ANALYTICAL SURFACE=PUNCH_BOTTOM"));
+  EXPECT_NE(e.find("error: *SURFACE: analytical surface 'LOOSE' moves with nothing"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace inpact::test
