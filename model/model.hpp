@@ -15,6 +15,7 @@
 #include "rigid_body.hpp"
 #include "source_loc.hpp"
 #include "step.hpp"
+#include "transform.hpp"
 
 namespace inpact::model {
 
@@ -35,6 +36,8 @@ struct Model {
   std::vector<PretensionSection> pretension_sections;  ///< in deck order
   std::vector<RigidBody> rigid_bodies;                 ///< *RIGID BODY, in deck order
   std::vector<Coupling> couplings;                     ///< *COUPLING, in deck order
+  std::vector<NodalTransform> transforms;         ///< *TRANSFORM, in deck order
+  std::vector<TransformedNode> transformed_nodes;  ///< the nodes whose DOFs are local, by node row
   /// *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION, in deck order (Surface::analytical).
   std::vector<AnalyticalSurface> analytical_surfaces;
 

@@ -114,6 +114,7 @@ struct OutputRequest {
   bool totals = false;  ///< *NODE PRINT, TOTALS=YES (CalculiX TOTALS=ONLY also sets totals_only)
   bool totals_only = false;
   bool summary = true;  ///< *NODE PRINT, SUMMARY
+  bool global = false;  ///< GLOBAL=YES: a transformed node's values in global axes (else its local ones)
   SourceLoc loc;
 };
 

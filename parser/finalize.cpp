@@ -8,6 +8,7 @@
 #include "couplings.hpp"
 #include "pretension_split.hpp"
 #include "rigid_bodies.hpp"
+#include "transforms.hpp"
 #include "text.hpp"
 
 namespace inpact::parser {
@@ -298,6 +299,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
       check_defined(diags, m.orientations, c.orientation, c.orientation_loc, "*COUPLING", "orientation");
   }
   finalize_couplings(m, diags);
+  if (!diags.has_errors()) finalize_transforms(m, diags);
   switch_on_nlgeom_for_hyperelasticity(m);
 }
 

@@ -29,6 +29,7 @@ void combined_plastic(KeywordContext& ctx, model::Plastic& p);
 void add_pretension_keywords(std::vector<KeywordSpec>& table);  // kw_pretension.cpp
 void add_spring_keywords(std::vector<KeywordSpec>& table);    // kw_spring.cpp
 void add_rigid_body_keywords(std::vector<KeywordSpec>& table);  // kw_rigid_body.cpp
+void add_transform_keywords(std::vector<KeywordSpec>& table);   // kw_transform.cpp
 void add_coupling_keywords(std::vector<KeywordSpec>& table);    // kw_coupling.cpp
 
 }  // namespace inpact::parser

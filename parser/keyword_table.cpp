@@ -24,6 +24,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_pretension_keywords(t);
     add_spring_keywords(t);
     add_rigid_body_keywords(t);
+    add_transform_keywords(t);
     add_coupling_keywords(t);
     return t;
   }();
@@ -39,7 +40,6 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
       "SHELLSECTION", "BEAMSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION",
       "BEAMGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
-      "TRANSFORM",
       "MASS", "DASHPOT", "CONNECTORSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
   return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);

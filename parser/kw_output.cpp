@@ -213,9 +213,9 @@ void contact_output(KeywordContext& ctx) {
 OutputRequest print_request(KeywordContext& ctx, Kind kind, OutputDomain domain) {
   reject_params(ctx, {"TIME POINTS"});
   warn_ignored(ctx, {"LAST ITERATIONS", "CONTACT ELEMENTS"});
-  // GLOBAL=NO asks for results in local systems, which only *TRANSFORM defines (not supported):
-  // the results are global either way. OUTPUT=2D|3D chooses how CalculiX expands 2D elements
-  // for its .frd file; inpact writes 2D elements as they are.
+  // GLOBAL=YES prints a transformed node's values in the global axes, NO (the default) in its
+  // *TRANSFORM's. OUTPUT=2D|3D chooses how CalculiX expands 2D elements for its .frd file;
+  // inpact writes 2D elements as they are.
   OutputRequest r;
   r.kind = kind;
   r.frequency = frequency_of(ctx);
@@ -224,6 +224,7 @@ OutputRequest print_request(KeywordContext& ctx, Kind kind, OutputDomain domain)
   r.totals = totals == "YES" || totals == "ONLY";
   r.totals_only = totals == "ONLY";
   r.summary = ctx.choice_value("SUMMARY") != "NO";
+  r.global = ctx.choice_value("GLOBAL") == "YES";
   r.preselect = ctx.data.empty();  // *CONTACT PRINT without data lines prints its defaults
   read_variables(ctx, domain, r);
   return r;

@@ -166,13 +166,39 @@ void warn_about_locking(AnalysisModel& am) {
 }  // namespace
 
 std::int64_t AnalysisModel::dof_index(std::int32_t node, int dof) const {
-  if (dof >= 1 && dof <= dim) return static_cast<std::int64_t>(node) * dim + dof - 1;
+  if (dof >= 1 && dof <= dim) {
+    const std::int32_t local = local_node_of.empty() ? -1 : local_node_of[static_cast<std::size_t>(node)];
+    return static_cast<std::int64_t>(local >= 0 ? local : node) * dim + dof - 1;
+  }
   const std::int32_t rot = rotation_node_of.empty() ? -1 : rotation_node_of[static_cast<std::size_t>(node)];
   if (rot < 0) return -1;
   const int component = dim == 3 ? dof - 4 : dof == 6 ? 0 : -1;  // 2D: the in-plane rotation is DOF 6
   if (component < 0 || component >= dim) return -1;
   return static_cast<std::int64_t>(rot) * dim + component;
 }
+
+bool AnalysisModel::local_axes(std::int32_t node, std::array<std::array<double, 3>, 3>& e) const {
+  const std::int32_t t = transform_of.empty() ? -1 : transform_of[static_cast<std::size_t>(node)];
+  return t >= 0 && model::local_axes(model->transforms[static_cast<std::size_t>(t)],
+                                     model->mesh.nodes.coords[static_cast<std::size_t>(node)], e);
+}
+
+namespace {
+
+/// *TRANSFORM: which nodes have a local system and which of them local DOFs. 3D models only.
+void set_transforms(const model::Model& m, AnalysisModel& am) {
+  if (m.transforms.empty()) return;
+  if (am.dim != 3)
+    throw AnalysisError(fmt::format("{}: error: *TRANSFORM: local systems in a two-dimensional model are not supported "
+                                    "by inpact yet", m.sources.describe(m.transforms.front().loc)));
+  am.transform_of.assign(m.mesh.nodes.size(), -1);
+  for (std::size_t t = 0; t < m.transforms.size(); ++t)
+    for (std::int32_t n : m.transforms[t].nodes) am.transform_of[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(t);
+  am.local_node_of.assign(m.mesh.nodes.size(), -1);
+  for (const model::TransformedNode& t : m.transformed_nodes) am.local_node_of[static_cast<std::size_t>(t.node)] = t.local;
+}
+
+}  // namespace
 
 AnalysisModel build_analysis_model(const model::Model& m) {
   AnalysisModel am;
@@ -229,6 +255,7 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   }
   for (auto& w : contact::tie_warnings(m, am.ties)) am.warnings.push_back(std::move(w));
 
+  set_transforms(m, am);
   am.rotation_node_of.assign(m.mesh.nodes.size(), -1);
   for (const model::RotatingNode& r : model::rotating_nodes(m, am.dim))
     am.rotation_node_of[static_cast<std::size_t>(r.ref_node)] = r.rot_node;

@@ -1,6 +1,7 @@
 #pragma once
 /// What the analysis needs per element, resolved once from the model database: its type,
 /// material law and section data, and the model's number of DOFs per node.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,13 +51,20 @@ struct AnalysisModel {
   /// Per node row: the rotation node of the rigid body it is the reference node of, else −1
   /// (model/rigid_body.hpp). Only these nodes have rotations.
   std::vector<std::int32_t> rotation_node_of;
+  /// Per node row: the local node that holds its *TRANSFORM components (model/transform.hpp),
+  /// else −1; and the index of its *TRANSFORM, else −1 (printed output turns into its axes).
+  std::vector<std::int32_t> local_node_of, transform_of;
 
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }
   /// The global DOF of a node's Abaqus DOF `dof` (1-based): a translation 1..dim, or a rotation
   /// of a rigid body's reference node (4–6 in 3D, 6 in 2D: the rotation node's translations);
   /// −1 when the node has no such DOF.
+  /// A node of a *TRANSFORM that the deck refers to: its translations are its local node's.
   std::int64_t dof_index(std::int32_t node, int dof) const;
+  /// The local axes e_1..e_3 (rows) of node `node`'s *TRANSFORM at its position; false when it
+  /// has none.
+  bool local_axes(std::int32_t node, std::array<std::array<double, 3>, 3>& e) const;
   /// Reference coordinates of element e's nodes.
   std::vector<elements::Vec3> coords(std::size_t e) const;
 };

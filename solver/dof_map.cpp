@@ -213,12 +213,31 @@ void check_no_chain_through_rigid_nodes(const AnalysisModel& am, std::span<const
   }
 }
 
+/// *TRANSFORM: a node's global translations from its local node's, u_c = Σ_k (e_k)_c u_local,k
+/// (model/transform.hpp), before every other rule: a deck's constraints on the node name its
+/// local DOFs (AnalysisModel::dof_index).
+void add_transform_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>& kind, Dependents& dependent) {
+  for (const model::TransformedNode& t : am.model->transformed_nodes) {
+    std::array<std::array<double, 3>, 3> e;
+    if (!am.local_axes(t.node, e)) throw AnalysisError("internal error: a transformed node without local axes");
+    for (int c = 0; c < 3; ++c) {
+      const std::int64_t d = static_cast<std::int64_t>(t.node) * 3 + c;
+      if (kind[d] == DofMap::Kind::Unused) continue;
+      std::vector<MasterTerm> terms;
+      for (int k = 0; k < 3; ++k) terms.push_back({static_cast<std::int64_t>(t.local) * 3 + k, e[k][c]});
+      dependent[d] = std::move(terms);
+      kind[d] = DofMap::Kind::Dependent;
+    }
+  }
+}
+
 }  // namespace
 
 DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector<double>* u) {
   const model::Model& m = *am.model;
-  // *EQUATION: the first term's DOF is eliminated: u0 = −Σ_{k≥1} (c_k / c_0) u_k.
   Dependents dependent;
+  add_transform_dependents(am, kind_, dependent);
+  // *EQUATION: the first term's DOF is eliminated: u0 = −Σ_{k≥1} (c_k / c_0) u_k.
   for (const auto& eq : m.equations) {
     const std::string where = m.sources.describe(eq.loc);
     auto dof_of = [&](const model::Equation::Term& t) {
@@ -285,6 +304,11 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
       for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(node) * am.dim + c] = Kind::Free;
   for (const model::PretensionSection& s : m.pretension_sections)
     map.kind_[static_cast<std::int64_t>(s.node) * am.dim] = Kind::Free;
+  // A transformed node's local DOFs are its unknowns (add_transform_dependents).
+  for (const model::TransformedNode& t : m.transformed_nodes)
+    for (int c = 0; c < am.dim; ++c)
+      if (map.kind_[static_cast<std::int64_t>(t.node) * am.dim + c] != Kind::Unused)
+        for (int k = 0; k < am.dim; ++k) map.kind_[static_cast<std::int64_t>(t.local) * am.dim + k] = Kind::Free;
   // A rigid body's reference node and its rotations are unknowns though no element connects them.
   for (const model::RigidBody& b : m.rigid_bodies)
     for (int c = 0; c < am.dim; ++c) {

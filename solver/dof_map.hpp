@@ -4,7 +4,8 @@
 /// Global DOF d = node_row · dim + component. Each DOF is one of
 ///  - free: an unknown of the linear system (equation number eq(d) >= 0);
 ///  - prescribed: its value comes from a boundary condition (no equation);
-///  - dependent: eliminated by a *EQUATION, *TIE, *PRE-TENSION SECTION or distributing
+///  - dependent: eliminated by a *TRANSFORM (into its local node), *EQUATION, *TIE,
+///    *PRE-TENSION SECTION or distributing
 ///    *COUPLING, u_d = Σ w_i u_i over independent DOFs, or by a *RIGID BODY or kinematic
 ///    *COUPLING, u = u_R + (R(θ) − I) r (model/rigid_motion.hpp): linear for small rotations; with
 ///    finite rotations (NLGEOM) the weights are ∂u/∂(u_R, θ) at the current θ, renewed by

@@ -457,8 +457,29 @@ double nodal_value(const AnalysisModel& am, NodalKey key, std::size_t row, int c
   if (key == NodalKey::UR || key == NodalKey::RM) return rotation_value(am, key, row, c, u, rf);
   const std::size_t dof = row * am.dim + c;
   if (key == NodalKey::U) return u[dof];
-  if (key == NodalKey::RF) return rf[dof];
+  if (key == NodalKey::RF) {
+    // A transformed node's reactions are its local node's (its own DOFs are eliminated into
+    // them): turned back into the global axes, Σ_k (e_k)_c RF_local,k.
+    const std::int32_t local = am.local_node_of.empty() ? -1 : am.local_node_of[row];
+    std::array<std::array<double, 3>, 3> e;
+    if (local < 0 || !am.local_axes(static_cast<std::int32_t>(row), e)) return rf[dof];
+    double v = 0.0;
+    for (int k = 0; k < 3; ++k) v += e[k][c] * rf[static_cast<std::size_t>(local) * 3 + static_cast<std::size_t>(k)];
+    return v;
+  }
   return am.model->mesh.nodes.coords[row][c] + (nlgeom ? u[dof] : 0.0);
+}
+
+/// A printed U or RF component: in the node's *TRANSFORM axes unless `global` (or it has none),
+/// e_c · v.
+double printed_nodal_value(const AnalysisModel& am, NodalKey key, std::size_t row, int c, std::span<const double> u,
+                           std::span<const double> rf, bool global) {
+  std::array<std::array<double, 3>, 3> e;
+  if (global || (key != NodalKey::U && key != NodalKey::RF) || !am.local_axes(static_cast<std::int32_t>(row), e))
+    return nodal_value(am, key, row, c, u, rf, false);
+  double v = 0.0;
+  for (int k = 0; k < 3; ++k) v += e[c][k] * nodal_value(am, key, row, k, u, rf, false);
+  return v;
 }
 
 /// UR and RM are written at the nodes with rotations only (the rigid bodies' reference nodes).
@@ -606,7 +627,9 @@ PrintTable node_table(const AnalysisModel& am, const ActiveRequest& a, std::span
                                                             : NodalKey::Coord;
       const bool rotation = key == NodalKey::UR || key == NodalKey::RM;
       const int component = rotation && am.dim == 2 ? 0 : c.component;  // 2D: UR3 is the one rotation
-      t.values.push_back(nodal_value(am, key, row, component, u, rf, nlgeom));
+      t.values.push_back(key == NodalKey::Coord || rotation ? nodal_value(am, key, row, component, u, rf, nlgeom)
+                                                            : printed_nodal_value(am, key, row, component, u, rf,
+                                                                                  a.request.global));
     }
   };
   if (a.whole_model)
