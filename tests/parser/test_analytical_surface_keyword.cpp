@@ -1,6 +1,6 @@
 // *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION and *RIGID BODY, ANALYTICAL SURFACE= (parser/
 // kw_analytical_surface.cpp, kw_rigid_body.cpp): the profile and local axes read, and the deck
-// errors with their line and column. One unit cube and a free node 50 above it.
+// errors with their line and column.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,24 +13,9 @@ using inpact::test::has_diagnostic;
 
 namespace {
 
+/// The one-cube deck with a free node 50 above it, then `body` and an empty step.
 std::string cube(const std::string& body) {
-  return R"(*NODE, NSET=ALL
-1, 0., 0., 0.
-2, 1., 0., 0.
-3, 1., 1., 0.
-4, 0., 1., 0.
-5, 0., 0., 1.
-6, 1., 0., 1.
-7, 1., 1., 1.
-8, 0., 1., 1.
-50, 0.5, 0.5, 2.
-*ELEMENT, TYPE=C3D8, ELSET=CUBE
-1, 1, 2, 3, 4, 5, 6, 7, 8
-*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL
-*MATERIAL, NAME=STEEL
-*ELASTIC
-210000., 0.3
-)" + body + "*STEP\n*STATIC\n*END STEP\n";
+  return test::one_cube_deck("*NODE\n50, 0.5, 0.5, 2.\n" + body + "*STEP\n*STATIC\n*END STEP\n");
 }
 
 }  // namespace
@@ -77,9 +62,9 @@ TEST(AnalyticalSurfaceKeyword, RevolutionWithoutItsAxisLineTakesTheGlobalAxes) {
 TEST(AnalyticalSurfaceKeyword, DeckErrorsNameTheLine) {
   DeckDir dir;
   auto parab = dir.read(cube("*SURFACE, TYPE=SEGMENTS, NAME=P\nSTART, 1., 0.\nPARAB, 0., 1., -1., 0.\n"));
-  EXPECT_TRUE(has_diagnostic(parab, "deck.inp:19:1: error: *SURFACE: PARAB segments are not supported yet")) << parab.report();
+  EXPECT_TRUE(has_diagnostic(parab, "deck.inp:20:1: error: *SURFACE: PARAB segments are not supported yet")) << parab.report();
   auto no_start = dir.read(cube("*SURFACE, TYPE=SEGMENTS, NAME=P\nLINE, 1., 0.\nLINE, 2., 0.\n"));
-  EXPECT_TRUE(has_diagnostic(no_start, "deck.inp:18:1: error: *SURFACE: the profile must begin with START")) << no_start.report();
+  EXPECT_TRUE(has_diagnostic(no_start, "deck.inp:19:1: error: *SURFACE: the profile must begin with START")) << no_start.report();
   auto not_analytical = dir.read(cube("*SURFACE, NAME=TOP\nCUBE, S2\n*RIGID BODY, REF NODE=50, ANALYTICAL SURFACE=TOP\n"));
   EXPECT_TRUE(has_diagnostic(not_analytical, "error: *RIGID BODY: 'TOP' is not an analytical surface")) << not_analytical.report();
   auto fillet = dir.read(cube("*SURFACE, NAME=TOP, FILLET RADIUS=1.\nCUBE, S2\n"));

@@ -1,6 +1,5 @@
 // *TRANSFORM (parser/kw_transform.cpp, parser/transforms.cpp): the system read, the local nodes
-// added only where the deck refers to a node's DOFs, and the deck errors. One unit cube and a
-// free node 50.
+// added only where the deck refers to a node's DOFs, and the deck errors.
 #include <gtest/gtest.h>
 
 #include "fixtures/deck_fixture.hpp"
@@ -11,27 +10,9 @@ using inpact::test::has_diagnostic;
 
 namespace {
 
+/// The one-cube deck with its bottom and top node sets, then `body`.
 std::string cube(const std::string& body) {
-  return R"(*NODE, NSET=ALL
-1, 0., 0., 0.
-2, 1., 0., 0.
-3, 1., 1., 0.
-4, 0., 1., 0.
-5, 0., 0., 1.
-6, 1., 0., 1.
-7, 1., 1., 1.
-8, 0., 1., 1.
-*NSET, NSET=BOTTOM
-1, 2, 3, 4
-*NSET, NSET=TOP
-5, 6, 7, 8
-*ELEMENT, TYPE=C3D8, ELSET=CUBE
-1, 1, 2, 3, 4, 5, 6, 7, 8
-*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL
-*MATERIAL, NAME=STEEL
-*ELASTIC
-210000., 0.3
-)" + body;
+  return test::one_cube_deck("*NSET, NSET=BOTTOM\n1, 2, 3, 4\n*NSET, NSET=TOP\n5, 6, 7, 8\n" + body);
 }
 
 }  // namespace
