@@ -167,19 +167,40 @@ void AnalyticalPair::update_weighted(std::span<const Vec3> x, std::vector<SlaveK
     k.node = nodes[i];
     k.area = area_weight_ * areas[i];
     NodeCache& c = cache_[i];
-    Vec3 r;
-    const ShapePoint own = measure(x[static_cast<std::size_t>(nodes[i])], r);
+    c.own = measure(x[static_cast<std::size_t>(nodes[i])], c.own_r);
+    const ShapePoint& own = c.own;
     k.found = weight[i] > 0.0 && norm(normal[i]) > 0.0;
     k.projection = projection_of(own, dim_);
     // The node's own closest point stays in x_master and facet_normal: what the initial contact
     // status measures a touching node by (its weighted gap is positive where the faces around
-    // it open). There is no friction against an analytical surface, so no friction_lin.
+    // it open), and where friction acts (linearize(): friction_lin).
     k.friction_found = own.distance <= radius_ && AnalyticalShape::faces(own);
     if (!k.found) continue;
     for (double& v : c.gradient) v /= weight[i];
     k.projection.gap = gap[i] / weight[i];
     k.projection.normal = scale(1.0 / norm(normal[i]), normal[i]);
     tangent_basis(k.projection.normal, dim_, k.projection.t1, k.projection.t2);
+  }
+}
+
+Vec3 AnalyticalPair::material_point(std::size_t local) const {
+  const NodeCache& c = cache_[local];
+  return add(ref_X_, surface_to_surface_ ? c.own_r : c.r);
+}
+
+void AnalyticalPair::friction_motion(std::span<const Vec3> x, std::size_t local, const Vec3& anchor, Vec3& dx,
+                                     std::vector<double>& D) const {
+  const std::size_t d = static_cast<std::size_t>(dim_), n = 3 * d;
+  const Vec3& xs = x[static_cast<std::size_t>(slave_.nodes()[local])];
+  dx = sub(xs, add(x_R_, turn(Q_, sub(anchor, ref_X_))));
+  const NodeCache& c = cache_[local];
+  const model::RigidMotion motion = model::rigid_motion(theta_, surface_to_surface_ ? c.own_r : c.r, dim_, true);
+  D.assign(3 * n, 0.0);
+  const int n_rot = dim_ == 3 ? 3 : 1;
+  for (std::size_t r = 0; r < d; ++r) {
+    D[r * n + r] = 1.0;
+    D[r * n + d + r] = -1.0;
+    for (int k = 0; k < n_rot; ++k) D[r * n + 2 * d + static_cast<std::size_t>(k)] = -motion.d_dtheta[k][r];
   }
 }
 
@@ -192,6 +213,15 @@ void AnalyticalPair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool
   if (surface_to_surface_) {
     lin.nodes = c.nodes;
     lin.gradient = c.gradient;
+    // Friction's kinematics: the node's own point, over [x_s; u_R; θ].
+    GapLinearization& f = k.friction_lin;
+    f.dim = dim_;
+    f.dxi = {};
+    f.nodes = {k.node, ref_, rot_};
+    f.n_dof = static_cast<int>(3 * d);
+    f.gradient.assign(3 * d, 0.0);
+    point_gradient(c.own, c.own_r, f.gradient);
+    f.hessian.assign(9 * d * d, 0.0);
   } else {
     lin.nodes = {k.node, ref_, rot_};
     lin.gradient.assign(3 * d, 0.0);

@@ -18,7 +18,9 @@
 /// faces' integration points with the node's shape function, g_a = ∫ N_a g dA / ∫ N_a dA, over
 /// the faces around it (its gradient: the points' gradients weighted alike; the change of the
 /// weights with the slave's own shape is left out, it vanishes with the gap).
-/// Frictionless only (the solver refuses friction against an analytical surface).
+/// Friction acts at the slave node's own closest point (both discretisations): its zero-shear
+/// point is a material point of the surface, kept in the body frame (material_point()), and
+/// friction_motion() gives the slave's motion from it and its derivative over [x_s; u_R; θ].
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -37,6 +39,15 @@ class AnalyticalPair final : public PairKinematics {
 
   void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
   void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
+
+  /// Slave node `local`'s own closest point at the last update, in the body frame (X_c).
+  Vec3 material_point(std::size_t local) const;
+  /// Friction kinematics of slave node `local` at the last update: dx = x_s − x(anchor), the
+  /// anchor (a body-frame point) placed with the body, and D = ∂Δx/∂u (3 × 3 dim, row-major) over
+  /// [x_s; u_R; θ] with the material point under the slave standing for the anchor (as for facets,
+  /// friction.hpp): [I, −I, −∂(Q r)/∂θ].
+  void friction_motion(std::span<const Vec3> x, std::size_t local, const Vec3& anchor, Vec3& dx,
+                       std::vector<double>& D) const;
 
  private:
   /// The rigid body's placement on coordinates x: x_R, θ and Q(θ).
@@ -62,6 +73,8 @@ class AnalyticalPair final : public PairKinematics {
   struct NodeCache {
     ShapePoint point;
     Vec3 r{};
+    ShapePoint own;  ///< surface to surface: the node's own closest point (friction acts there)
+    Vec3 own_r{};
     std::vector<std::int32_t> nodes;
     std::vector<double> gradient;
   };

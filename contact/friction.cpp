@@ -287,4 +287,17 @@ FrictionPoint friction_point(const FrictionLaw& law, const Facet& facet, const P
   return out;
 }
 
+FrictionPoint friction_point(const FrictionLaw& law, const Projection& p, const Vec3& dx, std::span<const double> D,
+                             const Vec3& e0, double pressure) {
+  const std::size_t n = D.size() / 3;
+  FrictionPoint out;
+  out.n_dof = static_cast<int>(n);
+  const std::vector<double> jacobian(D.begin(), D.end());
+  const TangentialMotion t = tangential_motion(tangent_projector(p), dx, e0, jacobian, n);
+  out.slip_increment = t.slip_increment;
+  const TractionDerivatives d = return_mapping(law, pressure, t.e_tr, out);
+  assemble_friction(t.B, jacobian, t.B, std::vector<double>(n * n, 0.0), d, n, out);
+  return out;
+}
+
 }  // namespace inpact::contact

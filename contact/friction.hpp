@@ -116,4 +116,14 @@ FrictionPoint friction_point(const FrictionLaw& law, const Facet& facet, const P
                              const GapLinearization& lin, const Facet& anchor_facet, const FrictionAnchor& anchor,
                              const Vec3& e0, double pressure, std::span<const Vec3> x, bool facet_normal = true);
 
+/// Friction against a rigid master that is not made of facets (an analytical surface,
+/// analytical_pair.hpp): `dx` = x_s − the zero-shear point's current position, `D` = ∂Δx/∂u over
+/// the unknowns of the pair's gap linearisation (3 × n row-major: the slave node, then the
+/// master's material point under the slave moving with its body), `p` the contact point's
+/// tangent basis. The same return mapping and force distribution as above; the tangent leaves
+/// out the turn of the tangent plane (E = P_T D) and the slide of the contact point over the
+/// master (no (∂D)ᵀ τ).
+FrictionPoint friction_point(const FrictionLaw& law, const Projection& p, const Vec3& dx, std::span<const double> D,
+                             const Vec3& e0, double pressure);
+
 }  // namespace inpact::contact

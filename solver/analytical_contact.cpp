@@ -51,15 +51,6 @@ void check_analytical_surfaces(const AnalysisModel& am) {
     if (e.pair.adjust_distance || !e.pair.adjust_nset.empty())
       refuse(m, e.pair.adjust_loc, kw, "ADJUST against an analytical surface is not supported yet");
   }
-  for (const auto& step : am.interactions)
-    for (const contact::ResolvedInteraction& r : step) {
-      const contact::ContactInteraction& e = am.contact->rows[r.row];
-      if (!r.in_force || e.master->kind != Kind::Analytical) continue;
-      if (r.friction || r.friction_ramp)
-        refuse(m, e.pair.loc, e.general ? "*CONTACT" : "*CONTACT PAIR",
-               fmt::format("pair {}: friction against an analytical surface is not supported yet (frictionless only)",
-                           e.name()));
-    }
 }
 
 }  // namespace inpact::solver

@@ -173,22 +173,43 @@ struct ContactProblem::Pair {
     return dofs;
   }
 
+  /// The rigid analytical master's geometry, or null (its friction anchors to material points).
+  const contact::AnalyticalPair* analytical() const { return dynamic_cast<const contact::AnalyticalPair*>(geometry.get()); }
+
+  /// Slave i's zero-shear point is where it touches now (first touch, or friction beginning on a
+  /// closed node): its projection's facet and ξ, or an analytical master's material point.
+  void anchor_here(std::size_t i, FrictionNodeState& f) const {
+    const contact::Projection& pr = kin[i].projection;
+    if (const auto* a = analytical()) {
+      f.anchor_facet = 0;
+      f.anchor_point = a->material_point(i);
+      return;
+    }
+    f.anchor_facet = pr.facet;
+    f.anchor_xi = pr.xi;
+  }
+
   /// The return mapping of closed slave i (kin[i].lin filled) into `f` and fric[i].
   void update_friction(std::size_t i, const SlaveState& s, FrictionNodeState& f, std::span<const contact::Vec3> x) {
     const contact::Projection& pr = kin[i].projection;
-    const auto facets = geometry->master().facets();
-    if (f.anchor_facet < 0) {  // first touch in this increment: the zero-shear point is here
-      f.anchor_facet = pr.facet;
-      f.anchor_xi = pr.xi;
+    if (f.anchor_facet < 0) anchor_here(i, f);  // first touch in this increment: the zero-shear point is here
+    if (const auto* a = analytical()) {
+      contact::Vec3 dx;
+      std::vector<double> D;
+      a->friction_motion(x, i, f.anchor_point, dx, D);
+      fric[i] = contact::friction_point(*friction, pr, dx, D, f.e0, node_pressure(i, s));
+      f.point = a->material_point(i);
+    } else {
+      const auto facets = geometry->master().facets();
+      contact::FrictionAnchor anchor{f.anchor_facet, f.anchor_xi};
+      fric[i] = contact::friction_point(*friction, facets[static_cast<std::size_t>(pr.facet)], pr, friction_lin(i),
+                                        facets[static_cast<std::size_t>(f.anchor_facet)], anchor, f.e0,
+                                        node_pressure(i, s), x, !surface_to_surface && !resolved->smoothed);
     }
-    contact::FrictionAnchor anchor{f.anchor_facet, f.anchor_xi};
-    fric[i] = contact::friction_point(*friction, facets[static_cast<std::size_t>(pr.facet)], pr, friction_lin(i),
-                                      facets[static_cast<std::size_t>(f.anchor_facet)], anchor, f.e0,
-                                      node_pressure(i, s), x, !surface_to_surface && !resolved->smoothed);
     const contact::FrictionPoint& fp = fric[i];
     f.active = true;
     f.slipping = fp.slipping;
-    f.facet = pr.facet;
+    f.facet = analytical() ? 0 : pr.facet;
     f.xi = pr.xi;
     f.e = fp.elastic_slip;
     f.tau = fp.traction;
@@ -357,16 +378,14 @@ void ContactProblem::begin_attempt(ContactState& state, int step, int increment,
       for (FrictionNodeState& f : fs) {
         f.anchor_facet = f.active ? f.facet : -1;
         f.anchor_xi = f.xi;
+        f.anchor_point = f.point;
         f.e0 = f.active ? f.e : std::array<double, 3>{0, 0, 0};
         f.slip0 = f.slip;
       }
     // Friction that begins on a node already closed (a pair frictionless until this step): its
     // zero-shear point is where the node is at the start of the increment.
     for (std::size_t i = had; i < fs.size(); ++i)
-      if (s[i].closed && p->friction_found(i)) {
-        fs[i].anchor_facet = p->kin[i].projection.facet;
-        fs[i].anchor_xi = p->kin[i].projection.xi;
-      }
+      if (s[i].closed && p->friction_found(i)) p->anchor_here(i, fs[i]);
   }
 }
 

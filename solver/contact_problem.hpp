@@ -67,6 +67,9 @@ struct FrictionNodeState {
   std::array<double, 3> e{};          ///< elastic slip after the return mapping
   std::array<double, 3> tau{};        ///< frictional stress on the master (slave carries −τ)
   std::array<double, 2> slip{};       ///< accumulated slip including this increment
+  /// An analytical master (facet 0 stands for the whole surface): the zero-shear point and the
+  /// contact point at the last update, body-frame material points (contact/analytical_pair.hpp).
+  std::array<double, 3> anchor_point{}, point{};
 };
 
 /// The contact part of the solution state, copied with it when an increment is retried.

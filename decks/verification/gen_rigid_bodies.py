@@ -152,16 +152,18 @@ def punch_r3d4():
     return d
 
 
-def punch_2d(block_type, sheet, analytical=False, fillet=0.0):
+def punch_2d(block_type, sheet, analytical=False, fillet=0.0, mu=0.0, wide=False):
     """A flat rigid punch 2 wide pressed 0.01 into a 4 x 2 plane-strain or axisymmetric block:
     made of rigid quads (sheet=False) or of R2D2 / RAX2 line elements along its bottom edge,
     their SNEG side down (node order +x, so the positive normal, turned counter-clockwise, is up),
     or (analytical) an analytical surface, *SURFACE, TYPE=SEGMENTS: its bottom edge as one LINE
     from x = 2 to x = 0 (travelled in −x, so that its normal, turned counter-clockwise, is down);
-    with a `fillet`, its side x = 2 comes down to the corner first, and FILLET RADIUS rounds it."""
+    with a `fillet`, its side x = 2 comes down to the corner first, and FILLET RADIUS rounds it.
+    With friction `mu`, a second step slides the pressed punch along x: by 0.02, or (`wide`: the
+    punch reaching 2 beyond the block on either side, x from −2 to 6) by 0.05, every node slipping."""
     coords, conn = grid_quad(8, 4, lambda s, t: (4 * s, 2 * t), False)
     base = max(coords)
-    pc, pconn = grid_quad(4, 1, lambda s, t: (2 * s, 2 + 0.5 * t), False)
+    pc, pconn = grid_quad(8 if wide else 4, 1, lambda s, t: (-2 + 8 * s if wide else 2 * s, 2 + 0.5 * t), False)
     if sheet:
         pc = {k: x for k, x in pc.items() if abs(x[1] - 2) < EPS}
         pconn = [c[:2] for c in pconn]
@@ -177,7 +179,10 @@ def punch_2d(block_type, sheet, analytical=False, fillet=0.0):
             else f"{block_type} elements made rigid")
     reference = ["Reference: the punch of rigid quads and the one of rigid line elements along its bottom edge",
                  "give the same RF2; RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX)."]
-    if analytical:
+    if mu:
+        reference = [f"Reference: the pressed punch slides (mu = {mu:g}) with every node of the block's top slipping",
+                     "under it: RF1 = -mu RF2 (CSHEAR1 = mu CPRESS at every node)."]
+    elif analytical:
         reference = ["Reference: RF2 = -sum RF2 of the base (the punch's force crosses the block)" if fillet else
                      "Reference: RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX);",
                      f"the edge rounded by r = {fillet:g} carries less than the sharp punch" if fillet else
@@ -196,7 +201,8 @@ def punch_2d(block_type, sheet, analytical=False, fillet=0.0):
             d.add(f"*SURFACE, TYPE=SEGMENTS, NAME=PUNCH_BOTTOM, FILLET RADIUS={fillet:g}", "START, 2, 2.5",
                   "LINE, 2, 2", "LINE, 0, 2")
         else:
-            d.add("*SURFACE, TYPE=SEGMENTS, NAME=PUNCH_BOTTOM", "START, 2, 2", "LINE, 0, 2")
+            d.add("*SURFACE, TYPE=SEGMENTS, NAME=PUNCH_BOTTOM", "START, 6, 2" if wide else "START, 2, 2",
+                  "LINE, -2, 2" if wide else "LINE, 0, 2")
     else:
         d.add("*SURFACE, NAME=PUNCH_BOTTOM", "PUNCH, SNEG" if sheet else "PUNCH, S1")
     d.add("*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL")
@@ -205,8 +211,13 @@ def punch_2d(block_type, sheet, analytical=False, fillet=0.0):
     d.add(*MATERIAL)
     d.add("*RIGID BODY, REF NODE=REF, ANALYTICAL SURFACE=PUNCH_BOTTOM" if analytical else
           "*RIGID BODY, REF NODE=REF, ELSET=PUNCH")
-    d.add("*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11")
-    d.add("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
+    if mu:
+        d.add("*SURFACE INTERACTION, NAME=ROUGH", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11",
+              "*FRICTION", f"{mu:g}")
+        d.add("*CONTACT PAIR, INTERACTION=ROUGH, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
+    else:
+        d.add("*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "1e11")
+        d.add("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE", "BLOCK_TOP, PUNCH_BOTTOM")
     d.add("*BOUNDARY", "BASE, 1, 2", "REF, 1, 1", "REF, 6, 6")
     if axi:
         d.add("*NSET, NSET=AXIS", ", ".join(str(n) for n in select({k: x for k, x in coords.items() if k <= base}, lambda x: abs(x[0]) < EPS)),
@@ -214,6 +225,9 @@ def punch_2d(block_type, sheet, analytical=False, fillet=0.0):
     d.add("*STEP", "*STATIC", "*BOUNDARY", "REF, 2, 2, -0.01")
     d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*CONTACT OUTPUT", "CPRESS, CNAREA",
           "*END STEP")
+    if mu:
+        d.add("*STEP", "*STATIC", "0.1, 1.", "*BOUNDARY", f"REF, 1, 1, {0.05 if wide else 0.02:g}",
+              "*OUTPUT, FIELD", "*CONTACT OUTPUT", "CPRESS, CNAREA, CSHEAR1, CSTATUS", "*END STEP")
     return d
 
 
@@ -230,7 +244,9 @@ def main():
              "rigid_punch_cax4.inp": punch_2d("CAX4", False), "rigid_punch_rax2.inp": punch_2d("CAX4", True),
              "rigid_punch_segments_cpe4.inp": punch_2d("CPE4", True, analytical=True),
              "rigid_punch_segments_cax4.inp": punch_2d("CAX4", True, analytical=True),
-             "rigid_punch_fillet_cpe4.inp": punch_2d("CPE4", True, analytical=True, fillet=0.25)}
+             "rigid_punch_fillet_cpe4.inp": punch_2d("CPE4", True, analytical=True, fillet=0.25),
+             "rigid_punch_slide_r2d2.inp": punch_2d("CPE4", True, mu=0.2, wide=True),
+             "rigid_punch_slide_segments_cpe4.inp": punch_2d("CPE4", True, analytical=True, mu=0.2, wide=True)}
     if a.ccx:
         decks["rigid_punch_c3d8_ccx.inp"] = punch(ccx=True)
     for name, d in decks.items():

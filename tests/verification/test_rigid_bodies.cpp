@@ -192,5 +192,31 @@ TEST(RigidBody, FilletedAnalyticalPunchBalancesAndCarriesLessThanTheSharpOne) {
   EXPECT_GT(rf2 / rf2_sharp, 0.5);
 }
 
+// Friction against an analytical surface: the flat punch reaching past the block on both sides
+// (x from −2 to 6), pressed, then slid by 0.05 with μ = 0.2: every node of the block's top slips,
+// so RF1 = −μ RF2 exactly, and the analytical LINE gives the R2D2 sheet's answer (no free end
+// over the block, so no face the end crosses). Measured: RF1/RF2 = −0.2 to the last bit, the
+// analytical punch's RF1 and RF2 equal the R2D2 punch's to 2.9e-14.
+TEST(RigidBody, AnalyticalPunchSlidesWithCoulombFrictionAsTheLineElementPunch) {
+  const auto analytical = run_deck(deck_path("rigid_punch_slide_segments_cpe4.inp"));
+  const auto elements = run_deck(deck_path("rigid_punch_slide_r2d2.inp"));
+  ASSERT_TRUE(analytical->outcome.completed) << analytical->outcome.message;
+  ASSERT_TRUE(elements->outcome.completed) << elements->outcome.message;
+  const double mu = 0.2;
+  std::array<double, 2> rf{}, rf_elements{};
+  for (int c = 0; c < 2; ++c) {
+    rf[c] = nodal(analytical->capture.last(), "RF", only_node(analytical->model(), "REF"), c);
+    rf_elements[c] = nodal(elements->capture.last(), "RF", only_node(elements->model(), "REF"), c);
+  }
+  report("sliding analytical punch: RF1 / RF2 + mu", rf[0] / rf[1] + mu);
+  report("sliding analytical punch: |RF1 / RF1(R2D2) - 1|", std::abs(rf[0] / rf_elements[0] - 1.0));
+  report("sliding analytical punch: |RF2 / RF2(R2D2) - 1|", std::abs(rf[1] / rf_elements[1] - 1.0));
+  EXPECT_LT(rf[1], -1e3);
+  EXPECT_NEAR(rf[0] / rf[1], -mu, 1e-9);
+  EXPECT_NEAR(rf_elements[0] / rf_elements[1], -mu, 1e-9);
+  EXPECT_NEAR(rf[0] / rf_elements[0], 1.0, 1e-9);
+  EXPECT_NEAR(rf[1] / rf_elements[1], 1.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace inpact::verification
