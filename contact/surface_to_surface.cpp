@@ -215,7 +215,12 @@ void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics
   if (self_contact_) drop_neighbours(master_.facets(), own, candidates);
   k.projection = closest_projection(master_.facets(), candidates, x, x[static_cast<std::size_t>(k.node)], nullptr,
                                     master_boxes_);
-  k.friction_found = k.projection.facet >= 0;
+  // Friction acts where the node itself faces the master: beyond a free edge its closest point is
+  // the edge, seen sideways (the distance turns tangential), and a slip measured there runs the
+  // wrong way (a node whose faces overlap the master by a sliver got μ p against the slide).
+  const Projection& pr = k.projection;
+  k.friction_found = pr.facet >= 0 && (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
+                                       std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
 }
 

@@ -179,7 +179,10 @@ def punch_2d(block_type, sheet, analytical=False, fillet=0.0, mu=0.0, wide=False
             else f"{block_type} elements made rigid")
     reference = ["Reference: the punch of rigid quads and the one of rigid line elements along its bottom edge",
                  "give the same RF2; RF2 = sum CPRESS * CNAREA (the contact force, 2 pi r per unit length in CAX)."]
-    if mu:
+    if mu and not wide:
+        reference = ["Reference: no slave node slips farther than the punch slides (0.02); the nodes beyond its",
+                     "free ends carry no friction (their closest point, the end, is seen sideways)."]
+    elif mu:
         reference = [f"Reference: the pressed punch slides (mu = {mu:g}) with every node of the block's top slipping",
                      "under it: RF1 = -mu RF2 (CSHEAR1 = mu CPRESS at every node)."]
     elif analytical:
@@ -227,7 +230,7 @@ def punch_2d(block_type, sheet, analytical=False, fillet=0.0, mu=0.0, wide=False
           "*END STEP")
     if mu:
         d.add("*STEP", "*STATIC", "0.1, 1.", "*BOUNDARY", f"REF, 1, 1, {0.05 if wide else 0.02:g}",
-              "*OUTPUT, FIELD", "*CONTACT OUTPUT", "CPRESS, CNAREA, CSHEAR1, CSTATUS", "*END STEP")
+              "*OUTPUT, FIELD", "*CONTACT OUTPUT", "CPRESS, CNAREA, CSHEAR1, CSLIP1, CSTATUS", "*END STEP")
     return d
 
 
@@ -246,7 +249,8 @@ def main():
              "rigid_punch_segments_cax4.inp": punch_2d("CAX4", True, analytical=True),
              "rigid_punch_fillet_cpe4.inp": punch_2d("CPE4", True, analytical=True, fillet=0.25),
              "rigid_punch_slide_r2d2.inp": punch_2d("CPE4", True, mu=0.2, wide=True),
-             "rigid_punch_slide_segments_cpe4.inp": punch_2d("CPE4", True, analytical=True, mu=0.2, wide=True)}
+             "rigid_punch_slide_segments_cpe4.inp": punch_2d("CPE4", True, analytical=True, mu=0.2, wide=True),
+             "rigid_punch_slide_narrow_r2d2.inp": punch_2d("CPE4", True, mu=0.2)}
     if a.ccx:
         decks["rigid_punch_c3d8_ccx.inp"] = punch(ccx=True)
     for name, d in decks.items():

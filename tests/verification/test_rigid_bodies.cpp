@@ -218,5 +218,27 @@ TEST(RigidBody, AnalyticalPunchSlidesWithCoulombFrictionAsTheLineElementPunch) {
   EXPECT_NEAR(rf[1] / rf_elements[1], 1.0, 1e-9);
 }
 
+// The narrow R2D2 punch (x 0..2 over the block's 0..4) pressed and slid by 0.02 with μ = 0.2: a
+// slave node beyond the punch's free end whose faces overlap it by a sliver projects onto the
+// end itself, seen sideways; its "slip" from there was the whole distance to the end, 0.48 per
+// increment (CSLIP 3.4 after the step, friction μ p against the slide). Friction now acts only
+// where the node faces the master (contact/surface_to_surface.cpp, project_node). Measured: the
+// largest |CSLIP1| 0.0204, RF1/RF2 −0.125 (μ N over the nodes that face the punch; the sliver
+// node's normal force, 0.25 of the total, carries none).
+TEST(RigidBody, NoSlaveNodeSlipsFartherThanTheRigidPunchSlides) {
+  const auto r = run_deck(deck_path("rigid_punch_slide_narrow_r2d2.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& f = r->capture.last();
+  const auto* slip = field(f, "CSLIP1");
+  ASSERT_TRUE(slip);
+  double worst = 0.0;
+  for (double v : slip->values) worst = std::max(worst, std::abs(v));
+  const double rf1 = nodal(f, "RF", only_node(r->model(), "REF"), 0), rf2 = nodal(f, "RF", only_node(r->model(), "REF"), 1);
+  report("narrow sliding punch: largest |CSLIP1|", worst);
+  report("narrow sliding punch: RF1 / RF2", rf1 / rf2);
+  EXPECT_LE(worst, 0.02 * 1.05);
+  EXPECT_LE(std::abs(rf1), 0.2 * std::abs(rf2) * (1.0 + 1e-9));
+}
+
 }  // namespace
 }  // namespace inpact::verification
