@@ -147,50 +147,54 @@ Vec2 piece_tangent(const ProfilePiece& p, const Vec2& x) {
   return p.sweep > 0 ? left(radial) : scale(-1.0, left(radial));
 }
 
+namespace {
+
+/// The fillet of radius r between `prev` and `next` (turning by `turn`, the cross product of
+/// their tangents there): trims both to its tangency points and returns it. `segment`: the
+/// segment after the corner, for the error.
+ProfilePiece round_corner(ProfilePiece& prev, ProfilePiece& next, double turn, double r, std::size_t segment) {
+  // Its centre lies r from both on the inside of the turn: where their offset curves meet.
+  const double side = turn > 0 ? 1.0 : -1.0;
+  const OffsetCurve c1 = offset(prev, r, side), c2 = offset(next, r, side);
+  std::optional<Vec2> center;
+  for (const Vec2& c : intersect(c1, c2))
+    if (!center || norm(sub(c, prev.b)) < norm(sub(*center, prev.b))) center = c;
+  const bool offsets_exist = !(c1.circle && c1.radius <= 0) && !(c2.circle && c2.radius <= 0);
+  const Vec2 t1 = center ? foot(prev, *center) : Vec2{}, t2 = center ? foot(next, *center) : Vec2{};
+  const double s1 = center ? position_along(prev, t1) : -1, s2 = center ? position_along(next, t2) : 2;
+  if (!center || !offsets_exist || s1 <= 0.0 || s1 > 1.0 || s2 < 0.0 || s2 >= 1.0)
+    fail(segment, fmt::format("FILLET RADIUS = {:.6g} does not fit the corner at ({:.6g}, {:.6g})", r, prev.b[0],
+                              prev.b[1]));
+  set_end(prev, prev.a, t1);
+  set_end(next, t2, next.b);
+  return arc_piece(t1, t2, *center);
+}
+
+}  // namespace
+
 Profile Profile::build(const Vec2& start, std::span<const model::ProfileSegment> segments, double fillet_radius) {
-  Profile out;
   if (segments.empty()) throw std::invalid_argument("the profile has no segments after START");
+  Profile out;
   Vec2 a = start;
   for (std::size_t i = 0; i < segments.size(); ++i) {
-    out.pieces_.push_back(raw_piece(a, segments[i], i));
+    ProfilePiece next = raw_piece(a, segments[i], i);
     a = segments[i].end;
-  }
-  // Joints: smooth already, or rounded by the fillet.
-  std::vector<ProfilePiece> pieces;
-  std::vector<char> smooth;
-  for (std::size_t i = 0; i < out.pieces_.size(); ++i) {
-    ProfilePiece next = out.pieces_[i];
-    if (!pieces.empty()) {
-      ProfilePiece& prev = pieces.back();
+    if (!out.pieces_.empty()) {
+      // The joint: smooth already, a corner, or a corner rounded by the fillet.
+      ProfilePiece& prev = out.pieces_.back();
       const Vec2 t_in = piece_tangent(prev, prev.b), t_out = piece_tangent(next, next.a);
       const double turn = cross(t_in, t_out);
       const bool tangent = std::abs(turn) < 1e-9 && dot(t_in, t_out) > 0;
       if (tangent || fillet_radius <= 0.0) {
-        smooth.push_back(tangent);
+        out.joint_smooth_.push_back(tangent);
       } else {
-        const double side = turn > 0 ? 1.0 : -1.0;
-        const OffsetCurve c1 = offset(prev, fillet_radius, side), c2 = offset(next, fillet_radius, side);
-        std::optional<Vec2> center;
-        for (const Vec2& c : intersect(c1, c2))
-          if (!center || norm(sub(c, prev.b)) < norm(sub(*center, prev.b))) center = c;
-        const Vec2 t1 = center ? foot(prev, *center) : Vec2{}, t2 = center ? foot(next, *center) : Vec2{};
-        const double s1 = center ? position_along(prev, t1) : -1, s2 = center ? position_along(next, t2) : 2;
-        if (!center || s1 <= 0.0 || s1 > 1.0 || s2 < 0.0 || s2 >= 1.0 || (c1.circle && c1.radius <= 0) ||
-            (c2.circle && c2.radius <= 0))
-          fail(i, fmt::format("FILLET RADIUS = {:.6g} does not fit the corner at ({:.6g}, {:.6g})", fillet_radius,
-                              prev.b[0], prev.b[1]));
-        set_end(prev, prev.a, t1);
-        set_end(next, t2, next.b);
-        ProfilePiece round = arc_piece(t1, t2, *center);
-        pieces.push_back(round);
-        smooth.push_back(1);
-        smooth.push_back(1);
+        const ProfilePiece round = round_corner(prev, next, turn, fillet_radius, i);
+        out.pieces_.push_back(round);
+        out.joint_smooth_.insert(out.joint_smooth_.end(), {1, 1});
       }
     }
-    pieces.push_back(next);
+    out.pieces_.push_back(next);
   }
-  out.pieces_ = std::move(pieces);
-  out.joint_smooth_ = std::move(smooth);
   return out;
 }
 
