@@ -19,6 +19,8 @@ every variant of it:
                     its reference node, the block the slave (rigid-indenter Hertz)
   hertz_2d_analytical  the same rigid cylinder as an analytical surface (*SURFACE, TYPE=SEGMENTS,
                     one CIRCL arc): the exact circle instead of its chords
+  hertz_cylinder_3d  hertz_2d_analytical as one layer of C3D8 (plane strain by U3 = 0) under a
+                    *SURFACE, TYPE=CYLINDER: the 2D deck's answer
   sphere_3d         sphere (segment) on a block, quarter model (x = 0 and y = 0 planes), Johnson §4.2
   sphere_3d_force   the same sphere resting on the block (touching at the pole) and held only by its
                     contact and the symmetry planes, pushed down by a force; parameters method,
@@ -324,6 +326,54 @@ def hertz_2d_rigid(level, analytical=False):
     out += ["*BOUNDARY", "SYMMETRY, 1", "BLOCK_BOTTOM, 1, 2", "REF, 1", "REF, 6"]
     out += ["*STEP, NAME=PRESS", "*STATIC", "<inc0>, 1.0", "*CLOAD", f"REF, 2, {-0.5 * load:.17g}"]
     out += OUTPUT + ["*END STEP"]
+    return out
+
+
+def hertz_cylinder_3d(level):
+    """hertz_2d_analytical extruded into one layer of C3D8 (z ∈ [0, 1], U3 = 0 everywhere: plane
+    strain) under a *SURFACE, TYPE=CYLINDER with the same profile, its generator along z: the
+    same finite element problem, so the same answer as the 2D deck."""
+    out = []
+    block = None
+    offset = 1000000
+    lines = hertz_2d_rigid(level, True)
+    ref = int(lines[lines.index("*NSET, NSET=REF") + 1])  # the reference node stays one node
+    for line in lines:
+        if line.startswith("*"):
+            block = line
+            if line.startswith("*HEADING"):
+                out.append(line)
+                continue
+            if line.startswith("*ELEMENT"):
+                line = line.replace("TYPE=CPE4", "TYPE=C3D8")
+            elif line.startswith("*SURFACE, TYPE=SEGMENTS"):
+                line = line.replace("TYPE=SEGMENTS", "TYPE=CYLINDER")
+                out += [line, "0, 0, 0, 1, 0, 0", "0, 0, 1"]
+                continue
+            elif line.startswith("*BOUNDARY"):
+                out.append(line)
+                out.append("ALL, 3")
+                continue
+            out.append(line)
+            continue
+        if block is None or block.startswith("*HEADING"):
+            out.append(line.replace("plane strain:", "plane strain (one layer of C3D8 under a TYPE=CYLINDER surface):")
+                       if line.startswith(" Hertz") else line)
+        elif block == "*NODE, NSET=ALL":
+            n, x, y = [v.strip() for v in line.split(",")]
+            out += [f"{n}, {x}, {y}, 0"] + ([f"{int(n) + offset}, {x}, {y}, 1"] if int(n) != ref else [])
+        elif block.startswith("*ELEMENT"):
+            e = [int(v) for v in line.split(",")]
+            out.append(", ".join(map(str, [e[0]] + e[1:5] + [v + offset for v in e[1:5]])))
+        elif block.startswith("*NSET") and "NSET=ALL" not in block:
+            labels = [int(v) for v in line.split(",") if v.strip()]
+            out.append(", ".join(map(str, labels + [v + offset for v in labels if v != ref])))
+        elif block.startswith("*SURFACE, NAME=BLOCK_S"):
+            out.append(line.replace("S3", "S5"))
+        elif block.startswith("*BOUNDARY") and line.startswith("REF"):
+            out += ["REF, 1" if line == "REF, 1" else "REF, 4, 6"] if line in ("REF, 1", "REF, 6") else [line]
+        else:
+            out.append(line)
     return out
 
 
@@ -858,6 +908,7 @@ def oring_axi(level, smoothed=False):
 DECKS = {"hertz_2d": hertz_2d, "hertz_2d_nonmatching": lambda level: hertz_2d(level, 1.25),
          "hertz_2d_force": hertz_2d_force,
          "hertz_2d_rigid": hertz_2d_rigid, "hertz_2d_analytical": lambda level: hertz_2d_rigid(level, True),
+         "hertz_cylinder_3d": hertz_cylinder_3d,
          "sphere_3d": sphere_3d, "sphere_3d_force": sphere_3d_force, "sphere_3d_analytical": sphere_3d_analytical,
          "interference_2d": interference_2d,
          "interference_2d_smoothed": lambda level: interference_2d(level, smoothed=True),

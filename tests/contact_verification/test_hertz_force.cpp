@@ -201,6 +201,27 @@ TEST(HertzUnderAForce, AnalyticalCylinderGivesRigidIndenterHertzInBothDiscretisa
   expect_rigid_indenter_hertz("hertz_2d_analytical", kAnalyticalRuns);
 }
 
+// The same analytical cylinder as a *SURFACE, TYPE=CYLINDER over one layer of C3D8 held in z
+// (hertz_cylinder_3d: plane strain): the same finite element problem as hertz_2d_analytical, so
+// the same answer, in both discretisations. Measured: p0 and the fitted a equal to 1.4e-11, the
+// foundation to 2.2e-16.
+TEST(HertzUnderAForce, AnalyticalCylinderIn3dGivesThePlaneStrainAnswer) {
+  for (const std::string type : {"SURFACE TO SURFACE", "NODE TO SURFACE"}) {
+    const Params params{{"method", "PENALTY"}, {"type", type}, {"inc0", "0.01"}};
+    auto plane = run(deck_path("hertz_2d_analytical"), params);
+    auto solid = run(deck_path("hertz_cylinder_3d"), params);
+    ASSERT_TRUE(plane->outcome.completed) << plane->outcome.message;
+    ASSERT_TRUE(solid->outcome.completed) << type << ": " << solid->outcome.message;
+    const ForceFigures f2 = force_figures(*plane), f3 = force_figures(*solid);
+    report("hertz_cylinder_3d " + type + ": p0 / p0(2D) - 1", f3.p0 / f2.p0 - 1.0);
+    report("hertz_cylinder_3d " + type + ": a / a(2D) - 1", f3.a_fit / f2.a_fit - 1.0);
+    report("hertz_cylinder_3d " + type + ": foundation / foundation(2D) - 1", f3.foundation / f2.foundation - 1.0);
+    EXPECT_NEAR(f3.p0 / f2.p0, 1.0, 1e-9) << type;
+    EXPECT_NEAR(f3.a_fit / f2.a_fit, 1.0, 1e-9) << type;
+    EXPECT_NEAR(f3.foundation / f2.foundation, 1.0, 1e-9) << type;
+  }
+}
+
 /// hertz_2d_force with the indenter (node labels below 100001) lifted by `lift`, written into the
 /// temporary folder (named by `tag`).
 std::string lifted_deck(double lift, const std::string& tag) {
