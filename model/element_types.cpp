@@ -93,6 +93,11 @@ constexpr ElementTypeInfo kTypes[] = {
     {"SPRINGA", F::Spring, I::Full, 0, 2, 1, {}},
     {"SPRING1", F::Spring, I::Full, 0, 1, 1, {}},
     {"SPRING2", F::Spring, I::Full, 0, 2, 1, {}},
+    // Beams in space: B32's nodes are end, middle, end; B32R is CalculiX's name for the same
+    // reduced-integration element (Abaqus's B32 integrates at two points already).
+    {"B31", F::Beam, I::Reduced, 3, 2, 1, {}},
+    {"B32", F::Beam, I::Reduced, 3, 3, 2, {}},
+    {"B32R", F::Beam, I::Reduced, 3, 3, 2, {}},
     {"R3D3", F::Rigid, I::Full, 3, 3, 1, kRigidTri},
     {"R3D4", F::Rigid, I::Full, 3, 4, 1, kRigidQuad},
     {"R2D2", F::Rigid, I::Full, 2, 2, 1, kRigidLine},

@@ -14,7 +14,8 @@ enum class ElementFamily : std::uint8_t {
   Axisymmetric, ///< CAX*
   Truss,        ///< T2D2, T3D2, T3D3: axial force only, cross-section area from *SOLID SECTION
   Spring,       ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
-  Rigid         ///< R3D3, R3D4, R2D2, RAX2: no stiffness, a surface of a *RIGID BODY (faces SNEG, SPOS)
+  Rigid,        ///< R3D3, R3D4, R2D2, RAX2: no stiffness, a surface of a *RIGID BODY (faces SNEG, SPOS)
+  Beam          ///< B31, B32 (B32R): shear-flexible beams in space, 6 DOFs per node, *BEAM SECTION
 };
 
 enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
@@ -45,8 +46,12 @@ struct ElementTypeInfo {
 /// Solids, plane and axisymmetric elements: the types with faces, sections of a material and
 /// the continuum kernels (not trusses or springs).
 inline bool is_continuum(const ElementTypeInfo& t) {
-  return t.family != ElementFamily::Truss && t.family != ElementFamily::Spring && t.family != ElementFamily::Rigid;
+  return t.family != ElementFamily::Truss && t.family != ElementFamily::Spring && t.family != ElementFamily::Rigid &&
+         t.family != ElementFamily::Beam;
 }
+
+/// B31, B32: elements with rotations at their nodes (model::BeamNodeRotation).
+inline bool is_beam(const ElementTypeInfo& t) { return t.family == ElementFamily::Beam; }
 
 /// R3D3, R3D4, R2D2, RAX2: nodes that follow their *RIGID BODY, faces for contact, no stiffness.
 inline bool is_rigid(const ElementTypeInfo& t) { return t.family == ElementFamily::Rigid; }

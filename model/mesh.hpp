@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "label_map.hpp"
+#include "beam_section.hpp"
 #include "source_loc.hpp"
 
 namespace inpact::model {
@@ -101,6 +102,7 @@ struct Mesh {
   std::map<std::string, Surface> surfaces;
   std::vector<SolidSection> sections;
   std::vector<SpringSection> springs;
+  std::vector<BeamSection> beam_sections;
 };
 
 }  // namespace inpact::model

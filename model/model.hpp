@@ -38,6 +38,8 @@ struct Model {
   std::vector<Coupling> couplings;                     ///< *COUPLING, in deck order
   std::vector<NodalTransform> transforms;         ///< *TRANSFORM, in deck order
   std::vector<TransformedNode> transformed_nodes;  ///< the nodes whose DOFs are local, by node row
+  /// Every node of a beam element with its rotation node, by node row (parser/beam_nodes.cpp).
+  std::vector<BeamNodeRotation> beam_rotations;
   /// *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION, in deck order (Surface::analytical).
   std::vector<AnalyticalSurface> analytical_surfaces;
 

@@ -1,6 +1,7 @@
 #pragma once
-/// The nodes with rotations: the reference nodes of rigid bodies and couplings. Their DOFs 4–6
-/// (6 in 2D) are the translations of a rotation node (model/rigid_body.hpp).
+/// The nodes with rotations: the reference nodes of rigid bodies and couplings, and the nodes of
+/// beam elements. Their DOFs 4–6 (6 in 2D) are the translations of a rotation node
+/// (model/rigid_body.hpp).
 #include <cstdint>
 #include <vector>
 
@@ -14,7 +15,8 @@ struct RotatingNode {
   bool rot_node_added;  ///< inpact's own: reported as UR/RM of ref_node, not as a node
 };
 
-/// Every reference node with rotations, rigid bodies first, in deck order. `dim`: the model's.
+/// Every node with rotations: reference nodes (rigid bodies first, in deck order), then the beam
+/// nodes that are not one, by node row. `dim`: the model's.
 std::vector<RotatingNode> rotating_nodes(const Model& m, int dim);
 
 /// `node` is the reference node of a rigid body or of a coupling.

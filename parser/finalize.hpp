@@ -13,6 +13,13 @@ void resolve_pending_nodes(MeshBuild& build, Diagnostics& diags);
 /// *SPRING covers in `has_section` (element rows).
 void check_line_element_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section);
 
+/// Beam sections against the mesh (beam_nodes.cpp); marks their elements in `has_section`.
+void check_beam_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section);
+
+/// Gives every beam node a rotation node (model::Model::beam_rotations), after rigid bodies and
+/// couplings have theirs (a reference node on a beam keeps its own).
+void add_beam_rotation_nodes(model::Model& m);
+
 void finalize_model(BuildState& state, Diagnostics& diags);
 
 }  // namespace inpact::parser

@@ -31,5 +31,6 @@ void add_spring_keywords(std::vector<KeywordSpec>& table);    // kw_spring.cpp
 void add_rigid_body_keywords(std::vector<KeywordSpec>& table);  // kw_rigid_body.cpp
 void add_transform_keywords(std::vector<KeywordSpec>& table);   // kw_transform.cpp
 void add_coupling_keywords(std::vector<KeywordSpec>& table);    // kw_coupling.cpp
+void add_beam_section_keywords(std::vector<KeywordSpec>& table);  // kw_beam_section.cpp
 
 }  // namespace inpact::parser

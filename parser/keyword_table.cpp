@@ -26,6 +26,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_rigid_body_keywords(t);
     add_transform_keywords(t);
     add_coupling_keywords(t);
+    add_beam_section_keywords(t);
     return t;
   }();
   return table;
@@ -37,8 +38,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
   static constexpr std::string_view kUnsupported[] = {
       "DYNAMIC", "FREQUENCY", "BUCKLE", "HEATTRANSFER", "COUPLEDTEMPERATURE-DISPLACEMENT",
       "VISCO", "MODALDYNAMIC", "STEADYSTATEDYNAMICS", "EXPLICIT", "SOILS",
-      "SHELLSECTION", "BEAMSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION",
-      "BEAMGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
+      "SHELLSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
       "MASS", "DASHPOT", "CONNECTORSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};

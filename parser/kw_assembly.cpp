@@ -160,6 +160,16 @@ void end_instance(KeywordContext& ctx) {
     copy.elset = prefix + spring.elset;
     dst.springs.push_back(std::move(copy));
   }
+  for (const auto& beam : src.beam_sections) {  // n1 turns with the instance
+    model::BeamSection copy = beam;
+    copy.elset = prefix + beam.elset;
+    if (inst.has_rotation) {
+      const auto& r = inst.rotation;
+      const auto turned = rotate({r[0] + beam.n1[0], r[1] + beam.n1[1], r[2] + beam.n1[2]}, r);
+      for (int i = 0; i < 3; ++i) copy.n1[i] = turned[i] - r[i];
+    }
+    dst.beam_sections.push_back(std::move(copy));
+  }
 }
 
 }  // namespace

@@ -157,6 +157,13 @@ void boundary(KeywordContext& ctx) {
 // --- *CLOAD ----------------------------------------------------------------------------------
 
 // *CLOAD, OP=, AMPLITUDE=: `node|set, dof, magnitude`.
+/// Beam nodes get their rotations once the deck is read (beam_nodes.cpp).
+bool has_beams(const model::Mesh& mesh) {
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+    if (model::is_beam(model::element_type(mesh.elements.type[e]))) return true;
+  return false;
+}
+
 void cload(KeywordContext& ctx) {
   if (!data_or_new(ctx)) return;
   reject_params(ctx, {"FOLLOWER", "USER", "ORIENTATION"});
@@ -175,7 +182,7 @@ void cload(KeywordContext& ctx) {
     const bool reference_nodes = std::all_of(nodes->begin(), nodes->end(), [&](std::int32_t n) {
       return model::is_reference_node(ctx.model(), n);
     });
-    if (*dof > 3 && !reference_nodes)
+    if (*dof > 3 && !reference_nodes && !has_beams(ctx.mesh()))
       ctx.warning(f[1].loc, fmt::format("DOF {} is a rotation: inpact's solid and plane elements have none, so "
                                         "this moment acts on nothing", *dof));
     b.entries.push_back({std::string(f[0].text), std::move(*nodes), *dof, *magnitude, line.loc});

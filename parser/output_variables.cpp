@@ -39,7 +39,7 @@ constexpr Variable kNode[] = {
 
 // Element: stresses and their invariants, strains (total, elastic, thermal, plastic, creep,
 // logarithmic, nominal, rates), energies, volumes, state variables, temperature, heat flux,
-// nodal forces (Abaqus); ME, ZZS, ERR, HER, MAXE, MAXS, SMID/SNEG/SPOS, SVF, PHS, EMFE/EMFB,
+// nodal forces, section forces and moments SF, SM (Abaqus); ME, ZZS, ERR, HER, MAXE, MAXS, SMID/SNEG/SPOS, SVF, PHS, EMFE/EMFB,
 // ECD, HFLF, ELKE, EMAS, EBHE, CENT are CalculiX *EL FILE/*EL PRINT keys; NOE is CalculiX's
 // "no error estimate" (it switches ZZS/ERR off and asks for nothing).
 constexpr Variable kElement[] = {
@@ -52,7 +52,7 @@ constexpr Variable kElement[] = {
     {"ELEN", C::None},    {"SENER", C::None},   {"PENER", C::None},   {"CENER", C::None},   {"VENER", C::None},
     {"ELSE", C::None},    {"ELPD", C::None},    {"ELCD", C::None},    {"ELVD", C::None},    {"ELKE", C::None},
     {"ESEDEN", C::None},  {"EPDDEN", C::None},  {"EVOL", C::None},    {"IVOL", C::None},    {"SVOL", C::None},
-    {"STH", C::None},     {"SF", C::Vector},    {"COORD", C::Vector}, {"SDV", C::Index},    {"STATUS", C::None},
+    {"STH", C::None},     {"SF", C::Vector},    {"SM", C::Vector},    {"COORD", C::Vector}, {"SDV", C::Index},    {"STATUS", C::None},
     {"TEMP", C::None},    {"HFL", C::Vector},   {"HFLF", C::None},    {"NFORC", C::None},   {"ZZS", C::None},
     {"ERR", C::None},     {"HER", C::None},     {"MAXE", C::None},    {"MAXS", C::None},    {"SMID", C::None},
     {"SNEG", C::None},    {"SPOS", C::None},    {"SVF", C::None},     {"PHS", C::None},     {"EMFE", C::None},

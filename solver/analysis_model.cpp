@@ -34,6 +34,18 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
   return x;
 }
 
+std::size_t AnalysisModel::element_rows(std::size_t e, std::span<std::int32_t> rows) const {
+  const auto nodes = model->mesh.elements.nodes_of(e);
+  const bool beam = model::is_beam(*elements[e].type);
+  const std::size_t n = nodes.size() * (beam ? 2 : 1);
+  if (n > rows.size()) throw AnalysisError("internal error: an element with more node rows than the assembler takes");
+  std::copy(nodes.begin(), nodes.end(), rows.begin());
+  if (beam)
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      rows[nodes.size() + a] = rotation_node_of[static_cast<std::size_t>(nodes[a])];
+  return n;
+}
+
 namespace {
 
 /// The Mises material of *PLASTIC: the small-strain law, or the finite-strain one

@@ -3,6 +3,7 @@
 /// material law and section data, and the model's number of DOFs per node.
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ namespace inpact::solver {
 namespace elements {
 class Material;
 struct SpringBehavior;
+struct BeamProperties;
 }
 
 struct ElementSetup {
@@ -36,6 +38,7 @@ struct AnalysisModel {
   std::vector<ElementSetup> elements;  ///< per element row
   std::vector<std::shared_ptr<const elements::Material>> materials;  ///< what ElementSetup::material points to
   std::vector<std::shared_ptr<const elements::SpringBehavior>> springs;  ///< what SectionData::spring points to
+  std::vector<std::shared_ptr<const elements::BeamProperties>> beams;     ///< what SectionData::beam points to
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;
@@ -48,8 +51,8 @@ struct AnalysisModel {
   /// Warnings about the model as given (e.g. volumetric locking), for `check` and `run`.
   std::vector<std::string> warnings;
 
-  /// Per node row: the rotation node of the rigid body it is the reference node of, else −1
-  /// (model/rigid_body.hpp). Only these nodes have rotations.
+  /// Per node row: its rotation node (a rigid body's or coupling's reference node, a beam node;
+  /// model/reference_nodes.hpp), else −1. Only these nodes have rotations.
   std::vector<std::int32_t> rotation_node_of;
   /// Per node row: the local node that holds its *TRANSFORM components (model/transform.hpp),
   /// else −1; and the index of its *TRANSFORM, else −1 (printed output turns into its axes).
@@ -65,6 +68,11 @@ struct AnalysisModel {
   /// The local axes e_1..e_3 (rows) of node `node`'s *TRANSFORM at its position; false when it
   /// has none.
   bool local_axes(std::int32_t node, std::array<std::array<double, 3>, 3>& e) const;
+  /// The node rows element e's system lives on: its nodes, and for a beam its nodes' rotation
+  /// nodes after them (elements/beam_elements.hpp). Writes at most kMaxElementRows; returns the
+  /// count.
+  static constexpr std::size_t kMaxElementRows = 32;
+  std::size_t element_rows(std::size_t e, std::span<std::int32_t> rows) const;
   /// Reference coordinates of element e's nodes.
   std::vector<elements::Vec3> coords(std::size_t e) const;
 };

@@ -13,8 +13,10 @@ namespace inpact::solver {
 
 void Assembler::element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const {
   dofs.clear();
-  for (std::int32_t node : am_.model->mesh.elements.nodes_of(e))
-    for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(node) * am_.dim + c);
+  std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
+  const std::size_t n = am_.element_rows(e, rows);
+  for (std::size_t a = 0; a < n; ++a)
+    for (int c = 0; c < am_.dim; ++c) dofs.push_back(static_cast<std::int64_t>(rows[a]) * am_.dim + c);
 }
 
 Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, MaterialStates* states)
@@ -135,16 +137,19 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   std::array<elements::Vec3, kMaxNodes> x;
   std::array<double, kMaxNodes * 3> u_el;
   std::array<double, kMaxNodes> dt_el;
+  std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
+  const std::size_t n_rows = am_.element_rows(e, rows);  // a beam's rotations follow its nodes
   const std::size_t dim = static_cast<std::size_t>(am_.dim);
   for (std::size_t a = 0; a < nodes.size(); ++a) {
     const std::size_t node = static_cast<std::size_t>(nodes[a]);
     x[a] = mesh.nodes.coords[node];
-    for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[node * dim + c];
     if (!request.delta_t.empty()) dt_el[a] = request.delta_t[node];
   }
+  for (std::size_t a = 0; a < n_rows; ++a)
+    for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[static_cast<std::size_t>(rows[a]) * dim + c];
   const std::size_t n = nodes.size();
   const elements::ElementHistory history = states_ ? states_->assembly_history(e) : elements::ElementHistory{};
-  elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n * dim), *setup.material,
+  elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n_rows * dim), *setup.material,
                             setup.section, er,
                             request.delta_t.empty() ? std::span<const double>() : std::span<const double>(dt_el).first(n),
                             history, out);

@@ -299,9 +299,10 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
   map.rigid_ = rigid_nodes(am);
   map.kind_.assign(n, Kind::Unused);
   // A DOF is used when an element connects its node.
+  std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
   for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
-    for (std::int32_t node : m.mesh.elements.nodes_of(e))
-      for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(node) * am.dim + c] = Kind::Free;
+    for (std::size_t a = 0, n_rows = am.element_rows(e, rows); a < n_rows; ++a)
+      for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(rows[a]) * am.dim + c] = Kind::Free;
   for (const model::PretensionSection& s : m.pretension_sections)
     map.kind_[static_cast<std::int64_t>(s.node) * am.dim] = Kind::Free;
   // A transformed node's local DOFs are its unknowns (add_transform_dependents).

@@ -87,7 +87,9 @@ std::string field_key(std::string_view v, Domain d) {
   if (element) {
     if (v == "MISES") return "S";
     if (v == "PEEQ" || v == "PEMAG") return std::string(v);
-    if (v == "SF" || v == "SF1") return "SF";  // trusses' axial force (0 for continua)
+    // Section forces and moments: trusses' axial force SF1, beams' SF1..SF3 and SM1..SM3.
+    if (is_variable(v, "SF", 1)) return "SF";
+    if (is_variable(v, "SM", 1)) return "SM";
     for (std::string_view k : {"PE", "LE", "S", "E"})
       if (is_variable(v, k, 2)) return std::string(k);
   }
@@ -141,7 +143,10 @@ std::vector<std::string> print_columns(const std::string& v, Domain d, int dim) 
       if (v == k) return {v};
   } else if (d == Domain::Element) {
     if (v == "MISES" || v == "PEEQ" || v == "PEMAG") return {v};
-    if (v == "SF" || v == "SF1") return {"SF1"};
+    for (const char* k : {"SF", "SM"}) {
+      if (v == k) return vector_labels(k, 3);
+      if (is_variable(v, k, 1)) return component(vector_labels(k, 3));
+    }
     if (v == "COORD") return vector_labels(v, dim);
     if (is_variable(v, "COORD", 1)) return component(vector_labels("COORD", dim));
     for (const char* k : {"PE", "LE", "S", "E"}) {
@@ -158,18 +163,24 @@ void add_unique(std::vector<std::string>& list, const std::string& v) {
 
 /// LE is E's values under Abaqus's name for them with NLGEOM (the logarithmic strain; without
 /// NLGEOM the small strain, which it equals to first order).
-constexpr const char* kFieldKeys[] = {"U", "UR", "RF", "RM", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG", "SF"};
+constexpr const char* kFieldKeys[] = {"U", "UR", "RF", "RM", "COORD", "S", "E", "LE", "PE", "PEEQ", "PEMAG", "SF", "SM"};
 
 bool nodal_key(const std::string& key) { return key == "U" || key == "RF" || key == "COORD" || rotation_key(key); }
 
 /// Keys of integration-point values (computed by the element kernels).
 bool point_key(const std::string& key) {
-  return key == "S" || key == "E" || key == "LE" || key == "PE" || key == "PEEQ" || key == "PEMAG" || key == "SF";
+  return key == "S" || key == "E" || key == "LE" || key == "PE" || key == "PEEQ" || key == "PEMAG" || key == "SF" ||
+         key == "SM";
 }
 
 /// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
 /// PEEQ and PEMAG (Abaqus writes them for elements with plasticity), so an elastic model's
 /// results stay as they were.
+/// Beams make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
+bool model_has_beams(const AnalysisModel& am) {
+  return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
+}
+
 bool model_has_plasticity(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) {
     return s.material && s.material->state_size() > 0 && s.material->as_isotropic_elastic() == nullptr;
@@ -290,6 +301,8 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         const std::string key = field_key(v, d);
         if (key.empty()) add_unique(not_computed_, v);
         else add_unique(a.variables, key);
+        if (point_key(key) && key != "SF" && key != "SM" && model_has_beams(am))
+          add_unique(not_computed_, key + " of beam elements (SF and SM are written for them)");
         // CSTRESS = CPRESS + CSHEAR1/2, CDISP = COPEN + CSLIP1/2 (with friction).
         const bool stress = v == "CSTRESS" || v == "CSTR", disp = v == "CDISP" || v == "CDIS";
         if ((stress || disp) && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
@@ -308,6 +321,9 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
       for (const std::string& v : r.variables) {
         const auto columns = print_columns(v, d, am.dim);
         if (columns.empty()) add_unique(not_computed_, v);
+        const bool section = v.rfind("SF", 0) == 0 || v.rfind("SM", 0) == 0 || v.rfind("COORD", 0) == 0;
+        if (d == Domain::Element && !columns.empty() && !section && model_has_beams(am))
+          add_unique(not_computed_, v + " of beam elements (SF and SM are written for them)");
         for (const auto& c : columns) add_unique(a.variables, c);
       }
       print_timing_.emplace_back(r, period);
@@ -379,10 +395,11 @@ class PointCache {
     const ElementSetup& setup = am_.elements[el];
     if (model::is_rigid(*setup.type)) return {};  // no points: a rigid element is not integrated
     std::vector<double> u_el, dt_el;
-    for (std::int32_t node : am_.model->mesh.elements.nodes_of(el)) {
-      for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(node) * am_.dim + c]);
-      if (!delta_t_.empty()) dt_el.push_back(delta_t_[node]);
-    }
+    std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's rotations too
+    for (std::size_t a = 0, n = am_.element_rows(el, rows); a < n; ++a)
+      for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(rows[a]) * am_.dim + c]);
+    if (!delta_t_.empty())
+      for (std::int32_t node : am_.model->mesh.elements.nodes_of(el)) dt_el.push_back(delta_t_[node]);
     // From the committed history: the output of a converged increment comes before its commit.
     std::vector<double> trial;
     const elements::ElementHistory history = states_ ? states_->output_history(el, trial) : elements::ElementHistory{};
@@ -538,14 +555,15 @@ double plastic_magnitude(const elements::PointResult& p) {
 FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool with_instance = am.model->instances.size() > 1;
-  const bool scalar = key == "PEEQ" || key == "PEMAG" || key == "SF";
-  const std::size_t n_comp = scalar ? 1 : am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
+  const bool scalar = key == "PEEQ" || key == "PEMAG" || (key == "SF" && !model_has_beams(am));
+  const bool section = key == "SF" || key == "SM";  // PointResult::section, SM from slot 3
+  const std::size_t n_comp = scalar ? 1 : section ? 3 : am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
   FieldData f;
   f.key = key;
   f.position = Position::IntegrationPoint;
-  f.component_labels = key == "SF" ? std::vector<std::string>{"SF1"}
-                       : scalar    ? std::vector<std::string>{key}
-                                   : tensor_labels(key, am.dim);
+  f.component_labels = section ? vector_labels(key, static_cast<int>(n_comp))
+                       : scalar ? std::vector<std::string>{key}
+                                : tensor_labels(key, am.dim);
   f.region = where.region;
   const bool stress = key == "S";
   // The points of every element first, so that the arrays are sized once (a frame of a few
@@ -553,6 +571,8 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
   std::vector<std::pair<std::size_t, std::span<const elements::PointResult>>> points;
   std::size_t n_points = 0;
   auto gather = [&](std::size_t el) {
+    // A beam has section forces, not stresses at points (S at its section points: not yet).
+    if (!section && model::is_beam(model::element_type(elements.type[el]))) return;
     points.emplace_back(el, cache.of(el));
     n_points += points.back().second.size();
   };
@@ -571,8 +591,12 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
       f.ip[i] = static_cast<std::int32_t>(p + 1);
       if (with_instance) f.instance[i] = elements.instance[el];
       const auto at = f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp);
+      if (section) {
+        std::copy_n(pts[p].section.begin() + (key == "SM" ? 3 : 0), n_comp, at);
+        continue;
+      }
       if (scalar) {
-        *at = key == "PEEQ" ? pts[p].peeq : key == "SF" ? pts[p].section_force : plastic_magnitude(pts[p]);
+        *at = key == "PEEQ" ? pts[p].peeq : plastic_magnitude(pts[p]);
         continue;
       }
       const auto& v = stress ? pts[p].stress : key == "PE" ? pts[p].plastic_strain : pts[p].strain;
@@ -583,7 +607,7 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
 
 /// A printed column: its source and component (0-based).
 struct Column {
-  enum class Source : std::uint8_t { U, RF, Coord, UR, RM, S, E, Mises, PE, Peeq, Pemag, SF } source;
+  enum class Source : std::uint8_t { U, RF, Coord, UR, RM, S, E, Mises, PE, Peeq, Pemag, SF, SM } source;
   int component = 0;
 };
 
@@ -592,7 +616,8 @@ Column parse_column(const std::string& name) {
   if (name == "MISES") return {S::Mises, 0};
   if (name == "PEEQ") return {S::Peeq, 0};
   if (name == "PEMAG") return {S::Pemag, 0};
-  if (name == "SF1") return {S::SF, 0};
+  if (name.rfind("SF", 0) == 0) return {S::SF, name[2] - '1'};
+  if (name.rfind("SM", 0) == 0) return {S::SM, name[2] - '1'};
   if (name.rfind("COORD", 0) == 0) return {S::Coord, name[5] - '1'};
   // UR3 alone in 2D is component 0 there: node_table maps it (rotation_labels()).
   if (name.rfind("UR", 0) == 0) return {S::UR, name[2] - '1'};
@@ -647,7 +672,8 @@ double point_value(const elements::PointResult& p, const Column& c) {
     case Column::Source::PE: return p.plastic_strain[c.component];
     case Column::Source::Peeq: return p.peeq;
     case Column::Source::Pemag: return plastic_magnitude(p);
-    case Column::Source::SF: return p.section_force;
+    case Column::Source::SF: return p.section[c.component];
+    case Column::Source::SM: return p.section[3 + c.component];
     case Column::Source::Coord: return p.coords[c.component];
     default: return 0.0;
   }
@@ -667,7 +693,7 @@ elements::PointResult centroid_of(std::span<const elements::PointResult> points)
       c.plastic_strain[i] += w * p.plastic_strain[i];
     }
     c.peeq += w * p.peeq;
-    c.section_force += w * p.section_force;
+    for (int i = 0; i < 6; ++i) c.section[i] += w * p.section[i];
     for (int i = 0; i < 3; ++i) c.coords[i] += w * p.coords[i];
   }
   c.volume = total;
@@ -713,14 +739,19 @@ std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequ
 }
 
 /// The columns of a table of this element type: trusses and springs have the 11 component of
-/// a tensor only (Abaqus prints S11 and E11 for them), continua every column asked for.
+/// a tensor only (Abaqus prints S11 and E11 for them) and SF1; beams their section forces and
+/// moments (no stresses at section points yet); continua every column but SF2, SF3 and SM.
 std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables) {
-  if (model::is_continuum(type)) return variables;
   std::vector<std::string> out;
   for (const std::string& v : variables) {
     const Column c = parse_column(v);
     const bool tensor = c.source == Column::Source::S || c.source == Column::Source::E || c.source == Column::Source::PE;
-    if (!tensor || c.component == 0) out.push_back(v);
+    const bool section = c.source == Column::Source::SF || c.source == Column::Source::SM;
+    const bool axial = c.source == Column::Source::SF && c.component == 0;
+    const bool keep = model::is_beam(type)        ? section || c.source == Column::Source::Coord
+                      : model::is_continuum(type) ? !section || axial
+                                                  : (!tensor || c.component == 0) && (!section || axial);
+    if (keep) out.push_back(v);
   }
   return out;
 }
@@ -736,6 +767,7 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
   auto add = [&](std::size_t el) {
     const std::uint8_t type = elements.type[el];
     if (model::is_rigid(model::element_type(type))) return;  // rigid elements have no points
+    if (columns_for(model::element_type(type), a.variables).empty()) return;  // (beams asked for S only)
     auto [it, inserted] = table_of_type.emplace(type, tables.size());
     if (inserted) {
       PrintTable t;

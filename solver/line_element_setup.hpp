@@ -1,7 +1,8 @@
 #pragma once
-/// Trusses and springs resolved for the analysis: each truss's cross-section area, each spring's
-/// *SPRING behaviour, and the deck errors the mesh shows only now (a zero-length truss or
-/// SPRINGA, a spring DOF beyond the model's, plasticity in a truss).
+/// Trusses, beams and springs resolved for the analysis: each truss's cross-section area, each
+/// beam's section properties, each spring's *SPRING behaviour, and the deck errors the mesh
+/// shows only now (a zero-length truss, beam or SPRINGA, a spring DOF beyond the model's,
+/// plasticity in a truss, a beam's n1 along its axis).
 #include "analysis_model.hpp"
 
 namespace inpact::solver {

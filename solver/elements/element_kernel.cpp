@@ -59,6 +59,7 @@ double out_of_plane_measure(ElementFamily family, const SectionData& section, do
     case ElementFamily::Solid3D:
     case ElementFamily::Truss:  // (line elements take line_elements.cpp's kernels)
     case ElementFamily::Spring:
+    case ElementFamily::Beam:
     case ElementFamily::Rigid: return 1.0;  // (rigid elements are never integrated)
   }
   return 1.0;

@@ -36,6 +36,7 @@ struct ElasticConstants {
 
 /// Section data the kernels need.
 struct SpringBehavior;  // line_elements.hpp
+struct BeamProperties;  // beam_section.hpp
 
 struct SectionData {
   double thickness = 1.0;  ///< plane strain / plane stress out-of-plane thickness (Abaqus default 1)
@@ -44,6 +45,7 @@ struct SectionData {
   double hourglass_scale = 0.005;
   double area = 0.0;       ///< trusses: the cross-section area (*SOLID SECTION's data line)
   const SpringBehavior* spring = nullptr;  ///< springs: their *SPRING (owned by the AnalysisModel)
+  const BeamProperties* beam = nullptr;    ///< beams: their section (owned by the AnalysisModel)
 };
 
 struct ElementRequest {
@@ -61,7 +63,10 @@ struct PointResult {
   double volume = 0.0;  ///< reference volume it represents (Abaqus IVOL; 2πr·dA for CAX)
   Voigt6 plastic_strain{};  ///< PE, engineering shear (0 without plasticity)
   double peeq = 0.0;        ///< PEEQ, the equivalent plastic strain ∫ε̄̇ᵖ dt
-  double section_force = 0.0;  ///< SF1: a truss's axial force N (0 for other elements)
+  /// Section forces and moments SF1, SF2, SF3, SM1, SM2, SM3: a truss's axial force N in SF1;
+  /// a beam's axial force, shear forces along n2 and n1, bending moments about n1 and n2 and
+  /// the torque (Abaqus's order, beam_elements.hpp); 0 for continua.
+  std::array<double, 6> section{};
 };
 
 /// The history variables of one integration point (material.hpp, material_states.hpp): the

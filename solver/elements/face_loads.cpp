@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "beam_section.hpp"
 #include "line_elements.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
@@ -86,13 +87,14 @@ template <class Fn>
 void integrate_volume(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const SectionData& section,
                       Fn&& fn) {
   const int dim = type.dim, n = type.n_nodes;
-  if (type.family == ElementFamily::Truss) {  // along the truss: dV = A ds
+  if (type.family == ElementFamily::Truss || type.family == ElementFamily::Beam) {  // along the line: dV = A ds
+    const double area = type.family == ElementFamily::Beam && section.beam ? section.beam->area : section.area;
     for (const TrussPoint& p : truss_points(type, coords, dim)) {
       ShapeValues sv;
       sv.n_nodes = n;
       sv.dim = 1;
       for (int a = 0; a < n; ++a) sv.N[a] = p.N[a];
-      fn(sv, p.x, p.weight * p.J * section.area);
+      fn(sv, p.x, p.weight * p.J * area);
     }
     return;
   }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "beam_elements.hpp"
 #include "quadrature.hpp"
 
 namespace inpact::solver::elements {
@@ -93,7 +94,7 @@ void compute_truss(const model::ElementTypeInfo& type, std::span<const Vec3> coo
       const double stretch = std::sqrt(l2 / L2);
       r.stress[0] = stretch * S, r.strain[0] = std::log(stretch);
     }
-    r.section_force = section.area * r.stress[0];
+    r.section[0] = section.area * r.stress[0];
     if (request.point_output) out.points.push_back(r);
   }
 }
@@ -196,6 +197,11 @@ void compute_line_element(const model::ElementTypeInfo& type, std::span<const Ve
   if (coords.size() != n || u.empty() || u.size() % n != 0 || (!delta_t.empty() && delta_t.size() != n))
     throw std::invalid_argument("compute_line_element: coordinate, displacement or temperature count mismatch");
   const int dim = static_cast<int>(u.size() / n);
+  if (type.family == model::ElementFamily::Beam) {
+    if (!section.beam) throw std::invalid_argument("compute_line_element: a beam without its section");
+    compute_beam(type, coords, u, *section.beam, request, out);
+    return;
+  }
   if (type.family == model::ElementFamily::Truss) {
     compute_truss(type, coords, u, dim, material, section, request, delta_t, out);
     return;

@@ -6,7 +6,7 @@
 ///    NLGEOM: total Lagrangian with the Green–Lagrange axial strain E = (l² − L²)/(2L²) and
 ///    S = E_mod (E − αΔT), as the continua's St. Venant–Kirchhoff; output the logarithmic strain
 ///    ln(l/L) and N/A with N = λ S A: the area is taken to stay A, a section Poisson's ratio of 0);
-///    SF1 (PointResult::section_force) the axial force N.
+///    SF1 (PointResult::section[0]) the axial force N.
 ///  - springs: S11 the spring force, E11 its relative displacement (Abaqus's convention for
 ///    spring output). SPRINGA acts along the line joining its nodes (with NLGEOM the current
 ///    line: K = k nnᵀ + (F/l)(I − nnᵀ)); SPRING1/SPRING2 act on fixed global DOFs.

@@ -1,0 +1,43 @@
+#pragma once
+/// *BEAM SECTION and *BEAM GENERAL SECTION as the deck gives them, and the rotation node each
+/// beam node gets (its DOFs 4–6). The section's area, moments of inertia and torsion constant are
+/// computed for the analysis (solver/elements/beam_section.hpp), not here.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "source_loc.hpp"
+
+namespace inpact::model {
+
+struct BeamSection {
+  /// SECTION=: the library shapes inpact integrates, and GENERAL (*BEAM GENERAL SECTION's
+  /// A, I11, I12, I22, J given directly).
+  enum class Shape : std::uint8_t { Rect, Circ, Pipe, General };
+  std::string elset;     ///< upper-case set name
+  std::string material;  ///< upper-case material name; empty for a general section (E, G given)
+  Shape shape = Shape::Rect;
+  /// The first data line: RECT a, b (widths along n1 and n2); CIRC r; PIPE r (outer), t;
+  /// GENERAL A, I11, I12, I22, J.
+  std::vector<double> dims;
+  SourceLoc dims_loc;
+  /// The approximate n1 direction of the second data line; Abaqus's default (0, 0, −1).
+  std::array<double, 3> n1{0.0, 0.0, -1.0};
+  SourceLoc n1_loc;
+  double youngs_modulus = 0.0, shear_modulus = 0.0;  ///< GENERAL: the third data line
+  /// *TRANSVERSE SHEAR STIFFNESS: K23, K13 (force units) and the slenderness compensation
+  /// factor (Abaqus's default 0.25), each absent when not given.
+  std::optional<double> k23, k13, slenderness_compensation;
+  SourceLoc loc;
+};
+
+/// A beam node and the node inpact added to hold its rotations θ1..θ3 (a rigid body's or
+/// coupling's reference node keeps the rotation node it has).
+struct BeamNodeRotation {
+  std::int32_t node = -1;
+  std::int32_t rot_node = -1;
+};
+
+}  // namespace inpact::model

@@ -1,0 +1,197 @@
+/// *BEAM SECTION, *BEAM GENERAL SECTION and their *TRANSVERSE SHEAR STIFFNESS [Abaqus Keywords].
+///
+/// *BEAM SECTION, ELSET=, MATERIAL=, SECTION=RECT | CIRC | PIPE: first data line the shape's
+/// dimensions (RECT a, b; CIRC r; PIPE r, t), second the approximate n1 direction (default
+/// (0, 0, −1)). *BEAM GENERAL SECTION, SECTION=GENERAL: A, I11, I12, I22, J; n1; E, G. The other
+/// library shapes (BOX, I, L, HEX, TRAPEZOID, ARBITRARY, ...), the other general forms (MESHED,
+/// NONLINEAR GENERAL) and CalculiX's OFFSET1/OFFSET2 stop here with what is missing.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "handlers.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+using Shape = model::BeamSection::Shape;
+
+struct ShapeSpec {
+  std::string_view name;
+  Shape shape;
+  std::size_t n_dims;
+  std::string_view layout;
+};
+
+constexpr ShapeSpec kShapes[] = {{"RECT", Shape::Rect, 2, "a (width along n1), b (along n2)"},
+                                 {"CIRC", Shape::Circ, 1, "radius"},
+                                 {"PIPE", Shape::Pipe, 2, "outer radius, wall thickness"},
+                                 {"GENERAL", Shape::General, 5, "A, I11, I12, I22, J"}};
+
+/// The dimensions line: each a positive number (I12 of a general section may be any number).
+bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, model::BeamSection& sec) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, spec.n_dims, spec.shape == Shape::General ? 7 : spec.n_dims, spec.layout)) return false;
+  sec.dims_loc = line.loc;
+  for (std::size_t i = 0; i < spec.n_dims; ++i) {
+    auto v = ctx.real(f[i], "section dimension");
+    if (!v) return false;
+    const bool signed_value = spec.shape == Shape::General && i == 2;  // I12
+    if (!signed_value && *v <= 0) {
+      ctx.error(f[i].loc, fmt::format("the section dimensions must be positive ({}), found {:g}", spec.layout, *v));
+      return false;
+    }
+    if (signed_value && *v != 0) {
+      ctx.error(f[i].loc, "a product of inertia I12 other than 0 is not supported yet (give the section in its "
+                          "principal axes)");
+      return false;
+    }
+    sec.dims.push_back(*v);
+  }
+  if (spec.shape == Shape::Pipe && sec.dims[1] > sec.dims[0]) {
+    ctx.error(f[1].loc, fmt::format("the wall thickness {:g} exceeds the outer radius {:g}", sec.dims[1], sec.dims[0]));
+    return false;
+  }
+  return true;
+}
+
+/// The n1 line (optional): three components, not all zero.
+bool read_n1(KeywordContext& ctx, const Line& line, model::BeamSection& sec) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, 3, 3, "n1x, n1y, n1z (the approximate n1 direction)")) return false;
+  double norm = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    auto v = ctx.real(f[static_cast<std::size_t>(i)], "n1 component");
+    if (!v) return false;
+    sec.n1[static_cast<std::size_t>(i)] = *v;
+    norm += *v * *v;
+  }
+  if (norm == 0.0) {
+    ctx.error(line.loc, "the n1 direction is the zero vector");
+    return false;
+  }
+  sec.n1_loc = line.loc;
+  return true;
+}
+
+/// GENERAL's third line: E, G (and a thermal expansion inpact does not take yet).
+bool read_moduli(KeywordContext& ctx, const Line& line, model::BeamSection& sec) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, 2, 3, "E, G[, thermal expansion]")) return false;
+  auto e = ctx.real(f[0], "Young's modulus");
+  auto g = ctx.real(f[1], "shear modulus");
+  if (!e || !g) return false;
+  if (*e <= 0 || *g <= 0) {
+    ctx.error(line.loc, fmt::format("E and G must be positive, found {:g}, {:g}", *e, *g));
+    return false;
+  }
+  if (f.size() > 2 && !f[2].empty()) {
+    ctx.error(f[2].loc, "thermal expansion of a general beam section is not supported yet");
+    return false;
+  }
+  sec.youngs_modulus = *e;
+  sec.shear_modulus = *g;
+  return true;
+}
+
+const ShapeSpec* find_shape(std::string_view name) {
+  for (const ShapeSpec& s : kShapes)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+void read_section(KeywordContext& ctx, bool general) {
+  if (ctx.has("OFFSET1") || ctx.has("OFFSET2")) {
+    ctx.error_param(ctx.has("OFFSET1") ? "OFFSET1" : "OFFSET2",
+                    "beam offsets (CalculiX's OFFSET1/OFFSET2) are not supported yet");
+    return;
+  }
+  const std::string name = general ? (ctx.has("SECTION") ? ctx.name_value("SECTION") : "GENERAL")
+                                   : ctx.name_value("SECTION");
+  const ShapeSpec* spec = find_shape(name);
+  if (!spec || (spec->shape == Shape::General) != general) {
+    ctx.error_param("SECTION", fmt::format("SECTION={} is not supported yet (expected {})", name,
+                                           general ? "GENERAL" : "RECT, CIRC or PIPE"));
+    return;
+  }
+  model::BeamSection sec;
+  sec.elset = ctx.name_value("ELSET");
+  sec.material = general ? std::string() : ctx.name_value("MATERIAL");
+  sec.shape = spec->shape;
+  sec.loc = ctx.keyword.loc;
+  sec.n1_loc = ctx.keyword.loc;
+  const std::size_t n_lines = general ? 3 : 2;
+  if (ctx.data.size() > n_lines) {
+    ctx.error(ctx.data[n_lines].loc, fmt::format("expected at most {} data lines", n_lines));
+    return;
+  }
+  if (!read_dims(ctx, ctx.data[0], *spec, sec)) return;
+  if (ctx.data.size() > 1 && !read_n1(ctx, ctx.data[1], sec)) return;
+  if (general) {
+    if (ctx.data.size() < 3) {
+      ctx.error(ctx.data.back().loc, "a general beam section needs a third data line: E, G");
+      return;
+    }
+    if (!read_moduli(ctx, ctx.data[2], sec)) return;
+  }
+  ctx.mesh().beam_sections.push_back(std::move(sec));
+  ctx.state.open_parent = general ? "*BEAM GENERAL SECTION" : "*BEAM SECTION";  // its *TRANSVERSE SHEAR STIFFNESS
+}
+
+void beam_section(KeywordContext& ctx) { read_section(ctx, false); }
+void beam_general_section(KeywordContext& ctx) { read_section(ctx, true); }
+
+// *TRANSVERSE SHEAR STIFFNESS under a beam section: K23, K13[, slenderness compensation].
+void transverse_shear_stiffness(KeywordContext& ctx) {
+  auto& sections = ctx.mesh().beam_sections;
+  if (sections.empty()) return;  // the section itself was refused
+  std::vector<Field> f;
+  split_fields(ctx.data[0], f);
+  if (!ctx.check_count(f, ctx.data[0], 1, 3, "K23, K13[, slenderness compensation factor]")) return;
+  model::BeamSection& sec = sections.back();
+  const char* names[] = {"K23", "K13", "slenderness compensation factor"};
+  std::optional<double>* slots[] = {&sec.k23, &sec.k13, &sec.slenderness_compensation};
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f[i].empty()) continue;
+    auto v = ctx.real(f[i], names[i]);
+    if (!v) return;
+    if (*v < 0 || (i < 2 && *v == 0)) {
+      ctx.error(f[i].loc, fmt::format("{} must be positive, found {:g}", names[i], *v));
+      return;
+    }
+    *slots[i] = *v;
+  }
+  if (ctx.data.size() > 1) ctx.error(ctx.data[1].loc, "expected one data line");
+}
+
+}  // namespace
+
+void add_beam_section_keywords(std::vector<KeywordSpec>& t) {
+  t.push_back({"*BEAM SECTION", kMeshScopes,
+               {{"ELSET", ValueKind::Required, ValueType::Text, {}, true},
+                {"MATERIAL", ValueKind::Required, ValueType::Text, {}, true},
+                {"SECTION", ValueKind::Required, ValueType::Text, {}, true},
+                {"POISSON", ValueKind::Required, ValueType::Real},
+                {"TEMPERATURE", ValueKind::Required, ValueType::Choice, {"GRADIENTS", "VALUES"}},
+                {"OFFSET1", ValueKind::Required, ValueType::Real}, {"OFFSET2", ValueKind::Required, ValueType::Real}},
+               DataLines::Required, beam_section});
+  t.back().numbers_from = 0;
+  t.push_back({"*BEAM GENERAL SECTION", kMeshScopes,
+               {{"ELSET", ValueKind::Required, ValueType::Text, {}, true},
+                {"SECTION", ValueKind::Required, ValueType::Text},
+                {"DENSITY", ValueKind::Required, ValueType::Real},
+                {"POISSON", ValueKind::Required, ValueType::Real},
+                {"ZERO", ValueKind::Required, ValueType::Real}},
+               DataLines::Required, beam_general_section});
+  t.back().numbers_from = 0;
+  t.push_back({"*TRANSVERSE SHEAR STIFFNESS", kMeshScopes, {}, DataLines::Required, transverse_shear_stiffness,
+               {"*BEAM SECTION", "*BEAM GENERAL SECTION"}});
+  t.back().numbers_from = 0;
+}
+
+}  // namespace inpact::parser

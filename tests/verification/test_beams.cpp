@@ -1,0 +1,103 @@
+// Beam cantilevers (decks/verification/beam_cantilever_*.inp, gen_beams.py) against the closed
+// forms of a Timoshenko cantilever with Abaqus's transverse shear stiffness, and the reactions
+// against the loads.
+//
+// L = 10, RECT a = 0.3 along n1 = y, b = 0.2 along n2 = z: A = 0.06, I22 = b a³/12 = 4.5e-4
+// (bending in the x–y plane), I11 = a b³/12 = 2e-4 (x–z plane), J from St. Venant's series;
+// E = 2e5, G = E/2.6, shear K = 0.85 G A scaled by f = 1/(1 + ξ·0.25·h²A/(12 I)) (ξ = 1 for B31,
+// 1e-4 for B32, h the element length). Tip deflection under P:
+//   B32: δ = PL³/(3EI) + PL/(fK)       (quadratic Timoshenko at two points: nodally exact)
+//   B31: δ = PL³/(3EI) + PL/(fK) − PLh²/(12EI)
+// — one point makes the linear element too stiff in bending by 1/(4N²) of PL³/(3EI) (one
+// element, shear-rigid: γ = 0 at the midpoint gives u = θL/2 and δ = PL³/(4EI)); Abaqus's
+// slenderness factor adds the shear flexibility 0.25·h²/(12kGI) that offsets most of it. B31
+// converges like h².
+// The tip rotation PL²/(2EI) and the twist TL/(GJ) are exact for both. Round-off: 1e-9.
+#include "solver/elements/beam_section.hpp"
+#include "verification_fixture.hpp"
+
+namespace inpact::verification {
+namespace {
+
+constexpr double kL = 10.0, kE = 2.0e5, kG = kE / 2.6, kA = 0.06, kI22 = 4.5e-4, kI11 = 2.0e-4;
+
+double torsion_constant() {
+  model::BeamSection s;
+  s.dims = {0.3, 0.2};
+  return solver::elements::beam_properties(s, kE, 0.3).torsion;
+}
+
+double tip_deflection(double P, double I, double h, bool linear) {
+  const double f = 1.0 / (1.0 + (linear ? 1.0 : 1e-4) * 0.25 * h * h * kA / (12.0 * I));
+  return P * kL * kL * kL / (3 * kE * I) + P * kL / (f * 0.85 * kG * kA) +
+         (linear ? -P * kL * h * h / (12 * kE * I) : 0.0);
+}
+
+std::size_t row_of(const Run& r, std::int64_t label) {
+  return static_cast<std::size_t>(*r.model().mesh.nodes.index.find(0, label));
+}
+
+struct Case {
+  const char* deck;
+  int elements;
+  bool linear;
+  std::int64_t tip;
+};
+
+TEST(Beams, CantileverTipDeflectionsRotationsAndTwistMatchTheClosedForms) {
+  for (const Case& c : {Case{"beam_cantilever_b31_10.inp", 10, true, 11}, Case{"beam_cantilever_b31_40.inp", 40, true, 41},
+                        Case{"beam_cantilever_b32_5.inp", 5, false, 11}}) {
+    const auto r = run_deck(deck_path(c.deck));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const double h = kL / c.elements;
+    const std::size_t tip = row_of(*r, c.tip);
+    const solver::Frame& y = *r->capture.of_step(1).back();
+    const solver::Frame& z = *r->capture.of_step(2).back();
+    const solver::Frame& t = *r->capture.of_step(3).back();
+    const double dy = tip_deflection(1.0, kI22, h, c.linear), dz = tip_deflection(2.0, kI11, h, c.linear);
+    EXPECT_NEAR(nodal(y, "U", tip, 1), dy, 1e-9 * dy) << c.deck;
+    EXPECT_NEAR(nodal(y, "UR", tip, 2), kL * kL / (2 * kE * kI22), 1e-9 * kL * kL / (2 * kE * kI22)) << c.deck;
+    EXPECT_NEAR(nodal(z, "U", tip, 2), dz, 1e-9 * dz) << c.deck;
+    EXPECT_NEAR(nodal(z, "UR", tip, 1), -2 * kL * kL / (2 * kE * kI11), 1e-9 * kL * kL / (kE * kI11)) << c.deck;
+    const double twist = 5.0 * kL / (kG * torsion_constant());
+    EXPECT_NEAR(nodal(t, "UR", tip, 0), twist, 1e-9 * twist) << c.deck;
+    report(std::string(c.deck) + ": tip deflection / Euler-Bernoulli", nodal(y, "U", tip, 1) / (kL * kL * kL / (3 * kE * kI22)));
+    // The root's reactions balance the tip loads: RF2 = −1, RM3 = −L·1; RF3 = −2, RM2 = +L·2; RM1 = −5.
+    const std::size_t root = row_of(*r, 1);
+    EXPECT_NEAR(nodal(y, "RF", root, 1), -1.0, 1e-9) << c.deck;
+    EXPECT_NEAR(nodal(y, "RM", root, 2), -kL, 1e-9 * kL) << c.deck;
+    EXPECT_NEAR(nodal(z, "RF", root, 2), -2.0, 1e-9) << c.deck;
+    EXPECT_NEAR(nodal(z, "RM", root, 1), 2 * kL, 1e-9 * kL) << c.deck;
+    EXPECT_NEAR(nodal(t, "RM", root, 0), -5.0, 1e-9) << c.deck;
+  }
+}
+
+// Section forces at the integration points: the shear is the load everywhere and the moment
+// P (L − x) at the point (exact at B31's midpoint and at B32's Gauss points), the torque T.
+TEST(Beams, SectionForcesAreTheStaticsOfTheCantilever) {
+  for (const Case& c : {Case{"beam_cantilever_b31_10.inp", 10, true, 11}, Case{"beam_cantilever_b32_5.inp", 5, false, 11}}) {
+    const char* deck = c.deck;
+    const auto r = run_deck(deck_path(deck));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::Frame& y = *r->capture.of_step(1).back();
+    const solver::Frame& t = *r->capture.of_step(3).back();
+    const auto* sf = field(y, "SF");
+    const auto* sm = field(y, "SM");
+    const auto* torque = field(t, "SM");
+    ASSERT_TRUE(sf && sm && torque);
+    ASSERT_EQ(sf->component_labels.size(), 3u);
+    const double h = kL / c.elements, gauss = 1.0 / std::sqrt(3.0);
+    for (std::size_t i = 0; i < sm->elements.size(); ++i) {
+      // The point's x: B31's midpoint, B32's Gauss points ∓1/√3 of the half-length.
+      const double x = (static_cast<double>(sm->elements[i]) - 0.5) * h +
+                       (c.linear ? 0.0 : (sm->ip[i] == 1 ? -gauss : gauss) * h / 2);
+      EXPECT_NEAR(sf->values[3 * i + 2], 1.0, 1e-9) << deck << " SF3 = V1 at point " << i;
+      EXPECT_NEAR(sf->values[3 * i + 0], 0.0, 1e-9) << deck;
+      EXPECT_NEAR(sm->values[3 * i + 1], kL - x, 1e-9 * kL) << deck << " SM2 = P (L − x)";
+      EXPECT_NEAR(torque->values[3 * i + 2], 5.0, 1e-9) << deck << " SM3 = T";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace inpact::verification
