@@ -3,11 +3,12 @@
 
 A cantilever along x, L = 10, built in at x = 0 (ENCASTRE), RECT 0.3 (along n1 = y) x 0.2 (along
 n2 = z), E = 2e5, nu = 0.3; at the tip P2 = 1 along y, P3 = 2 along z and a torque T = 5 about x,
-each in its own step so that each answer stands alone. Run: python3 gen_beams.py (in this folder).
+each in its own step so that each answer stands alone; then gravity alone (GRAV 9810 along y,
+rho = 7.8e-9: q = rho g A per length). Run: python3 gen_beams.py (in this folder).
 """
 
 HEAD = """*HEADING
-Cantilever of {n} {etype} beams, L = 10, RECT 0.3 x 0.2, n1 = y: tip loads along y and z and a torque, one step each.
+Cantilever of {n} {etype} beams, L = 10, RECT 0.3 x 0.2, n1 = y: tip loads along y and z, a torque, gravity, one step each.
 ** Closed forms in tests/verification/test_beams.cpp (Timoshenko beam with Abaqus's slenderness-compensated
 ** transverse shear stiffness; the torsion constant of the rectangle from St. Venant's series).
 """
@@ -24,7 +25,7 @@ def deck(etype, n):
         first = e * (nodes_per - 1) + 1
         lines.append(", ".join(str(k) for k in [e + 1] + list(range(first, first + nodes_per))))
     lines += [f"*NSET, NSET=TIP\n{n_nodes}", "*NSET, NSET=ROOT\n1",
-              "*MATERIAL, NAME=STEEL", "*ELASTIC", "200000., 0.3",
+              "*MATERIAL, NAME=STEEL", "*ELASTIC", "200000., 0.3", "*DENSITY", "7.8e-9",
               "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT", "0.3, 0.2", "0., 1., 0.",
               "*BOUNDARY", "ROOT, ENCASTRE"]
     for name, dof, value in (("Y", 2, 1.0), ("Z", 3, 2.0), ("TORQUE", 4, 5.0)):
@@ -32,6 +33,8 @@ def deck(etype, n):
                   "*NODE PRINT, NSET=TIP", "U, UR", "*NODE PRINT, NSET=ROOT", "RF, RM",
                   "*EL PRINT, ELSET=BEAM", "SF, SM", "*OUTPUT, FIELD", "*NODE OUTPUT", "U, UR, RF, RM", "*ELEMENT OUTPUT",
                   "SF, SM", "*END STEP"]
+    lines += ["*STEP, NAME=GRAVITY", "*STATIC", "*CLOAD, OP=NEW", "*DLOAD", "BEAM, GRAV, 9810., 0., 1., 0.",
+              "*NODE PRINT, NSET=TIP", "U, UR", "*END STEP"]
     return "\n".join(lines) + "\n"
 
 

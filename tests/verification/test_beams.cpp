@@ -101,3 +101,60 @@ TEST(Beams, SectionForcesAreTheStaticsOfTheCantilever) {
 
 }  // namespace
 }  // namespace inpact::verification
+
+namespace inpact::verification {
+namespace {
+
+// Contact through a beam's nodes (decks/verification/beam_on_block_b31.inp): the block's bottom
+// carries the 70 pushed into the beam's middle node (balance, 1e-9), the two halves of the beam
+// bend alike (symmetry, 1e-9 of the largest deflection) and its ends lift off the block.
+TEST(Beams, ABeamPressedOnABlockThroughItsNodesPassesTheLoadAndBends) {
+  const auto r = run_deck(deck_path("beam_on_block_b31.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const solver::Frame& f = r->capture.last();
+  double bottom = 0.0;
+  for (std::int32_t n : nset(r->model(), "BOTTOM")) bottom += nodal(f, "RF", static_cast<std::size_t>(n), 2);
+  EXPECT_NEAR(bottom, 70.0, 1e-9 * 70.0);
+  const double middle = nodal(f, "U", row_of(*r, 1003), 2);
+  EXPECT_LT(middle, 0.0);
+  for (std::int64_t k : {1, 2, 3})
+    EXPECT_NEAR(nodal(f, "U", row_of(*r, 1003 - k), 2), nodal(f, "U", row_of(*r, 1003 + k), 2), 1e-9 * std::abs(middle));
+  for (std::int64_t end : {1000, 1006}) EXPECT_GT(nodal(f, "COPEN", row_of(*r, end), 0), 1e-3) << "end " << end;
+  report("beam on block: middle node deflection", middle);
+}
+
+}  // namespace
+}  // namespace inpact::verification
+
+namespace inpact::verification {
+namespace {
+
+// Gravity along y on the cantilevers' fourth step: q = ρ g A per length, tip deflection
+// qL⁴/(8EI22) + qL²/(2 f K13) and rotation qL³/(6EI22). B32 reproduces both (quadratic
+// interpolation with a consistent load: measured 1e-9); B31 converges like h² (its 1/(4N²)-type
+// stiffening and its one-point load: deflection 2.5e-3 and rotation 5.0e-3 off at ten
+// elements, 1.6e-4 and 3.1e-4 at forty).
+TEST(Beams, GravityOnTheCantileverMatchesTheUniformLoadClosedForm) {
+  const double q = 7.8e-9 * 9810.0 * kA;
+  const double f = 1.0 / (1.0 + 1e-4 * 0.25 * 4.0 * kA / (12.0 * kI22));
+  const double tip = q * std::pow(kL, 4) / (8 * kE * kI22) + q * kL * kL / (2 * f * 0.85 * kG * kA);
+  const double turn = q * std::pow(kL, 3) / (6 * kE * kI22);
+  struct Tolerance {
+    const char* deck;
+    double deflection, rotation;
+  };
+  for (const auto& [deck, tol, tol_turn] : {Tolerance{"beam_cantilever_b32_5.inp", 1e-9, 1e-9},
+                                            Tolerance{"beam_cantilever_b31_10.inp", 3e-3, 6e-3},
+                                            Tolerance{"beam_cantilever_b31_40.inp", 2e-4, 4e-4}}) {
+    const auto r = run_deck(deck_path(deck));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::Frame& g = *r->capture.of_step(4).back();
+    const std::size_t end = row_of(*r, std::string_view(deck).find("b31_40") != std::string_view::npos ? 41 : 11);
+    EXPECT_NEAR(nodal(g, "U", end, 1), tip, tol * tip) << deck;
+    EXPECT_NEAR(nodal(g, "UR", end, 2), turn, tol_turn * turn) << deck;
+    report(std::string(deck) + ": gravity tip deflection relative error", nodal(g, "U", end, 1) / tip - 1);
+  }
+}
+
+}  // namespace
+}  // namespace inpact::verification
