@@ -77,6 +77,12 @@ void add_beam_rotation_nodes(model::Model& m) {
     auto& l = last_label[mesh.nodes.instance[n]];
     l = std::max(l, mesh.nodes.labels[n]);
   }
+  // A beam cut by a pre-tension section: the copy turns with the original (the cut opens along
+  // the axis only), which comes first by row.
+  std::map<std::int32_t, std::int32_t> original_of;
+  for (const model::PretensionSection& s : m.pretension_sections)
+    if (s.element >= 0)
+      for (const auto& [orig, copy] : s.node_pairs) original_of[copy] = orig;
   std::size_t added = 0;
   const std::size_t n_nodes = mesh.nodes.size();
   for (std::size_t n = 0; n < n_nodes; ++n) {
@@ -84,6 +90,10 @@ void add_beam_rotation_nodes(model::Model& m) {
     const auto node = static_cast<std::int32_t>(n);
     if (auto it = existing.find(node); it != existing.end()) {
       m.beam_rotations.push_back({node, it->second});
+      continue;
+    }
+    if (auto it = original_of.find(node); it != original_of.end() && existing.count(it->second)) {
+      m.beam_rotations.push_back({node, existing.at(it->second)});
       continue;
     }
     const std::int32_t inst = mesh.nodes.instance[n];
@@ -94,6 +104,7 @@ void add_beam_rotation_nodes(model::Model& m) {
     mesh.nodes.instance.push_back(inst);
     mesh.nodes.index.insert(inst, label, row);
     m.beam_rotations.push_back({node, row});
+    existing[node] = row;
     ++added;
   }
   if (added)

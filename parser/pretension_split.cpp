@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "model/beam_section_area.hpp"
 #include "model/element_types.hpp"
 #include "model/mesh_queries.hpp"
 #include "rotation_nodes.hpp"
@@ -179,8 +180,9 @@ bool split_section(model::Model& m, Diagnostics& diags, model::PretensionSection
   return true;
 }
 
-/// ELEMENT= (a two-node truss, checked): the truss is cut at its second node, whose copy the truss alone uses; the normal
-/// is the truss's axis from its first node to its second (the bolt's tension positive).
+/// ELEMENT= (a two-node truss or beam, checked): the element is cut at its second node, whose copy it alone uses; the
+/// normal is its axis from its first node to its second (the bolt's tension positive). A beam's copy shares the
+/// original's rotations (beam_nodes.cpp): the cut opens along the axis only.
 void split_truss_section(model::Model& m, model::PretensionSection& s, bool cut) {
   model::Mesh& mesh = m.mesh;
   const auto e = static_cast<std::size_t>(s.element);
@@ -191,6 +193,9 @@ void split_truss_section(model::Model& m, model::PretensionSection& s, bool cut)
   for (const model::SolidSection& sec : mesh.sections)
     if (std::binary_search(mesh.elsets.at(sec.elset).rows.begin(), mesh.elsets.at(sec.elset).rows.end(), s.element))
       s.area = sec.thickness;  // a truss section's area
+  for (const model::BeamSection& sec : mesh.beam_sections)
+    if (std::binary_search(mesh.elsets.at(sec.elset).rows.begin(), mesh.elsets.at(sec.elset).rows.end(), s.element))
+      s.area = model::section_area(sec);
   if (!cut) return;
   const std::int32_t b = nodes[1];
   const std::int32_t row = add_node_beside(mesh, b);
@@ -209,10 +214,11 @@ void split_pretension_sections(model::Model& m, Diagnostics& diags) {
   for (model::PretensionSection& s : m.pretension_sections) {
     if (s.element >= 0) {
       const auto& type = model::element_type(m.mesh.elements.type[static_cast<std::size_t>(s.element)]);
-      if (type.family != model::ElementFamily::Truss || type.n_nodes != 2) {
+      const bool line = type.family == model::ElementFamily::Truss || model::is_beam(type);
+      if (!line || type.n_nodes != 2) {
         diags.error(s.surface_loc, kKeyword,
-                    fmt::format("element {} is a {}; ELEMENT= takes a two-node truss (T2D2, T3D2), a solid fastener "
-                                "is cut with SURFACE=",
+                    fmt::format("element {} is a {}; ELEMENT= takes a two-node truss or beam (T2D2, T3D2, B31), a "
+                                "solid fastener is cut with SURFACE=",
                                 m.mesh.elements.labels[static_cast<std::size_t>(s.element)], type.name));
         continue;
       }

@@ -19,6 +19,7 @@
   pretension_joint_bolt.inp       the bolt alone, its section held (u = 0), pulled by pressure on the head's
                                   and the nut's clamping faces: k_b = F / (change of their distance);
   pretension_joint_plates.inp     the plates alone, pressed together on the same faces: k_c.
+  pretension_beam.inp             the same with a B31 bolt (CIRC of area 1, its lower end's rotations held).
   pretension_truss.inp            a T3D2 bolt (A = 1) along the axis of a C3D8 column 1 x 1 x 4, from
                                   its base centre to its top centre, cut by ELEMENT=. Step 1: F = 1000 on
                                   the pre-tension node: the truss carries 1000, base reactions sum to 0;
@@ -27,6 +28,7 @@
 Pure standard-library Python.
 """
 import argparse
+import math
 import os
 
 E, NU = 210000.0, 0.3
@@ -233,36 +235,42 @@ def joint_plates():
     return out
 
 
-def truss():
-    """The column with its truss bolt (gen_verification's deck writer and brick grid)."""
+def truss(beam=False):
+    """The column with its truss bolt (gen_verification's deck writer and brick grid); beam: the bolt a B31
+    (CIRC of area 1) whose lower end's rotations are held (its upper end is a hinge on the column's node)."""
     from gen_verification import Deck, grid_hex, select
     coords, conn = grid_hex(2, 2, 8, (0, 0, 0), (1, 1, 4), False)[:2]
     eps = 1e-9
     centre = lambda z: next(n for n, x in coords.items() if abs(x[0] - 0.5) < eps and abs(x[1] - 0.5) < eps
                             and abs(x[2] - z) < eps)
     p_node = max(coords) + 1
-    d = Deck("A column clamped by a T3D2 bolt along its axis, pretensioned through ELEMENT=",
-             ["Reference: step 1, the truss force S11 A = 1000 (the CLOAD on the pre-tension node), RF1 there",
+    kind = "B31" if beam else "T3D2"
+    d = Deck(f"A column clamped by a {kind} bolt along its axis, pretensioned through ELEMENT=",
+             ["Reference: step 1, the bolt force (S11 A, a beam's SF1) = 1000 (the CLOAD on the pre-tension node), RF1 there",
               "reports it, and the base reactions sum to zero (the bolt and column balance each other);",
               "step 2, the node FIXED and the top face pulled up by 400: the bolt force RF1 = S11 A again, and",
               "the base carries the 400."])
     coords[p_node] = (0.5, 0.5, 5.0)
     d.nodes(coords, 3)
     d.elements("C3D8", "COLUMN", conn)
-    d.elements("T3D2", "BOLT", [[centre(0.0), centre(4.0)]], first=len(conn) + 1)
+    d.elements(kind, "BOLT", [[centre(0.0), centre(4.0)]], first=len(conn) + 1)
     d.nset("BASE", select(coords, lambda x: abs(x[2]) < eps))
     top = select(coords, lambda x: abs(x[2] - 4) < eps)
     d.nset("TOP", top)
     d.nset("P", [p_node])
-    d.add("*SOLID SECTION, ELSET=COLUMN, MATERIAL=STEEL", "*SOLID SECTION, ELSET=BOLT, MATERIAL=STEEL", "1.",
-          "*MATERIAL, NAME=STEEL", "*ELASTIC", "210000., 0.3")
+    section = (["*BEAM SECTION, ELSET=BOLT, MATERIAL=STEEL, SECTION=CIRC", f"{(1 / math.pi) ** 0.5:.17g}", "1., 0., 0."]
+               if beam else ["*SOLID SECTION, ELSET=BOLT, MATERIAL=STEEL", "1."])
+    d.add("*SOLID SECTION, ELSET=COLUMN, MATERIAL=STEEL", *section, "*MATERIAL, NAME=STEEL", "*ELASTIC", "210000., 0.3")
     d.add("*PRE-TENSION SECTION, ELEMENT=BOLT, NODE=P")
     d.add("*BOUNDARY", "BASE, 3, 3", f"{select(coords, lambda x: x[2] == 0 and x[0] == 0 and x[1] == 0)[0]}, 1, 2",
           f"{select(coords, lambda x: x[2] == 0 and x[0] == 1 and x[1] == 0)[0]}, 2, 2")
+    if beam:
+        d.add(f"{centre(0.0)}, 4, 6")
+    output = "SF" if beam else "S"
     d.add("*STEP", "*STATIC", "*CLOAD", "P, 1, 1000.")
-    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT, ELSET=BOLT", "S", "*END STEP")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT, ELSET=BOLT", output, "*END STEP")
     d.add("*STEP", "*STATIC", "*BOUNDARY, FIXED", "P, 1, 1", "*CLOAD", f"TOP, 3, {400.0 / len(top):.17g}")
-    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT, ELSET=BOLT", "S", "*END STEP")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT, ELSET=BOLT", output, "*END STEP")
     return d.lines
 
 
@@ -272,7 +280,7 @@ def main():
     args = ap.parse_args()
     for name, lines in [("pretension_bar.inp", bar()), ("pretension_joint.inp", joint()),
                         ("pretension_joint_bolt.inp", joint_bolt()), ("pretension_joint_plates.inp", joint_plates()),
-                        ("pretension_truss.inp", truss())]:
+                        ("pretension_truss.inp", truss()), ("pretension_beam.inp", truss(beam=True))]:
         with open(os.path.join(args.out, name), "w") as f:
             f.write("\n".join(lines) + "\n")
 

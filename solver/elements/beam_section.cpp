@@ -4,6 +4,8 @@
 #include <numbers>
 #include <utility>
 
+#include "model/beam_section_area.hpp"
+
 namespace inpact::solver::elements {
 
 namespace {
@@ -39,27 +41,24 @@ BeamProperties beam_properties(const model::BeamSection& section, double youngs_
   p.youngs_modulus = youngs_modulus;
   p.shear_modulus = youngs_modulus / (2.0 * (1.0 + poissons_ratio));
   const double pi = std::numbers::pi;
+  p.area = model::section_area(section);
   switch (section.shape) {
     case Shape::Rect:
-      p.area = d[0] * d[1];
       p.i11 = d[0] * d[1] * d[1] * d[1] / 12.0;
       p.i22 = d[1] * d[0] * d[0] * d[0] / 12.0;
       p.torsion = rectangle_torsion(d[0], d[1]);
       break;
     case Shape::Circ:
-      p.area = pi * d[0] * d[0];
       p.i11 = p.i22 = pi * std::pow(d[0], 4) / 4.0;
       p.torsion = 2.0 * p.i11;
       break;
     case Shape::Pipe: {
       const double inner = d[0] - d[1];
-      p.area = pi * (d[0] * d[0] - inner * inner);
       p.i11 = p.i22 = pi * (std::pow(d[0], 4) - std::pow(inner, 4)) / 4.0;
       p.torsion = 2.0 * p.i11;
       break;
     }
     case Shape::General:
-      p.area = d[0];
       p.i11 = d[1];
       p.i22 = d[3];
       p.torsion = d[4];

@@ -230,5 +230,27 @@ TEST(Pretension, TrussBoltCutByElementCarriesTheSectionForce) {
   }
 }
 
+// The same column with a B31 bolt (decks/verification/pretension_beam.inp): the cut opens along
+// the axis only (the copy turns with the original), the beam's axial force SF1 is the section
+// force RF1 of the pre-tension node, and it equals the truss bolt's in both steps (same EA, a
+// bolt that only stretches). Tolerance 1e-10 of the 1000.
+TEST(Pretension, BeamBoltCutByElementCarriesTheSectionForceOfTheTrussBolt) {
+  const auto beam = run_deck(deck_path("pretension_beam.inp"));
+  const auto truss = run_deck(deck_path("pretension_truss.inp"));
+  ASSERT_TRUE(beam->outcome.completed) << beam->outcome.message;
+  ASSERT_TRUE(truss->outcome.completed) << truss->outcome.message;
+  const std::size_t p = static_cast<std::size_t>(node_row(beam->model(), 82));
+  for (int step : {1, 2}) {
+    const solver::Frame& f = *beam->capture.of_step(step).back();
+    const solver::Frame& t = *truss->capture.of_step(step).back();
+    const auto* sf = field(f, "SF");
+    ASSERT_TRUE(sf != nullptr);
+    const double rf = nodal(f, "RF", p, 0);
+    EXPECT_NEAR(sf->values[0], rf, 1e-10 * 1000.0) << "step " << step;
+    EXPECT_NEAR(rf, nodal(t, "RF", p, 0), 1e-10 * 1000.0) << "step " << step;
+    report("pretension beam step " + std::to_string(step) + ": RF1(P)", rf);
+  }
+}
+
 }  // namespace
 }  // namespace inpact::verification

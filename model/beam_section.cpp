@@ -1,0 +1,18 @@
+#include "beam_section_area.hpp"
+
+#include <numbers>
+
+namespace inpact::model {
+
+double section_area(const BeamSection& s) {
+  const auto& d = s.dims;
+  switch (s.shape) {
+    case BeamSection::Shape::Rect: return d[0] * d[1];
+    case BeamSection::Shape::Circ: return std::numbers::pi * d[0] * d[0];
+    case BeamSection::Shape::Pipe: return std::numbers::pi * (d[0] * d[0] - (d[0] - d[1]) * (d[0] - d[1]));
+    case BeamSection::Shape::General: return d[0];
+  }
+  return 0.0;
+}
+
+}  // namespace inpact::model
