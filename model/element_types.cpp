@@ -98,6 +98,7 @@ constexpr ElementTypeInfo kTypes[] = {
     {"B31", F::Beam, I::Reduced, 3, 2, 1, {}},
     {"B32", F::Beam, I::Reduced, 3, 3, 2, {}},
     {"B32R", F::Beam, I::Reduced, 3, 3, 2, {}},
+    {"B33", F::Beam, I::Full, 3, 2, 3, {}},  // Euler–Bernoulli, cubic (Hermite) deflection
     {"R3D3", F::Rigid, I::Full, 3, 3, 1, kRigidTri},
     {"R3D4", F::Rigid, I::Full, 3, 4, 1, kRigidQuad},
     {"R2D2", F::Rigid, I::Full, 2, 2, 1, kRigidLine},

@@ -15,7 +15,7 @@ enum class ElementFamily : std::uint8_t {
   Truss,        ///< T2D2, T3D2, T3D3: axial force only, cross-section area from *SOLID SECTION
   Spring,       ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
   Rigid,        ///< R3D3, R3D4, R2D2, RAX2: no stiffness, a surface of a *RIGID BODY (faces SNEG, SPOS)
-  Beam          ///< B31, B32 (B32R): shear-flexible beams in space, 6 DOFs per node, *BEAM SECTION
+  Beam          ///< B31, B32 (B32R) shear-flexible, B33 Euler–Bernoulli: beams in space, 6 DOFs a node
 };
 
 enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
@@ -36,7 +36,7 @@ struct ElementTypeInfo {
   Integration integration;
   std::uint8_t dim;          ///< 2 or 3 (coordinates used); 0 for springs, which take the model's
   std::uint8_t n_nodes;
-  std::uint8_t order;        ///< 1 or 2
+  std::uint8_t order;        ///< 1 or 2 (3: B33's cubic deflection)
   std::span<const FaceDef> faces;  ///< faces[0] is S1
   /// Hybrid (…H): mixed displacement–pressure, the pressure condensed in the element
   /// (solver/elements/hybrid.hpp); the rest of the type is the standard element's.
@@ -50,7 +50,7 @@ inline bool is_continuum(const ElementTypeInfo& t) {
          t.family != ElementFamily::Beam;
 }
 
-/// B31, B32: elements with rotations at their nodes (model::BeamNodeRotation).
+/// B31, B32, B33: elements with rotations at their nodes (model::BeamNodeRotation).
 inline bool is_beam(const ElementTypeInfo& t) { return t.family == ElementFamily::Beam; }
 
 /// R3D3, R3D4, R2D2, RAX2: nodes that follow their *RIGID BODY, faces for contact, no stiffness.

@@ -30,7 +30,7 @@ void check_beam_section(const model::Model& m, const model::BeamSection& sec, Di
   for (std::int32_t e : set->second.rows) {
     const auto& type = model::element_type(el.type[static_cast<std::size_t>(e)]);
     if (!model::is_beam(type)) {
-      diags.error(sec.loc, keyword, fmt::format("element {} ({}) in set {} is not a beam element (B31, B32)",
+      diags.error(sec.loc, keyword, fmt::format("element {} ({}) in set {} is not a beam element (B31, B32, B33)",
                                                 el.labels[e], type.name, sec.elset));
       return;
     }

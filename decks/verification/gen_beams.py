@@ -10,12 +10,12 @@ rho = 7.8e-9: q = rho g A per length). Run: python3 gen_beams.py (in this folder
 HEAD = """*HEADING
 Cantilever of {n} {etype} beams, L = 10, RECT 0.3 x 0.2, n1 = y: tip loads along y and z, a torque, gravity, one step each.
 ** Closed forms in tests/verification/test_beams.cpp (Timoshenko beam with Abaqus's slenderness-compensated
-** transverse shear stiffness; the torsion constant of the rectangle from St. Venant's series).
+** transverse shear stiffness, Euler-Bernoulli for B33; the torsion constant of the rectangle from St. Venant's series).
 """
 
 
 def deck(etype, n):
-    nodes_per = 2 if etype == "B31" else 3
+    nodes_per = 3 if etype == "B32" else 2
     n_nodes = n * (nodes_per - 1) + 1
     lines = [HEAD.format(n=n, etype=etype), "*NODE, NSET=ALL"]
     for i in range(n_nodes):
@@ -38,6 +38,6 @@ def deck(etype, n):
     return "\n".join(lines) + "\n"
 
 
-for etype, n in (("B31", 10), ("B31", 40), ("B32", 5)):
+for etype, n in (("B31", 10), ("B31", 40), ("B32", 5), ("B33", 2)):
     with open(f"beam_cantilever_{etype.lower()}_{n}.inp", "w") as f:
         f.write(deck(etype, n))

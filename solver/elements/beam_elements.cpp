@@ -26,6 +26,78 @@ std::array<double, 6> section_stiffness(const BeamProperties& p, const model::El
           p.youngs_modulus * p.i11, p.youngs_modulus * p.i22};
 }
 
+/// B33: Euler–Bernoulli with cubic (Hermite) deflections and linear axial displacement and
+/// twist, in the axes of its chord. Local DOFs per bending plane: (w, dw/ds) at both ends, with
+/// w1 = n1·u, dw1/ds = n2·θ (the section turns with the axis) and w2 = n2·u, dw2/ds = −n1·θ; the
+/// classical stiffness (EI/L³)[12, 6L, −12, 6L; …] in each plane. Point output at two Gauss points:
+/// M2 = EI22 w1″, M1 = −EI11 w2″, the shears from equilibrium V1 = −dM2/ds, V2 = dM1/ds.
+void compute_euler_bernoulli(const BeamProperties& p, const std::vector<TrussPoint>& pts,
+                             const std::array<Vec3, 3>& axes, std::span<const double> u, const ElementRequest& request,
+                             ElementSystem& out) {
+  const auto& [t, n1, n2] = axes;
+  const double L = pts.front().J * 2.0;  // J = L/2 of the straight chord
+  // Rows of T: the 12 local DOFs (axial a, b; twist a, b; plane 1: w, dw/ds at a, b; plane 2
+  // likewise) from the element's 12 (u_a, u_b, θ_a, θ_b).
+  std::array<std::array<double, 12>, 12> T{};
+  auto put = [&](int row, int block, const Vec3& v, double sign) {
+    for (int i = 0; i < 3; ++i) T[row][3 * block + i] = sign * v[i];
+  };
+  put(0, 0, t, 1), put(1, 1, t, 1);       // axial displacement at a, b
+  put(2, 2, t, 1), put(3, 3, t, 1);       // twist at a, b
+  put(4, 0, n1, 1), put(5, 2, n2, 1);     // plane 1 at a: w1, dw1/ds
+  put(6, 1, n1, 1), put(7, 3, n2, 1);     //             at b
+  put(8, 0, n2, 1), put(9, 2, n1, -1);    // plane 2 at a: w2, dw2/ds
+  put(10, 1, n2, 1), put(11, 3, n1, -1);  //             at b
+  std::array<double, 12> local{};
+  for (int r = 0; r < 12; ++r)
+    for (int j = 0; j < 12; ++j) local[r] += T[r][j] * u[j];
+  std::array<std::array<double, 12>, 12> k{};
+  const double ka = p.youngs_modulus * p.area / L, kt = p.shear_modulus * p.torsion / L;
+  k[0][0] = k[1][1] = ka, k[0][1] = k[1][0] = -ka;
+  k[2][2] = k[3][3] = kt, k[2][3] = k[3][2] = -kt;
+  const double bend[4][4] = {{12, 6 * L, -12, 6 * L}, {6 * L, 4 * L * L, -6 * L, 2 * L * L},
+                             {-12, -6 * L, 12, -6 * L}, {6 * L, 2 * L * L, -6 * L, 4 * L * L}};
+  const double ei[2] = {p.youngs_modulus * p.i22, p.youngs_modulus * p.i11};  // plane 1 bends about n2
+  for (int plane = 0; plane < 2; ++plane)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) k[4 + 4 * plane + i][4 + 4 * plane + j] = ei[plane] / (L * L * L) * bend[i][j];
+  std::array<double, 12> f_local{};
+  for (int r = 0; r < 12; ++r)
+    for (int j = 0; j < 12; ++j) f_local[r] += k[r][j] * local[j];
+  for (int i = 0; i < 12 && !out.internal_force.empty(); ++i)
+    for (int r = 0; r < 12; ++r) out.internal_force[i] += T[r][i] * f_local[r];
+  for (int i = 0; i < 12 && !out.stiffness.empty(); ++i)
+    for (int r = 0; r < 12; ++r) {
+      if (T[r][i] == 0.0) continue;
+      for (int q = 0; q < 12; ++q) {
+        const double krq = T[r][i] * k[r][q];
+        if (krq == 0.0) continue;
+        for (int j = 0; j < 12; ++j) out.stiffness[static_cast<std::size_t>(i * 12 + j)] += krq * T[q][j];
+      }
+    }
+  if (!request.point_output) return;
+  for (const TrussPoint& pt : pts) {
+    const double xi = pt.N[1] - pt.N[0];  // the point's ξ in [−1, 1]
+    // Second and third derivatives along s of the Hermite functions of (w_a, w'_a, w_b, w'_b).
+    const double d2[4] = {6 * xi / (L * L), (3 * xi - 1) / L, -6 * xi / (L * L), (3 * xi + 1) / L};
+    const double d3[4] = {12 / (L * L * L), 6 / (L * L), -12 / (L * L * L), 6 / (L * L)};
+    double curv1 = 0, curv2 = 0, jerk1 = 0, jerk2 = 0;  // w1″, w2″, w1‴, w2‴
+    for (int a = 0; a < 4; ++a) {
+      curv1 += d2[a] * local[4 + a], curv2 += d2[a] * local[8 + a];
+      jerk1 += d3[a] * local[4 + a], jerk2 += d3[a] * local[8 + a];
+    }
+    const double axial = (local[1] - local[0]) / L, twist = (local[3] - local[2]) / L;
+    PointResult r;
+    r.coords = pt.x;
+    r.volume = pt.weight * pt.J * p.area;
+    // SF1, SF2 = V2, SF3 = V1, SM1, SM2, SM3 (the kernel's order, beam_elements.hpp).
+    r.section = {p.youngs_modulus * p.area * axial, -ei[1] * jerk2, -ei[0] * jerk1, -ei[1] * curv2, ei[0] * curv1,
+                 p.shear_modulus * p.torsion * twist};
+    r.strain = {axial, 0.0, 0.0, -curv2, curv1, twist};
+    out.points.push_back(r);
+  }
+}
+
 }  // namespace
 
 bool beam_axes(const Vec3& tangent, const Vec3& approximate_n1, std::array<Vec3, 3>& axes) {
@@ -59,6 +131,15 @@ void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     length += p.weight * p.J;
   }
   if (out.min_jacobian <= 0.0) return;  // zero length: the caller reports it
+  if (type.integration == model::Integration::Full) {  // B33
+    std::array<Vec3, 3> axes;
+    if (!beam_axes(pts.front().tangent, section.n1, axes)) {
+      out.min_jacobian = 0.0;
+      return;
+    }
+    compute_euler_bernoulli(section, pts, axes, u, request, out);
+    return;
+  }
   const std::array<double, 6> d = section_stiffness(section, type, length);
   std::vector<double> b(static_cast<std::size_t>(6 * n_dof));
   for (const TrussPoint& p : pts) {

@@ -64,7 +64,9 @@ std::vector<std::array<double, 2>> gauss_legendre(int n) {
 std::vector<QuadraturePoint> element_rule(const model::ElementTypeInfo& type) {
   // Trusses: Gauss along the element, 1 point for two nodes, 2 for three (Abaqus's T3D3).
   // Springs: one output location, the element itself.
-  // Beams likewise: B31 at one point, B32 at two (Abaqus's reduced integration of both).
+  // Beams likewise: B31 at one point, B32 at two (Abaqus's reduced integration of both); the
+  // cubic B33 at two.
+  if (type.family == model::ElementFamily::Beam && type.integration == Integration::Full) return tensor(2, 1);
   if (type.family == model::ElementFamily::Truss || type.family == model::ElementFamily::Beam)
     return tensor(type.n_nodes - 1, 1);
   if (type.family == model::ElementFamily::Spring) return {{{0, 0, 0}, 1.0}};

@@ -1,4 +1,4 @@
-// Beam kernels B31 and B32 (solver/elements/beam_elements.hpp) and their section properties
+// Beam kernels B31, B32 and B33 (solver/elements/beam_elements.hpp) and their section properties
 // (beam_section.hpp): rigid motions without force, symmetry, and one-element closed forms
 // (axial, torsion, bending with shear) that the cantilever decks then check over a mesh.
 #include <gtest/gtest.h>
@@ -45,13 +45,12 @@ std::vector<double> rigid_motion(const std::vector<Vec3>& x, const Vec3& c, cons
   return u;
 }
 
-// A rigid motion strains nothing, in any orientation, for both elements; the stiffness is
+// A rigid motion strains nothing, in any orientation, for every beam element; the stiffness is
 // symmetric. Round-off: 1e-10 of the largest stiffness term times the motion.
 TEST(BeamElements, RigidMotionsStrainNothingAndTheStiffnessIsSymmetric) {
   const BeamProperties p = rectangle(0.3, 0.2);
   const std::vector<std::vector<Vec3>> shapes = {{{0, 0, 0}, {1.0, 2.0, 0.5}}, {{0, 0, 0}, {0.5, 1.0, 0.25}, {1.0, 2.0, 0.5}}};
-  for (const auto& x : shapes) {
-    const char* name = x.size() == 2 ? "B31" : "B32";
+  for (const auto& [name, x] : {std::pair{"B31", shapes[0]}, std::pair{"B33", shapes[0]}, std::pair{"B32", shapes[1]}}) {
     const ElementSystem sys = run(name, x, rigid_motion(x, {0.1, -0.2, 0.3}, {0.01, 0.02, -0.03}), p);
     double scale = 0.0, worst = 0.0, skew = 0.0;
     for (double k : sys.stiffness) scale = std::max(scale, std::abs(k));

@@ -12,7 +12,8 @@
 // element, shear-rigid: γ = 0 at the midpoint gives u = θL/2 and δ = PL³/(4EI)); Abaqus's
 // slenderness factor adds the shear flexibility 0.25·h²/(12kGI) that offsets most of it. B31
 // converges like h².
-// The tip rotation PL²/(2EI) and the twist TL/(GJ) are exact for both. Round-off: 1e-9.
+//   B33: δ = PL³/(3EI)                 (cubic Euler–Bernoulli: nodally exact)
+// The tip rotation PL²/(2EI) and the twist TL/(GJ) are exact for all. Round-off: 1e-9.
 #include "solver/elements/beam_section.hpp"
 #include "verification_fixture.hpp"
 
@@ -27,7 +28,8 @@ double torsion_constant() {
   return solver::elements::beam_properties(s, kE, 0.3).torsion;
 }
 
-double tip_deflection(double P, double I, double h, bool linear) {
+double tip_deflection(double P, double I, double h, bool linear, bool shear = true) {
+  if (!shear) return P * kL * kL * kL / (3 * kE * I);
   const double f = 1.0 / (1.0 + (linear ? 1.0 : 1e-4) * 0.25 * h * h * kA / (12.0 * I));
   return P * kL * kL * kL / (3 * kE * I) + P * kL / (f * 0.85 * kG * kA) +
          (linear ? -P * kL * h * h / (12 * kE * I) : 0.0);
@@ -42,11 +44,13 @@ struct Case {
   int elements;
   bool linear;
   std::int64_t tip;
+  bool shear = true;  ///< false: B33, Euler–Bernoulli
 };
 
 TEST(Beams, CantileverTipDeflectionsRotationsAndTwistMatchTheClosedForms) {
   for (const Case& c : {Case{"beam_cantilever_b31_10.inp", 10, true, 11}, Case{"beam_cantilever_b31_40.inp", 40, true, 41},
-                        Case{"beam_cantilever_b32_5.inp", 5, false, 11}}) {
+                        Case{"beam_cantilever_b32_5.inp", 5, false, 11},
+                        Case{"beam_cantilever_b33_2.inp", 2, false, 3, false}}) {
     const auto r = run_deck(deck_path(c.deck));
     ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
     const double h = kL / c.elements;
@@ -54,7 +58,7 @@ TEST(Beams, CantileverTipDeflectionsRotationsAndTwistMatchTheClosedForms) {
     const solver::Frame& y = *r->capture.of_step(1).back();
     const solver::Frame& z = *r->capture.of_step(2).back();
     const solver::Frame& t = *r->capture.of_step(3).back();
-    const double dy = tip_deflection(1.0, kI22, h, c.linear), dz = tip_deflection(2.0, kI11, h, c.linear);
+    const double dy = tip_deflection(1.0, kI22, h, c.linear, c.shear), dz = tip_deflection(2.0, kI11, h, c.linear, c.shear);
     EXPECT_NEAR(nodal(y, "U", tip, 1), dy, 1e-9 * dy) << c.deck;
     EXPECT_NEAR(nodal(y, "UR", tip, 2), kL * kL / (2 * kE * kI22), 1e-9 * kL * kL / (2 * kE * kI22)) << c.deck;
     EXPECT_NEAR(nodal(z, "U", tip, 2), dz, 1e-9 * dz) << c.deck;
@@ -75,7 +79,8 @@ TEST(Beams, CantileverTipDeflectionsRotationsAndTwistMatchTheClosedForms) {
 // Section forces at the integration points: the shear is the load everywhere and the moment
 // P (L − x) at the point (exact at B31's midpoint and at B32's Gauss points), the torque T.
 TEST(Beams, SectionForcesAreTheStaticsOfTheCantilever) {
-  for (const Case& c : {Case{"beam_cantilever_b31_10.inp", 10, true, 11}, Case{"beam_cantilever_b32_5.inp", 5, false, 11}}) {
+  for (const Case& c : {Case{"beam_cantilever_b31_10.inp", 10, true, 11}, Case{"beam_cantilever_b32_5.inp", 5, false, 11},
+                        Case{"beam_cantilever_b33_2.inp", 2, false, 3, false}}) {
     const char* deck = c.deck;
     const auto r = run_deck(deck_path(deck));
     ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
@@ -88,7 +93,7 @@ TEST(Beams, SectionForcesAreTheStaticsOfTheCantilever) {
     ASSERT_EQ(sf->component_labels.size(), 3u);
     const double h = kL / c.elements, gauss = 1.0 / std::sqrt(3.0);
     for (std::size_t i = 0; i < sm->elements.size(); ++i) {
-      // The point's x: B31's midpoint, B32's Gauss points ∓1/√3 of the half-length.
+      // The point's x: B31's midpoint, B32's and B33's Gauss points ∓1/√3 of the half-length.
       const double x = (static_cast<double>(sm->elements[i]) - 0.5) * h +
                        (c.linear ? 0.0 : (sm->ip[i] == 1 ? -gauss : gauss) * h / 2);
       EXPECT_NEAR(sf->values[3 * i + 2], 1.0, 1e-9) << deck << " SF3 = V1 at point " << i;
