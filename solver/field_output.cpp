@@ -173,14 +173,14 @@ bool point_key(const std::string& key) {
          key == "SM";
 }
 
-/// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
-/// PEEQ and PEMAG (Abaqus writes them for elements with plasticity), so an elastic model's
-/// results stay as they were.
 /// Beams make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
 bool model_has_beams(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
 }
 
+/// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
+/// PEEQ and PEMAG (Abaqus writes them for elements with plasticity), so an elastic model's
+/// results stay as they were.
 bool model_has_plasticity(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) {
     return s.material && s.material->state_size() > 0 && s.material->as_isotropic_elastic() == nullptr;
