@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include "contact/contact_surface.hpp"
 #include "contact/geometric_correction.hpp"
@@ -69,10 +70,16 @@ void write_materials(std::ostream& out, const model::Model& m) {
     if (mat.expansion) print(out, ", alpha = {:g} (from {:g})", mat.expansion->alpha, mat.expansion->zero);
     print(out, "\n");
   }
-  print(out, "Sections   {:>10}\n", m.mesh.sections.size());
+  print(out, "Sections   {:>10}\n", m.mesh.sections.size() + m.mesh.beam_sections.size());
   for (const auto& s : m.mesh.sections)
     print(out, "  solid: elset {} -> material {}{}\n", s.elset, s.material,
           s.thickness != 1.0 ? fmt::format(", thickness {:g}", s.thickness) : "");
+  static constexpr const char* kShapes[] = {"RECT", "CIRC", "PIPE", "GENERAL"};
+  for (const auto& s : m.mesh.beam_sections)
+    print(out, "  beam: elset {} -> {} {} {}, n1 ({:g}, {:g}, {:g})\n", s.elset,
+          s.material.empty() ? fmt::format("E = {:g}, G = {:g},", s.youngs_modulus, s.shear_modulus)
+                             : fmt::format("material {},", s.material),
+          kShapes[static_cast<int>(s.shape)], fmt::format("{}", fmt::join(s.dims, " x ")), s.n1[0], s.n1[1], s.n1[2]);
 }
 
 const char* discretization_name(model::ContactDiscretization d) {

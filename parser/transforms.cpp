@@ -13,24 +13,27 @@ namespace {
 
 constexpr const char* kKeyword = "*TRANSFORM";
 
-/// How the deck refers to a node's translations.
+/// How the deck refers to a node's translations (DOFs 1–3) or its rotations (4–6).
 struct NodeReferences {
-  std::vector<std::uint8_t> used;  ///< a *BOUNDARY, *CLOAD (DOFs 1–3) or *EQUATION names one
+  std::vector<std::uint8_t> used;  ///< a *BOUNDARY, *CLOAD or *EQUATION names one
   /// Only boundary conditions name them, each to zero, all three in all: the node is held in
   /// every direction, in any axes alike.
   std::vector<std::uint8_t> held_at_zero;
 };
 
-NodeReferences referenced_nodes(const model::Model& m) {
+NodeReferences referenced_nodes(const model::Model& m, int first_dof) {
+  const int last_dof = first_dof + 2;
+  const auto in_range = [&](int d) { return d >= first_dof && d <= last_dof; };
   const std::size_t n = m.mesh.nodes.size();
   std::vector<std::uint8_t> used(n, 0), dofs(n, 0), not_zero(n, 0);
   auto boundaries = [&](const std::vector<model::BoundaryBlock>& blocks) {
     for (const model::BoundaryBlock& b : blocks)
       for (const model::BoundaryEntry& e : b.entries)
-        if (e.first_dof <= 3)
+        if (e.first_dof <= last_dof && e.last_dof >= first_dof)
           for (std::int32_t node : e.nodes) {
             used[static_cast<std::size_t>(node)] = 1;
-            for (int d = e.first_dof; d <= std::min(e.last_dof, 3); ++d) dofs[static_cast<std::size_t>(node)] |= 1u << (d - 1);
+            for (int d = std::max(e.first_dof, first_dof); d <= std::min(e.last_dof, last_dof); ++d)
+              dofs[static_cast<std::size_t>(node)] |= 1u << (d - first_dof);
             if (e.value != 0.0 || b.fixed) not_zero[static_cast<std::size_t>(node)] = 1;
           }
   };
@@ -39,15 +42,32 @@ NodeReferences referenced_nodes(const model::Model& m) {
     boundaries(s.boundaries);
     for (const model::CloadBlock& c : s.cloads)
       for (const model::CloadEntry& e : c.entries)
-        if (e.dof <= 3)
+        if (in_range(e.dof))
           for (std::int32_t node : e.nodes) used[static_cast<std::size_t>(node)] = not_zero[static_cast<std::size_t>(node)] = 1;
   }
   for (const model::Equation& eq : m.equations)
     for (const auto& t : eq.terms)
-      if (t.dof <= 3) used[static_cast<std::size_t>(t.node)] = not_zero[static_cast<std::size_t>(t.node)] = 1;
+      if (in_range(t.dof)) used[static_cast<std::size_t>(t.node)] = not_zero[static_cast<std::size_t>(t.node)] = 1;
   NodeReferences r{used, std::vector<std::uint8_t>(n, 0)};
   for (std::size_t i = 0; i < n; ++i) r.held_at_zero[i] = used[i] && dofs[i] == 7 && !not_zero[i];
   return r;
+}
+
+/// Beam nodes whose rotations the deck refers to in a transform's axes: inpact has no local
+/// rotations yet, and applying them in global axes would be silently wrong.
+void check_no_local_rotations(const model::Model& m, const std::vector<std::int32_t>& transform_of, Diagnostics& diags) {
+  if (m.beam_rotations.empty()) return;
+  const NodeReferences rotations = referenced_nodes(m, 4);
+  for (const model::BeamNodeRotation& b : m.beam_rotations) {
+    const auto n = static_cast<std::size_t>(b.node);
+    const std::int32_t t = transform_of[n];
+    if (t < 0 || !rotations.used[n] || rotations.held_at_zero[n]) continue;
+    diags.error(m.transforms[static_cast<std::size_t>(t)].loc, kKeyword,
+                fmt::format("beam node {} is in this system and a boundary condition, moment or equation refers to its "
+                            "rotations (DOFs 4-6), which have no local system in inpact yet",
+                            m.mesh.nodes.labels[n]));
+    return;
+  }
 }
 
 /// Node n, referred to in its transform's axes, can have them: not a reference node (its
@@ -86,7 +106,8 @@ void finalize_transforms(model::Model& m, Diagnostics& diags) {
       }
       owner = static_cast<std::int32_t>(t);
     }
-  const NodeReferences refs = referenced_nodes(m);
+  check_no_local_rotations(m, transform_of, diags);
+  const NodeReferences refs = referenced_nodes(m, 1);
   std::vector<std::size_t> added(m.transforms.size(), 0);
   const std::size_t n_nodes = m.mesh.nodes.size();
   for (std::size_t n = 0; n < n_nodes; ++n) {

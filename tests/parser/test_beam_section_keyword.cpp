@@ -79,3 +79,20 @@ TEST(BeamSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError)
     EXPECT_TRUE(has_diagnostic(r, c.message)) << r.report();
   }
 }
+
+// A *TRANSFORM over a beam node whose rotations the deck refers to: rotations have no local
+// system yet, so a global one would be silently wrong; held at zero in all three, any axes do.
+TEST(BeamSectionKeyword, RotationsOfATransformedBeamNodeAreADeckErrorUnlessHeldAtZero) {
+  const std::string deck = kBeams + kMaterial + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.1\n"
+                           "*NSET, NSET=END\n3\n*TRANSFORM, NSET=END\n0., 1., 0., -1., 0., 0.\n*BOUNDARY\n1, ENCASTRE\n";
+  {
+    DeckDir dir;
+    auto r = dir.read(deck + "END, 5, 5, 0.01\n");
+    EXPECT_TRUE(has_diagnostic(r, "deck.inp:15:1: error: *TRANSFORM: beam node 3 is in this system and a boundary "
+                                  "condition, moment or equation refers to its rotations"))
+        << r.report();
+  }
+  DeckDir dir;
+  auto r = dir.read(deck + "END, 4, 6\n");
+  EXPECT_TRUE(r.ok()) << r.report();
+}
