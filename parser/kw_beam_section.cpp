@@ -5,8 +5,6 @@
 /// (0, 0, −1)). *BEAM GENERAL SECTION, SECTION=GENERAL: A, I11, I12, I22, J; n1; E, G. The other
 /// library shapes (BOX, I, L, HEX, TRAPEZOID, ARBITRARY, ...), the other general forms (MESHED,
 /// NONLINEAR GENERAL) and CalculiX's OFFSET1/OFFSET2 stop here with what is missing.
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include "handlers.hpp"

@@ -104,11 +104,6 @@ TEST(Beams, SectionForcesAreTheStaticsOfTheCantilever) {
   }
 }
 
-}  // namespace
-}  // namespace inpact::verification
-
-namespace inpact::verification {
-namespace {
 
 // Contact through a beam's nodes (decks/verification/beam_on_block_b31.inp): the block's bottom
 // carries the 70 pushed into the beam's middle node (balance, 1e-9), the two halves of the beam
@@ -128,11 +123,6 @@ TEST(Beams, ABeamPressedOnABlockThroughItsNodesPassesTheLoadAndBends) {
   report("beam on block: middle node deflection", middle);
 }
 
-}  // namespace
-}  // namespace inpact::verification
-
-namespace inpact::verification {
-namespace {
 
 // Gravity along y on the cantilevers' fourth step: q = ρ g A per length, tip deflection
 // qL⁴/(8EI22) + qL²/(2 f K13) and rotation qL³/(6EI22). B32 reproduces both (quadratic
