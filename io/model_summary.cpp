@@ -70,7 +70,7 @@ void write_materials(std::ostream& out, const model::Model& m) {
     if (mat.expansion) print(out, ", alpha = {:g} (from {:g})", mat.expansion->alpha, mat.expansion->zero);
     print(out, "\n");
   }
-  print(out, "Sections   {:>10}\n", m.mesh.sections.size() + m.mesh.beam_sections.size());
+  print(out, "Sections   {:>10}\n", m.mesh.sections.size() + m.mesh.beam_sections.size() + m.mesh.shell_sections.size());
   for (const auto& s : m.mesh.sections)
     print(out, "  solid: elset {} -> material {}{}\n", s.elset, s.material,
           s.thickness != 1.0 ? fmt::format(", thickness {:g}", s.thickness) : "");
@@ -80,6 +80,12 @@ void write_materials(std::ostream& out, const model::Model& m) {
           s.material.empty() ? fmt::format("E = {:g}, G = {:g},", s.youngs_modulus, s.shear_modulus)
                              : fmt::format("material {},", s.material),
           kShapes[static_cast<int>(s.shape)], fmt::format("{}", fmt::join(s.dims, " x ")), s.n1[0], s.n1[1], s.n1[2]);
+  for (const auto& s : m.mesh.shell_sections)
+    print(out, "  shell: elset {} -> material {}, {}, {}{}\n", s.elset, s.material,
+          s.nodal_thickness ? std::string("nodal thickness") : fmt::format("thickness {:g}", s.thickness),
+          s.general ? std::string("general (exact through the thickness)")
+                    : fmt::format("{} section points", s.section_points),
+          s.offset != 0.0 ? fmt::format(", offset {:g}", s.offset) : "");
 }
 
 const char* discretization_name(model::ContactDiscretization d) {

@@ -22,11 +22,12 @@ CellTypes cell_types(const model::ElementTypeInfo& t) {
   // VTK_QUADRATIC_TRIANGLE 22, VTK_QUADRATIC_QUAD 23, VTK_QUADRATIC_TETRA 24,
   // VTK_QUADRATIC_HEXAHEDRON 25; XDMF numbers from XdmfTopologyType.cpp. Trusses and springs:
   // VTK_VERTEX 1 / VTK_LINE 3 / VTK_QUADRATIC_EDGE 21 (XDMF Polyvertex 1, Polyline 2, Edge_3 34).
-  if (model::is_rigid(t)) {  // R2D2, RAX2: a line; R3D3, R3D4: a triangle, a quad
+  if (model::is_rigid(t) || model::is_shell(t)) {  // R2D2, RAX2: a line; R3D3, R3D4, S3, S4: a triangle, a quad
     switch (t.n_nodes) {
       case 2: return {3, 2, "Polyline"};
       case 3: return {5, 4, "Triangle"};
       case 4: return {9, 5, "Quadrilateral"};
+      case 8: return {23, 37, "Quadrilateral_8"};  // S8R, S8: corners then midsides, as VTK's
     }
     return {0, 0, ""};
   }
@@ -160,7 +161,7 @@ constexpr std::uint8_t kEdge3ToVtk[] = {0, 2, 1};
 }  // namespace
 
 std::span<const std::uint8_t> vtk_node_order(const model::ElementTypeInfo& type) {
-  if (model::is_rigid(type)) return {};
+  if (model::is_rigid(type) || model::is_shell(type)) return {};
   if (!model::is_continuum(type)) return type.n_nodes == 3 ? std::span<const std::uint8_t>(kEdge3ToVtk)
                                                           : std::span<const std::uint8_t>();
   if (type.dim == 3 && type.n_nodes == 6) return kWedgeToVtk;

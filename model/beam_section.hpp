@@ -1,7 +1,7 @@
 #pragma once
-/// *BEAM SECTION and *BEAM GENERAL SECTION as the deck gives them, and the rotation node each
-/// beam node gets (its DOFs 4–6). The section's area, moments of inertia and torsion constant are
-/// computed for the analysis (solver/elements/beam_section.hpp), not here.
+/// *BEAM SECTION and *BEAM GENERAL SECTION as the deck gives them. The section's area, moments
+/// of inertia and torsion constant are computed for the analysis
+/// (solver/elements/beam_section.hpp), not here.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -31,13 +31,6 @@ struct BeamSection {
   /// factor (Abaqus's default 0.25), each absent when not given.
   std::optional<double> k23, k13, slenderness_compensation;
   SourceLoc loc;
-};
-
-/// A beam node and the node inpact added to hold its rotations θ1..θ3 (a rigid body's or
-/// coupling's reference node keeps the rotation node it has).
-struct BeamNodeRotation {
-  std::int32_t node = -1;
-  std::int32_t rot_node = -1;
 };
 
 }  // namespace inpact::model

@@ -15,7 +15,8 @@ enum class ElementFamily : std::uint8_t {
   Truss,        ///< T2D2, T3D2, T3D3: axial force only, cross-section area from *SOLID SECTION
   Spring,       ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
   Rigid,        ///< R3D3, R3D4, R2D2, RAX2: no stiffness, a surface of a *RIGID BODY (faces SNEG, SPOS)
-  Beam          ///< B31, B32 (B32R) shear-flexible, B33 Euler–Bernoulli: beams in space, 6 DOFs a node
+  Beam,         ///< B31, B32 (B32R) shear-flexible, B33 Euler–Bernoulli: beams in space, 6 DOFs a node
+  Shell         ///< S3, S3R, S4, S4R, S8R, S8: conventional shells, 6 DOFs a node (faces SNEG, SPOS)
 };
 
 enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
@@ -47,11 +48,17 @@ struct ElementTypeInfo {
 /// the continuum kernels (not trusses or springs).
 inline bool is_continuum(const ElementTypeInfo& t) {
   return t.family != ElementFamily::Truss && t.family != ElementFamily::Spring && t.family != ElementFamily::Rigid &&
-         t.family != ElementFamily::Beam;
+         t.family != ElementFamily::Beam && t.family != ElementFamily::Shell;
 }
 
-/// B31, B32, B33: elements with rotations at their nodes (model::BeamNodeRotation).
+/// B31, B32, B33.
 inline bool is_beam(const ElementTypeInfo& t) { return t.family == ElementFamily::Beam; }
+
+/// S3, S3R, S4, S4R, S8R, S8.
+inline bool is_shell(const ElementTypeInfo& t) { return t.family == ElementFamily::Shell; }
+
+/// Beams and shells: elements with rotations at their nodes (model::NodeRotation).
+inline bool has_rotations(const ElementTypeInfo& t) { return is_beam(t) || is_shell(t); }
 
 /// R3D3, R3D4, R2D2, RAX2: nodes that follow their *RIGID BODY, faces for contact, no stiffness.
 inline bool is_rigid(const ElementTypeInfo& t) { return t.family == ElementFamily::Rigid; }

@@ -11,6 +11,7 @@
 
 #include "label_map.hpp"
 #include "beam_section.hpp"
+#include "shell_section.hpp"
 #include "source_loc.hpp"
 
 namespace inpact::model {
@@ -103,6 +104,9 @@ struct Mesh {
   std::vector<SolidSection> sections;
   std::vector<SpringSection> springs;
   std::vector<BeamSection> beam_sections;
+  std::vector<ShellSection> shell_sections;
+  /// *NODAL THICKNESS: a shell thickness per node row, for sections with NODAL THICKNESS.
+  std::map<std::int32_t, double> nodal_thickness;
 };
 
 }  // namespace inpact::model

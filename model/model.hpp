@@ -19,6 +19,13 @@
 
 namespace inpact::model {
 
+/// A beam or shell node and the node inpact added to hold its rotations θ1..θ3 (a rigid body's
+/// or coupling's reference node keeps the rotation node it has).
+struct NodeRotation {
+  std::int32_t node = -1;
+  std::int32_t rot_node = -1;
+};
+
 struct Model {
   SourceTable sources;
   std::string heading;
@@ -38,8 +45,9 @@ struct Model {
   std::vector<Coupling> couplings;                     ///< *COUPLING, in deck order
   std::vector<NodalTransform> transforms;         ///< *TRANSFORM, in deck order
   std::vector<TransformedNode> transformed_nodes;  ///< the nodes whose DOFs are local, by node row
-  /// Every node of a beam element with its rotation node, by node row (parser/beam_nodes.cpp).
-  std::vector<BeamNodeRotation> beam_rotations;
+  /// Every node of a beam or shell element with its rotation node, by node row
+  /// (parser/beam_nodes.cpp).
+  std::vector<NodeRotation> node_rotations;
   /// *SURFACE, TYPE=SEGMENTS | CYLINDER | REVOLUTION, in deck order (Surface::analytical).
   std::vector<AnalyticalSurface> analytical_surfaces;
 

@@ -10,7 +10,7 @@ std::vector<RotatingNode> rotating_nodes(const Model& m, int dim) {
   for (const Coupling& c : m.couplings)
     if (c.needs_rotations(dim) && c.rot_node >= 0) out.push_back({c.ref_node, c.rot_node, c.rot_node_added});
   const std::size_t n_references = out.size();
-  for (const BeamNodeRotation& b : m.beam_rotations) {
+  for (const NodeRotation& b : m.node_rotations) {
     const auto first = out.begin(), last = first + static_cast<std::ptrdiff_t>(n_references);
     if (std::find_if(first, last, [&](const RotatingNode& r) { return r.ref_node == b.node; }) == last)
       out.push_back({b.node, b.rot_node, true});

@@ -103,6 +103,7 @@ void check_sections(model::Model& m, Diagnostics& diags) {
   }
   check_line_element_sections(m, diags, has_section);
   check_beam_sections(m, diags, has_section);
+  check_shell_sections(m, diags, has_section);
   // Elements without a section cannot be analysed: report the first few by their own line.
   int reported = 0;
   std::size_t missing = 0;
@@ -122,7 +123,10 @@ void check_sections(model::Model& m, Diagnostics& diags) {
       diags.error(m.mesh.elements.loc[e], "*ELEMENT",
                   fmt::format("element {} has no {} (assign one with {})", m.mesh.elements.labels[e],
                               spring ? "spring behaviour" : "section",
-                              spring ? "*SPRING" : model::is_beam(type) ? "*BEAM SECTION" : "*SOLID SECTION"));
+                              spring                 ? "*SPRING"
+                              : model::is_beam(type)  ? "*BEAM SECTION"
+                              : model::is_shell(type) ? "*SHELL SECTION"
+                                                      : "*SOLID SECTION"));
       ++reported;
     }
   }
@@ -302,7 +306,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
       check_defined(diags, m.orientations, c.orientation, c.orientation_loc, "*COUPLING", "orientation");
   }
   finalize_couplings(m, diags);
-  if (!diags.has_errors()) add_beam_rotation_nodes(m);
+  if (!diags.has_errors()) add_rotation_nodes(m);
   if (!diags.has_errors()) finalize_transforms(m, diags);
   switch_on_nlgeom_for_hyperelasticity(m);
 }

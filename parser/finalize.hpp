@@ -16,9 +16,14 @@ void check_line_element_sections(const model::Model& m, Diagnostics& diags, std:
 /// Beam sections against the mesh (beam_nodes.cpp); marks their elements in `has_section`.
 void check_beam_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section);
 
-/// Gives every beam node a rotation node (model::Model::beam_rotations), after rigid bodies and
-/// couplings have theirs (a reference node on a beam keeps its own).
-void add_beam_rotation_nodes(model::Model& m);
+/// Shell sections against the mesh, and each element's thickness from *NODAL THICKNESS where
+/// the section asks for it (shell_sections.cpp); marks their elements in `has_section`.
+void check_shell_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section);
+
+/// Gives every beam and shell node a rotation node (model::Model::node_rotations), after rigid
+/// bodies and couplings have theirs (a reference node on a beam or shell keeps its own)
+/// (rotation_nodes.cpp).
+void add_rotation_nodes(model::Model& m);
 
 void finalize_model(BuildState& state, Diagnostics& diags);
 

@@ -32,5 +32,9 @@ void add_rigid_body_keywords(std::vector<KeywordSpec>& table);  // kw_rigid_body
 void add_transform_keywords(std::vector<KeywordSpec>& table);   // kw_transform.cpp
 void add_coupling_keywords(std::vector<KeywordSpec>& table);    // kw_coupling.cpp
 void add_beam_section_keywords(std::vector<KeywordSpec>& table);  // kw_beam_section.cpp
+void add_shell_section_keywords(std::vector<KeywordSpec>& table);  // kw_shell_section.cpp
+/// *TRANSVERSE SHEAR STIFFNESS under a shell section (kw_shell_section.cpp; called by the
+/// keyword's handler in kw_beam_section.cpp, which owns it).
+void shell_transverse_shear_stiffness(KeywordContext& ctx);
 
 }  // namespace inpact::parser

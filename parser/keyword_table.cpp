@@ -27,6 +27,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_transform_keywords(t);
     add_coupling_keywords(t);
     add_beam_section_keywords(t);
+    add_shell_section_keywords(t);
     return t;
   }();
   return table;
@@ -38,7 +39,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
   static constexpr std::string_view kUnsupported[] = {
       "DYNAMIC", "FREQUENCY", "BUCKLE", "HEATTRANSFER", "COUPLEDTEMPERATURE-DISPLACEMENT",
       "VISCO", "MODALDYNAMIC", "STEADYSTATEDYNAMICS", "EXPLICIT", "SOILS",
-      "SHELLSECTION", "MEMBRANESECTION", "COHESIVESECTION", "SHELLGENERALSECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
+      "MEMBRANESECTION", "COHESIVESECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
       "MASS", "DASHPOT", "CONNECTORSECTION",
       "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};

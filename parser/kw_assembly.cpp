@@ -170,6 +170,12 @@ void end_instance(KeywordContext& ctx) {
     }
     dst.beam_sections.push_back(std::move(copy));
   }
+  for (const auto& shell : src.shell_sections) {
+    model::ShellSection copy = shell;
+    copy.elset = prefix + shell.elset;
+    dst.shell_sections.push_back(std::move(copy));
+  }
+  for (const auto& [node, thickness] : src.nodal_thickness) dst.nodal_thickness[node + node_base] = thickness;
 }
 
 }  // namespace

@@ -144,8 +144,13 @@ void read_section(KeywordContext& ctx, bool general) {
 void beam_section(KeywordContext& ctx) { read_section(ctx, false); }
 void beam_general_section(KeywordContext& ctx) { read_section(ctx, true); }
 
-// *TRANSVERSE SHEAR STIFFNESS under a beam section: K23, K13[, slenderness compensation].
+// *TRANSVERSE SHEAR STIFFNESS under a beam section: K23, K13[, slenderness compensation]; under a
+// shell section kw_shell_section.cpp reads it.
 void transverse_shear_stiffness(KeywordContext& ctx) {
+  if (ctx.state.open_parent.starts_with("*SHELL")) {
+    shell_transverse_shear_stiffness(ctx);
+    return;
+  }
   auto& sections = ctx.mesh().beam_sections;
   if (sections.empty()) return;  // the section itself was refused
   std::vector<Field> f;
@@ -188,7 +193,7 @@ void add_beam_section_keywords(std::vector<KeywordSpec>& t) {
                DataLines::Required, beam_general_section});
   t.back().numbers_from = 0;
   t.push_back({"*TRANSVERSE SHEAR STIFFNESS", kMeshScopes, {}, DataLines::Required, transverse_shear_stiffness,
-               {"*BEAM SECTION", "*BEAM GENERAL SECTION"}});
+               {"*BEAM SECTION", "*BEAM GENERAL SECTION", "*SHELL SECTION", "*SHELL GENERAL SECTION"}});
   t.back().numbers_from = 0;
 }
 

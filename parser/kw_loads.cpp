@@ -157,10 +157,10 @@ void boundary(KeywordContext& ctx) {
 // --- *CLOAD ----------------------------------------------------------------------------------
 
 // *CLOAD, OP=, AMPLITUDE=: `node|set, dof, magnitude`.
-/// Beam nodes get their rotations once the deck is read (beam_nodes.cpp).
-bool has_beams(const model::Mesh& mesh) {
+/// Beam and shell nodes get their rotations once the deck is read (rotation_nodes.cpp).
+bool has_rotating_elements(const model::Mesh& mesh) {
   for (std::size_t e = 0; e < mesh.elements.size(); ++e)
-    if (model::is_beam(model::element_type(mesh.elements.type[e]))) return true;
+    if (model::has_rotations(model::element_type(mesh.elements.type[e]))) return true;
   return false;
 }
 
@@ -182,7 +182,7 @@ void cload(KeywordContext& ctx) {
     const bool reference_nodes = std::all_of(nodes->begin(), nodes->end(), [&](std::int32_t n) {
       return model::is_reference_node(ctx.model(), n);
     });
-    if (*dof > 3 && !reference_nodes && !has_beams(ctx.mesh()))
+    if (*dof > 3 && !reference_nodes && !has_rotating_elements(ctx.mesh()))
       ctx.warning(f[1].loc, fmt::format("DOF {} is a rotation: inpact's solid and plane elements have none, so "
                                         "this moment acts on nothing", *dof));
     b.entries.push_back({std::string(f[0].text), std::move(*nodes), *dof, *magnitude, line.loc});
@@ -210,6 +210,11 @@ std::optional<std::uint8_t> pressure_face(KeywordContext& ctx, const Field& labe
   const auto& el = ctx.mesh().elements;
   for (std::int32_t e : elements) {
     const auto& info = model::element_type(el.type[e]);
+    if (model::is_shell(info)) {
+      ctx.error(label.loc, fmt::format("element {} ({}) is a shell: its pressure label is P (acting against the "
+                                       "positive normal)", el.labels[e], info.name));
+      return std::nullopt;
+    }
     if (n > static_cast<int>(info.faces.size())) {
       ctx.error(label.loc, fmt::format("element {} ({}) has no face {}: its pressure labels are P1..P{}", el.labels[e],
                                        info.name, n, info.faces.size()));
@@ -314,9 +319,18 @@ void dload(KeywordContext& ctx) {
     e.loc = line.loc;
     const bool face_label = label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '9';
     if (label == "P") {
-      ctx.error(f[1].loc, "P (without a face number) is for shells and beams: on solid and plane elements give the "
-                          "face, P1, P2, ...");
-      continue;
+      // A shell's pressure pushes against its positive normal: on face SPOS (S2).
+      const auto not_shell = std::find_if(elements->begin(), elements->end(), [&](std::int32_t r) {
+        return !model::is_shell(model::element_type(ctx.mesh().elements.type[static_cast<std::size_t>(r)]));
+      });
+      if (not_shell != elements->end()) {
+        ctx.error(f[1].loc, fmt::format("P (without a face number) is for shells: element {} is not one; on solid and "
+                                        "plane elements give the face, P1, P2, ...",
+                                        ctx.mesh().elements.labels[static_cast<std::size_t>(*not_shell)]));
+        continue;
+      }
+      e.kind = model::DloadEntry::Kind::Pressure;
+      e.faces.assign(elements->size(), 1);
     } else if (face_label) {
       auto face = pressure_face(ctx, f[1], label[1] - '0', *elements);
       if (!face) continue;

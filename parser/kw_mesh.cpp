@@ -241,15 +241,16 @@ void nset(KeywordContext& ctx) {
 
 void elset(KeywordContext& ctx) { fill_set(ctx, false); }
 
-/// The face number of an `S1`..`S6` field for this element type (a rigid element's SNEG = 0 and
-/// SPOS = 1), or nullopt with an error.
+/// The face number of an `S1`..`S6` field for this element type (a rigid element's or shell's
+/// SNEG = 0 and SPOS = 1), or nullopt with an error.
 std::optional<std::uint8_t> face_of(KeywordContext& ctx, const Field& f, std::int32_t element) {
   const auto& info = model::element_type(ctx.mesh().elements.type[element]);
   const std::string id = normalize_name(f.text);
-  if (model::is_rigid(info)) {
+  if (model::is_rigid(info) || model::is_shell(info)) {
     if (id == "SNEG" || id == "SPOS") return static_cast<std::uint8_t>(id == "SPOS" ? 1 : 0);
-    ctx.error(f.loc, fmt::format("element {} ({}) is a rigid element: its faces are SPOS and SNEG, not '{}'",
-                                 ctx.mesh().elements.labels[element], info.name, f.text));
+    ctx.error(f.loc, fmt::format("element {} ({}) is a {} element: its faces are SPOS and SNEG, not '{}'",
+                                 ctx.mesh().elements.labels[element], info.name,
+                                 model::is_rigid(info) ? "rigid" : "shell", f.text));
     return std::nullopt;
   }
   if (id.size() == 2 && id[0] == 'S' && id[1] >= '1' && id[1] <= '6') {
@@ -313,11 +314,15 @@ void surface(KeywordContext& ctx) {
     auto rows = ctx.elements(f[0]);
     if (!rows) continue;
     if (f.size() == 1 || f[1].empty()) {
-      if (const auto e = std::find_if(rows->begin(), rows->end(),
-                                      [&](std::int32_t r) { return model::is_rigid(model::element_type(ctx.mesh().elements.type[r])); });
-          e != rows->end()) {
-        ctx.error(f[0].loc, fmt::format("element {} is a rigid element: give its face, SPOS or SNEG (a surface on both "
-                                        "sides is not supported yet)", ctx.mesh().elements.labels[*e]));
+      const auto two_sided = [&](std::int32_t r) {
+        const auto& t = model::element_type(ctx.mesh().elements.type[r]);
+        return model::is_rigid(t) || model::is_shell(t);
+      };
+      if (const auto e = std::find_if(rows->begin(), rows->end(), two_sided); e != rows->end()) {
+        ctx.error(f[0].loc, fmt::format("element {} is a {} element: give its face, SPOS or SNEG (a surface on both "
+                                        "sides is not supported yet)", ctx.mesh().elements.labels[*e],
+                                        model::is_rigid(model::element_type(ctx.mesh().elements.type[*e])) ? "rigid"
+                                                                                                           : "shell"));
         continue;
       }
       // No face given: the free faces of these elements.

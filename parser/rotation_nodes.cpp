@@ -1,10 +1,13 @@
 #include "rotation_nodes.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 
+#include "finalize.hpp"
 #include "model/element_types.hpp"
+#include "model/reference_nodes.hpp"
 
 namespace inpact::parser {
 
@@ -48,6 +51,59 @@ void check_not_on_continuum(const model::Model& m, std::span<const std::uint8_t>
                           "but springs or trusses connects)",
                           role, m.mesh.nodes.labels[static_cast<std::size_t>(node)],
                           keyword == "*RIGID BODY" ? "body" : "coupling"));
+}
+
+/// Rotation nodes of beams and shells: DOFs 4–6 of such a node are its rotation node's
+/// translations (the rigid bodies' convention, model/reference_nodes.hpp), so *BOUNDARY, *CLOAD,
+/// UR and RM reach them like any DOF.
+void add_rotation_nodes(model::Model& m) {
+  auto& mesh = m.mesh;
+  std::vector<std::uint8_t> rotating(mesh.nodes.size(), 0);
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+    if (model::has_rotations(model::element_type(mesh.elements.type[e])))
+      for (std::int32_t n : mesh.elements.nodes_of(e)) rotating[static_cast<std::size_t>(n)] = 1;
+  std::map<std::int32_t, std::int32_t> existing;  // a reference node keeps its rotation node
+  for (const model::RotatingNode& r : model::rotating_nodes(m, 3)) existing[r.ref_node] = r.rot_node;
+  std::map<std::int32_t, std::int64_t> last_label;  // per instance: labels go on from the largest
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+    auto& l = last_label[mesh.nodes.instance[n]];
+    l = std::max(l, mesh.nodes.labels[n]);
+  }
+  // A beam cut by a pre-tension section: the copy turns with the original (the cut opens along
+  // the axis only), which comes first by row.
+  std::map<std::int32_t, std::int32_t> original_of;
+  for (const model::PretensionSection& s : m.pretension_sections)
+    if (s.element >= 0)
+      for (const auto& [orig, copy] : s.node_pairs) original_of[copy] = orig;
+  std::size_t added = 0;
+  const std::size_t n_nodes = mesh.nodes.size();
+  for (std::size_t n = 0; n < n_nodes; ++n) {
+    if (!rotating[n]) continue;
+    const auto node = static_cast<std::int32_t>(n);
+    if (auto it = existing.find(node); it != existing.end()) {
+      m.node_rotations.push_back({node, it->second});
+      continue;
+    }
+    if (auto it = original_of.find(node); it != original_of.end() && existing.count(it->second)) {
+      m.node_rotations.push_back({node, existing.at(it->second)});
+      continue;
+    }
+    const std::int32_t inst = mesh.nodes.instance[n];
+    const std::int64_t label = ++last_label[inst];
+    const auto row = static_cast<std::int32_t>(mesh.nodes.size());
+    mesh.nodes.labels.push_back(label);
+    mesh.nodes.coords.push_back(mesh.nodes.coords[n]);
+    mesh.nodes.instance.push_back(inst);
+    mesh.nodes.index.insert(inst, label, row);
+    m.node_rotations.push_back({node, row});
+    existing[node] = row;
+    ++added;
+  }
+  if (added)
+    m.preprocessing_notes.push_back(fmt::format(
+        "beam and shell elements: {} nodes added to hold the rotations of their nodes (labels from {}; their U are "
+        "those nodes' UR, their RF the moments RM, as CalculiX's rotational nodes)",
+        added, mesh.nodes.labels[n_nodes]));
 }
 
 }  // namespace inpact::parser

@@ -56,9 +56,9 @@ NodeReferences referenced_nodes(const model::Model& m, int first_dof) {
 /// Beam nodes whose rotations the deck refers to in a transform's axes: inpact has no local
 /// rotations yet, and applying them in global axes would be silently wrong.
 void check_no_local_rotations(const model::Model& m, const std::vector<std::int32_t>& transform_of, Diagnostics& diags) {
-  if (m.beam_rotations.empty()) return;
+  if (m.node_rotations.empty()) return;
   const NodeReferences rotations = referenced_nodes(m, 4);
-  for (const model::BeamNodeRotation& b : m.beam_rotations) {
+  for (const model::NodeRotation& b : m.node_rotations) {
     const auto n = static_cast<std::size_t>(b.node);
     const std::int32_t t = transform_of[n];
     if (t < 0 || !rotations.used[n] || rotations.held_at_zero[n]) continue;

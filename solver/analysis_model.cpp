@@ -22,6 +22,7 @@
 #include "elements/quadrature.hpp"
 #include "hyperelastic_material.hpp"
 #include "line_element_setup.hpp"
+#include "shell_element_setup.hpp"
 #include "model/reference_nodes.hpp"
 
 namespace inpact::solver {
@@ -36,11 +37,11 @@ std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
 
 std::size_t AnalysisModel::element_rows(std::size_t e, std::span<std::int32_t> rows) const {
   const auto nodes = model->mesh.elements.nodes_of(e);
-  const bool beam = model::is_beam(*elements[e].type);
-  const std::size_t n = nodes.size() * (beam ? 2 : 1);
+  const bool rotations = model::has_rotations(*elements[e].type);
+  const std::size_t n = nodes.size() * (rotations ? 2 : 1);
   if (n > rows.size()) throw AnalysisError("internal error: an element with more node rows than the assembler takes");
   std::copy(nodes.begin(), nodes.end(), rows.begin());
-  if (beam)
+  if (rotations)
     for (std::size_t a = 0; a < nodes.size(); ++a)
       rows[nodes.size() + a] = rotation_node_of[static_cast<std::size_t>(nodes[a])];
   return n;
@@ -273,6 +274,7 @@ AnalysisModel build_analysis_model(const model::Model& m) {
     am.rotation_node_of[static_cast<std::size_t>(r.ref_node)] = r.rot_node;
   assign_materials(m, am);
   setup_line_elements(m, am);
+  setup_shell_elements(m, am);
   check_initial_plastic_strains(m, am);
   warn_about_locking(am);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};

@@ -20,6 +20,7 @@ namespace elements {
 class Material;
 struct SpringBehavior;
 struct BeamProperties;
+struct ShellProperties;
 }
 
 struct ElementSetup {
@@ -39,6 +40,7 @@ struct AnalysisModel {
   std::vector<std::shared_ptr<const elements::Material>> materials;  ///< what ElementSetup::material points to
   std::vector<std::shared_ptr<const elements::SpringBehavior>> springs;  ///< what SectionData::spring points to
   std::vector<std::shared_ptr<const elements::BeamProperties>> beams;     ///< what SectionData::beam points to
+  std::vector<std::shared_ptr<const elements::ShellProperties>> shells;   ///< what SectionData::shell points to
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;
@@ -51,7 +53,7 @@ struct AnalysisModel {
   /// Warnings about the model as given (e.g. volumetric locking), for `check` and `run`.
   std::vector<std::string> warnings;
 
-  /// Per node row: its rotation node (a rigid body's or coupling's reference node, a beam node;
+  /// Per node row: its rotation node (a rigid body's or coupling's reference node, a beam or shell node;
   /// model/reference_nodes.hpp), else −1. Only these nodes have rotations.
   std::vector<std::int32_t> rotation_node_of;
   /// Per node row: the local node that holds its *TRANSFORM components (model/transform.hpp),
@@ -68,8 +70,8 @@ struct AnalysisModel {
   /// The local axes e_1..e_3 (rows) of node `node`'s *TRANSFORM at its position; false when it
   /// has none.
   bool local_axes(std::int32_t node, std::array<std::array<double, 3>, 3>& e) const;
-  /// The node rows element e's system lives on: its nodes, and for a beam its nodes' rotation
-  /// nodes after them (elements/beam_elements.hpp). Writes at most kMaxElementRows; returns the
+  /// The node rows element e's system lives on: its nodes, and for a beam or shell its nodes'
+  /// rotation nodes after them (elements/beam_elements.hpp, elements/shell_elements.hpp). Writes at most kMaxElementRows; returns the
   /// count.
   static constexpr std::size_t kMaxElementRows = 32;
   std::size_t element_rows(std::size_t e, std::span<std::int32_t> rows) const;

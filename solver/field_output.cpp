@@ -173,9 +173,14 @@ bool point_key(const std::string& key) {
          key == "SM";
 }
 
-/// Beams make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
 bool model_has_beams(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
+}
+
+/// Beams and shells make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
+bool model_has_section_vectors(const AnalysisModel& am) {
+  return std::any_of(am.elements.begin(), am.elements.end(),
+                     [](const ElementSetup& s) { return model::has_rotations(*s.type); });
 }
 
 /// A section's material has plasticity (*PLASTIC): only then does the preselection bring PE,
@@ -555,7 +560,7 @@ double plastic_magnitude(const elements::PointResult& p) {
 FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool with_instance = am.model->instances.size() > 1;
-  const bool scalar = key == "PEEQ" || key == "PEMAG" || (key == "SF" && !model_has_beams(am));
+  const bool scalar = key == "PEEQ" || key == "PEMAG" || (key == "SF" && !model_has_section_vectors(am));
   const bool section = key == "SF" || key == "SM";  // PointResult::section, SM from slot 3
   const std::size_t n_comp = scalar ? 1 : section ? 3 : am.dim == 3 ? 6 : 4;  // 2D keeps 11 22 33 12 (Voigt slots 0..3)
   FieldData f;
@@ -740,7 +745,9 @@ std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequ
 
 /// The columns of a table of this element type: trusses and springs have the 11 component of
 /// a tensor only (Abaqus prints S11 and E11 for them) and SF1; beams their section forces and
-/// moments (no stresses at section points yet); continua every column but SF2, SF3 and SM.
+/// moments (no stresses at section points yet); shells the in-plane components 11, 22, 12 of S
+/// and E (plane stress, at SNEG and SPOS), MISES and their section forces and moments; continua
+/// every column but SF2, SF3 and SM.
 std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables) {
   std::vector<std::string> out;
   for (const std::string& v : variables) {
@@ -748,7 +755,11 @@ std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const s
     const bool tensor = c.source == Column::Source::S || c.source == Column::Source::E || c.source == Column::Source::PE;
     const bool section = c.source == Column::Source::SF || c.source == Column::Source::SM;
     const bool axial = c.source == Column::Source::SF && c.component == 0;
+    const bool in_plane = c.component == 0 || c.component == 1 || c.component == 3;
     const bool keep = model::is_beam(type)        ? section || c.source == Column::Source::Coord
+                      : model::is_shell(type)     ? section || c.source == Column::Source::Coord ||
+                                                    c.source == Column::Source::Mises ||
+                                                    (tensor && c.source != Column::Source::PE && in_plane)
                       : model::is_continuum(type) ? !section || axial
                                                   : (!tensor || c.component == 0) && (!section || axial);
     if (keep) out.push_back(v);

@@ -5,7 +5,7 @@
 ///
 /// Unknowns: at each node its displacement u and its rotation vector θ. The element's DOFs are
 /// the translations of its nodes (end, [middle,] end), then the rotations of the same nodes in
-/// the same order, three values each (the rotation node's translations, model::BeamNodeRotation).
+/// the same order, three values each (the rotation node's translations, model::NodeRotation).
 ///
 /// Timoshenko kinematics with u and θ interpolated alike (linear or quadratic Lagrange), in the
 /// local system (t, n1, n2) of each integration point: t the tangent, n2 = t × ñ1 / |t × ñ1| for

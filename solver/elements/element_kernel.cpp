@@ -14,6 +14,7 @@
 #include "hybrid.hpp"
 #include "incompatible_modes.hpp"
 #include "line_elements.hpp"
+#include "shell_elements.hpp"
 #include "material.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
@@ -60,6 +61,7 @@ double out_of_plane_measure(ElementFamily family, const SectionData& section, do
     case ElementFamily::Truss:  // (line elements take line_elements.cpp's kernels)
     case ElementFamily::Spring:
     case ElementFamily::Beam:
+    case ElementFamily::Shell:
     case ElementFamily::Rigid: return 1.0;  // (rigid elements are never integrated)
   }
   return 1.0;
@@ -416,6 +418,11 @@ template <class Law>
 void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                   const Law& law, const SectionData& section, const ElementRequest& request,
                   std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
+  if (model::is_shell(type)) {
+    if (!section.shell) throw std::invalid_argument("compute_element: a shell without its section");
+    compute_shell(type, coords, u, *section.shell, section.thickness, request, delta_t, out);
+    return;
+  }
   if (!model::is_continuum(type)) {
     compute_line_element(type, coords, u, law.elastic(), section, request, delta_t, out);
     return;

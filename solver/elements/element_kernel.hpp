@@ -37,6 +37,7 @@ struct ElasticConstants {
 /// Section data the kernels need.
 struct SpringBehavior;  // line_elements.hpp
 struct BeamProperties;  // beam_section.hpp
+struct ShellProperties; // shell_section.hpp
 
 struct SectionData {
   double thickness = 1.0;  ///< plane strain / plane stress out-of-plane thickness (Abaqus default 1)
@@ -46,6 +47,7 @@ struct SectionData {
   double area = 0.0;       ///< trusses: the cross-section area (*SOLID SECTION's data line)
   const SpringBehavior* spring = nullptr;  ///< springs: their *SPRING (owned by the AnalysisModel)
   const BeamProperties* beam = nullptr;    ///< beams: their section (owned by the AnalysisModel)
+  const ShellProperties* shell = nullptr;  ///< shells: their section (owned by the AnalysisModel)
 };
 
 struct ElementRequest {
@@ -65,7 +67,8 @@ struct PointResult {
   double peeq = 0.0;        ///< PEEQ, the equivalent plastic strain ∫ε̄̇ᵖ dt
   /// Section forces and moments SF1, SF2, SF3, SM1, SM2, SM3: a truss's axial force N in SF1;
   /// a beam's axial force, shear forces along n2 and n1, bending moments about n1 and n2 and
-  /// the torque (Abaqus's order, beam_elements.hpp); 0 for continua.
+  /// the torque (Abaqus's order, beam_elements.hpp); a shell's membrane forces N11, N22, N12 and
+  /// moments M11, M22, M12 per unit length (shell_elements.hpp); 0 for continua.
   std::array<double, 6> section{};
 };
 

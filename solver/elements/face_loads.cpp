@@ -101,6 +101,18 @@ void integrate_volume(const model::ElementTypeInfo& type, std::span<const Vec3> 
   const Shape shape = element_shape(type);
   model::ElementTypeInfo full = type;
   full.integration = model::Integration::Full;
+  if (model::is_shell(type)) {  // over the reference surface: dV = t |g1 × g2| dA
+    for (const QuadraturePoint& q : element_rule(full)) {
+      const ShapeValues sv = evaluate_shape(shape, q.xi);
+      Vec3 x{0, 0, 0}, g1{0, 0, 0}, g2{0, 0, 0};
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < 3; ++i)
+          x[i] += sv.N[a] * coords[a][i], g1[i] += sv.dN[a][0] * coords[a][i], g2[i] += sv.dN[a][1] * coords[a][i];
+      const Vec3 g{g1[1] * g2[2] - g1[2] * g2[1], g1[2] * g2[0] - g1[0] * g2[2], g1[0] * g2[1] - g1[1] * g2[0]};
+      fn(sv, x, q.weight * std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * section.thickness);
+    }
+    return;
+  }
   for (const QuadraturePoint& q : element_rule(full)) {
     const ShapeValues sv = evaluate_shape(shape, q.xi);
     double J[3][3] = {};

@@ -212,6 +212,7 @@ int parametric_dim(Shape s) {
 }
 
 Shape element_shape(const model::ElementTypeInfo& type) {
+  if (model::is_shell(type)) return type.n_nodes == 3 ? Shape::Tri3 : type.n_nodes == 4 ? Shape::Quad4 : Shape::Quad8;
   if (type.dim == 3) {
     switch (type.n_nodes) {
       case 4: return Shape::Tet4;

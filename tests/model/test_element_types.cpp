@@ -65,5 +65,9 @@ TEST(ElementTypes, MidsideNodesOfQuadraticFacesLieBetweenTheirCorners) {
   const ElementTypeInfo* q = find_element_type("CAX8R");
   ASSERT_NE(q, nullptr);
   EXPECT_EQ(q->faces[3].nodes[2], 7);  // S4 = 4-1 with 8
-  EXPECT_EQ(find_element_type("S4R"), nullptr);
+  // S8R's SPOS (S2) runs 1-4-3-2, so its midsides run 8-7-6-5: the one between 1 and 4 is 8.
+  const ElementTypeInfo* shell = find_element_type("S8R");
+  ASSERT_NE(shell, nullptr);
+  EXPECT_EQ(shell->faces[1].nodes[4], 7);
+  EXPECT_EQ(find_element_type("S9R5"), nullptr);
 }

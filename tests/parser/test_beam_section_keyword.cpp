@@ -38,9 +38,9 @@ TEST(BeamSectionKeyword, EveryBeamNodeGetsOneRotationNodeAndN1DefaultsToMinusZ) 
   auto r = dir.read(kBeams + kMaterial + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.1\n");
   ASSERT_TRUE(r.ok()) << r.report();
   EXPECT_EQ(r.model.mesh.beam_sections[0].n1, (std::array<double, 3>{0.0, 0.0, -1.0}));
-  ASSERT_EQ(r.model.beam_rotations.size(), 3u);
+  ASSERT_EQ(r.model.node_rotations.size(), 3u);
   EXPECT_EQ(r.model.mesh.nodes.size(), 6u);
-  for (const auto& b : r.model.beam_rotations) EXPECT_GE(r.model.mesh.nodes.labels[b.rot_node], 4);
+  for (const auto& b : r.model.node_rotations) EXPECT_GE(r.model.mesh.nodes.labels[b.rot_node], 4);
   EXPECT_EQ(model::rotating_nodes(r.model, 3).size(), 3u);
 }
 

@@ -187,8 +187,8 @@ TEST(Loads, DsloadPutsThePressureOnTheSurfaceFaces) {
 TEST(Loads, PressureLabelsAreCheckedAgainstTheElementFaces) {
   DeckDir dir;
   auto r = dir.read(cube_step("", "*DLOAD\nCUBE, P, 1.\nCUBE, P7, 1.\nCUBE, GRV, 1.\n*DSLOAD\nTOPP, P, 1.\n"));
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:7: error: *DLOAD: P (without a face number) is for shells and beams: on "
-                                "solid and plane elements give the face, P1, P2, ..."))
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:7: error: *DLOAD: P (without a face number) is for shells: element 1 is "
+                                "not one; on solid and plane elements give the face, P1, P2, ..."))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:7: error: *DLOAD: element 1 (C3D8) has no face 7: its pressure labels are P1..P6"))
       << r.report();

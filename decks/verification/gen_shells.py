@@ -1,0 +1,211 @@
+#!/usr/bin/env python3
+"""Writes the shell verification decks of tests/verification/test_shells.cpp: the standard
+shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against closed forms.
+
+  scordelis_lo   Scordelis-Lo roof, quarter model: R = 25, L = 50, 40 deg, t = 0.25, E = 4.32e8,
+                 nu = 0, gravity 90 per area (rho = 360, g = 1); rigid diaphragms at the ends.
+                 Vertical displacement at the middle of the free edge: 0.3024.
+  pinched        Pinched cylinder with diaphragms, octant: R = 300, L = 600, t = 3, E = 3e6,
+                 nu = 0.3, two opposite loads P = 1 at mid-length (1/4 in the octant).
+                 Displacement under the load: 1.8248e-5.
+  hemisphere     Pinched hemisphere with an 18 deg hole, quarter: R = 10, t = 0.04, E = 6.825e7,
+                 nu = 0.3, loads of 2 in and out at the equator (1 in the quarter, each point lies
+                 on a symmetry plane). Radial displacement under the loads: 0.094.
+  twisted        Twisted beam: L = 12, width 1.1, 90 deg of twist, E = 29e6, nu = 0.22; t = 0.32
+                 with P = 1 (in-plane 5.424e-3, out-of-plane 1.754e-3) or t = 0.0032 with
+                 P = 1e-6 (5.256e-3, 1.294e-3). Step 1 in-plane (z at the tip), step 2 out of plane (y).
+  strip          Cantilever strip L = 10, b = 1, t = 0.1, E = 2e5, nu = 0: a tip line load P = 1
+                 along z, as the elements' consistent nodal loads.
+  torsion        The same strip twisted by T = 1 about x (nodal moments on the tip), its width
+                 graded towards the free edges.
+
+Usage: gen_shells.py --out DIR NAME ETYPE N [thin]   (writes DIR/NAME_ETYPE_N[_thin].inp)
+ETYPE is S4, S4R, S8R or S3 (each quad of the S4 grid cut into two triangles).
+"""
+import argparse
+import math
+import os
+
+
+def grid(etype, nx, ny, place):
+    """Nodes and elements of an nx x ny structured shell mesh over (s, t) in [0, 1]^2, placed by
+    place(s, t) -> (x, y, z). Returns (nodes {label: (s, t, xyz)}, elements [[labels]])."""
+    quad = etype == "S8R"
+    step = 2 if quad else 1
+    cols, rows = nx * step + 1, ny * step + 1
+    label = lambda i, j: j * cols + i + 1
+    nodes = {}
+    for j in range(rows):
+        for i in range(cols):
+            if quad and i % 2 == 1 and j % 2 == 1:
+                continue  # no centre node in an S8R
+            s, t = i / (cols - 1), j / (rows - 1)
+            nodes[label(i, j)] = (s, t, place(s, t))
+    elements = []
+    for ey in range(ny):
+        for ex in range(nx):
+            i, j = ex * step, ey * step
+            if quad:
+                elements.append([label(i, j), label(i + 2, j), label(i + 2, j + 2), label(i, j + 2),
+                                 label(i + 1, j), label(i + 2, j + 1), label(i + 1, j + 2), label(i, j + 1)])
+            elif etype == "S3":
+                a, b, c, d = label(i, j), label(i + 1, j), label(i + 1, j + 1), label(i, j + 1)
+                elements += [[a, b, c], [a, c, d]]
+            else:
+                elements.append([label(i, j), label(i + 1, j), label(i + 1, j + 1), label(i, j + 1)])
+    return nodes, elements
+
+
+def near(a, b):
+    return abs(a - b) < 1e-9
+
+
+def write(path, heading, etype, nodes, elements, material, sets, tail):
+    lines = ["*HEADING", heading, "*NODE"]
+    lines += [f"{n}, {x:.15g}, {y:.15g}, {z:.15g}" for n, (_, _, (x, y, z)) in sorted(nodes.items())]
+    lines.append(f"*ELEMENT, TYPE={'S3' if etype == 'S3' else etype}, ELSET=SHELL")
+    lines += [", ".join(str(k) for k in [e + 1] + conn) for e, conn in enumerate(elements)]
+    for name, test in sets.items():
+        members = [n for n, (s, t, _) in sorted(nodes.items()) if test(s, t)]
+        lines.append(f"*NSET, NSET={name}")
+        lines += [", ".join(str(m) for m in members[k:k + 12]) for k in range(0, len(members), 12)]
+    lines += ["*MATERIAL, NAME=M", "*ELASTIC", material]
+    lines += tail
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def section(thickness):
+    return ["*SHELL SECTION, ELSET=SHELL, MATERIAL=M", f"{thickness:.15g}, 5"]
+
+
+def scordelis_lo(etype, n):
+    R, phi = 25.0, math.radians(40.0)
+    place = lambda s, t: (25.0 * s, R * math.sin(phi * t), R * math.cos(phi * t))
+    nodes, elements = grid(etype, n, n, place)
+    sets = {"MIDSPAN": lambda s, t: near(s, 0), "DIAPHRAGM": lambda s, t: near(s, 1), "CROWN": lambda s, t: near(t, 0),
+            "POINT": lambda s, t: near(s, 0) and near(t, 1)}
+    tail = ["*DENSITY", "360."] + section(0.25) + [
+        "*BOUNDARY", "DIAPHRAGM, 2, 3", "MIDSPAN, XSYMM", "CROWN, YSYMM",
+        "*STEP", "*STATIC", "*DLOAD", "SHELL, GRAV, 1., 0., 0., -1.", "*NODE PRINT, NSET=POINT", "U", "*END STEP"]
+    return "Scordelis-Lo roof, quarter model: U3 at the middle of the free edge -0.3024", nodes, elements, \
+        "4.32e8, 0.", sets, tail
+
+
+def pinched(etype, n):
+    R = 300.0
+    place = lambda s, t: (300.0 * s, R * math.sin(0.5 * math.pi * t), R * math.cos(0.5 * math.pi * t))
+    nodes, elements = grid(etype, n, n, place)
+    sets = {"MIDSPAN": lambda s, t: near(s, 0), "DIAPHRAGM": lambda s, t: near(s, 1), "TOP": lambda s, t: near(t, 0),
+            "SIDE": lambda s, t: near(t, 1), "POINT": lambda s, t: near(s, 0) and near(t, 0)}
+    tail = section(3.0) + ["*BOUNDARY", "DIAPHRAGM, 2, 3", "MIDSPAN, XSYMM", "TOP, YSYMM", "SIDE, ZSYMM",
+                           "*STEP", "*STATIC", "*CLOAD", "POINT, 3, -0.25", "*NODE PRINT, NSET=POINT", "U", "*END STEP"]
+    return "Pinched cylinder with diaphragms, octant: U3 under the load -1.8248e-5", nodes, elements, \
+        "3.e6, 0.3", sets, tail
+
+
+def hemisphere(etype, n):
+    R, hole = 10.0, math.radians(18.0)
+    def place(s, t):
+        polar = hole + (0.5 * math.pi - hole) * t  # t = 1 on the equator
+        lam = 0.5 * math.pi * s
+        return (R * math.sin(polar) * math.cos(lam), R * math.sin(polar) * math.sin(lam), R * math.cos(polar))
+    nodes, elements = grid(etype, n, n, place)
+    sets = {"XZ": lambda s, t: near(s, 0), "YZ": lambda s, t: near(s, 1),
+            "LOADX": lambda s, t: near(s, 0) and near(t, 1), "LOADY": lambda s, t: near(s, 1) and near(t, 1)}
+    tail = section(0.04) + ["*BOUNDARY", "XZ, YSYMM", "YZ, XSYMM", "LOADX, 3",
+                            "*STEP", "*STATIC", "*CLOAD", "LOADX, 1, 1.", "LOADY, 2, -1.",
+                            "*NODE PRINT, NSET=LOADX", "U", "*END STEP"]
+    return "Pinched hemisphere with an 18 degree hole, quarter: U1 under the load 0.094", nodes, elements, \
+        "6.825e7, 0.3", sets, tail
+
+
+def tip_loads(nodes, on_tip, coordinate, total, dof):
+    """Nodal loads of a line load `total` spread evenly along the tip edge (lumped by tributary
+    length over the edge coordinate), as *CLOAD lines."""
+    tip = sorted((coordinate(s, t), m) for m, (s, t, _) in nodes.items() if on_tip(s, t))
+    out = []
+    for k, (c, m) in enumerate(tip):
+        lo = tip[k - 1][0] if k > 0 else c
+        hi = tip[k + 1][0] if k + 1 < len(tip) else c
+        out.append(f"{m}, {dof}, {total * (hi - lo) / 2 / (tip[-1][0] - tip[0][0]):.15g}")
+    return out
+
+
+def consistent_tip_loads(etype, nodes, on_tip, coordinate, total, dof):
+    """A uniform line load on the tip edge as the elements' consistent nodal loads (linear: 1/2,
+    1/2 of each edge; quadratic: 1/6, 2/3, 1/6), for the exact-answer strip."""
+    if etype != "S8R":
+        return tip_loads(nodes, on_tip, coordinate, total, dof)
+    tip = sorted((coordinate(s, t), m) for m, (s, t, _) in nodes.items() if on_tip(s, t))
+    length = tip[-1][0] - tip[0][0]
+    load = {m: 0.0 for _, m in tip}
+    for k in range(0, len(tip) - 2, 2):
+        h = tip[k + 2][0] - tip[k][0]
+        for j, w in ((0, 1 / 6), (1, 2 / 3), (2, 1 / 6)):
+            load[tip[k + j][1]] += total * w * h / length
+    return [f"{m}, {dof}, {v:.15g}" for m, v in load.items()]
+
+
+def twisted(etype, n, thin):
+    t, P = (0.0032, 1e-6) if thin else (0.32, 1.0)
+    def place(s, w):
+        a = 0.5 * math.pi * s
+        return (12.0 * s, 1.1 * (w - 0.5) * math.cos(a), 1.1 * (w - 0.5) * math.sin(a))
+    nodes, elements = grid(etype, 6 * n, n, place)
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip, "CENTRE": lambda s, w: near(s, 1) and near(w, 0.5)}
+    width = lambda s, w: w
+    tail = section(t) + ["*BOUNDARY", "ROOT, ENCASTRE",
+                         "*STEP, NAME=INPLANE", "*STATIC", "*CLOAD, OP=NEW"] + tip_loads(nodes, on_tip, width, P, 3) + [
+        "*NODE PRINT, NSET=CENTRE", "U", "*END STEP",
+        "*STEP, NAME=OUTOFPLANE", "*STATIC", "*CLOAD, OP=NEW"] + tip_loads(nodes, on_tip, width, P, 2) + [
+        "*NODE PRINT, NSET=CENTRE", "U", "*END STEP"]
+    return (f"Twisted beam, t = {t:g}, P = {P:g}: tip U3 (in-plane) {'5.256e-3' if thin else '5.424e-3'}, "
+            f"U2 (out of plane) {'1.294e-3' if thin else '1.754e-3'}"), nodes, elements, "29.e6, 0.22", sets, tail
+
+
+def strip(etype, n):
+    """n elements along the strip, n/10 (at least 1) across: a tip line load along z."""
+    place = lambda s, w: (10.0 * s, w - 0.5, 0.0)
+    nodes, elements = grid(etype, n, max(1, n // 10), place)
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip}
+    tail = section(0.1) + ["*BOUNDARY", "ROOT, ENCASTRE", "*STEP", "*STATIC", "*CLOAD"] + \
+        consistent_tip_loads(etype, nodes, on_tip, lambda s, w: w, 1.0, 3) + ["*NODE PRINT, NSET=TIP", "U", "*END STEP"]
+    return "Cantilever strip L = 10, b = 1, t = 0.1, nu = 0: a tip line load P = 1 along z", nodes, elements, \
+        "2.e5, 0.", sets, tail
+
+
+def torsion(etype, n):
+    """n elements along the strip, n/2 across, graded towards the free edges (their transverse
+    shear boundary layer is t/sqrt(10) wide): a torque T = 1 as nodal moments on the tip."""
+    y = lambda s, w: 0.5 * math.sin(math.pi * (w - 0.5))
+    nodes, elements = grid(etype, n, n // 2, lambda s, w: (10.0 * s, y(s, w), 0.0))
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip, "AXIS": lambda s, w: near(w, 0.5)}
+    tail = section(0.1) + ["*BOUNDARY", "ROOT, ENCASTRE", "*STEP", "*STATIC", "*CLOAD"] + \
+        tip_loads(nodes, on_tip, y, 1.0, 4) + ["*NODE PRINT, NSET=AXIS", "UR", "*END STEP"]
+    return "Cantilever strip L = 10, b = 1, t = 0.1, nu = 0: a tip torque T = 1", nodes, elements, \
+        "2.e5, 0.", sets, tail
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--out", required=True)
+    ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion"])
+    ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
+    ap.add_argument("n", type=int)
+    ap.add_argument("thin", nargs="?", default="")
+    a = ap.parse_args()
+    make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
+            "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
+    heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
+    suffix = "_thin" if a.thin == "thin" else ""
+    os.makedirs(a.out, exist_ok=True)
+    write(os.path.join(a.out, f"{a.name}_{a.etype}_{a.n}{suffix}.inp"), heading, a.etype, nodes, elements,
+          material, sets, tail)
+
+
+if __name__ == "__main__":
+    main()

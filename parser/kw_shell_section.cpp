@@ -1,0 +1,151 @@
+/// *SHELL SECTION, *SHELL GENERAL SECTION, their *TRANSVERSE SHEAR STIFFNESS and *NODAL
+/// THICKNESS [Abaqus Keywords].
+///
+/// *SHELL SECTION, ELSET=, MATERIAL=[, OFFSET=SPOS | SNEG | MIDDLE | value][, NODAL THICKNESS]:
+/// one data line, the thickness and the number of section points (Simpson, odd; default 5).
+/// *SHELL GENERAL SECTION, ELSET=, MATERIAL=: the thickness (a section given by its stiffness
+/// matrix, without MATERIAL, is not supported yet). COMPOSITE, ORIENTATION, Gauss integration
+/// through the thickness and shells of a *DENSITY-less general section stop here with what is
+/// missing.
+#include <fmt/format.h>
+
+#include "handlers.hpp"
+#include "text.hpp"
+
+namespace inpact::parser {
+
+namespace {
+
+/// OFFSET=: SPOS, SNEG, MIDDLE or a fraction of the thickness (the reader checked it is one).
+double read_offset(KeywordContext& ctx) {
+  if (!ctx.has("OFFSET")) return 0.0;
+  if (auto value = ctx.real_value("OFFSET")) return *value;
+  const std::string v = ctx.choice_value("OFFSET");
+  return v == "SPOS" ? 0.5 : v == "SNEG" ? -0.5 : 0.0;
+}
+
+/// The data line: thickness[, number of section points].
+bool read_thickness_line(KeywordContext& ctx, model::ShellSection& sec) {
+  std::vector<Field> f;
+  split_fields(ctx.data[0], f);
+  const std::size_t max = sec.general ? 1 : 2;
+  if (!ctx.check_count(f, ctx.data[0], 1, max, sec.general ? "thickness" : "thickness[, number of section points]"))
+    return false;
+  if (!(f[0].empty() && sec.nodal_thickness)) {
+    auto t = ctx.real(f[0], "thickness");
+    if (!t) return false;
+    if (*t <= 0 && !sec.nodal_thickness) {
+      ctx.error(f[0].loc, fmt::format("the shell thickness must be positive, found {:g}", *t));
+      return false;
+    }
+    sec.thickness = *t;
+  }
+  if (f.size() > 1 && !f[1].empty()) {
+    auto n = ctx.integer(f[1], "number of section points");
+    if (!n) return false;
+    if (*n < 3 || *n % 2 == 0) {
+      ctx.error(f[1].loc, fmt::format("Simpson's rule through the thickness takes an odd number of section points, at "
+                                      "least 3; found {}", *n));
+      return false;
+    }
+    sec.section_points = static_cast<int>(*n);
+  }
+  if (ctx.data.size() > 1) {
+    ctx.error(ctx.data[1].loc, "expected one data line (a composite section's layers need COMPOSITE, which is not "
+                               "supported yet)");
+    return false;
+  }
+  return true;
+}
+
+void read_section(KeywordContext& ctx, bool general) {
+  const char* unsupported[] = {"COMPOSITE", "ORIENTATION", "SECTION INTEGRATION", "DENSITY"};
+  for (const char* p : unsupported)
+    if (ctx.has(p) && !(std::string_view(p) == "SECTION INTEGRATION" && ctx.choice_value(p) == "SIMPSON")) {
+      ctx.error_param(p, fmt::format("{} on a shell section is not supported yet", p));
+      return;
+    }
+  if (general && !ctx.has("MATERIAL")) {
+    ctx.error(ctx.keyword.loc, "a *SHELL GENERAL SECTION given by its stiffness matrix (no MATERIAL=) is not supported "
+                               "yet: give MATERIAL=");
+    return;
+  }
+  model::ShellSection sec;
+  sec.elset = ctx.name_value("ELSET");
+  sec.material = ctx.name_value("MATERIAL");
+  sec.general = general;
+  sec.nodal_thickness = ctx.has("NODAL THICKNESS");
+  sec.loc = ctx.keyword.loc;
+  sec.offset = read_offset(ctx);
+  if (!read_thickness_line(ctx, sec)) return;
+  ctx.mesh().shell_sections.push_back(std::move(sec));
+  ctx.state.open_parent = general ? "*SHELL GENERAL SECTION" : "*SHELL SECTION";  // its *TRANSVERSE SHEAR STIFFNESS
+}
+
+void shell_section(KeywordContext& ctx) { read_section(ctx, false); }
+void shell_general_section(KeywordContext& ctx) { read_section(ctx, true); }
+
+// *NODAL THICKNESS: `node or node set, thickness`.
+void nodal_thickness(KeywordContext& ctx) {
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 2, 2, "node or node set, thickness")) continue;
+    auto nodes = ctx.nodes(f[0]);
+    auto t = ctx.real(f[1], "thickness");
+    if (!nodes || !t) continue;
+    if (*t <= 0) {
+      ctx.error(f[1].loc, fmt::format("the shell thickness must be positive, found {:g}", *t));
+      continue;
+    }
+    for (std::int32_t n : *nodes) ctx.mesh().nodal_thickness[n] = *t;
+  }
+}
+
+}  // namespace
+
+void shell_transverse_shear_stiffness(KeywordContext& ctx) {
+  auto& sections = ctx.mesh().shell_sections;
+  if (sections.empty()) return;  // the section itself was refused
+  std::vector<Field> f;
+  split_fields(ctx.data[0], f);
+  if (!ctx.check_count(f, ctx.data[0], 2, 3, "K11, K22[, K12]")) return;
+  std::array<double, 3> k{};
+  const char* names[] = {"K11", "K22", "K12"};
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f[i].empty()) continue;
+    auto v = ctx.real(f[i], names[i]);
+    if (!v) return;
+    if (i < 2 && *v <= 0) {
+      ctx.error(f[i].loc, fmt::format("{} must be positive, found {:g}", names[i], *v));
+      return;
+    }
+    if (i == 2 && *v != 0) {
+      ctx.error(f[i].loc, "a coupling term K12 other than 0 is not supported yet");
+      return;
+    }
+    k[i] = *v;
+  }
+  sections.back().transverse_shear = k;
+  if (ctx.data.size() > 1) ctx.error(ctx.data[1].loc, "expected one data line");
+}
+
+void add_shell_section_keywords(std::vector<KeywordSpec>& t) {
+  const std::vector<ParamSpec> common = {{"ELSET", ValueKind::Required, ValueType::Text, {}, true},
+                                         {"MATERIAL", ValueKind::Required, ValueType::Text},
+                                         {"OFFSET", ValueKind::Required, ValueType::RealOrChoice, {"SPOS", "SNEG", "MIDDLE"}},
+                                         {"NODAL THICKNESS", ValueKind::None, ValueType::Text},
+                                         {"COMPOSITE", ValueKind::None, ValueType::Text},
+                                         {"ORIENTATION", ValueKind::Required, ValueType::Text},
+                                         {"SECTION INTEGRATION", ValueKind::Required, ValueType::Choice,
+                                          {"SIMPSON", "GAUSS"}},
+                                         {"POISSON", ValueKind::Required, ValueType::Real},
+                                         {"DENSITY", ValueKind::Required, ValueType::Real}};
+  t.push_back({"*SHELL SECTION", kMeshScopes, common, DataLines::Required, shell_section});
+  t.back().numbers_from = 0;
+  t.push_back({"*SHELL GENERAL SECTION", kMeshScopes, common, DataLines::Required, shell_general_section});
+  t.back().numbers_from = 0;
+  t.push_back({"*NODAL THICKNESS", kMeshScopes, {}, DataLines::Required, nodal_thickness});
+}
+
+}  // namespace inpact::parser

@@ -1,0 +1,50 @@
+#pragma once
+/// The conventional shells S4, S4R, S3, S3R, S8R and S8: small strain and small rotations,
+/// linear elastic sections (shell_section.hpp).
+///
+/// Unknowns: at each node its displacement u and its rotation vector θ (global components).
+/// The element's DOFs are the translations of its nodes, then the rotations of the same nodes
+/// in the same order, three values each (the rotation node's translations, model::NodeRotation).
+///
+/// Degenerated-solid kinematics (Ahmad, Irons and Zienkiewicz): with the nodal directors V_a
+/// (the element's unit normal at each node, by the right-hand rule of its node order),
+///   X(ξ, η, ζ) = Σ N_a (X_a + z(ζ) V_a),  u = Σ N_a (u_a + z(ζ) θ_a × V_a),
+///   z(ζ) = t (ζ/2 − offset)
+/// so the reference surface (the nodes) lies offset·t above the midsurface along V. The lamina is in
+/// plane stress (σ33 = 0) in the local shell axes: 1 the projection of global x on the surface
+/// (global z when x is within 0.1° of the normal), 3 the normal, 2 = 3 × 1 (Abaqus's default).
+/// Transverse shear: 5/6·G unless *TRANSVERSE SHEAR STIFFNESS gives it.
+///
+/// Locking: S4 and S4R tie the transverse shear to the edge midpoints (MITC4, Dvorkin and Bathe
+/// 1984), S3 and S3R to the MITC3 points (Lee and Bathe 2004), both at 2×2 (quad) or 3 (triangle)
+/// in-plane points: S4R is integrated as S4 (no hourglass modes to control). S8R takes 2×2
+/// points, S8 (CalculiX's) 3×3. Through the thickness: Simpson at the section points.
+///
+/// Drilling: θ·V has no stiffness in this kinematics; each node gets k_d (θ·V_a − ω_a)² / 2, ω_a
+/// the membrane rotation about V_a at the node (a rigid rotation costs nothing, flat or curved),
+/// k_d = 10⁻⁴ · E t³ / (12 (1 − ν²)), 10⁻⁴ of the plate's bending stiffness (a moment per
+/// radian, as a node's bending stiffness is): enough to keep a flat mesh non-singular.
+///
+/// Point output: at each in-plane point, section point 1 (SNEG) then the last (SPOS):
+/// PointResult::stress S11, S22, S12 (slots 0, 1, 3; S13 = S23 = 0 at the surfaces), strain
+/// likewise (γ12), and PointResult::section SF1..SF3 = N11, N22, N12 and SM1..SM3 = M11, M22,
+/// M12 per unit length, about the midsurface; volume = t·dA shared between the two.
+#include <span>
+
+#include "element_kernel.hpp"
+#include "shell_section.hpp"
+
+namespace inpact::solver::elements {
+
+/// Stiffness, internal force (K u: the element is linear) and point output of a shell. `u`
+/// holds 6 values per node in the order above; coords the reference nodes; thickness the
+/// element's; delta_t the nodes' temperature change (empty: none).
+void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                   const ShellProperties& section, double thickness, const ElementRequest& request,
+                   std::span<const double> delta_t, ElementSystem& out);
+
+/// The local shell axes {e1, e2, e3} at a point with surface tangents g1, g2 (Abaqus's default
+/// projection, above); false when g1 × g2 vanishes.
+bool shell_axes(const Vec3& g1, const Vec3& g2, std::array<Vec3, 3>& axes);
+
+}  // namespace inpact::solver::elements

@@ -1,0 +1,59 @@
+#include "shell_element_setup.hpp"
+
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "analysis_error.hpp"
+#include "elements/shell_section.hpp"
+
+namespace inpact::solver {
+
+namespace {
+
+const char* keyword_of(const model::ShellSection& sec) {
+  return sec.general ? "*SHELL GENERAL SECTION" : "*SHELL SECTION";
+}
+
+/// E, ν and α of the section's material: isotropic linear elastic only so far (small strain,
+/// small rotations), or a deck error naming what is missing.
+elements::ShellProperties shell_section_properties(const model::Model& m, const model::ShellSection& sec) {
+  const auto where = [&] { return m.sources.describe(sec.loc); };
+  for (const model::Step& step : m.steps)
+    if (step.nlgeom)
+      throw AnalysisError(fmt::format("{}: error: {}: shell elements under NLGEOM (step '{}') are not supported yet "
+                                      "(small rotations only)", where(), keyword_of(sec), step.name));
+  const model::Material& mat = m.materials.at(sec.material);
+  if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.plastic || mat.hyperelastic)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not isotropic linear elastic; shells take "
+                                    "*ELASTIC, TYPE=ISOTROPIC only so far", where(), keyword_of(sec), mat.name));
+  return elements::shell_properties(sec, mat.elastic->youngs_modulus, mat.elastic->poissons_ratio,
+                                    mat.expansion ? mat.expansion->alpha : 0.0);
+}
+
+/// The element's thickness: the section's, or with NODAL THICKNESS the mean of its nodes'.
+double element_thickness(const model::Model& m, const model::ShellSection& sec, std::size_t e) {
+  if (!sec.nodal_thickness) return sec.thickness;
+  const auto nodes = m.mesh.elements.nodes_of(e);
+  double sum = 0.0;
+  for (std::int32_t n : nodes) sum += m.mesh.nodal_thickness.at(n);
+  return sum / static_cast<double>(nodes.size());
+}
+
+}  // namespace
+
+void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
+  for (const model::ShellSection& sec : m.mesh.shell_sections) {
+    const elements::ShellProperties* p =
+        am.shells.emplace_back(std::make_shared<elements::ShellProperties>(shell_section_properties(m, sec))).get();
+    for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
+      const auto e = static_cast<std::size_t>(row);
+      ElementSetup& s = am.elements[e];
+      s.section.shell = p;
+      s.section.thickness = element_thickness(m, sec, e);
+      s.density = m.materials.at(sec.material).density.value_or(0.0);
+    }
+  }
+}
+
+}  // namespace inpact::solver

@@ -1,0 +1,139 @@
+// Shells against closed forms and the standard shell benchmarks of MacNeal and Harder (1985),
+// decks written by decks/verification/gen_shells.py at test time (their headers give the
+// problem data). Each benchmark runs on two or three meshes; the figures are reported and the
+// finest must lie within the stated tolerance of the published reference.
+#include <fmt/format.h>
+
+#include "verification_fixture.hpp"
+
+namespace inpact::verification {
+namespace {
+
+/// Writes gen_shells.py's deck `name` (ETYPE N [thin]) into the generated folder, returns its path.
+std::string shell_deck(const std::string& name, const std::string& etype, int n, bool thin = false) {
+  const std::string cmd = "python3 " + deck_path("gen_shells.py") + " --out " + generated_dir().string() + " " + name +
+                          " " + etype + " " + std::to_string(n) + (thin ? " thin" : "");
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return (generated_dir() / (name + "_" + etype + "_" + std::to_string(n) + (thin ? "_thin" : "") + ".inp")).string();
+}
+
+/// The row of the single node of node set `set`.
+std::size_t single(const Run& r, const std::string& set) {
+  const auto rows = nset(r.model(), set);
+  EXPECT_EQ(rows.size(), 1u) << set;
+  return static_cast<std::size_t>(rows.at(0));
+}
+
+/// Runs a deck and returns component c of U at the node of set `set` in the last frame of `step`.
+double displacement(const std::string& deck, const std::string& set, int c, int step = 1) {
+  const auto r = run_deck(deck);
+  EXPECT_TRUE(r->outcome.completed) << r->outcome.message;
+  if (!r->outcome.completed) return 0.0;
+  return nodal(*r->capture.of_step(step).back(), "U", single(*r, set), c);
+}
+
+// Cantilever strip, ν = 0 (a Timoshenko beam: nothing varies across the width), L = 10, b = 1,
+// t = 0.1, E = 2e5, G = 1e5, tip line load P = 1: δ = PL³/(3EI) + PL/(κGA) with κ = 5/6 for the
+// quadratic S8R (nodally exact, as B32), minus PLh²/(12EI) for S4 and S4R, whose edge-tied
+// shear and constant curvature make each element a one-point linear Timoshenko beam (as B31).
+// Round-off: 1e-8. S3 converges: within 1 % at 20 × 2 elements.
+TEST(Shells, CantileverStripMatchesTheTimoshenkoBeam) {
+  const double P = 1.0, L = 10.0, E = 2e5, G = 1e5, I = 0.1 * 0.1 * 0.1 / 12, A = 0.1;
+  const double exact = P * L * L * L / (3 * E * I) + P * L / (5.0 / 6 * G * A);
+  struct Case {
+    const char* etype;
+    int n;
+    double expected, tolerance;
+  };
+  const double h = L / 10;
+  for (const Case& c : {Case{"S4", 10, exact - P * L * h * h / (12 * E * I), 1e-8},
+                        Case{"S4R", 10, exact - P * L * h * h / (12 * E * I), 1e-8}, Case{"S8R", 5, exact, 1e-8},
+                        Case{"S3", 20, exact, 1e-2}}) {
+    const auto r = run_deck(shell_deck("strip", c.etype, c.n));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::Frame& f = r->capture.last();
+    for (std::int32_t tip : nset(r->model(), "TIP"))
+      EXPECT_NEAR(nodal(f, "U", static_cast<std::size_t>(tip), 2), c.expected, c.tolerance * exact) << c.etype;
+    report(std::string("strip ") + c.etype + ": tip deflection / Timoshenko",
+           nodal(f, "U", static_cast<std::size_t>(nset(r->model(), "TIP")[0]), 2) / exact);
+    // The root carries the load: Σ RF3 = −P (1e-8: the thin strip's system, its drilling
+    // stiffness 1e-4 of the bending one, loses about eight digits).
+    double root = 0.0;
+    for (std::int32_t n : nset(r->model(), "ROOT")) root += nodal(f, "RF", static_cast<std::size_t>(n), 2);
+    EXPECT_NEAR(root, -P, 1e-8) << c.etype;
+  }
+}
+
+// The strip twisted by T = 1: away from the ends the twist rate is T/(GJ) with the Mindlin
+// plate's torsion constant J = (bt³/3)(1 − 2 tanh(λb/2)/(λb)), λ = √(12κ)/t (uniform twist
+// with the free edges' transverse shear boundary layer; it gives 0.3123 bt³ here, Saint-Venant's
+// 0.3123 bt³ for b/t = 10). Measured on the axis between x = 3 and 7; within 1 % at 40 × 20.
+TEST(Shells, StripTorsionMatchesTheMindlinPlateTorsionConstant) {
+  const double b = 1.0, t = 0.1, G = 1e5, lambda = std::sqrt(10.0) / t;
+  const double J = b * t * t * t / 3 * (1 - 2 * std::tanh(lambda * b / 2) / (lambda * b));
+  for (const char* etype : {"S4", "S8R"}) {
+    const auto r = run_deck(shell_deck("torsion", etype, etype == std::string("S8R") ? 20 : 40));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::Frame& f = r->capture.last();
+    double at3 = 0, at7 = 0;
+    for (std::int32_t n : nset(r->model(), "AXIS")) {
+      const double x = coords(r->model(), n)[0];
+      if (std::abs(x - 3) < 1e-9) at3 = nodal(f, "UR", static_cast<std::size_t>(n), 0);
+      if (std::abs(x - 7) < 1e-9) at7 = nodal(f, "UR", static_cast<std::size_t>(n), 0);
+    }
+    const double rate = (at7 - at3) / 4, expected = 1.0 / (G * J);
+    report(std::string("strip torsion ") + etype + ": twist rate / (T/GJ)", rate / expected);
+    EXPECT_NEAR(rate, expected, 1e-2 * expected) << etype;
+  }
+}
+
+struct Benchmark {
+  const char* name;
+  const char* point;  ///< the node set of the measured node
+  int component;      ///< 0-based
+  double reference;
+  const char* etype;
+  std::vector<int> meshes;  ///< coarse to fine
+  double tolerance;         ///< on the finest mesh, relative to the reference
+};
+
+void run_benchmark(const Benchmark& b, bool thin = false, int step = 1) {
+  double last = 0.0;
+  for (int n : b.meshes) {
+    last = displacement(shell_deck(b.name, b.etype, n, thin), b.point, b.component, step);
+    report(fmt::format("{}{} {} {}: U{} / reference", b.name, thin ? " thin" : "", b.etype, n, b.component + 1),
+           last / b.reference);
+  }
+  EXPECT_NEAR(last, b.reference, b.tolerance * std::abs(b.reference)) << b.name << " " << b.etype;
+}
+
+// Scordelis–Lo roof: vertical displacement at the middle of the free edge −0.3024.
+TEST(Shells, ScordelisLoRoof) {
+  run_benchmark({"scordelis_lo", "POINT", 2, -0.3024, "S4", {4, 8, 16}, 0.02});
+  run_benchmark({"scordelis_lo", "POINT", 2, -0.3024, "S8R", {4, 8}, 0.02});
+  run_benchmark({"scordelis_lo", "POINT", 2, -0.3024, "S3", {16, 32}, 0.03});
+}
+
+// Pinched cylinder with end diaphragms: displacement under the load −1.8248e-5.
+TEST(Shells, PinchedCylinder) {
+  run_benchmark({"pinched", "POINT", 2, -1.8248e-5, "S4", {8, 16, 32}, 0.02});
+  run_benchmark({"pinched", "POINT", 2, -1.8248e-5, "S8R", {8, 16}, 0.02});
+}
+
+// Pinched hemisphere with an 18° hole: radial displacement under the loads 0.094.
+TEST(Shells, PinchedHemisphere) {
+  run_benchmark({"hemisphere", "LOADX", 0, 0.094, "S4", {8, 16}, 0.02});
+  run_benchmark({"hemisphere", "LOADX", 0, 0.094, "S8R", {8, 16}, 0.02});
+}
+
+// Twisted beam, thick (t = 0.32, P = 1) and thin (t = 0.0032, P = 1e-6): tip displacement along
+// the load, in plane (step 1) and out of plane (step 2).
+TEST(Shells, TwistedBeam) {
+  run_benchmark({"twisted", "CENTRE", 2, 5.424e-3, "S4", {2, 4}, 0.02});
+  run_benchmark({"twisted", "CENTRE", 1, 1.754e-3, "S4", {2, 4, 8}, 0.02}, false, 2);
+  run_benchmark({"twisted", "CENTRE", 2, 5.256e-3, "S4", {2, 4}, 0.02}, true);
+  run_benchmark({"twisted", "CENTRE", 1, 1.294e-3, "S4", {2, 4}, 0.02}, true, 2);
+}
+
+}  // namespace
+}  // namespace inpact::verification
