@@ -105,6 +105,9 @@ struct ContactPair {
   double smooth = 0.2;
   /// CalculiX LINEAR flag: the pair does not switch on nonlinear geometry.
   bool linear = false;
+  /// NO THICKNESS: shell surfaces meet at their reference surface, not offset by half the
+  /// shell thickness (Abaqus's default, which inpact does not model yet).
+  bool no_thickness = false;
   SourceLoc loc;  ///< the data line's slave surface
   /// Where the names given as parameters are written (the values of INTERACTION=, GEOMETRIC
   /// CORRECTION= and ADJUST= on the keyword line): an undefined name is reported there.

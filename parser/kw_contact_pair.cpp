@@ -68,6 +68,7 @@ void contact_pair(KeywordContext& ctx) {
                             "SURFACE TO SURFACE or NODE TO SURFACE");
   base.small_sliding = ctx.has("SMALL SLIDING");
   base.tied = ctx.has("TIED");
+  base.no_thickness = ctx.has("NO THICKNESS");
   base.linear = ctx.has("LINEAR");
   base.geometric_correction = ctx.name_value("GEOMETRIC CORRECTION");
   read_adjust(ctx, base);
@@ -91,7 +92,7 @@ void contact_pair(KeywordContext& ctx) {
 
   // Abaqus/Standard formulation details that inpact's own discretisations do not have: the
   // answer they give differs from Abaqus's by discretisation error only, so they are accepted
-  // with a warning. NO THICKNESS concerns shells, which inpact does not have: nothing to say.
+  // with a warning.
   if (ctx.choice_value("SUPPLEMENTARY CONSTRAINTS") != "NO")
     warn_ignored(ctx, "SUPPLEMENTARY CONSTRAINTS", "inpact's node-to-surface contact adds no supplementary constraints");
   for (std::string_view p : {"MIDFACE NODES", "MINIMUM DISTANCE", "SLIDING TRANSITION", "TRACKING"})

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "model/element_types.hpp"
 #include "step_conditions.hpp"
 #include "contact/analytical_pair.hpp"
 #include "contact/enforcement.hpp"
@@ -319,6 +320,17 @@ std::vector<std::string> ContactProblem::describe() const {
   return out;
 }
 
+namespace {
+
+/// An element-based surface with a face on a shell element.
+bool on_shells(const model::Model& m, const model::Surface& s) {
+  return std::any_of(s.faces.begin(), s.faces.end(), [&](const model::Face& f) {
+    return model::is_shell(model::element_type(m.mesh.elements.type[static_cast<std::size_t>(f.element)]));
+  });
+}
+
+}  // namespace
+
 void check_contact_supported(const model::Model& m, const contact::InteractionTable& table) {
   for (const contact::ContactInteraction& e : table.rows) {
     const model::ContactPair& p = e.pair;
@@ -335,6 +347,12 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
       refuse(m, p.loc, kw, "ADJUST: the model was not adjusted before the analysis (contact::apply_adjust)");
     if (e.master->kind == model::Surface::Kind::Node)
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
+    for (const model::Surface* s : {e.slave, e.master})
+      if (on_shells(m, *s) && !(p.no_thickness && !e.general))
+        refuse(m, p.loc, kw, fmt::format("surface {} lies on shell elements: contact on the shell's outer surface, half "
+                                         "its thickness from the nodes (Abaqus's default), is not supported yet; give NO "
+                                         "THICKNESS on *CONTACT PAIR to make contact at the shells' reference surface",
+                                         s->name));
   }
 }
 

@@ -1,0 +1,59 @@
+// *SHELL SECTION, *SHELL GENERAL SECTION, their *TRANSVERSE SHEAR STIFFNESS and *NODAL
+// THICKNESS: what is read, the rotation node each shell node gets, and the deck errors.
+#include <gtest/gtest.h>
+
+#include "fixtures/deck_fixture.hpp"
+
+using namespace inpact;
+using inpact::test::DeckDir;
+using inpact::test::has_diagnostic;
+
+namespace {
+
+// Lines 1–7: four nodes and one S4 (deck lines: *NODE 1, nodes 2–5, *ELEMENT 6, element 7).
+const std::string kPlate = "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n"
+                           "*ELEMENT, TYPE=S4, ELSET=P\n1, 1, 2, 3, 4\n";
+const std::string kMaterial = "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n";  // lines 8–10
+
+}  // namespace
+
+TEST(ShellSectionKeyword, ReadsThicknessPointsOffsetAndShearStiffness) {
+  DeckDir dir;
+  auto r = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, OFFSET=SPOS\n0.2, 7\n"
+                                         "*TRANSVERSE SHEAR STIFFNESS\n50., 60.\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  ASSERT_EQ(r.model.mesh.shell_sections.size(), 1u);
+  const auto& s = r.model.mesh.shell_sections[0];
+  EXPECT_EQ(s.thickness, 0.2);
+  EXPECT_EQ(s.section_points, 7);
+  EXPECT_EQ(s.offset, 0.5);
+  ASSERT_TRUE(s.transverse_shear.has_value());
+  EXPECT_EQ((*s.transverse_shear)[0], 50.0);
+  EXPECT_EQ((*s.transverse_shear)[1], 60.0);
+  // Every shell node gets a rotation node; Abaqus's default of 5 section points, no offset.
+  EXPECT_EQ(r.model.node_rotations.size(), 4u);
+  auto d = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, OFFSET=-0.25\n0.2\n");
+  ASSERT_TRUE(d.ok()) << d.report();
+  EXPECT_EQ(d.model.mesh.shell_sections[0].section_points, 5);
+  EXPECT_EQ(d.model.mesh.shell_sections[0].offset, -0.25);
+}
+
+TEST(ShellSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError) {
+  DeckDir dir;
+  auto even = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2, 4\n");
+  EXPECT_TRUE(has_diagnostic(even, "deck.inp:12:6: error: *SHELL SECTION: Simpson's rule through the thickness takes an "
+                                   "odd number of section points, at least 3; found 4"))
+      << even.report();
+  auto composite = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, COMPOSITE\n0.2\n");
+  EXPECT_TRUE(has_diagnostic(composite, "COMPOSITE on a shell section is not supported yet")) << composite.report();
+  auto nodal = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, NODAL THICKNESS\n0.2\n"
+                                             "*NODAL THICKNESS\n1, 0.1\n2, 0.1\n3, 0.1\n");
+  EXPECT_TRUE(has_diagnostic(nodal, "deck.inp:11:1: error: *SHELL SECTION: NODAL THICKNESS: node 4 of element 1 has no "
+                                    "*NODAL THICKNESS"))
+      << nodal.report();
+  auto solid = dir.read(kPlate + kMaterial + "*SOLID SECTION, ELSET=P, MATERIAL=M\n");
+  EXPECT_TRUE(has_diagnostic(solid, "element 1 is a shell element: its section is a *SHELL SECTION")) << solid.report();
+  auto face = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=S\n1, S3\n");
+  EXPECT_TRUE(has_diagnostic(face, "element 1 (S4) is a shell element: its faces are SPOS and SNEG, not 'S3'"))
+      << face.report();
+}
