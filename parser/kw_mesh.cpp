@@ -242,15 +242,19 @@ void nset(KeywordContext& ctx) {
 void elset(KeywordContext& ctx) { fill_set(ctx, false); }
 
 /// The face number of an `S1`..`S6` field for this element type (a rigid element's or shell's
-/// SNEG = 0 and SPOS = 1), or nullopt with an error.
+/// SNEG = 0 and SPOS = 1; CalculiX names a shell's SNEG S1 and its SPOS S2), or nullopt with an
+/// error.
 std::optional<std::uint8_t> face_of(KeywordContext& ctx, const Field& f, std::int32_t element) {
   const auto& info = model::element_type(ctx.mesh().elements.type[element]);
   const std::string id = normalize_name(f.text);
   if (model::is_rigid(info) || model::is_shell(info)) {
     if (id == "SNEG" || id == "SPOS") return static_cast<std::uint8_t>(id == "SPOS" ? 1 : 0);
-    ctx.error(f.loc, fmt::format("element {} ({}) is a {} element: its faces are SPOS and SNEG, not '{}'",
+    if (model::is_shell(info) && (id == "S1" || id == "S2")) return static_cast<std::uint8_t>(id == "S2" ? 1 : 0);
+    ctx.error(f.loc, fmt::format("element {} ({}) is a {} element: its faces are SPOS and SNEG{}, not '{}'",
                                  ctx.mesh().elements.labels[element], info.name,
-                                 model::is_rigid(info) ? "rigid" : "shell", f.text));
+                                 model::is_rigid(info) ? "rigid" : "shell",
+                                 model::is_rigid(info) ? "" : " (CalculiX's S2 and S1; edges are not supported yet)",
+                                 f.text));
     return std::nullopt;
   }
   if (id.size() == 2 && id[0] == 'S' && id[1] >= '1' && id[1] <= '6') {

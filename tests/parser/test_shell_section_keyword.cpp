@@ -54,6 +54,19 @@ TEST(ShellSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError
   auto solid = dir.read(kPlate + kMaterial + "*SOLID SECTION, ELSET=P, MATERIAL=M\n");
   EXPECT_TRUE(has_diagnostic(solid, "element 1 is a shell element: its section is a *SHELL SECTION")) << solid.report();
   auto face = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=S\n1, S3\n");
-  EXPECT_TRUE(has_diagnostic(face, "element 1 (S4) is a shell element: its faces are SPOS and SNEG, not 'S3'"))
+  EXPECT_TRUE(has_diagnostic(face, "element 1 (S4) is a shell element: its faces are SPOS and SNEG (CalculiX's S2 and "
+                                   "S1; edges are not supported yet), not 'S3'"))
       << face.report();
+}
+
+// CalculiX names a shell's faces S1 (SNEG) and S2 (SPOS).
+TEST(ShellSectionKeyword, CalculixShellFacesS1AndS2AreSnegAndSpos) {
+  DeckDir dir;
+  auto r = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=A\n1, S1\n"
+                                         "*SURFACE, NAME=B\n1, S2\n*SURFACE, NAME=C\n1, SPOS\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& s = r.model.mesh.surfaces;
+  EXPECT_EQ(s.at("A").faces.at(0).face, 0);
+  EXPECT_EQ(s.at("B").faces.at(0).face, 1);
+  EXPECT_EQ(s.at("C").faces.at(0).face, 1);
 }

@@ -54,4 +54,19 @@ std::vector<double> nodal_field(const model::ElementTypeInfo& type, const std::v
   return u;
 }
 
+/// The DOFs of an element with rotations at its nodes (beams, shells: the translations of every
+/// node, then the rotations in the same order) for the small rigid motion u = c + ω × x, θ = ω.
+inline std::vector<double> rigid_motion_with_rotations(const std::vector<Vec3>& x, const Vec3& c, const Vec3& w) {
+  std::vector<double> u(6 * x.size());
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    const Vec3& p = x[a];
+    const Vec3 wx{w[1] * p[2] - w[2] * p[1], w[2] * p[0] - w[0] * p[2], w[0] * p[1] - w[1] * p[0]};
+    for (int i = 0; i < 3; ++i) {
+      u[3 * a + i] = c[i] + wx[i];
+      u[3 * (x.size() + a) + i] = w[i];
+    }
+  }
+  return u;
+}
+
 }  // namespace inpact::test

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "element_fixtures.hpp"
 #include "model/element_types.hpp"
 #include "solver/elements/beam_elements.hpp"
 #include "solver/elements/beam_section.hpp"
@@ -30,28 +31,13 @@ ElementSystem run(const char* name, const std::vector<Vec3>& x, const std::vecto
   return sys;
 }
 
-/// u of the element's DOFs (translations of every node, then rotations) for the small rigid
-/// motion u = c + ω × x, θ = ω.
-std::vector<double> rigid_motion(const std::vector<Vec3>& x, const Vec3& c, const Vec3& w) {
-  std::vector<double> u(6 * x.size());
-  for (std::size_t a = 0; a < x.size(); ++a) {
-    const Vec3& p = x[a];
-    const Vec3 wx{w[1] * p[2] - w[2] * p[1], w[2] * p[0] - w[0] * p[2], w[0] * p[1] - w[1] * p[0]};
-    for (int i = 0; i < 3; ++i) {
-      u[3 * a + i] = c[i] + wx[i];
-      u[3 * (x.size() + a) + i] = w[i];
-    }
-  }
-  return u;
-}
-
 // A rigid motion strains nothing, in any orientation, for every beam element; the stiffness is
 // symmetric. Round-off: 1e-10 of the largest stiffness term times the motion.
 TEST(BeamElements, RigidMotionsStrainNothingAndTheStiffnessIsSymmetric) {
   const BeamProperties p = rectangle(0.3, 0.2);
   const std::vector<std::vector<Vec3>> shapes = {{{0, 0, 0}, {1.0, 2.0, 0.5}}, {{0, 0, 0}, {0.5, 1.0, 0.25}, {1.0, 2.0, 0.5}}};
   for (const auto& [name, x] : {std::pair{"B31", shapes[0]}, std::pair{"B33", shapes[0]}, std::pair{"B32", shapes[1]}}) {
-    const ElementSystem sys = run(name, x, rigid_motion(x, {0.1, -0.2, 0.3}, {0.01, 0.02, -0.03}), p);
+    const ElementSystem sys = run(name, x, test::rigid_motion_with_rotations(x, {0.1, -0.2, 0.3}, {0.01, 0.02, -0.03}), p);
     double scale = 0.0, worst = 0.0, skew = 0.0;
     for (double k : sys.stiffness) scale = std::max(scale, std::abs(k));
     for (double f : sys.internal_force) worst = std::max(worst, std::abs(f));

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "element_fixtures.hpp"
 #include "model/element_types.hpp"
 #include "solver/elements/shell_elements.hpp"
 #include "solver/elements/shell_section.hpp"
@@ -47,21 +48,6 @@ std::vector<Vec3> flat(std::string_view name, double a = 2.0, double b = 1.5) {
   return x;
 }
 
-/// u of the element's DOFs (translations of every node, then rotations) for the small rigid
-/// motion u = c + ω × x, θ = ω.
-std::vector<double> rigid_motion(const std::vector<Vec3>& x, const Vec3& c, const Vec3& w) {
-  std::vector<double> u(6 * x.size());
-  for (std::size_t a = 0; a < x.size(); ++a) {
-    const Vec3& p = x[a];
-    const Vec3 wx{w[1] * p[2] - w[2] * p[1], w[2] * p[0] - w[0] * p[2], w[0] * p[1] - w[1] * p[0]};
-    for (int i = 0; i < 3; ++i) {
-      u[3 * a + i] = c[i] + wx[i];
-      u[3 * (x.size() + a) + i] = w[i];
-    }
-  }
-  return u;
-}
-
 /// Node positions bent onto a cylinder of radius R about the y axis (z = R − √(R² − x²)) and
 /// turned, so that the directors differ from node to node and from the global axes.
 std::vector<Vec3> curved(std::vector<Vec3> x, double R) {
@@ -82,7 +68,7 @@ TEST(ShellElements, RigidMotionsCostNothingAndTheStiffnessIsSymmetric) {
     for (bool bent : {false, true}) {
       const std::vector<Vec3> x = bent ? curved(flat(name), 3.0) : flat(name);
       const ShellProperties p = section(bent ? 0.3 : 0.0);
-      const ElementSystem sys = run(name, x, rigid_motion(x, {0.1, -0.2, 0.3}, {0.01, 0.02, -0.03}), p);
+      const ElementSystem sys = run(name, x, test::rigid_motion_with_rotations(x, {0.1, -0.2, 0.3}, {0.01, 0.02, -0.03}), p);
       double scale = 0.0, worst = 0.0, skew = 0.0;
       for (double k : sys.stiffness) scale = std::max(scale, std::abs(k));
       for (double f : sys.internal_force) worst = std::max(worst, std::abs(f));
