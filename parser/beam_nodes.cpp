@@ -36,25 +36,9 @@ void check_beam_section(const model::Model& m, const model::BeamSection& sec, Di
   }
 }
 
-/// A *SOLID SECTION on beams: their section is a *BEAM SECTION.
-void check_no_solid_section_on_beams(const model::Model& m, Diagnostics& diags) {
-  const auto& el = m.mesh.elements;
-  for (const model::SolidSection& sec : m.mesh.sections) {
-    auto set = m.mesh.elsets.find(sec.elset);
-    if (set == m.mesh.elsets.end()) continue;
-    for (std::int32_t e : set->second.rows)
-      if (model::is_beam(model::element_type(el.type[static_cast<std::size_t>(e)]))) {
-        diags.error(sec.loc, "*SOLID SECTION", fmt::format("element {} is a beam element: its section is a *BEAM "
-                                                           "SECTION or *BEAM GENERAL SECTION", el.labels[e]));
-        break;
-      }
-  }
-}
-
 }  // namespace
 
 void check_beam_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section) {
-  check_no_solid_section_on_beams(m, diags);
   for (const model::BeamSection& sec : m.mesh.beam_sections) check_beam_section(m, sec, diags, has_section);
 }
 

@@ -82,6 +82,27 @@ void switch_on_nlgeom_for_hyperelasticity(model::Model& m) {
     if (!step.nlgeom) step.nlgeom = step.nlgeom_switched_on = true;
 }
 
+/// A *SOLID SECTION on beams or shells: their sections are *BEAM SECTION and *SHELL SECTION (or
+/// the GENERAL forms), in CalculiX decks too. The first such element of each family is reported.
+void check_no_solid_section_on_beams_or_shells(const model::Model& m, Diagnostics& diags) {
+  const auto& el = m.mesh.elements;
+  for (const model::SolidSection& sec : m.mesh.sections) {
+    auto set = m.mesh.elsets.find(sec.elset);
+    if (set == m.mesh.elsets.end()) continue;
+    for (const bool beams : {true, false}) {
+      const auto wrong = std::find_if(set->second.rows.begin(), set->second.rows.end(), [&](std::int32_t e) {
+        const auto& type = model::element_type(el.type[static_cast<std::size_t>(e)]);
+        return beams ? model::is_beam(type) : model::is_shell(type);
+      });
+      if (wrong == set->second.rows.end()) continue;
+      const char* family = beams ? "BEAM" : "SHELL";
+      diags.error(sec.loc, "*SOLID SECTION", fmt::format("element {} is a {} element: its section is a *{} SECTION or *{} "
+                                                         "GENERAL SECTION", el.labels[*wrong], beams ? "beam" : "shell",
+                                                         family, family));
+    }
+  }
+}
+
 void check_sections(model::Model& m, Diagnostics& diags) {
   std::vector<std::uint8_t> has_section(m.mesh.elements.size(), 0);
   for (const auto& sec : m.mesh.sections) {
@@ -102,6 +123,7 @@ void check_sections(model::Model& m, Diagnostics& diags) {
     }
   }
   check_line_element_sections(m, diags, has_section);
+  check_no_solid_section_on_beams_or_shells(m, diags);
   check_beam_sections(m, diags, has_section);
   check_shell_sections(m, diags, has_section);
   // Elements without a section cannot be analysed: report the first few by their own line.

@@ -55,25 +55,9 @@ void check_shell_section(const model::Model& m, const model::ShellSection& sec, 
   if (sec.nodal_thickness) check_nodal_thickness(m, sec, set->second, diags);
 }
 
-/// A *SOLID SECTION on shells: their section is a *SHELL SECTION (CalculiX decks too).
-void check_no_solid_section_on_shells(const model::Model& m, Diagnostics& diags) {
-  const auto& el = m.mesh.elements;
-  for (const model::SolidSection& sec : m.mesh.sections) {
-    auto set = m.mesh.elsets.find(sec.elset);
-    if (set == m.mesh.elsets.end()) continue;
-    for (std::int32_t e : set->second.rows)
-      if (model::is_shell(model::element_type(el.type[static_cast<std::size_t>(e)]))) {
-        diags.error(sec.loc, "*SOLID SECTION", fmt::format("element {} is a shell element: its section is a *SHELL "
-                                                           "SECTION or *SHELL GENERAL SECTION", el.labels[e]));
-        break;
-      }
-  }
-}
-
 }  // namespace
 
 void check_shell_sections(const model::Model& m, Diagnostics& diags, std::vector<std::uint8_t>& has_section) {
-  check_no_solid_section_on_shells(m, diags);
   for (const model::ShellSection& sec : m.mesh.shell_sections) check_shell_section(m, sec, diags, has_section);
 }
 

@@ -173,6 +173,8 @@ bool point_key(const std::string& key) {
          key == "SM";
 }
 
+/// Beams have section forces but no stresses at points yet: S, E and the like are noted as not
+/// computed for them.
 bool model_has_beams(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
 }

@@ -118,11 +118,7 @@ void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coor
   const int n_dof = 6 * n;
   if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n_dof)
     throw std::invalid_argument("compute_beam: coordinate or displacement count mismatch");
-  out.n_dof = n_dof;
-  out.local_iterations = 0;
-  out.internal_force.assign(request.internal_force ? static_cast<std::size_t>(n_dof) : 0, 0.0);
-  out.stiffness.assign(request.stiffness ? static_cast<std::size_t>(n_dof) * n_dof : 0, 0.0);
-  out.points.clear();
+  begin_element_system(out, n_dof, request);
   const std::vector<TrussPoint> pts = truss_points(type, coords, 3);
   out.min_jacobian = 1e300;
   double length = 0.0;

@@ -109,6 +109,16 @@ struct ElementSystem {
   double k(int i, int j) const { return stiffness[static_cast<std::size_t>(i) * n_dof + j]; }
 };
 
+/// Sizes `out` for an element of `n_dof` DOFs as `request` asks, zeroed, with no points: the
+/// common start of the line, beam and shell kernels.
+inline void begin_element_system(ElementSystem& out, int n_dof, const ElementRequest& request) {
+  out.n_dof = n_dof;
+  out.local_iterations = 0;
+  out.internal_force.assign(request.internal_force ? static_cast<std::size_t>(n_dof) : 0, 0.0);
+  out.stiffness.assign(request.stiffness ? static_cast<std::size_t>(n_dof) * n_dof : 0, 0.0);
+  out.points.clear();
+}
+
 /// Stiffness K = ∂f_int/∂u, internal force f_int(u) = ∫ Bᵀσ dV (plus the hourglass force for
 /// reduced integration) and point output for one element.
 ///

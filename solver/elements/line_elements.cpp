@@ -32,14 +32,6 @@ double dot(const Vec3& a, const Vec3& b, int dim) {
   return s;
 }
 
-void begin(ElementSystem& out, int n_dof, const ElementRequest& request) {
-  out.n_dof = n_dof;
-  out.local_iterations = 0;
-  out.internal_force.assign(request.internal_force ? static_cast<std::size_t>(n_dof) : 0, 0.0);
-  out.stiffness.assign(request.stiffness ? static_cast<std::size_t>(n_dof) * n_dof : 0, 0.0);
-  out.points.clear();
-}
-
 /// One truss point: f_a += w A σ̂ dN_a v / J and K_ab += (w A / J) dN_a dN_b (C v vᵀ / J² + σ̂ I),
 /// with v = t₀J, σ̂ = σ (small strain: no geometric term) or v = g = dx/dξ, σ̂ = S (NLGEOM).
 void add_truss_point(const TrussPoint& p, int n, int dim, double area, const Vec3& v, double modulus, double stress,
@@ -64,7 +56,7 @@ void compute_truss(const model::ElementTypeInfo& type, std::span<const Vec3> coo
                    const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
                    std::span<const double> delta_t, ElementSystem& out) {
   const int n = type.n_nodes;
-  begin(out, n * dim, request);
+  begin_element_system(out, n * dim, request);
   const std::vector<TrussPoint> pts = truss_points(type, coords, dim);
   out.min_jacobian = 1e300;
   for (const TrussPoint& p : pts) out.min_jacobian = std::min(out.min_jacobian, p.J);
@@ -207,7 +199,7 @@ void compute_line_element(const model::ElementTypeInfo& type, std::span<const Ve
     return;
   }
   if (!section.spring) throw std::invalid_argument("compute_line_element: a spring without its *SPRING behaviour");
-  begin(out, static_cast<int>(u.size()), request);
+  begin_element_system(out, static_cast<int>(u.size()), request);
   out.min_jacobian = 1.0;
   if (type.name == std::string_view("SPRINGA")) compute_axial_spring(coords, u, dim, *section.spring, request, out);
   else compute_dof_spring(coords, u, dim, *section.spring, n == 2, request, out);

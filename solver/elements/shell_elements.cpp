@@ -236,11 +236,7 @@ void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coo
   const int nd = geo.n_dof();
   if (static_cast<int>(coords.size()) != geo.n || static_cast<int>(u.size()) != nd)
     throw std::invalid_argument("compute_shell: coordinate or displacement count mismatch");
-  out.n_dof = nd;
-  out.local_iterations = 0;
-  out.internal_force.assign(request.internal_force ? static_cast<std::size_t>(nd) : 0, 0.0);
-  out.stiffness.assign(request.stiffness ? static_cast<std::size_t>(nd) * nd : 0, 0.0);
-  out.points.clear();
+  begin_element_system(out, nd, request);
   out.min_jacobian = 0.0;
   if (!nodal_directors(geo) || !(thickness > 0.0)) return;  // degenerate: the caller reports it
   out.min_jacobian = 1e300;
