@@ -55,20 +55,24 @@ struct Expansion {
 /// with σ⁰ = the first yield stress and C from the first two points (one point: perfectly
 /// plastic). COMBINED (DATATYPE=PARAMETERS): nonlinear kinematic hardening (Chaboche), the
 /// first point is σ|0 and `backstresses` holds (C_k, γ_k); the size of the yield surface comes
-/// from *CYCLIC HARDENING (Material::cyclic_hardening), constant σ|0 without it. One temperature
-/// only (a temperature column with one value is accepted).
+/// from *CYCLIC HARDENING (Material::cyclic_hardening), constant σ|0 without it.
+/// Temperature: ISOTROPIC tables may come in blocks of rows, one block per temperature
+/// (temperatures increasing, each block from zero plastic strain); the yield stress is then
+/// interpolated linearly in temperature at equal plastic strain, constant outside the range
+/// (Abaqus). KINEMATIC and COMBINED take one temperature.
 struct Plastic {
   enum class Hardening : std::uint8_t { Isotropic, Kinematic, Combined };
   struct Point {
     double yield_stress = 0.0;
     double plastic_strain = 0.0;
+    double temperature = 0.0;  ///< the row's temperature (0 without a temperature column)
   };
   struct Backstress {
     double modulus = 0.0;   ///< C_k
     double recovery = 0.0;  ///< γ_k (0: linear)
   };
   Hardening hardening = Hardening::Isotropic;
-  std::vector<Point> table;
+  std::vector<Point> table;  ///< every row, in blocks of equal temperature
   std::vector<Backstress> backstresses;
   SourceLoc loc;
 };

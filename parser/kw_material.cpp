@@ -157,9 +157,44 @@ std::optional<PlasticLine> plastic_line(KeywordContext& ctx, const Line& line) {
   return out;
 }
 
+// The rows of *PLASTIC (not COMBINED) into p.table: blocks of equal temperature, temperatures
+// increasing, each block from zero plastic strain with strains increasing. Several temperatures
+// only with isotropic hardening.
+bool plastic_table(KeywordContext& ctx, model::Plastic& p) {
+  for (std::size_t i = 0; i < ctx.data.size(); ++i) {
+    const auto line = plastic_line(ctx, ctx.data[i]);
+    if (!line) return false;
+    model::Plastic::Point point = line->point;
+    point.temperature = line->temperature.value_or(0.0);
+    const bool new_block = i == 0 || point.temperature != p.table.back().temperature;
+    if (new_block && i > 0 && point.temperature < p.table.back().temperature) {
+      ctx.error(line->temperature_loc, fmt::format("the temperatures must increase from block to block, found {} "
+                                                   "after {}", point.temperature, p.table.back().temperature));
+      return false;
+    }
+    if (new_block && i > 0 && p.hardening != model::Plastic::Hardening::Isotropic) {
+      ctx.error(line->temperature_loc, "temperature-dependent kinematic hardening (more than one temperature) is not "
+                                       "supported yet");
+      return false;
+    }
+    const double ep = point.plastic_strain;
+    if (new_block && ep != 0.0) {
+      ctx.error(line->strain_loc, fmt::format("the first yield stress {}must be given at zero plastic strain, found {}",
+                                              i == 0 ? "" : fmt::format("at temperature {} ", point.temperature), ep));
+      return false;
+    }
+    if (!new_block && ep <= p.table.back().plastic_strain) {
+      ctx.error(line->strain_loc, fmt::format("the plastic strains must increase, found {} after {}", ep,
+                                              p.table.back().plastic_strain));
+      return false;
+    }
+    p.table.push_back(point);
+  }
+  return true;
+}
+
 // *PLASTIC, HARDENING=ISOTROPIC (default) | KINEMATIC: yield stress, equivalent plastic strain
-// [, temperature] per line. The first line is at zero plastic strain (Abaqus requires it), the
-// strains increase. A temperature column is read; several temperatures are not supported yet.
+// [, temperature] per line, in blocks of one temperature (plastic_table).
 void plastic(KeywordContext& ctx) {
   const std::string hardening = ctx.choice_value("HARDENING");
   model::Plastic p;
@@ -177,28 +212,8 @@ void plastic(KeywordContext& ctx) {
   }
   const std::size_t n_errors = ctx.diags.error_count();
   if (p.hardening == model::Plastic::Hardening::Combined) combined_plastic(ctx, p);
+  else if (!plastic_table(ctx, p)) return;
   if (ctx.diags.error_count() > n_errors) return;
-  std::optional<double> first_temperature;
-  for (std::size_t i = 0; p.hardening != model::Plastic::Hardening::Combined && i < ctx.data.size(); ++i) {
-    const auto line = plastic_line(ctx, ctx.data[i]);
-    if (!line) return;
-    if (i == 0) first_temperature = line->temperature;
-    if (line->temperature.value_or(0.0) != first_temperature.value_or(0.0)) {
-      ctx.error(line->temperature_loc, "temperature-dependent plasticity (more than one temperature) is not supported yet");
-      return;
-    }
-    const double ep = line->point.plastic_strain;
-    if (i == 0 && ep != 0.0) {
-      ctx.error(line->strain_loc, fmt::format("the first yield stress must be given at zero plastic strain, found {}", ep));
-      return;
-    }
-    if (i > 0 && ep <= p.table.back().plastic_strain) {
-      ctx.error(line->strain_loc, fmt::format("the plastic strains must increase, found {} after {}", ep,
-                                              p.table.back().plastic_strain));
-      return;
-    }
-    p.table.push_back(line->point);
-  }
   if (ctx.state.material->plastic) ctx.error(ctx.keyword.loc, "*PLASTIC is given twice in this material");
   p.loc = ctx.keyword.loc;
   ctx.state.material->plastic = std::move(p);

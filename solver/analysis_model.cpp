@@ -83,12 +83,8 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
     throw AnalysisError(fmt::format("{}: error: *CYCLIC HARDENING: it needs *PLASTIC, HARDENING=COMBINED (material '{}')",
                                     m.sources.describe(mat.cyclic_hardening->loc), mat.name));
   if (p.hardening == model::Plastic::Hardening::Combined) return combined_law(m, mat, family, c);
-  elements::MisesHardening h;
+  elements::MisesHardening h = elements::isotropic_hardening(p.table);
   h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
-  for (const auto& point : p.table) {
-    h.plastic_strain.push_back(point.plastic_strain);
-    h.yield_stress.push_back(point.yield_stress);
-  }
   const auto nlgeom = std::find_if(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
   if (nlgeom == m.steps.end()) return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
   const char* missing = h.kinematic ? "kinematic hardening"
@@ -269,6 +265,9 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   for (auto& w : contact::tie_warnings(m, am.ties)) am.warnings.push_back(std::move(w));
 
   set_transforms(m, am);
+  am.initial_temperature.assign(m.mesh.nodes.size(), 0.0);
+  for (const auto& t : m.initial_temperatures)
+    for (std::int32_t n : t.nodes) am.initial_temperature[static_cast<std::size_t>(n)] = t.value;
   am.rotation_node_of.assign(m.mesh.nodes.size(), -1);
   for (const model::RotatingNode& r : model::rotating_nodes(m, am.dim))
     am.rotation_node_of[static_cast<std::size_t>(r.ref_node)] = r.rot_node;

@@ -59,6 +59,8 @@ struct AnalysisModel {
   /// Per node row: the local node that holds its *TRANSFORM components (model/transform.hpp),
   /// else −1; and the index of its *TRANSFORM, else −1 (printed output turns into its axes).
   std::vector<std::int32_t> local_node_of, transform_of;
+  /// Per node row: T_initial (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 where none is given).
+  std::vector<double> initial_temperature;
 
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }
@@ -75,6 +77,12 @@ struct AnalysisModel {
   /// count.
   static constexpr std::size_t kMaxElementRows = 32;
   std::size_t element_rows(std::size_t e, std::span<std::int32_t> rows) const;
+  /// The temperature T_initial + ΔT of a node, ΔT from `delta_t` (StepConditions::
+  /// temperature_change; empty: no change).
+  double temperature(std::int32_t node, std::span<const double> delta_t) const {
+    const auto n = static_cast<std::size_t>(node);
+    return initial_temperature[n] + (delta_t.empty() ? 0.0 : delta_t[n]);
+  }
   /// Reference coordinates of element e's nodes.
   std::vector<elements::Vec3> coords(std::size_t e) const;
 };

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "elements/element_kernel.hpp"
+#include "elements/material.hpp"
 #include "material_states.hpp"
 
 namespace inpact::solver {
@@ -137,6 +138,8 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   std::array<elements::Vec3, kMaxNodes> x;
   std::array<double, kMaxNodes * 3> u_el;
   std::array<double, kMaxNodes> dt_el;
+  std::array<double, kMaxNodes> temperature_el;  // T itself, for temperature-dependent data
+  const bool temperature_dependent = setup.material->temperature_dependent();
   std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
   const std::size_t n_rows = am_.element_rows(e, rows);  // a beam's rotations follow its nodes
   const std::size_t dim = static_cast<std::size_t>(am_.dim);
@@ -144,7 +147,9 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
     const std::size_t node = static_cast<std::size_t>(nodes[a]);
     x[a] = mesh.nodes.coords[node];
     if (!request.delta_t.empty()) dt_el[a] = request.delta_t[node];
+    if (temperature_dependent) temperature_el[a] = am_.temperature(nodes[a], request.delta_t);
   }
+  if (temperature_dependent) er.temperature = std::span(temperature_el).first(nodes.size());
   for (std::size_t a = 0; a < n_rows; ++a)
     for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[static_cast<std::size_t>(rows[a]) * dim + c];
   const std::size_t n = nodes.size();

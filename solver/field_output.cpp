@@ -401,17 +401,23 @@ class PointCache {
     if (have_[el]) return points_[el];
     const ElementSetup& setup = am_.elements[el];
     if (model::is_rigid(*setup.type)) return {};  // no points: a rigid element is not integrated
-    std::vector<double> u_el, dt_el;
+    std::vector<double> u_el, dt_el, temperature_el;
     std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's rotations too
     for (std::size_t a = 0, n = am_.element_rows(el, rows); a < n; ++a)
       for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(rows[a]) * am_.dim + c]);
     if (!delta_t_.empty())
       for (std::int32_t node : am_.model->mesh.elements.nodes_of(el)) dt_el.push_back(delta_t_[node]);
+    elements::ElementRequest request = request_;
+    if (setup.material->temperature_dependent()) {
+      for (std::int32_t node : am_.model->mesh.elements.nodes_of(el))
+        temperature_el.push_back(am_.temperature(node, delta_t_));
+      request.temperature = temperature_el;
+    }
     // From the committed history: the output of a converged increment comes before its commit.
     std::vector<double> trial;
     const elements::ElementHistory history = states_ ? states_->output_history(el, trial) : elements::ElementHistory{};
     elements::ElementSystem sys;
-    elements::compute_element(*setup.type, am_.coords(el), u_el, *setup.material, setup.section, request_, dt_el,
+    elements::compute_element(*setup.type, am_.coords(el), u_el, *setup.material, setup.section, request, dt_el,
                               history, sys);
     points_[el] = std::move(sys.points);
     have_[el] = 1;

@@ -100,9 +100,6 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
   for (const auto& [d, v] : target_.boundary) prescribed_[d] = 1;
   for (const auto& [k, v] : previous_.dload) add_dload_shape(k);
   for (const auto& [k, v] : target_.dload) add_dload_shape(k);
-  initial_temperature_.assign(am.n_nodes(), 0.0);
-  for (const auto& t : am.model->initial_temperatures)
-    for (std::int32_t n : t.nodes) initial_temperature_[n] = t.value;
 }
 
 void StepConditions::add_dload_shape(const Key& key) {
@@ -297,7 +294,7 @@ std::vector<double> StepConditions::temperature_change(double t) const {
     if (!prev && !target) continue;
     // A node with only an initial temperature keeps it (T − T_initial = 0).
     const double temp = target ? value_at(prev, target, t) : prev->end_value;
-    dt[n] = temp - initial_temperature_[n];
+    dt[n] = temp - am_.initial_temperature[n];
   }
   return dt;
 }

@@ -117,7 +117,6 @@ class StepConditions {
   std::map<std::int64_t, double> released_reaction_;  ///< BCs removed by OP=NEW: ramp to 0
   /// u at the step start of the prescribed DOFs without amplitude (recorded on first use).
   mutable std::map<std::int64_t, double> step_start_value_;
-  std::vector<double> initial_temperature_;
   /// Global nodal forces of each distributed load at unit magnitude (reference geometry).
   std::map<ConditionHistory::DloadKey, std::vector<std::pair<std::int64_t, double>>> dload_shape_;
   /// CENTRIF's and ROTA's loads per element: each node's volume moments (reference geometry),

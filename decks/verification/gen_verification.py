@@ -736,6 +736,46 @@ def plastic_plate():
     return d
 
 
+HOT = dict(T0=20.0, T1=420.0, sy0=250.0, H0=500.0, sy1=150.0, H1=250.0, eps=4e-3)
+
+
+def plastic_bar_temperature():
+    """The bar of plastic_bar() with yield curves at two temperatures, pulled, heated at fixed
+    length (the yield surface shrinks: plastic flow at constant strain), cooled, released."""
+    E, nu, L = PLAST["E"], PLAST["nu"], PLAST["L"]
+    T0, T1, sy0, H0, sy1, H1, eps_max = (HOT[k] for k in ("T0", "T1", "sy0", "H0", "sy1", "H1", "eps"))
+    eps = 1e-9
+    coords, conn = bar_mesh(0.0, L, 4)
+    d = Deck("Bar with temperature-dependent plasticity: pulled, heated at fixed length, cooled, released",
+             [f"E = {E}, nu = {nu}, no expansion. *PLASTIC at T = {T0:g}: sigma_y = {sy0:g} + {H0:g} eps_p (to eps_p 0.1);",
+              f"at T = {T1:g}: {sy1:g} + {H1:g} eps_p (to 0.2); between them linear in T at equal eps_p.",
+              f"Step PULL (T = {T0:g}): strain to {eps_max:g}, sigma = sigma_y + E_t (eps - eps_y), E_t = E H/(E + H).",
+              f"Step HEAT (length held): T to {T1:g}; with s = (T - {T0:g})/{T1 - T0:g}, A = {sy0:g} + ({sy1 - sy0:g}) s,",
+              f"B = {H0:g} + ({H1 - H0:g}) s: eps_p = (E eps - A)/(E + B), sigma = E (eps - eps_p) at every increment.",
+              f"Step COOL: T back to {T0:g}, elastic, sigma constant. Step RELEASE: sigma to 0, the end at L eps_p.",
+              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BAR", conn)
+    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
+          "*PLASTIC", f"{sy0:g}, 0., {T0:g}", f"{sy0 + H0 * 0.1:g}, 0.1, {T0:g}",
+          f"{sy1:g}, 0., {T1:g}", f"{sy1 + H1 * 0.2:g}, 0.2, {T1:g}")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0:g}")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+    d.add("*STEP, NAME=PULL", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps_max:g}",
+          *out, "*END STEP")
+    d.add("*STEP, NAME=HEAT", "*STATIC, DIRECT", "0.1, 1.", *controls, "*TEMPERATURE", f"ALL, {T1:g}", "*END STEP")
+    d.add("*STEP, NAME=COOL", "*STATIC, DIRECT", "0.25, 1.", *controls, "*TEMPERATURE", f"ALL, {T0:g}", "*END STEP")
+    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.5, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
+          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+    return d
+
+
 CYL = dict(a=10.0, b=20.0, c=15.0, E=200000.0, nu=0.4999, sy=250.0)
 
 
@@ -950,6 +990,7 @@ def committed(out):
         "accelerating_block_c3d8.inp": accelerating_block(),
         "plastic_bar_c3d8.inp": plastic_bar(),
         "plastic_plate_cps4.inp": plastic_plate(),
+        "plastic_bar_temperature_c3d8.inp": plastic_bar_temperature(),
         "plastic_cylinder_cpe8r.inp": plastic_cylinder("CPE8R", 12, 4),
     }
     for name, d in decks.items():

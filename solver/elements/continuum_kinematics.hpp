@@ -31,6 +31,7 @@ struct PointData {
   double radius = 0.0;        ///< CAX: r of the point (> 0)
   double dv = 0.0;            ///< weight · det J · (thickness | 2πr | 1)
   double thermal_strain = 0.0;  ///< α·ΔT at the point
+  double temperature = 0.0;     ///< T at the point (ElementRequest::temperature interpolated)
   Vec3 x{};                     ///< reference coordinates of the point (a cylindrical orientation's axes)
 };
 

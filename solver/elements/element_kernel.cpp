@@ -84,7 +84,8 @@ Assembled assemble(ElementFamily family, int dim, const Law& law, bool nlgeom, c
   for (std::size_t p = 0; p < pts.size(); ++p) {
     const PointData& pd = pts[p];
     PointState& st = r.states.emplace_back(point_kinematics(family, dim, nlgeom, pd, u));
-    const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain, &pd.x, nlgeom}, history.at(p), st.stress, scratch);
+    const Mat6& D =
+        law.update({st.F, st.strain, pd.thermal_strain, &pd.x, nlgeom, pd.temperature}, history.at(p), st.stress, scratch);
     add_point_contribution(family, dim, D, nlgeom, pd, st, &r.f, want_k ? &r.K : nullptr);
   }
   return r;
@@ -204,9 +205,11 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
   Vec3 x{};  // the point's reference coordinates
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i) x[i] += rule.N[p][a] * geo.X(a, i);
+  double temperature = 0.0;
+  for (std::size_t a = 0; a < request.temperature.size(); ++a) temperature += rule.N[p][a] * request.temperature[a];
   Vec6 stress;
   Mat6 scratch;
-  const Mat6& D = law.update({F, strain, thermal_strain, &x, request.nlgeom}, history, stress, scratch);
+  const Mat6& D = law.update({F, strain, thermal_strain, &x, request.nlgeom, temperature}, history, stress, scratch);
   const Mat6x24 B = hex8_b(request.nlgeom ? F : Eigen::Matrix3d::Identity(), g);
   f.noalias() += (B.transpose() * stress) * geo.dv[p];
   if (request.point_output) {
@@ -265,7 +268,8 @@ struct ElementGeometry {
 };
 
 ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, double expansion,
-                                 const SectionData& section, std::span<const double> delta_t) {
+                                 const SectionData& section, std::span<const double> delta_t,
+                                 std::span<const double> temperature) {
   const int dim = type.dim, n = type.n_nodes;
   const ElementFamily family = type.family;
   const Shape shape = element_shape(type);
@@ -305,6 +309,7 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
       for (int a = 0; a < n; ++a) dt += sv.N[a] * delta_t[a];
       pd.thermal_strain = expansion * dt;
     }
+    for (std::size_t a = 0; a < temperature.size(); ++a) pd.temperature += sv.N[a] * temperature[a];
     geo.pts.push_back(std::move(pd));
     geo.point_coords.push_back(m.x);
   }
@@ -362,7 +367,8 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
   const int n_total = type.n_nodes + (incompatible ? n_incompatible_modes(dim) : 0);
   ElementSystem sys;
   sys.n_dof = n_dof;
-  const ElementGeometry geo = element_geometry(type, coords, law.elastic().expansion, section, delta_t);
+  const ElementGeometry geo = element_geometry(type, coords, law.elastic().expansion, section, delta_t,
+                                               request.temperature);
   sys.min_jacobian = geo.min_jacobian;
   if (sys.min_jacobian <= 0.0) return sys;  // the caller reports the distorted element
 
@@ -427,6 +433,8 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     compute_line_element(type, coords, u, law.elastic(), section, request, delta_t, out);
     return;
   }
+  if (!request.temperature.empty() && request.temperature.size() != coords.size())
+    throw std::invalid_argument("compute_element: nodal temperature count mismatch");
   if (is_full_hex8(type) && coords.size() == 8 && u.size() == 24 && (delta_t.empty() || delta_t.size() == 8)) {
     compute_hex8(type, coords, u, law, request, delta_t, history, out);
     return;

@@ -55,6 +55,9 @@ struct ElementRequest {
   bool internal_force = true;  ///< fill ElementSystem::internal_force
   bool point_output = false;   ///< fill ElementSystem::points (stress, strain, coordinates)
   bool nlgeom = false;         ///< total Lagrangian, St. Venant–Kirchhoff (see continuum_kinematics.hpp)
+  /// The temperature T of each node of the element, for a material whose data depend on it
+  /// (Material::temperature_dependent); empty: T = 0 at every point.
+  std::span<const double> temperature = {};
 };
 
 /// Results at one integration point.

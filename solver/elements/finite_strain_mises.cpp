@@ -106,7 +106,7 @@ const Mat6& FiniteStrainMises::update_finite(const MaterialPointInput& in, const
   from[kEquivalent] = c[kEquivalent];
   const Vec6 trial_strain = tensor_to_vec6(trial.strain, true);
   Vec6 tau;
-  const Mat6 D = small_.update({F, trial_strain, in.thermal_strain, in.position, false}, {from, to}, tau, scratch);
+  const Mat6 D = small_.update({F, trial_strain, in.thermal_strain, in.position, false, in.temperature}, {from, to}, tau, scratch);
 
   // εᵉ = εᵉ_tr − Δεᵖ is coaxial with εᵉ_tr (the flow is along dev τ_tr): bᵉ = exp(2εᵉ) in its basis.
   const Mat3 elastic = trial.strain - voigt_to_tensor(Eigen::Map<const Vec6>(to.data()), true);

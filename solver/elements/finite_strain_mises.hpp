@@ -45,6 +45,7 @@ class FiniteStrainMises final : public Material {
   void plastic_output(std::span<const double> state, PointResult& out) const override;
   bool set_plastic_strain(std::span<double> state, const Vec6& plastic_strain) const override;
   bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const override;
+  bool temperature_dependent() const override { return small_.temperature_dependent(); }
 
  private:
   const Mat6& update_finite(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,

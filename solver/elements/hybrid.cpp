@@ -61,7 +61,8 @@ HybridSystem small_strain(const model::ElementTypeInfo& type, const Material& la
     for (int k = 0; k < 3; ++k) Bb.row(k) += (div_bar - div[q]) / 3.0;
     PointState& st = r.states.emplace_back(point_kinematics(type.family, type.dim, false, pts[q], u));
     st.strain = Bb * u;
-    const Mat6& D = law.update({st.F, st.strain, pts[q].thermal_strain, &pts[q].x, false}, history.at(q), st.stress, scratch);
+    const Mat6& D = law.update({st.F, st.strain, pts[q].thermal_strain, &pts[q].x, false, pts[q].temperature}, history.at(q),
+                                st.stress, scratch);
     r.f.noalias() += Bb.transpose() * st.stress * pts[q].dv;
     if (want_k) r.K.noalias() += Bb.transpose() * (D * pts[q].dv) * Bb;
   }
@@ -106,7 +107,7 @@ void finite_strain_point(const model::ElementTypeInfo& type, const Material& law
   const Eigen::Matrix3d Eb = 0.5 * (phi * phi * C - Eigen::Matrix3d::Identity());
   st.strain << Eb(0, 0), Eb(1, 1), Eb(2, 2), 2 * Eb(0, 1), 2 * Eb(0, 2), 2 * Eb(1, 2);
   Mat6 scratch;
-  const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain, &pd.x, true}, history, st.stress, scratch);
+  const Mat6& D = law.update({st.F, st.strain, pd.thermal_strain, &pd.x, true, pd.temperature}, history, st.stress, scratch);
   const B6 B = strain_operator(type.family, type.dim, F, pd);
   const Row dphi = phi / 3 * (dtheta / theta - d.dJ / d.J);
   Vec6 c;

@@ -36,6 +36,9 @@ struct MaterialPointInput {
   /// (a cylindrical *ORIENTATION); null where no element is behind the call (unit tests).
   const Vec3* position = nullptr;
   bool nlgeom = false;       ///< the element is total Lagrangian: strain is E, the stress wanted S
+  /// The temperature at the point (0 where the model has none); read only by a material whose
+  /// temperature_dependent() says so, for whom the elements interpolate it.
+  double temperature = 0.0;
 };
 
 class IsotropicElastic;
@@ -71,6 +74,8 @@ class Material {
   /// ε33 = −ν/(1−ν)(ε11 + ε22 − 2ε_th) + ε_th.
   virtual double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
                                                double thermal_strain) const;
+  /// Whether the material reads MaterialPointInput::temperature (temperature-dependent data).
+  virtual bool temperature_dependent() const { return false; }
   /// The element kernels' fast path: this material when it is isotropic linear elastic.
   virtual const IsotropicElastic* as_isotropic_elastic() const { return nullptr; }
 };

@@ -26,18 +26,30 @@
 /// derivative of the converged plane-stress return), with zero rows for 33, 13, 23 as
 /// elasticity_matrix has them. A local iteration that does not converge gives NaN stresses, so
 /// the increment is cut back.
+#include <span>
 #include <vector>
 
 #include "material.hpp"
+#include "model/material.hpp"
 
 namespace inpact::solver::elements {
 
 /// The hardening data of *PLASTIC: points (ε̄ᵖ, σ_y), the first at ε̄ᵖ = 0, strains increasing.
+/// Temperature dependence: `yield_stress` holds one row of σ_y on the `plastic_strain` grid per
+/// entry of `temperatures` (row-major); at a point's temperature the rows are interpolated
+/// linearly, constant outside their range. Empty `temperatures`: one row, no dependence.
 struct MisesHardening {
   bool kinematic = false;
   std::vector<double> plastic_strain;
   std::vector<double> yield_stress;
+  std::vector<double> temperatures = {};
 };
+
+/// *PLASTIC's isotropic rows (blocks of one temperature, each from ε̄ᵖ = 0) as MisesHardening:
+/// one strain grid, the union of the blocks' strains, with every block's curve sampled on it.
+/// The sampling is exact (a curve is linear between its own points and constant beyond its
+/// last), so interpolating the rows in temperature is the bilinear interpolation of the data.
+MisesHardening isotropic_hardening(std::span<const model::Plastic::Point> rows);
 
 /// Where the state of a point keeps what.
 struct MisesStateLayout {
@@ -66,8 +78,10 @@ class MisesPlasticity final : public Material {
   /// Euler step from spanning a large part of a nonradial path.
   bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const override;
 
-  /// σ_y(ε̄ᵖ) of the isotropic table (σ⁰ with kinematic hardening).
-  double yield_stress(double equivalent_plastic_strain) const;
+  bool temperature_dependent() const override { return hardening_.temperatures.size() > 1; }
+
+  /// σ_y(ε̄ᵖ, T) of the isotropic table (σ⁰ with kinematic hardening).
+  double yield_stress(double equivalent_plastic_strain, double temperature = 0.0) const;
   /// The 3D elasticity matrix.
   const Mat6& D() const { return D_; }
 
@@ -76,9 +90,12 @@ class MisesPlasticity final : public Material {
     double dgamma = 0.0;  ///< Δε̄ᵖ
     double slope = 0.0;   ///< dσ_y/dε̄ᵖ + C at the returned point
   };
-  Return solve_return(double q_trial, double eq_n) const;
+  /// σ_y on the strain grid at `temperature`: the table's one row, or the rows interpolated
+  /// into `buffer`.
+  std::span<const double> curve_at(double temperature, std::vector<double>& buffer) const;
+  Return solve_return(double q_trial, double eq_n, std::span<const double> curve) const;
   /// The 3D return at `strain` (ε33 included) from point.committed into point.trial.
-  const Mat6& update_3d(const Vec6& strain, double thermal_strain, const PointHistory& point, Vec6& stress,
+  const Mat6& update_3d(const Vec6& strain, const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
                         Mat6& scratch) const;
   const Mat6& update_plane_stress(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
                                   Mat6& scratch) const;
@@ -87,6 +104,7 @@ class MisesPlasticity final : public Material {
   MisesHardening hardening_;
   double shear_ = 0.0, bulk_ = 0.0;
   double kinematic_modulus_ = 0.0;  ///< C (0 without kinematic hardening)
+  double first_yield_ = 0.0;        ///< the lowest initial yield stress over the temperatures
   bool plane_stress_ = false;
   Mat6 D_;
 };

@@ -28,6 +28,18 @@ TEST(Plastic, IsotropicTableWithTemperatureColumnOfOneTemperature) {
   EXPECT_EQ(p->loc.line, 16);
 }
 
+TEST(Plastic, IsotropicTablesInBlocksOfOneTemperature) {
+  DeckDir dir;
+  const auto r = dir.read(with_plastic("*PLASTIC\n250., 0., 20.\n300., 0.1, 20.\n150., 0., 400.\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& table = r.model.materials.at("STEEL").plastic->table;
+  ASSERT_EQ(table.size(), 3u);
+  EXPECT_EQ(table[1].temperature, 20.0);
+  EXPECT_EQ(table[2].temperature, 400.0);
+  EXPECT_EQ(table[2].yield_stress, 150.0);
+  EXPECT_EQ(table[2].plastic_strain, 0.0);
+}
+
 TEST(Plastic, KinematicAndPerfectlyPlasticOneLine) {
   DeckDir dir;
   const auto r = dir.read(with_plastic("*PLASTIC, HARDENING=KINEMATIC\n250., 0.\n300., 0.02\n"));
@@ -47,9 +59,16 @@ TEST(Plastic, BadTablesSayWhatIsWrong) {
                              "deck.inp:19:7: error: *PLASTIC: the plastic strains must increase, found 0.01 after 0.02"));
   EXPECT_TRUE(has_diagnostic(dir.read(with_plastic("*PLASTIC\n-250., 0.\n")),
                              "*PLASTIC: the yield stress must be positive, found -250"));
-  EXPECT_TRUE(has_diagnostic(dir.read(with_plastic("*PLASTIC\n250., 0., 20.\n300., 0.1, 20.\n240., 0., 100.\n")),
-                             "deck.inp:19:11: error: *PLASTIC: temperature-dependent plasticity (more than one "
-                             "temperature) is not supported yet"));
+  EXPECT_TRUE(has_diagnostic(dir.read(with_plastic("*PLASTIC\n250., 0., 100.\n300., 0.1, 100.\n240., 0., 20.\n")),
+                             "deck.inp:19:11: error: *PLASTIC: the temperatures must increase from block to block, "
+                             "found 20 after 100"));
+  EXPECT_TRUE(has_diagnostic(dir.read(with_plastic("*PLASTIC\n250., 0., 20.\n300., 0.1, 20.\n240., 0.01, 100.\n")),
+                             "deck.inp:19:7: error: *PLASTIC: the first yield stress at temperature 100 must be given "
+                             "at zero plastic strain, found 0.01"));
+  EXPECT_TRUE(has_diagnostic(
+      dir.read(with_plastic("*PLASTIC, HARDENING=KINEMATIC\n250., 0., 20.\n300., 0.1, 20.\n240., 0., 100.\n")),
+      "deck.inp:19:11: error: *PLASTIC: temperature-dependent kinematic hardening (more than one temperature) is not "
+      "supported yet"));
   EXPECT_TRUE(has_diagnostic(dir.read(with_plastic("*PLASTIC, HARDENING=JOHNSON COOK\n250., 0.\n")),
                              "*PLASTIC: HARDENING=JOHNSONCOOK is not supported yet (ISOTROPIC, KINEMATIC or COMBINED)"));
   EXPECT_TRUE(has_diagnostic(dir.read(with_plastic("*PLASTIC\n250., 0.\n*PLASTIC\n260., 0.\n")),

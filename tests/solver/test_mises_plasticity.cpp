@@ -2,6 +2,7 @@
 // tangent against central differences of the return, the return on the yield surface, the
 // uniaxial closed form of linear hardening through loading and unloading, the table's
 // piecewise-linear hardening, and the state contract (the committed state is read only).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -299,4 +300,74 @@ TEST(MisesPlasticity, PlaneStressUniaxialLinearHardening) {
     EXPECT_NEAR(e.trial[L::equivalent], std::max(0.0, (exact - kSy) / H), 1e-13) << eps;
     committed = e.trial;
   }
+}
+
+namespace {
+
+/// Two temperatures: at 20, 250 → 300 over ε̄ᵖ 0 → 0.1; at 400, 150 → 160 at 0.02 → 200 at 0.2.
+MisesHardening two_temperatures() {
+  using Point = inpact::model::Plastic::Point;
+  const std::vector<Point> rows = {{250.0, 0.0, 20.0}, {300.0, 0.1, 20.0},
+                                   {150.0, 0.0, 400.0}, {160.0, 0.02, 400.0}, {200.0, 0.2, 400.0}};
+  return isotropic_hardening(rows);
+}
+
+/// σ_y of the data by hand: each temperature's curve at ε̄ᵖ, then linear in T between them.
+double by_hand(double eq, double temperature) {
+  const double low = eq >= 0.1 ? 300.0 : 250.0 + 500.0 * eq;
+  const double high = eq >= 0.2 ? 200.0 : eq <= 0.02 ? 150.0 + 500.0 * eq : 160.0 + (eq - 0.02) * 40.0 / 0.18;
+  const double s = std::clamp((temperature - 20.0) / 380.0, 0.0, 1.0);
+  return (1 - s) * low + s * high;
+}
+
+}  // namespace
+
+// *PLASTIC with a temperature column: one strain grid for both curves, the yield stress the
+// bilinear interpolation of the data, constant outside the temperature range.
+TEST(MisesPlasticity, TemperatureTablesInterpolateLinearlyAtEqualPlasticStrain) {
+  const MisesHardening h = two_temperatures();
+  EXPECT_EQ(h.plastic_strain, (std::vector<double>{0.0, 0.02, 0.1, 0.2}));
+  EXPECT_EQ(h.temperatures, (std::vector<double>{20.0, 400.0}));
+  ASSERT_EQ(h.yield_stress.size(), 8u);
+  const MisesPlasticity m(kElastic, h);
+  EXPECT_TRUE(m.temperature_dependent());
+  for (double T : {-50.0, 20.0, 100.0, 210.0, 399.0, 400.0, 900.0})
+    for (double eq : {0.0, 0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.5})
+      EXPECT_NEAR(m.yield_stress(eq, T), by_hand(eq, T), 1e-12 * kSy) << "T " << T << " eq " << eq;
+  EXPECT_FALSE(MisesPlasticity(kElastic, table_hardening()).temperature_dependent());
+}
+
+// The return at a point's temperature lands on that temperature's surface, and its tangent is
+// the central difference of the return there.
+TEST(MisesPlasticity, ReturnAtATemperatureLandsOnItsSurfaceWithTheConsistentTangent) {
+  const MisesPlasticity m(kElastic, two_temperatures());
+  const std::vector<double> committed = prior_state(m, false);
+  const Vec6 strain = (Vec6() << 4.0e-3, -1.2e-3, -0.9e-3, 2.2e-3, -0.8e-3, 1.1e-3).finished();
+  const Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+  const double T = 250.0;
+  auto at = [&](const Vec6& e, Eval& out) {
+    out.trial.assign(committed.size(), -1.0);
+    Mat6 scratch;
+    MaterialPointInput in{F, e, 0.0};
+    in.temperature = T;
+    out.tangent = m.update(in, {committed, out.trial}, out.stress, scratch);
+  };
+  Eval base;
+  at(strain, base);
+  ASSERT_GT(base.trial[L::equivalent], committed[L::equivalent]);
+  EXPECT_NEAR(mises_of(base.stress, base.trial, false), by_hand(base.trial[L::equivalent], T), 1e-10 * kSy);
+  const double h = 1e-8;
+  Mat6 fd;
+  for (int j = 0; j < 6; ++j) {
+    Vec6 plus = strain, minus = strain;
+    plus(j) += h;
+    minus(j) -= h;
+    Eval p, q;
+    at(plus, p);
+    at(minus, q);
+    fd.col(j) = (p.stress - q.stress) / (2 * h);
+  }
+  const double err = (fd - base.tangent).cwiseAbs().maxCoeff() / base.tangent.cwiseAbs().maxCoeff();
+  std::printf("[mises] tangent at T = %g vs central differences: %.2e relative\n", T, err);
+  EXPECT_LE(err, 1e-6);
 }

@@ -140,5 +140,46 @@ TEST(PlasticBar, CombinedHardeningBarFollowsTheBackwardEulerClosedForm) {
   report("plastic_bar_combined_c3d8: |S11 - closed form| / S11", worst_of(*r, load, "S", 0, s) / s);
 }
 
+// Case 9d: temperature-dependent yield curves (plastic_bar_temperature_c3d8.inp, the deck's
+// header gives the data and the closed forms). Pulled at T = 20 (linear hardening H0), heated
+// to 420 at fixed length: with s = (T − 20)/400, σ_y(ε̄ᵖ, T) = A(s) + B(s) ε̄ᵖ on the first
+// segment of both curves, so ε̄ᵖ = (E ε − A)/(E + B), σ = E (ε − ε̄ᵖ) at every increment; cooled
+// back (the surface grows: elastic, σ constant); released to zero stress. Exact to round-off
+// (1e-10 relative). CalculiX 2.20 on the same deck prints the same S11 and PEEQ to its 7 digits
+// through the pull, the heating and the cooling.
+TEST(PlasticBar, TemperatureDependentYieldFollowsTheTemperatureAtFixedStrain) {
+  const auto r = run_deck(deck_path("plastic_bar_temperature_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  constexpr double eps = 4e-3, H0 = 500.0, tol = 1e-10;
+  const auto pull = r->capture.of_step(1);
+  ASSERT_EQ(pull.size(), 4u);
+  for (const auto* f : pull) {
+    const double e = eps * f->step_time, Et = E * H0 / (E + H0), ey = sy / E;
+    const double s = e <= ey ? E * e : sy + Et * (e - ey);
+    EXPECT_LE(worst_of(*r, *f, "S", 0, s), tol * sy) << "PULL t = " << f->step_time;
+    EXPECT_LE(worst_of(*r, *f, "PEEQ", 0, std::max(0.0, (s - sy) / H0)), tol * eps) << "PULL t = " << f->step_time;
+  }
+  const auto heat = r->capture.of_step(2);
+  ASSERT_EQ(heat.size(), 10u);
+  double s_hot = 0, ep_hot = 0, worst = 0;
+  for (const auto* f : heat) {
+    const double t = f->step_time, A = 250.0 - 100.0 * t, B = 500.0 - 250.0 * t;
+    ep_hot = (E * eps - A) / (E + B);
+    s_hot = E * (eps - ep_hot);
+    worst = std::max(worst, worst_of(*r, *f, "S", 0, s_hot));
+    EXPECT_LE(worst_of(*r, *f, "S", 0, s_hot), tol * sy) << "HEAT t = " << t;
+    EXPECT_LE(worst_of(*r, *f, "PEEQ", 0, ep_hot), tol * eps) << "HEAT t = " << t;
+    EXPECT_LE(worst_of(*r, *f, "PE", 1, -ep_hot / 2), tol * eps) << "HEAT t = " << t;
+  }
+  for (const auto* f : r->capture.of_step(3)) {
+    EXPECT_LE(worst_of(*r, *f, "S", 0, s_hot), tol * sy) << "COOL t = " << f->step_time;
+    EXPECT_LE(worst_of(*r, *f, "PEEQ", 0, ep_hot), tol * eps) << "COOL t = " << f->step_time;
+  }
+  const auto& end = *r->capture.of_step(4).back();
+  EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * sy);
+  EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * ep_hot, tol * L * eps);
+  report("plastic_bar_temperature_c3d8: worst |S11 - closed form| / sigma_y while heated", worst / sy);
+}
+
 }  // namespace
 }  // namespace inpact::verification
