@@ -45,5 +45,24 @@ TEST(OringRubber, SqueezeForceMatchesCalculix) {
   report("oring_rubber_cax4h: / CalculiX CAX8R", force / kCalculixCax8r);
 }
 
+// The same ring smoothed (oring_rubber_cax4h_smoothed.inp, gen_oring_rubber.py --smoothing): the
+// ring's surface corrected toward its torus (*SURFACE SMOOTHING, TOROIDAL about the y axis,
+// R = 5), the pair surface to surface with the ring the slave, whose integration points the
+// correction moves onto the circle (the plate is flat: nothing to correct). CalculiX's CAX8R ring
+// is the same 48-chord polygon (straight-edged midsides), so the smoothed ring, the true torus,
+// stands above it: measured 14.166 (+1.1 %; faceted 13.932, -0.5 %); inpact's own mesh-converged
+// reaction (ring and plate refined 4×) is 14.18 faceted, 14.20 smoothed. Tolerance 2 %, the
+// issue's criterion.
+TEST(OringRubber, SmoothedSqueezeForceMatchesCalculix) {
+  const auto r = run(deck_path("oring_rubber_cax4h_smoothed"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const solver::Frame& f = r->capture.last();
+  EXPECT_NEAR(f.step_time, 1.0, 1e-12);
+  const double force = -sum_rf2(*r, f, "PLATE_TOP");
+  EXPECT_NEAR(force, kCalculixCax8r, 0.02 * kCalculixCax8r);
+  report("oring_rubber_cax4h_smoothed: plate reaction (whole ring)", force);
+  report("oring_rubber_cax4h_smoothed: / CalculiX CAX8R", force / kCalculixCax8r);
+}
+
 }  // namespace
 }  // namespace inpact::contact_verification
