@@ -17,6 +17,7 @@
 #include "contact_problem.hpp"
 #include "elements/combined_plasticity.hpp"
 #include "elements/finite_strain_mises.hpp"
+#include "elements/log_strain_plasticity.hpp"
 #include "elements/material.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/quadrature.hpp"
@@ -49,20 +50,13 @@ std::size_t AnalysisModel::element_rows(std::size_t e, std::span<std::int32_t> r
 
 namespace {
 
-/// The Mises material of *PLASTIC: the small-strain law, or the finite-strain one
-/// (finite_strain_mises.hpp) when a step has NLGEOM; what the finite-strain law lacks (kinematic
-/// hardening, plane stress) stops with a clear message instead of a wrong answer.
-/// HARDENING=COMBINED: the Chaboche law (combined_plasticity.hpp), small strain, not plane stress.
+/// HARDENING=COMBINED: the Chaboche law (combined_plasticity.hpp), not in plane stress.
 std::shared_ptr<elements::Material> combined_law(const model::Model& m, const model::Material& mat,
                                                  model::ElementFamily family, const elements::ElasticConstants& c) {
   const model::Plastic& p = *mat.plastic;
-  const auto nlgeom = std::find_if(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
-  const char* missing = nlgeom != m.steps.end()                    ? "NLGEOM (finite strain)"
-                        : family == model::ElementFamily::PlaneStress ? "plane stress elements"
-                                                                      : nullptr;
-  if (missing)
-    throw AnalysisError(fmt::format("{}: error: *PLASTIC: HARDENING=COMBINED with {} is not supported yet (material '{}')",
-                                    m.sources.describe(p.loc), missing, mat.name));
+  if (family == model::ElementFamily::PlaneStress)
+    throw AnalysisError(fmt::format("{}: error: *PLASTIC: HARDENING=COMBINED with plane stress elements is not "
+                                    "supported yet (material '{}')", m.sources.describe(p.loc), mat.name));
   elements::CombinedHardening h;
   for (const auto& b : p.backstresses) h.backstresses.push_back({b.modulus, b.recovery});
   h.initial = p.table.front().yield_stress;
@@ -76,24 +70,37 @@ std::shared_ptr<elements::Material> combined_law(const model::Model& m, const mo
   return std::make_shared<elements::CombinedPlasticity>(c, std::move(h));
 }
 
+/// The Mises material of *PLASTIC. Small strain: MisesPlasticity (isotropic or linear
+/// kinematic) or CombinedPlasticity. When a step has NLGEOM: isotropic hardening in the
+/// exponential-map law (finite_strain_mises.hpp); kinematic and combined hardening, whose
+/// backstress needs a frame, through the Lagrangian logarithmic strain
+/// (log_strain_plasticity.hpp); both agree on paths with fixed principal axes. Finite-strain
+/// plane stress stops with a clear message instead of a wrong answer.
 std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
                                                 model::ElementFamily family, const elements::ElasticConstants& c) {
   const model::Plastic& p = *mat.plastic;
   if (mat.cyclic_hardening && p.hardening != model::Plastic::Hardening::Combined)
     throw AnalysisError(fmt::format("{}: error: *CYCLIC HARDENING: it needs *PLASTIC, HARDENING=COMBINED (material '{}')",
                                     m.sources.describe(mat.cyclic_hardening->loc), mat.name));
-  if (p.hardening == model::Plastic::Hardening::Combined) return combined_law(m, mat, family, c);
-  elements::MisesHardening h = elements::isotropic_hardening(p.table);
-  h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
+  const bool combined = p.hardening == model::Plastic::Hardening::Combined;
+  elements::MisesHardening h;
+  if (!combined) {
+    h = elements::isotropic_hardening(p.table);
+    h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
+  }
   const auto nlgeom = std::find_if(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
-  if (nlgeom == m.steps.end()) return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
-  const char* missing = h.kinematic ? "kinematic hardening"
-                        : family == model::ElementFamily::PlaneStress ? "plane stress elements"
-                                                                      : nullptr;
-  if (missing)
-    throw AnalysisError(fmt::format("{}: error: *PLASTIC: finite-strain plasticity (NLGEOM) with {} is not supported "
-                                    "yet (material '{}'; step '{}' has NLGEOM)", m.sources.describe(p.loc), missing,
-                                    mat.name, nlgeom->name));
+  if (nlgeom == m.steps.end()) {
+    if (combined) return combined_law(m, mat, family, c);
+    return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
+  }
+  if (family == model::ElementFamily::PlaneStress)
+    throw AnalysisError(fmt::format("{}: error: *PLASTIC: finite-strain plasticity (NLGEOM) with plane stress elements "
+                                    "is not supported yet (material '{}'; step '{}' has NLGEOM)",
+                                    m.sources.describe(p.loc), mat.name, nlgeom->name));
+  if (combined)
+    return std::make_shared<elements::LogStrainPlasticity>(combined_law(m, mat, model::ElementFamily::Solid3D, c));
+  if (h.kinematic)
+    return std::make_shared<elements::LogStrainPlasticity>(std::make_shared<elements::MisesPlasticity>(c, std::move(h)));
   return std::make_shared<elements::FiniteStrainMises>(c, std::move(h));
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include "log_divided_difference.hpp"
 #include "voigt.hpp"
 
 namespace inpact::solver::elements {
@@ -16,13 +17,6 @@ namespace {
 
 using Mat3 = Eigen::Matrix3d;
 constexpr std::size_t kSmallState = 7;  ///< MisesPlasticity's isotropic layout: εᵖ (6), ε̄ᵖ
-
-/// (ln a − ln b)/(a − b) for a, b > 0; near a = b its series, whose limit is 1/b.
-double log_divided_difference(double a, double b) {
-  const double x = (a - b) / b;
-  if (std::abs(x) < 1e-5) return (1 - x / 2 + x * x / 3) / b;
-  return std::log1p(x) / (a - b);
-}
 
 /// exp(s·t) of a symmetric tensor t.
 Mat3 tensor_exp(const Mat3& t, double s) {

@@ -181,5 +181,52 @@ TEST(PlasticBar, TemperatureDependentYieldFollowsTheTemperatureAtFixedStrain) {
   report("plastic_bar_temperature_c3d8: worst |S11 - closed form| / sigma_y while heated", worst / sy);
 }
 
+// Case 9e: linear kinematic hardening at large strain (plastic_bar_nlgeom_kinematic_c3d8.inp), the
+// law in the Lagrangian logarithmic strain (log_strain_plasticity.hpp). The principal axes stay
+// fixed, so in LE11 = ln λ it is the 1D small-strain law with τ the Kirchhoff stress (the deck's
+// header): stretched to λ = 1.5, then pushed back to λ = 1.1 through elastic unloading and
+// reversed yield at τ_max − 2σ⁰ (Bauschinger). Every increment to round-off (1e-10 relative).
+TEST(PlasticBar, KinematicHardeningAtLargeStrainReversesYieldAtTwiceTheInitialYieldStress) {
+  const auto r = run_deck(deck_path("plastic_bar_nlgeom_kinematic_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  constexpr double C = 1000.0, tol = 1e-10;
+  double ep_max = 0, tau_max = 0, worst = 0;
+  bool reversed_yield = false;
+  auto check = [&](const solver::Frame& f, double lambda, double ep, double peeq, double tau, const char* step) {
+    const double le = std::log(lambda), cauchy = tau / std::exp((1 - 2 * nu) * tau / E);
+    const double ds = std::max(worst_of(*r, f, "S", 0, cauchy), worst_of(*r, f, "S", 1, 0.0));
+    const double de = std::max({worst_of(*r, f, "LE", 0, le), worst_of(*r, f, "LE", 1, -nu * tau / E - ep / 2),
+                                worst_of(*r, f, "PE", 0, ep), worst_of(*r, f, "PEEQ", 0, peeq)});
+    EXPECT_LE(ds, tol * sy) << step << " t = " << f.step_time;
+    EXPECT_LE(de, tol * std::log(1.5)) << step << " t = " << f.step_time;
+    double reaction = 0;
+    for (std::int32_t n : nset(r->model(), "RIGHT")) reaction += nodal(f, "RF", static_cast<std::size_t>(n), 0);
+    EXPECT_NEAR(reaction, tau / lambda, tol * sy) << step << " t = " << f.step_time;
+    worst = std::max(worst, ds);
+  };
+  const auto load = r->capture.of_step(1);
+  ASSERT_EQ(load.size(), 20u);
+  for (const auto* f : load) {
+    const double lambda = 1 + 0.5 * f->step_time, le = std::log(lambda);
+    ep_max = std::max(0.0, (le - sy / E) / (1 + C / E));
+    tau_max = ep_max > 0 ? sy + C * ep_max : E * le;
+    check(*f, lambda, ep_max, ep_max, tau_max, "LOAD");
+  }
+  const auto reverse = r->capture.of_step(2);
+  ASSERT_EQ(reverse.size(), 20u);
+  for (const auto* f : reverse) {
+    const double lambda = 1.5 - 0.4 * f->step_time, le = std::log(lambda);
+    double tau = E * (le - ep_max), ep = ep_max;
+    if (tau < tau_max - 2 * sy) {  // reversed yield: τ = C εᵖ − σ⁰
+      ep = (le + sy / E) / (1 + C / E);
+      tau = C * ep - sy;
+      reversed_yield = true;
+    }
+    check(*f, lambda, ep, ep_max + (ep_max - ep), tau, "REVERSE");
+  }
+  EXPECT_TRUE(reversed_yield);
+  report("plastic_bar_nlgeom_kinematic_c3d8: worst |S11 - closed form| / sigma_y", worst / sy);
+}
+
 }  // namespace
 }  // namespace inpact::verification
