@@ -266,12 +266,6 @@ void solid_section(KeywordContext& ctx) {
   sec.orientation = ctx.name_value("ORIENTATION");
   sec.loc = ctx.keyword.loc;
   sec.value_loc = ctx.keyword.loc;
-  // Abaqus prints S and E of an oriented section in its material axes; inpact keeps the global
-  // frame for every output (parser/KEYWORDS.md), which a reader comparing numbers must know.
-  if (!sec.orientation.empty())
-    ctx.warning(ctx.keyword.loc, fmt::format("ORIENTATION={}: stresses and strains (S, E) are output in the global "
-                                             "frame, not in the material axes as Abaqus prints them",
-                                             ctx.param("ORIENTATION")->value.value_or(sec.orientation)));
   if (auto offset = ctx.real_value("OFFSET"); offset && *offset != 0.0)
     ctx.error_param("OFFSET", fmt::format("OFFSET={:g} has no meaning for a solid or truss section (offsets position "
                                           "shell and beam sections; expected 0 or no OFFSET)", *offset));

@@ -19,6 +19,7 @@
 #include "elements/finite_strain_mises.hpp"
 #include "elements/log_strain_plasticity.hpp"
 #include "elements/material.hpp"
+#include "elements/material_orientation.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/quadrature.hpp"
 #include "hyperelastic_material.hpp"
@@ -133,11 +134,22 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     c.youngs_modulus = mat.elastic ? mat.elastic->youngs_modulus : 0.0;
     c.poissons_ratio = mat.elastic ? mat.elastic->poissons_ratio : 0.0;
     c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
+    const elements::MaterialOrientation* orientation = nullptr;
+    if (!sec.orientation.empty()) {
+      orientation = am.orientations
+                        .emplace_back(std::make_shared<elements::MaterialOrientation>(m.orientations.at(sec.orientation)))
+                        .get();
+      if (std::any_of(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; }))
+        am.warnings.push_back(fmt::format("*SOLID SECTION, ELSET={}, ORIENTATION={}: under NLGEOM its S, E and PE are "
+                                          "reported in the material axes of the reference configuration (Abaqus turns "
+                                          "the axes with the material)", sec.elset, sec.orientation));
+    }
     for (std::int32_t e : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[e];
       s.material = law(k, *s.type, c, &mat);
       s.section.thickness = sec.thickness;
       s.density = mat.density.value_or(0.0);
+      s.orientation = orientation;
     }
   }
   for (ElementSetup& s : am.elements)

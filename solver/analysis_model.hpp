@@ -18,6 +18,7 @@ namespace inpact::solver {
 
 namespace elements {
 class Material;
+class MaterialOrientation;
 struct SpringBehavior;
 struct BeamProperties;
 struct ShellProperties;
@@ -30,6 +31,9 @@ struct ElementSetup {
   const elements::Material* material = nullptr;
   elements::SectionData section;
   double density = 0.0;
+  /// The material axes of an oriented *SOLID SECTION (owned by AnalysisModel::orientations),
+  /// into which its S, E and PE are reported; null: the global axes.
+  const elements::MaterialOrientation* orientation = nullptr;
 };
 
 struct AnalysisModel {
@@ -41,6 +45,7 @@ struct AnalysisModel {
   std::vector<std::shared_ptr<const elements::SpringBehavior>> springs;  ///< what SectionData::spring points to
   std::vector<std::shared_ptr<const elements::BeamProperties>> beams;     ///< what SectionData::beam points to
   std::vector<std::shared_ptr<const elements::ShellProperties>> shells;   ///< what SectionData::shell points to
+  std::vector<std::shared_ptr<const elements::MaterialOrientation>> orientations;  ///< ElementSetup::orientation's
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).
   std::shared_ptr<const contact::InteractionTable> contact;

@@ -8,6 +8,7 @@
 #include "assembler.hpp"
 #include "elements/element_kernel.hpp"
 #include "elements/material.hpp"
+#include "elements/material_orientation.hpp"
 #include "material_states.hpp"
 #include "model/reference_nodes.hpp"
 
@@ -395,12 +396,23 @@ class PointCache {
     request_.nlgeom = nlgeom;
   }
 
+  /// An oriented section's points come in its material axes (Abaqus's output frame).
   std::span<const elements::PointResult> of(std::size_t el) {
-    if (kept_)
-      if (auto p = kept_->of(el); !p.empty()) return p;
     if (have_[el]) return points_[el];
     const ElementSetup& setup = am_.elements[el];
+    const auto kept = kept_ ? kept_->of(el) : std::span<const elements::PointResult>();
+    if (!kept.empty() && !setup.orientation) return kept;
     if (model::is_rigid(*setup.type)) return {};  // no points: a rigid element is not integrated
+    points_[el] = kept.empty() ? computed(el) : std::vector<elements::PointResult>(kept.begin(), kept.end());
+    if (setup.orientation)
+      for (elements::PointResult& p : points_[el]) elements::to_material_axes(setup.orientation->axes_at(p.coords), p);
+    have_[el] = 1;
+    return points_[el];
+  }
+
+ private:
+  std::vector<elements::PointResult> computed(std::size_t el) const {
+    const ElementSetup& setup = am_.elements[el];
     std::vector<double> u_el, dt_el, temperature_el;
     std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's rotations too
     for (std::size_t a = 0, n = am_.element_rows(el, rows); a < n; ++a)
@@ -419,12 +431,9 @@ class PointCache {
     elements::ElementSystem sys;
     elements::compute_element(*setup.type, am_.coords(el), u_el, *setup.material, setup.section, request, dt_el,
                               history, sys);
-    points_[el] = std::move(sys.points);
-    have_[el] = 1;
-    return points_[el];
+    return std::move(sys.points);
   }
 
- private:
   const AnalysisModel& am_;
   std::span<const double> u_, delta_t_;
   const ElementPoints* kept_;

@@ -6,7 +6,8 @@
 ///   σ = D(x) (ε − α ΔT I),   D(x) = T(Q(x))ᵀ D_material T(Q(x))   (material_orientation.hpp)
 ///
 /// D_material is model::material_stiffness. The stress, the strain and the tangent are global:
-/// the orientation only turns the stiffness (outputs stay in the global frame). A rectangular
+/// the orientation only turns the stiffness (field_output.cpp turns the reported S, E and PE into
+/// the material axes, for every oriented section). A rectangular
 /// orientation turns it once; a cylindrical one at each point, from the point's reference
 /// coordinates (the axes do not follow the deformation with NLGEOM: S = D E, St. Venant–Kirchhoff
 /// in the reference frame, as the isotropic law). Stateless.

@@ -1,9 +1,12 @@
 #include "material_orientation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <Eigen/Geometry>
+
+#include "voigt.hpp"
 
 namespace inpact::solver::elements {
 
@@ -87,6 +90,17 @@ Mat6 rotate_stiffness(const Mat6& d_local, const Eigen::Matrix3d& q) {
   const Mat6 t = strain_rotation(q);
   const Mat6 d = t.transpose() * d_local * t;
   return 0.5 * (d + d.transpose());  // symmetric to round-off; exactly so for the assembly
+}
+
+void to_material_axes(const Eigen::Matrix3d& q, PointResult& point) {
+  const auto turn = [&](Voigt6& v, bool engineering_shear) {
+    const Vec6 global = Eigen::Map<const Vec6>(v.data());
+    const Vec6 local = tensor_to_vec6(q * voigt_to_tensor(global, engineering_shear) * q.transpose(), engineering_shear);
+    std::copy_n(local.data(), 6, v.begin());
+  };
+  turn(point.stress, false);
+  turn(point.strain, true);
+  turn(point.plastic_strain, true);
 }
 
 }  // namespace inpact::solver::elements

@@ -39,4 +39,8 @@ Mat6 strain_rotation(const Eigen::Matrix3d& q);
 /// D in the global frame from D in the frame of Q's rows: T(Q)ᵀ D T(Q).
 Mat6 rotate_stiffness(const Mat6& d_local, const Eigen::Matrix3d& q);
 
+/// A point's tensor results (S, E, PE) turned into the frame of Q's rows, as Abaqus reports an
+/// oriented section's: σ_local = Q σ Qᵀ, the same for the strains (engineering shear kept).
+void to_material_axes(const Eigen::Matrix3d& q, PointResult& point);
+
 }  // namespace inpact::solver::elements
