@@ -35,10 +35,6 @@ std::shared_ptr<elements::Material> hyperelastic_law(const model::Model& m, cons
                                                      std::vector<std::string>& warnings) {
   const model::Hyperelastic& h = *mat.hyperelastic;
   const auto where = [&] { return m.sources.describe(h.loc); };
-  if (family == model::ElementFamily::PlaneStress)
-    throw AnalysisError(fmt::format("{}: error: *HYPERELASTIC: plane-stress elements with a hyperelastic material "
-                                    "('{}') are not supported yet (use plane strain, axisymmetric or solid elements)",
-                                    where(), mat.name));
   std::vector<double> d = h.d;
   const double mu0 = energy(h, d)->initial_shear_modulus();
   if (!(mu0 > 0))
@@ -59,7 +55,7 @@ std::shared_ptr<elements::Material> hyperelastic_law(const model::Model& m, cons
                                      "does", mat.name, h.name, d[0]));
     }
   }
-  return std::make_shared<elements::Hyperelastic>(energy(h, d));
+  return std::make_shared<elements::Hyperelastic>(energy(h, d), family == model::ElementFamily::PlaneStress);
 }
 
 }  // namespace inpact::solver

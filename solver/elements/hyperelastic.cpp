@@ -1,11 +1,14 @@
 #include "hyperelastic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+
+#include "voigt.hpp"
 
 namespace inpact::solver::elements {
 
@@ -250,7 +253,8 @@ double OgdenEnergy::initial_bulk_modulus() const {
 
 // --- the material ---
 
-Hyperelastic::Hyperelastic(std::shared_ptr<const StrainEnergy> energy) : energy_(std::move(energy)) {
+Hyperelastic::Hyperelastic(std::shared_ptr<const StrainEnergy> energy, bool plane_stress)
+    : energy_(std::move(energy)), plane_stress_(plane_stress) {
   const double mu = energy_->initial_shear_modulus(), K = energy_->initial_bulk_modulus();
   constants_.youngs_modulus = std::isfinite(K) ? 9 * K * mu / (3 * K + mu) : 3 * mu;
   constants_.poissons_ratio = std::isfinite(K) ? (3 * K - 2 * mu) / (2 * (3 * K + mu)) : 0.5;
@@ -262,8 +266,43 @@ const Mat6& Hyperelastic::update(const MaterialPointInput& in, const PointHistor
     scratch.setConstant(std::numeric_limits<double>::quiet_NaN());
     return scratch;
   }
-  energy_->stress_tangent(in.F.transpose() * in.F, stress, scratch);
+  if (!plane_stress_) {
+    energy_->stress_tangent(in.F.transpose() * in.F, stress, scratch);
+    return scratch;
+  }
+  Eigen::Matrix3d C = in.F.transpose() * in.F;
+  C(2, 2) = 1 / std::max(C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0), 1e-12);  // the isochoric guess
+  Mat6 full;
+  if (!std::isfinite(thickness_stretch_squared(C, stress, full))) {
+    stress.setConstant(std::numeric_limits<double>::quiet_NaN());  // the increment is cut back
+    scratch.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return scratch;
+  }
+  scratch.setZero();  // condensed for S33 = 0: dS_ij = (D_ij − D_i3 D_3j / D_33) dE_j (i, j in 11, 22, 12)
+  for (int i : {0, 1, 3})
+    for (int j : {0, 1, 3}) scratch(i, j) = full(i, j) - full(i, 2) * full(2, j) / full(2, 2);
+  stress(2) = stress(4) = stress(5) = 0.0;
   return scratch;
+}
+
+double Hyperelastic::thickness_stretch_squared(Eigen::Matrix3d C, Vec6& stress, Mat6& tangent) const {
+  C(0, 2) = C(2, 0) = C(1, 2) = C(2, 1) = 0.0;
+  for (int it = 0; it < 50; ++it) {
+    energy_->stress_tangent(C, stress, tangent);
+    const double scale = std::max(stress.cwiseAbs().maxCoeff(), energy_->initial_shear_modulus());
+    if (std::abs(stress(2)) <= 1e-12 * scale) return C(2, 2);
+    const double step = 2 * stress(2) / tangent(2, 2);  // dS33 = D33 dE33, dC33 = 2 dE33
+    C(2, 2) = std::max(C(2, 2) - step, 0.25 * C(2, 2));  // stays positive
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double Hyperelastic::plane_stress_thickness_strain(const Vec3&, const Vec6& strain, const Vec6&, double) const {
+  Eigen::Matrix3d C = Eigen::Matrix3d::Identity() + 2 * voigt_to_tensor(strain, true);
+  C(2, 2) = 1 / std::max(C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0), 1e-12);
+  Vec6 stress;
+  Mat6 tangent;
+  return 0.5 * (thickness_stretch_squared(C, stress, tangent) - 1);
 }
 
 }  // namespace inpact::solver::elements

@@ -107,19 +107,29 @@ class OgdenEnergy final : public StrainEnergy {
 /// The material of an integration point with a hyperelastic energy: F in, S and ℂ out
 /// (requires NLGEOM; the strain passed is ignored, C = FᵀF). Stateless. det F ≤ 0 gives NaN
 /// stresses (the increment is then cut back).
+/// Plane stress: the thickness stretch λ3 is the material's, C33 = λ3² found by a local Newton
+/// iteration until S33 = 0 (to 1e-12 of the stress), the tangent condensed for S33 = 0,
+/// D − D·₃ D₃· / D₃₃ (the exact derivative of the converged state), zero rows for 33, 13, 23.
 class Hyperelastic final : public Material {
  public:
-  explicit Hyperelastic(std::shared_ptr<const StrainEnergy> energy);
+  explicit Hyperelastic(std::shared_ptr<const StrainEnergy> energy, bool plane_stress = false);
 
   const Mat6& update(const MaterialPointInput& in, const PointHistory& point, Vec6& stress,
                      Mat6& scratch) const override;
+  /// Plane stress: E33 = (λ3² − 1)/2 of the state update() converges to.
+  double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
+                                       double thermal_strain) const override;
   /// Small-strain constants of the initial moduli μ0, K0 (hourglass control, output).
   const ElasticConstants& elastic() const override { return constants_; }
   const StrainEnergy& energy() const { return *energy_; }
 
  private:
+  /// C33 with S33 = 0 for the in-plane C (its 33 entry the start); writes S and D there.
+  double thickness_stretch_squared(Eigen::Matrix3d C, Vec6& stress, Mat6& tangent) const;
+
   std::shared_ptr<const StrainEnergy> energy_;
   ElasticConstants constants_;
+  bool plane_stress_ = false;
 };
 
 }  // namespace inpact::solver::elements

@@ -6,6 +6,7 @@
 //  - uniaxial tension to stretch 2 and simple shear to γ = 1: the nominal stress of the
 //    principal-stretch closed forms τ_a = λ_a ∂W/∂λ_a (within 1e-6 relative), the lateral
 //    stretch of uniaxial tension solved from τ2 = 0 by bisection.
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -269,3 +270,72 @@ TEST(Hyperelastic, AnInvertedPointHasNoStress) {
 
 }  // namespace
 }  // namespace inpact::solver::elements
+
+namespace {
+
+using inpact::solver::elements::Hyperelastic;
+using inpact::solver::elements::InvariantEnergy;
+using inpact::solver::elements::MaterialPointInput;
+
+/// S and the tangent of a law at F (the element's Green–Lagrange strain from F).
+std::pair<inpact::solver::elements::Vec6, inpact::solver::elements::Mat6> at(const Hyperelastic& law,
+                                                                             const Eigen::Matrix3d& F) {
+  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+  inpact::solver::elements::Vec6 strain, stress;
+  strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
+  inpact::solver::elements::Mat6 scratch;
+  const inpact::solver::elements::Mat6 D = law.update(MaterialPointInput{F, strain, 0.0, nullptr, true}, {}, stress, scratch);
+  return {stress, D};
+}
+
+}  // namespace
+
+// Plane stress: a neo-Hooke sheet pulled to λ1 = 2 with S22 = 0 (a Newton iteration on λ2 with
+// the condensed tangent) is the 3D uniaxial state: the material's λ3 equals λ2 (isotropy) and S11
+// is the 3D law's at diag(λ1, λ2, λ3); the condensed tangent is the central difference of the
+// plane-stress stress.
+TEST(HyperelasticPlaneStress, UniaxialSheetIsThe3DUniaxialStateAndTheTangentIsExact) {
+  const auto energy = std::make_shared<InvariantEnergy>(InvariantEnergy::polynomial({0.5, 0.0}, 1, {0.1}));
+  const Hyperelastic sheet(energy, true), solid(energy);
+  Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+  F(0, 0) = 2.0;
+  for (int it = 0; it < 30; ++it) {  // S22 = 0 by the in-plane Newton of an element
+    const auto [S, D] = at(sheet, F);
+    if (std::abs(S(1)) < 1e-13) break;
+    const double E22 = 0.5 * (F(1, 1) * F(1, 1) - 1) - S(1) / D(1, 1);
+    F(1, 1) = std::max(std::sqrt(std::max(1 + 2 * E22, 0.0)), 0.5 * F(1, 1));  // damped: stays positive
+  }
+  const auto [S, D] = at(sheet, F);
+  ASSERT_LT(std::abs(S(1)), 1e-12);
+  EXPECT_EQ(S(2), 0.0);
+  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+  inpact::solver::elements::Vec6 strain;
+  strain << E(0, 0), E(1, 1), 0, 0, 0, 0;
+  const double lambda3 = std::sqrt(1 + 2 * sheet.plane_stress_thickness_strain({}, strain, S, 0.0));
+  EXPECT_NEAR(lambda3, F(1, 1), 1e-10);
+  Eigen::Matrix3d F3 = F;
+  F3(2, 2) = lambda3;
+  const auto [S3, D3] = at(solid, F3);
+  EXPECT_NEAR(S(0), S3(0), 1e-10 * std::abs(S3(0)));
+  EXPECT_NEAR(S3(2), 0.0, 1e-10 * std::abs(S3(0)));
+  // The condensed tangent against central differences at a general in-plane F.
+  Eigen::Matrix3d G = Eigen::Matrix3d::Identity();
+  G(0, 0) = 1.3, G(0, 1) = 0.2, G(1, 0) = -0.05, G(1, 1) = 0.9;
+  const auto [Sg, Dg] = at(sheet, G);
+  const double h = 1e-7;
+  double worst = 0;
+  for (int j : {0, 1, 3}) {
+    Eigen::Matrix3d Ep = 0.5 * (G.transpose() * G - Eigen::Matrix3d::Identity()), Em = Ep;
+    const int p = j == 3 ? 0 : j, q = j == 3 ? 1 : j;
+    const double dh = j == 3 ? h / 2 : h;  // a unit engineering shear is E12 = E21 = ½
+    Ep(p, q) += dh, Em(p, q) -= dh;
+    if (p != q) Ep(q, p) += dh, Em(q, p) -= dh;
+    const auto stretch = [](const Eigen::Matrix3d& e) {
+      return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(Eigen::Matrix3d::Identity() + 2 * e).operatorSqrt();
+    };
+    const inpact::solver::elements::Vec6 col = (at(sheet, stretch(Ep)).first - at(sheet, stretch(Em)).first) / (2 * h);
+    for (int i : {0, 1, 3}) worst = std::max(worst, std::abs(col(i) - Dg(i, j)) / Dg.cwiseAbs().maxCoeff());
+  }
+  std::printf("[hyperelastic] plane-stress tangent vs central differences: %.2e\n", worst);
+  EXPECT_LT(worst, 1e-6);
+}
