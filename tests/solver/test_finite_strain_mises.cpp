@@ -8,10 +8,13 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "finite_strain_fixtures.hpp"
+
 #include "solver/elements/finite_strain_mises.hpp"
 
 using namespace inpact::solver::elements;
 using Mat3 = Eigen::Matrix3d;
+using namespace inpact::test::finite_strain;
 
 namespace {
 
@@ -21,46 +24,7 @@ const ElasticConstants kElastic{kE, kNu, 0.0};
 /// Linear hardening σ_y = 250 + 1000 ε̄ᵖ, tabulated far enough to stay linear.
 FiniteStrainMises material() { return FiniteStrainMises(kElastic, {false, {0.0, 10.0}, {kSy, kSy + 10 * kH}}); }
 
-struct Eval {
-  Vec6 stress;  ///< S
-  Mat6 tangent;
-  std::vector<double> trial;
-};
-
-Eval evaluate(const Material& m, const std::vector<double>& committed, const Mat3& F) {
-  Eval e;
-  e.trial.assign(committed.size(), -1.0);
-  const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
-  Vec6 strain;
-  strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
-  Mat6 scratch;
-  e.tangent = m.update({F, strain, 0.0, nullptr, true}, {committed, e.trial}, e.stress, scratch);
-  return e;
-}
-
-std::vector<double> initial(const Material& m) {
-  std::vector<double> s(m.state_size());
-  m.initial_state(s);
-  return s;
-}
-
 Mat3 rotation_z(double angle) { return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
-
-/// The symmetric square root of C = I + 2E (E in Voigt form, engineering shear).
-Mat3 stretch_of(const Vec6& E) {
-  Mat3 C;
-  C << 1 + 2 * E(0), E(3), E(4), E(3), 1 + 2 * E(1), E(5), E(4), E(5), 1 + 2 * E(2);
-  Eigen::SelfAdjointEigenSolver<Mat3> eig(C);
-  return eig.operatorSqrt();
-}
-
-/// A committed state with plastic history: one plastic increment in shear and tension.
-std::vector<double> plastic_history(const Material& m) {
-  Mat3 F = Mat3::Identity();
-  F(0, 0) = 1.02, F(0, 1) = 0.03, F(1, 1) = 0.995, F(2, 0) = 0.004;
-  Eval e = evaluate(m, initial(m), F);
-  return e.trial;
-}
 
 }  // namespace
 

@@ -10,6 +10,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "finite_strain_fixtures.hpp"
+
 #include "solver/elements/combined_plasticity.hpp"
 #include "solver/elements/finite_strain_mises.hpp"
 #include "solver/elements/log_divided_difference.hpp"
@@ -17,6 +19,7 @@
 
 using namespace inpact::solver::elements;
 using Mat3 = Eigen::Matrix3d;
+using namespace inpact::test::finite_strain;
 
 namespace {
 
@@ -26,39 +29,6 @@ const ElasticConstants kElastic{kE, kNu, 0.0};
 /// Linear kinematic hardening, C = 1000, in the logarithmic strain.
 LogStrainPlasticity kinematic() {
   return LogStrainPlasticity(std::make_shared<MisesPlasticity>(kElastic, MisesHardening{true, {0.0, 10.0}, {kSy, kSy + 10 * kC}}));
-}
-
-struct Eval {
-  Vec6 stress;  ///< S
-  Mat6 tangent;
-  std::vector<double> trial;
-};
-
-Vec6 green_lagrange(const Mat3& F) {
-  const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
-  return (Vec6() << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2)).finished();
-}
-
-Eval evaluate(const Material& m, const std::vector<double>& committed, const Mat3& F) {
-  Eval e;
-  e.trial.assign(committed.size(), -1.0);
-  const Vec6 strain = green_lagrange(F);
-  Mat6 scratch;
-  e.tangent = m.update({F, strain, 0.0, nullptr, true}, {committed, e.trial}, e.stress, scratch);
-  return e;
-}
-
-std::vector<double> initial(const Material& m) {
-  std::vector<double> s(m.state_size());
-  m.initial_state(s);
-  return s;
-}
-
-/// √C of C = I + 2E.
-Mat3 stretch_of(const Vec6& E) {
-  Mat3 C;
-  C << 1 + 2 * E(0), E(3), E(4), E(3), 1 + 2 * E(1), E(5), E(4), E(5), 1 + 2 * E(2);
-  return Eigen::SelfAdjointEigenSolver<Mat3>(C).operatorSqrt();
 }
 
 /// max |tangent − central differences of S| relative to the tangent's largest entry.
@@ -71,13 +41,6 @@ double tangent_error(const Material& m, const std::vector<double>& committed, co
     fd.col(j) = (evaluate(m, committed, stretch_of(E + h * Vec6::Unit(j))).stress -
                  evaluate(m, committed, stretch_of(E - h * Vec6::Unit(j))).stress) / (2 * h);
   return (fd - base.tangent).cwiseAbs().maxCoeff() / base.tangent.cwiseAbs().maxCoeff();
-}
-
-/// A committed state with plastic history: one plastic increment in shear and tension.
-std::vector<double> plastic_history(const Material& m) {
-  Mat3 F = Mat3::Identity();
-  F(0, 0) = 1.02, F(0, 1) = 0.03, F(1, 1) = 0.995, F(2, 0) = 0.004;
-  return evaluate(m, initial(m), F).trial;
 }
 
 }  // namespace
