@@ -581,6 +581,18 @@ def bar_mesh(x0, x1, nx, first_node=1):
     return coords, conn
 
 
+def c3d8_bar(d, coords, conn, length):
+    """The nodes and C3D8 elements of a bar_mesh (ELSET BAR) and its sets: the ends LEFT (x = 0)
+    and RIGHT (x = length), the symmetry planes Y0 and Z0."""
+    eps = 1e-9
+    d.nodes(coords, 3)
+    d.elements("C3D8", "BAR", conn)
+    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - length) < eps))
+    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+
+
 def multistep():
     eps = 1e-9
     coords, conn = bar_mesh(0.0, 4.0, 4)
@@ -651,18 +663,12 @@ def equation_tie():
 
 def rigid_mode():
     coords, conn = bar_mesh(0.0, 2.0, 2)
-    eps = 1e-9
     d = Deck("A deck that cannot converge: step 2 removes every support of a loaded bar",
              ["Step 1 converges (held at x = 0, 10 at x = 2). Step 2: *BOUNDARY, OP=NEW with no data",
               "line removes the supports while the load stays: a rigid-body mode, singular stiffness.",
               "Expected: AnalysisOutcome.completed == false naming step 2 increment 1; exit code 4,",
               "step 1's frames readable in the .h5 with status ABORTED."])
-    d.nodes(coords, 3)
-    d.elements("C3D8", "BAR", conn)
-    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
-    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - 2) < eps))
-    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
-    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    c3d8_bar(d, coords, conn, 2)
     d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT", "*MATERIAL, NAME=MAT", "*ELASTIC", "1000., 0.3")
     d.add("*STEP, NAME=HOLD", "*STATIC", "*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3", "*CLOAD", "RIGHT, 1, 2.5",
           *OUTPUT, "*END STEP")
@@ -678,7 +684,6 @@ PLAST = dict(E=200000.0, nu=0.3, sy=250.0, H=20000.0, L=4.0, eps_max=8e-3)
 def plastic_bar():
     """Bar 4 x 1 x 1 of 4 C3D8, symmetry planes x = y = z = 0, linear isotropic hardening."""
     E, nu, sy, H, L, eps_max = (PLAST[k] for k in ("E", "nu", "sy", "H", "L", "eps_max"))
-    eps = 1e-9
     coords, conn = bar_mesh(0.0, L, 4)
     Et = E * H / (E + H)
     s_max = sy + Et * (eps_max - sy / E)
@@ -692,12 +697,7 @@ def plastic_bar():
               "sigma = sigma_max (1 - t), at the end sigma = 0 and PEEQ = PE11 = eps_p, PE22 = -eps_p/2.",
               "*CONTROLS: residuals to 1e-12 of the average force (R_n, R_l), so that the values are exact to round-off.",
               "Tolerances in tests/verification/test_plastic_bar.cpp."])
-    d.nodes(coords, 3)
-    d.elements("C3D8", "BAR", conn)
-    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
-    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
-    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
-    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    c3d8_bar(d, coords, conn, L)
     d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
           "*PLASTIC", f"{sy}, 0.", f"{sy + H * 0.1:g}, 0.1")
     d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
@@ -744,7 +744,6 @@ def plastic_bar_temperature():
     length (the yield surface shrinks: plastic flow at constant strain), cooled, released."""
     E, nu, L = PLAST["E"], PLAST["nu"], PLAST["L"]
     T0, T1, sy0, H0, sy1, H1, eps_max = (HOT[k] for k in ("T0", "T1", "sy0", "H0", "sy1", "H1", "eps"))
-    eps = 1e-9
     coords, conn = bar_mesh(0.0, L, 4)
     d = Deck("Bar with temperature-dependent plasticity: pulled, heated at fixed length, cooled, released",
              [f"E = {E}, nu = {nu}, no expansion. *PLASTIC at T = {T0:g}: sigma_y = {sy0:g} + {H0:g} eps_p (to eps_p 0.1);",
@@ -754,12 +753,7 @@ def plastic_bar_temperature():
               f"B = {H0:g} + ({H1 - H0:g}) s: eps_p = (E eps - A)/(E + B), sigma = E (eps - eps_p) at every increment.",
               f"Step COOL: T back to {T0:g}, elastic, sigma constant. Step RELEASE: sigma to 0, the end at L eps_p.",
               "Tolerances in tests/verification/test_plastic_bar.cpp."])
-    d.nodes(coords, 3)
-    d.elements("C3D8", "BAR", conn)
-    d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
-    d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
-    d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
-    d.nset("Z0", select(coords, lambda x: abs(x[2]) < eps))
+    c3d8_bar(d, coords, conn, L)
     d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
           "*PLASTIC", f"{sy0:g}, 0., {T0:g}", f"{sy0 + H0 * 0.1:g}, 0.1, {T0:g}",
           f"{sy1:g}, 0., {T1:g}", f"{sy1 + H1 * 0.2:g}, 0.2, {T1:g}")

@@ -1,5 +1,6 @@
 #pragma once
 // Reference and distorted element geometries for the element-kernel tests.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -67,6 +68,21 @@ inline std::vector<double> rigid_motion_with_rotations(const std::vector<Vec3>& 
     }
   }
   return u;
+}
+
+/// What a rigid motion leaves in an element system: the largest stiffness term (the scale), the
+/// largest internal force (zero for a rigid motion) and the largest K_ij − K_ji.
+struct RigidMotionResidual {
+  double scale = 0.0, force = 0.0, skew = 0.0;
+};
+
+inline RigidMotionResidual rigid_motion_residual(const solver::elements::ElementSystem& sys) {
+  RigidMotionResidual r;
+  for (double k : sys.stiffness) r.scale = std::max(r.scale, std::abs(k));
+  for (double f : sys.internal_force) r.force = std::max(r.force, std::abs(f));
+  for (int i = 0; i < sys.n_dof; ++i)
+    for (int j = 0; j < sys.n_dof; ++j) r.skew = std::max(r.skew, std::abs(sys.k(i, j) - sys.k(j, i)));
+  return r;
 }
 
 }  // namespace inpact::test
