@@ -53,15 +53,18 @@ struct Expansion {
 /// zero plastic strain. ISOTROPIC: piecewise linear between the points, constant beyond the
 /// last (one point: perfectly plastic), as Abaqus. KINEMATIC: linear Ziegler/Prager hardening
 /// with σ⁰ = the first yield stress and C from the first two points (one point: perfectly
-/// plastic). COMBINED (DATATYPE=PARAMETERS): nonlinear kinematic hardening (Chaboche), the
-/// first point is σ|0 and `backstresses` holds (C_k, γ_k); the size of the yield surface comes
-/// from *CYCLIC HARDENING (Material::cyclic_hardening), constant σ|0 without it.
-/// Temperature: ISOTROPIC tables may come in blocks of rows, one block per temperature
-/// (temperatures increasing, each block from zero plastic strain); the yield stress is then
-/// interpolated linearly in temperature at equal plastic strain, constant outside the range
-/// (Abaqus). KINEMATIC and COMBINED take one temperature.
+/// plastic). COMBINED: nonlinear kinematic hardening (Chaboche); the size of the yield surface
+/// comes from *CYCLIC HARDENING (Material::cyclic_hardening), constant σ|0 without it.
+///  - DATATYPE=HALF CYCLE (the default): `table` holds the test's (σ, ε̄ᵖ) rows, from which the
+///    analysis fits one backstress (solver/elements/half_cycle_fit.hpp);
+///  - DATATYPE=PARAMETERS: one row (σ|0, 0, T) per temperature in `table`, and `backstresses`
+///    holds NUMBER BACKSTRESSES pairs (C_k, γ_k) per row, in the rows' order.
+/// Temperature: the rows come in blocks, one per temperature (temperatures increasing, each
+/// block from zero plastic strain); every value is interpolated linearly in temperature (a
+/// table at equal plastic strain), constant outside the range (Abaqus).
 struct Plastic {
   enum class Hardening : std::uint8_t { Isotropic, Kinematic, Combined };
+  enum class CombinedData : std::uint8_t { HalfCycle, Parameters };
   struct Point {
     double yield_stress = 0.0;
     double plastic_strain = 0.0;
@@ -72,17 +75,23 @@ struct Plastic {
     double recovery = 0.0;  ///< γ_k (0: linear)
   };
   Hardening hardening = Hardening::Isotropic;
+  CombinedData combined_data = CombinedData::HalfCycle;
   std::vector<Point> table;  ///< every row, in blocks of equal temperature
   std::vector<Backstress> backstresses;
   SourceLoc loc;
 };
 
 /// *CYCLIC HARDENING: the size σ⁰(ε̄ᵖ) of the yield surface of combined hardening, as a table
-/// (piecewise linear, constant beyond the last point, as *PLASTIC's) or, with PARAMETERS, the
-/// exponential law σ⁰ = σ|0 + Q∞ (1 − exp(−b ε̄ᵖ)).
+/// (piecewise linear, constant beyond the last point, as *PLASTIC's; blocks per temperature)
+/// or, with PARAMETERS, the exponential law σ⁰ = σ|0 + Q∞ (1 − exp(−b ε̄ᵖ)), one set per
+/// temperature.
 struct CyclicHardening {
+  struct Exponential {
+    double initial = 0.0, saturation = 0.0, rate = 0.0;  ///< σ|0, Q∞, b
+    double temperature = 0.0;
+  };
   std::vector<Plastic::Point> table;  ///< empty with PARAMETERS
-  double initial = 0.0, saturation = 0.0, rate = 0.0;  ///< σ|0, Q∞, b (PARAMETERS)
+  std::vector<Exponential> parameters;  ///< PARAMETERS, temperatures increasing
   SourceLoc loc;
 };
 

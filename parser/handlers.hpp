@@ -26,6 +26,8 @@ void add_combined_hardening_keywords(std::vector<KeywordSpec>& table);  // kw_co
 
 /// *PLASTIC, HARDENING=COMBINED's data into `p` (kw_combined_hardening.cpp; called by *PLASTIC).
 void combined_plastic(KeywordContext& ctx, model::Plastic& p);
+/// *PLASTIC's rows (σ, ε̄ᵖ[, T]) into p.table, in blocks of one temperature; false on an error.
+bool plastic_table(KeywordContext& ctx, model::Plastic& p);
 void add_pretension_keywords(std::vector<KeywordSpec>& table);  // kw_pretension.cpp
 void add_spring_keywords(std::vector<KeywordSpec>& table);    // kw_spring.cpp
 void add_rigid_body_keywords(std::vector<KeywordSpec>& table);  // kw_rigid_body.cpp

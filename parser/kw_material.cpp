@@ -157,9 +157,10 @@ std::optional<PlasticLine> plastic_line(KeywordContext& ctx, const Line& line) {
   return out;
 }
 
-// The rows of *PLASTIC (not COMBINED) into p.table: blocks of equal temperature, temperatures
-// increasing, each block from zero plastic strain with strains increasing. Several temperatures
-// only with isotropic hardening.
+}  // namespace
+
+// The rows of *PLASTIC (but COMBINED's parameters) into p.table: blocks of equal temperature,
+// temperatures increasing, each block from zero plastic strain with strains increasing.
 bool plastic_table(KeywordContext& ctx, model::Plastic& p) {
   for (std::size_t i = 0; i < ctx.data.size(); ++i) {
     const auto line = plastic_line(ctx, ctx.data[i]);
@@ -170,11 +171,6 @@ bool plastic_table(KeywordContext& ctx, model::Plastic& p) {
     if (new_block && i > 0 && point.temperature < p.table.back().temperature) {
       ctx.error(line->temperature_loc, fmt::format("the temperatures must increase from block to block, found {} "
                                                    "after {}", point.temperature, p.table.back().temperature));
-      return false;
-    }
-    if (new_block && i > 0 && p.hardening != model::Plastic::Hardening::Isotropic) {
-      ctx.error(line->temperature_loc, "temperature-dependent kinematic hardening (more than one temperature) is not "
-                                       "supported yet");
       return false;
     }
     const double ep = point.plastic_strain;
@@ -192,6 +188,8 @@ bool plastic_table(KeywordContext& ctx, model::Plastic& p) {
   }
   return true;
 }
+
+namespace {
 
 // *PLASTIC, HARDENING=ISOTROPIC (default) | KINEMATIC: yield stress, equivalent plastic strain
 // [, temperature] per line, in blocks of one temperature (plastic_table).

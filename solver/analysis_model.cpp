@@ -12,6 +12,7 @@
 
 #include "analysis_error.hpp"
 #include "analytical_contact.hpp"
+#include "combined_hardening_setup.hpp"
 #include "anisotropic_law.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
@@ -51,24 +52,28 @@ std::size_t AnalysisModel::element_rows(std::size_t e, std::span<std::int32_t> r
 
 namespace {
 
-/// HARDENING=COMBINED: the Chaboche law (combined_plasticity.hpp), not in plane stress.
+/// HARDENING=COMBINED, and KINEMATIC with several temperatures: the Chaboche law
+/// (combined_plasticity.hpp) at each temperature of the data, not in plane stress.
 std::shared_ptr<elements::Material> combined_law(const model::Model& m, const model::Material& mat,
-                                                 model::ElementFamily family, const elements::ElasticConstants& c) {
+                                                 model::ElementFamily family, const elements::ElasticConstants& c,
+                                                 std::vector<std::string>& warnings) {
   const model::Plastic& p = *mat.plastic;
   if (family == model::ElementFamily::PlaneStress)
-    throw AnalysisError(fmt::format("{}: error: *PLASTIC: HARDENING=COMBINED with plane stress elements is not "
-                                    "supported yet (material '{}')", m.sources.describe(p.loc), mat.name));
-  elements::CombinedHardening h;
-  for (const auto& b : p.backstresses) h.backstresses.push_back({b.modulus, b.recovery});
-  h.initial = p.table.front().yield_stress;
-  if (const auto& cyc = mat.cyclic_hardening) {
-    if (cyc->table.empty()) h.initial = cyc->initial, h.saturation = cyc->saturation, h.rate = cyc->rate;
-    for (const auto& point : cyc->table) {
-      h.table_strain.push_back(point.plastic_strain);
-      h.table_stress.push_back(point.yield_stress);
-    }
-  }
-  return std::make_shared<elements::CombinedPlasticity>(c, std::move(h));
+    throw AnalysisError(fmt::format("{}: error: *PLASTIC: {} with plane stress elements is not supported yet "
+                                    "(material '{}')", m.sources.describe(p.loc),
+                                    p.hardening == model::Plastic::Hardening::Combined
+                                        ? "HARDENING=COMBINED"
+                                        : "temperature-dependent HARDENING=KINEMATIC",
+                                    mat.name));
+  CombinedLawData data = combined_law_data(m, mat);
+  warnings.insert(warnings.end(), data.notes.begin(), data.notes.end());
+  return std::make_shared<elements::CombinedPlasticity>(c, std::move(data.sets), std::move(data.temperatures));
+}
+
+/// Whether *PLASTIC's rows hold several temperatures.
+bool several_temperatures(const model::Plastic& p) {
+  return std::any_of(p.table.begin(), p.table.end(),
+                     [&](const model::Plastic::Point& row) { return row.temperature != p.table.front().temperature; });
 }
 
 /// The Mises material of *PLASTIC. Small strain: MisesPlasticity (isotropic or linear
@@ -78,12 +83,14 @@ std::shared_ptr<elements::Material> combined_law(const model::Model& m, const mo
 /// (log_strain_plasticity.hpp); both agree on paths with fixed principal axes. Finite-strain
 /// plane stress stops with a clear message instead of a wrong answer.
 std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
-                                                model::ElementFamily family, const elements::ElasticConstants& c) {
+                                                model::ElementFamily family, const elements::ElasticConstants& c,
+                                                std::vector<std::string>& warnings) {
   const model::Plastic& p = *mat.plastic;
   if (mat.cyclic_hardening && p.hardening != model::Plastic::Hardening::Combined)
     throw AnalysisError(fmt::format("{}: error: *CYCLIC HARDENING: it needs *PLASTIC, HARDENING=COMBINED (material '{}')",
                                     m.sources.describe(mat.cyclic_hardening->loc), mat.name));
-  const bool combined = p.hardening == model::Plastic::Hardening::Combined;
+  const bool combined = p.hardening == model::Plastic::Hardening::Combined ||
+                        (p.hardening == model::Plastic::Hardening::Kinematic && several_temperatures(p));
   elements::MisesHardening h;
   if (!combined) {
     h = elements::isotropic_hardening(p.table);
@@ -91,7 +98,7 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
   }
   const auto nlgeom = std::find_if(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
   if (nlgeom == m.steps.end()) {
-    if (combined) return combined_law(m, mat, family, c);
+    if (combined) return combined_law(m, mat, family, c, warnings);
     return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
   }
   if (family == model::ElementFamily::PlaneStress)
@@ -99,7 +106,7 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
                                     "is not supported yet (material '{}'; step '{}' has NLGEOM)",
                                     m.sources.describe(p.loc), mat.name, nlgeom->name));
   if (combined)
-    return std::make_shared<elements::LogStrainPlasticity>(combined_law(m, mat, model::ElementFamily::Solid3D, c));
+    return std::make_shared<elements::LogStrainPlasticity>(combined_law(m, mat, model::ElementFamily::Solid3D, c, warnings));
   if (h.kinematic)
     return std::make_shared<elements::LogStrainPlasticity>(std::make_shared<elements::MisesPlasticity>(c, std::move(h)));
   return std::make_shared<elements::FiniteStrainMises>(c, std::move(h));
@@ -120,7 +127,7 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     if (hyperelastic) l = am.materials.emplace_back(hyperelastic_law(m, *mat, family, type.hybrid, am.warnings)).get();
     else if (mat && mat->elastic && mat->elastic->type != model::Elastic::Type::Isotropic)
       l = am.materials.emplace_back(anisotropic_law(m, m.mesh.sections[section], *mat, family)).get();
-    else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c)).get();
+    else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c, am.warnings)).get();
     else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
     return l;
   };

@@ -770,6 +770,75 @@ def plastic_bar_temperature():
     return d
 
 
+HALF = dict(sy=250.0, C=40000.0, gamma=400.0, dg1=0.002, dg2=0.005,
+            rows=(0.0, 0.001, 0.0025, 0.005, 0.01, 0.02))
+
+
+def plastic_bar_half_cycle():
+    """The bar with HARDENING=COMBINED given as half-cycle data (Abaqus's default DATATYPE):
+    rows on the curve sigma = sigma|0 + C/gamma (1 - exp(-gamma eps_p)), which the fit must
+    recover, then two single-increment plastic steps whose backward Euler values are closed."""
+    E, nu, L = PLAST["E"], PLAST["nu"], PLAST["L"]
+    sy, C, g, dg1, dg2 = (HALF[k] for k in ("sy", "C", "gamma", "dg1", "dg2"))
+    x1 = C * dg1 / (1 + g * dg1)
+    x2 = (x1 + C * (dg2 - dg1)) / (1 + g * (dg2 - dg1))
+    coords, conn = bar_mesh(0.0, L, 4)
+    d = Deck("Bar in uniaxial tension, combined hardening from half-cycle test data",
+             [f"E = {E}, nu = {nu}; *PLASTIC, HARDENING=COMBINED (DATATYPE=HALF CYCLE, one backstress): rows on",
+              f"sigma = {sy:g} + C/gamma (1 - exp(-gamma eps_p)), C = {C:g}, gamma = {g:g}, no *CYCLIC HARDENING",
+              "(a surface of constant size sigma|0, the first row). The fit recovers C and gamma.",
+              f"Step LOAD: one increment to eps = sigma/E + dg1, dg1 = {dg1:g}: X1 = C dg1/(1 + gamma dg1) = {x1:.12g},",
+              f"S11 = {sy + x1:.12g}. Step MORE: one increment to dg2 = {dg2:g}: X2 = (X1 + C (dg2 - dg1))/(1 + gamma",
+              f"(dg2 - dg1)) = {x2:.12g}, S11 = {sy + x2:.12g}. Step UNLOAD: released, S11 = 0, the end at L dg2.",
+              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+    c3d8_bar(d, coords, conn, L)
+    rows = [f"{sy + C / g * (1 - math.exp(-g * e)):.15g}, {e:g}" for e in HALF["rows"]]
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
+          "*PLASTIC, HARDENING=COMBINED", *rows)
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+    for name, x, dg in (("LOAD", x1, dg1), ("MORE", x2, dg2)):
+        d.add(f"*STEP, NAME={name}", "*STATIC, DIRECT", "1., 1.", *controls, "*BOUNDARY",
+              f"RIGHT, 1, 1, {L * ((sy + x) / E + dg):.15g}", *out, "*END STEP")
+    d.add("*STEP, NAME=UNLOAD", "*STATIC, DIRECT", "0.5, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
+          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+    return d
+
+
+KHOT = dict(T0=20.0, T1=420.0, sy0=250.0, C0=20000.0, sy1=150.0, C1=10000.0, eps=4e-3)
+
+
+def plastic_bar_kinematic_temperature():
+    """Linear kinematic hardening at two temperatures: pulled cold, heated at fixed length."""
+    E, nu, L = PLAST["E"], PLAST["nu"], PLAST["L"]
+    T0, T1, sy0, C0, sy1, C1, eps = (KHOT[k] for k in ("T0", "T1", "sy0", "C0", "sy1", "C1", "eps"))
+    coords, conn = bar_mesh(0.0, L, 4)
+    d = Deck("Bar with temperature-dependent linear kinematic hardening: pulled, heated at fixed length, released",
+             [f"E = {E}, nu = {nu}, no expansion. *PLASTIC, HARDENING=KINEMATIC at T = {T0:g}: sigma|0 = {sy0:g},",
+              f"C = {C0:g}; at T = {T1:g}: sigma|0 = {sy1:g}, C = {C1:g}; both linear in T between. Abaqus's backstress",
+              "law carries alpha with C (the term (1/C)(dC/dT) alpha dT), so uniaxially X = 3/2 alpha11 = C(T) eps_p.",
+              f"Step PULL (T = {T0:g}): strain to {eps:g}, eps_p = (E eps - sigma|0)/(E + C), sigma = E (eps - eps_p).",
+              f"Step HEAT (length held): T to {T1:g}; with s = (T - {T0:g})/{T1 - T0:g}: eps_p = (E eps - sigma|0(s))/(E + C(s))",
+              "(it grows: plastic flow at fixed strain), sigma = E (eps - eps_p). Step RELEASE (at T1): elastic down to",
+              "sigma = 0 (-X = -C1 eps_p stays above -sigma|0), the end at L eps_p.",
+              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+    c3d8_bar(d, coords, conn, L)
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
+          "*PLASTIC, HARDENING=KINEMATIC", f"{sy0:g}, 0., {T0:g}", f"{sy0 + C0 * 0.01:g}, 0.01, {T0:g}",
+          f"{sy1:g}, 0., {T1:g}", f"{sy1 + C1 * 0.01:g}, 0.01, {T1:g}")
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0:g}")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+    d.add("*STEP, NAME=PULL", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps:g}",
+          *out, "*END STEP")
+    d.add("*STEP, NAME=HEAT", "*STATIC, DIRECT", "0.1, 1.", *controls, "*TEMPERATURE", f"ALL, {T1:g}", "*END STEP")
+    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.5, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
+          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+    return d
+
+
 CYL = dict(a=10.0, b=20.0, c=15.0, E=200000.0, nu=0.4999, sy=250.0)
 
 
@@ -985,6 +1054,8 @@ def committed(out):
         "plastic_bar_c3d8.inp": plastic_bar(),
         "plastic_plate_cps4.inp": plastic_plate(),
         "plastic_bar_temperature_c3d8.inp": plastic_bar_temperature(),
+        "plastic_bar_half_cycle_c3d8.inp": plastic_bar_half_cycle(),
+        "plastic_bar_kinematic_temperature_c3d8.inp": plastic_bar_kinematic_temperature(),
         "plastic_cylinder_cpe8r.inp": plastic_cylinder("CPE8R", 12, 4),
     }
     for name, d in decks.items():

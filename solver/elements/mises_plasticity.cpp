@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "temperature_bracket.hpp"
 #include "voigt.hpp"
 
 namespace inpact::solver::elements {
@@ -80,14 +81,10 @@ std::span<const double> MisesPlasticity::curve_at(double temperature, std::vecto
   const auto& h = hardening_;
   const std::size_t m = h.plastic_strain.size();
   const std::span<const double> all(h.yield_stress);
-  const std::size_t n = h.temperatures.size();
-  if (n < 2 || temperature <= h.temperatures.front()) return all.first(m);
-  if (temperature >= h.temperatures.back()) return all.subspan((n - 1) * m, m);
-  std::size_t t = 0;
-  while (temperature >= h.temperatures[t + 1]) ++t;
-  const double s = (temperature - h.temperatures[t]) / (h.temperatures[t + 1] - h.temperatures[t]);
+  const TemperatureBracket b = bracket(h.temperatures, temperature);
+  if (b.lower == b.upper) return all.subspan(b.lower * m, m);
   buffer.resize(m);
-  for (std::size_t k = 0; k < m; ++k) buffer[k] = (1 - s) * all[t * m + k] + s * all[(t + 1) * m + k];
+  for (std::size_t k = 0; k < m; ++k) buffer[k] = b.blend(all[b.lower * m + k], all[b.upper * m + k]);
   return buffer;
 }
 

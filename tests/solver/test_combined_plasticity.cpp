@@ -2,8 +2,9 @@
 // (solver/elements/combined_plasticity.hpp): the return lands on the yield surface, the
 // one-increment uniaxial closed form of the backward-Euler update, saturation of the backstress
 // at C/γ, the Bauschinger effect on reversal, the tangent against central differences (its
-// symmetric part; exact for γ = 0), linear-kinematic equivalence with MisesPlasticity, and the
-// state contract.
+// symmetric part; exact for γ = 0), linear-kinematic equivalence with MisesPlasticity, the
+// state contract, and temperature dependence (parameters interpolated, the backstress carried
+// with C(T)).
 #include <cmath>
 #include <vector>
 
@@ -35,12 +36,12 @@ struct Eval {
   std::vector<double> trial;
 };
 
-Eval evaluate(const Material& m, const std::vector<double>& committed, const Vec6& strain) {
+Eval evaluate(const Material& m, const std::vector<double>& committed, const Vec6& strain, double temperature = 0.0) {
   Eval e;
   e.trial.assign(committed.size(), -1.0);
   const Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
   Mat6 scratch;
-  e.tangent = m.update({F, strain, 0.0}, {committed, e.trial}, e.stress, scratch);
+  e.tangent = m.update({F, strain, 0.0, nullptr, false, temperature}, {committed, e.trial}, e.stress, scratch);
   return e;
 }
 
@@ -52,9 +53,11 @@ Vec6 deviator(const Vec6& s) {
 
 double mises(const Vec6& d) { return std::sqrt(1.5 * (d.head<3>().squaredNorm() + 2 * d.tail<3>().squaredNorm())); }
 
-Vec6 total_backstress(const CP& m, const std::vector<double>& s) {
+/// α = Σ C_k β_k: the state keeps β_k = α_k / C_k.
+Vec6 total_backstress(const CP& m, const std::vector<double>& s, double temperature = 0.0) {
   Vec6 a = Vec6::Zero();
-  for (std::size_t k = 0; (CP::kBackstress + 6 * k) < m.state_size(); ++k) a += Eigen::Map<const Vec6>(s.data() + CP::kBackstress + 6 * k);
+  for (std::size_t k = 0; k < m.backstress_count(); ++k)
+    a += m.backstress(k, temperature).modulus * Eigen::Map<const Vec6>(s.data() + CP::kBackstress + 6 * k);
   return a;
 }
 
@@ -176,7 +179,7 @@ TEST(CombinedPlasticity, WithoutRecoveryTheTangentIsExactAndSymmetric) {
 }
 
 // γ = 0, one backstress, a constant surface: Prager–Ziegler, MisesPlasticity's KINEMATIC law
-// (σ⁰ = 250, C = (300 − 250)/0.02 = 2500), whose state layout is the same.
+// (σ⁰ = 250, C = (300 − 250)/0.02 = 2500), whose state has the same layout with α = C β.
 TEST(CombinedPlasticity, LinearKinematicCaseIsMisesKinematicHardening) {
   CombinedHardening h;
   h.backstresses = {{2500.0, 0.0}};
@@ -185,12 +188,15 @@ TEST(CombinedPlasticity, LinearKinematicCaseIsMisesKinematicHardening) {
   const MisesPlasticity mises_law(kElastic, {true, {0.0, 0.02}, {kS0, 300.0}});
   ASSERT_EQ(combined.state_size(), mises_law.state_size());
   const std::vector<double> c = history(combined);
+  std::vector<double> c_mises = c;
+  for (std::size_t k = CP::kBackstress; k < c.size(); ++k) c_mises[k] *= 2500.0;
   Vec6 e;
   e << 1e-3, 2.5e-3, -1.5e-3, -3e-3, 0.8e-3, 0.2e-3;
-  const Eval a = evaluate(combined, c, e), b = evaluate(mises_law, c, e);
+  const Eval a = evaluate(combined, c, e), b = evaluate(mises_law, c_mises, e);
   EXPECT_LT((a.stress - b.stress).cwiseAbs().maxCoeff(), 1e-10 * kS0);
   EXPECT_LT((a.tangent - b.tangent).cwiseAbs().maxCoeff(), 1e-10 * kE);
-  for (std::size_t k = 0; k < a.trial.size(); ++k) EXPECT_NEAR(a.trial[k], b.trial[k], 1e-14) << k;
+  for (std::size_t k = 0; k < a.trial.size(); ++k)
+    EXPECT_NEAR(a.trial[k] * (k >= CP::kBackstress ? 2500.0 : 1.0), b.trial[k], 1e-12) << k;
 }
 
 TEST(CombinedPlasticity, NeverWritesTheCommittedState) {
@@ -201,4 +207,74 @@ TEST(CombinedPlasticity, NeverWritesTheCommittedState) {
   e << 6e-3, -2e-3, -2e-3, 1e-3, 0.0, 0.0;
   evaluate(m, c, e);
   EXPECT_EQ(c, copy);
+}
+
+namespace {
+
+/// chaboche() at T = 100 and a hotter, softer set at T = 300 (other C, γ, Voce parameters).
+CP two_temperatures() {
+  CombinedHardening hot = chaboche();
+  hot.backstresses = {{20000.0, 300.0}, {3000.0, 10.0}};
+  hot.initial = 150.0, hot.saturation = 40.0, hot.rate = 20.0;
+  return CP(kElastic, {chaboche(), hot}, {100.0, 300.0});
+}
+
+}  // namespace
+
+// Every parameter linear in T between the sets (the Voce law through its parameters), constant
+// outside: checked at T = 150 (a quarter of the way) and beyond both ends.
+TEST(CombinedPlasticity, ParametersAreInterpolatedLinearlyInTemperature) {
+  const CP m = two_temperatures();
+  EXPECT_TRUE(m.temperature_dependent());
+  EXPECT_NEAR(m.backstress(0, 150.0).modulus, 0.75 * 40000.0 + 0.25 * 20000.0, 1e-9);
+  EXPECT_NEAR(m.backstress(1, 150.0).recovery, 0.75 * 20.0 + 0.25 * 10.0, 1e-12);
+  const double q = 0.75 * 80.0 + 0.25 * 40.0, b = 0.75 * 10.0 + 0.25 * 20.0, eq = 0.03;
+  EXPECT_NEAR(m.yield_size(eq, nullptr, 150.0), 0.75 * kS0 + 0.25 * 150.0 + q * (1 - std::exp(-b * eq)), 1e-10);
+  EXPECT_EQ(m.yield_size(eq, nullptr, 20.0), m.yield_size(eq, nullptr, 100.0));
+  EXPECT_EQ(m.backstress(0, 500.0).modulus, 20000.0);
+}
+
+// Abaqus's term (1/C)(dC/dT) α Ṫ: heated without plastic flow, α_k = C_k(T) β_k follows C_k.
+// A point loaded plastically at T = 100, then evaluated at T = 200 at a strain elastic there:
+// the backstress is C(200)/C(100) times the one it had, component by component.
+TEST(CombinedPlasticity, TheBackstressIsCarriedWithItsModulusWhenTheTemperatureChanges) {
+  const CP m = two_temperatures();
+  std::vector<double> state(m.state_size(), 0.0);
+  Vec6 e;
+  e << 3e-3, -1e-3, -1e-3, 2e-3, 0.0, 0.5e-3;
+  state = evaluate(m, state, e, 100.0).trial;
+  ASSERT_GT(state[CP::kEquivalent], 1e-4);
+  // At the strain that makes σ = α(200) (the centre of the surface there): elastic, state unchanged.
+  const Mat6 D = elasticity_matrix(inpact::model::ElementFamily::Solid3D, kElastic);
+  const Vec6 centre = Eigen::Map<const Vec6>(state.data() + CP::kPlasticStrain) + D.inverse() * total_backstress(m, state, 200.0);
+  const Eval hot = evaluate(m, state, centre, 200.0);
+  EXPECT_EQ(hot.trial, state);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Eigen::Map<const Vec6> beta(state.data() + CP::kBackstress + 6 * k);
+    const double ratio = m.backstress(k, 200.0).modulus / m.backstress(k, 100.0).modulus;
+    EXPECT_NE(ratio, 1.0);
+    const Vec6 alpha_cold = m.backstress(k, 100.0).modulus * beta, alpha_hot = m.backstress(k, 200.0).modulus * beta;
+    EXPECT_LT((alpha_hot - ratio * alpha_cold).cwiseAbs().maxCoeff(), 1e-12 * alpha_cold.cwiseAbs().maxCoeff());
+  }
+  // And the return there lands on the surface of T = 200: q(σ − α(200)) = σ⁰(ε̄ᵖ, 200).
+  const Eval yielded = evaluate(m, state, 1.5 * e, 200.0);
+  ASSERT_GT(yielded.trial[CP::kEquivalent], state[CP::kEquivalent]);
+  const double surface = m.yield_size(yielded.trial[CP::kEquivalent], nullptr, 200.0);
+  EXPECT_NEAR(mises(deviator(yielded.stress) - total_backstress(m, yielded.trial, 200.0)), surface, 1e-10 * surface);
+}
+
+TEST(CombinedPlasticity, TangentBetweenTemperaturesIsTheSymmetricPartOfCentralDifferences) {
+  const CP m = two_temperatures();
+  std::vector<double> c(m.state_size(), 0.0);
+  Vec6 e;
+  e << 3e-3, -1e-3, -1e-3, 2e-3, 0.0, 0.5e-3;
+  c = evaluate(m, c, e, 180.0).trial;
+  e << 3.5e-3, -0.2e-3, -1.5e-3, 5e-3, 0.8e-3, 0.2e-3;
+  const Eval base = evaluate(m, c, e, 180.0);
+  ASSERT_GT(base.trial[CP::kEquivalent], c[CP::kEquivalent]);
+  Mat6 fd;
+  const double h = 1e-8;
+  for (int j = 0; j < 6; ++j)
+    fd.col(j) = (evaluate(m, c, e + h * Vec6::Unit(j), 180.0).stress - evaluate(m, c, e - h * Vec6::Unit(j), 180.0).stress) / (2 * h);
+  EXPECT_LT((base.tangent - 0.5 * (fd + fd.transpose())).cwiseAbs().maxCoeff(), 1e-6 * fd.cwiseAbs().maxCoeff());
 }

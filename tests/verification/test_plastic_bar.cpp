@@ -9,6 +9,8 @@
 //    u1 = L εᵖ_max (zero stress: the strain left is the plastic one).
 // The homogeneous field is in the element space and backward Euler is exact on this radial
 // path: every value exact to round-off (tolerance 1e-10 relative, stated per check).
+#include <tuple>
+
 #include "verification_fixture.hpp"
 
 namespace inpact::verification {
@@ -179,6 +181,56 @@ TEST(PlasticBar, TemperatureDependentYieldFollowsTheTemperatureAtFixedStrain) {
   EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * sy);
   EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * ep_hot, tol * L * eps);
   report("plastic_bar_temperature_c3d8: worst |S11 - closed form| / sigma_y while heated", worst / sy);
+}
+
+// Case 9f: combined hardening given as half-cycle test data (plastic_bar_half_cycle_c3d8.inp):
+// rows on σ|0 + C/γ (1 − e^{−γ ε̄ᵖ}) with C = 40000, γ = 400, from which the analysis fits C and
+// γ; two single-increment plastic steps then give backward Euler's closed form, which depends
+// on both (the deck's header). Exact to round-off (1e-10 relative) when the fit recovers them.
+TEST(PlasticBar, HalfCycleDataGiveTheBackstressTheyWereSampledFrom) {
+  const auto r = run_deck(deck_path("plastic_bar_half_cycle_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  constexpr double C = 40000.0, g = 400.0, dg1 = 0.002, dg2 = 0.005, tol = 1e-10;
+  const double x1 = C * dg1 / (1 + g * dg1), x2 = (x1 + C * (dg2 - dg1)) / (1 + g * (dg2 - dg1));
+  double worst = 0;
+  for (auto [step, x, dg] : {std::tuple{1, x1, dg1}, std::tuple{2, x2, dg2}}) {
+    const auto& f = *r->capture.of_step(step).back();
+    worst = std::max(worst, worst_of(*r, f, "S", 0, sy + x) / (sy + x));
+    EXPECT_LE(worst_of(*r, f, "S", 0, sy + x), tol * (sy + x)) << "step " << step;
+    EXPECT_LE(worst_of(*r, f, "PEEQ", 0, dg), tol * dg) << "step " << step;
+  }
+  const auto& end = *r->capture.of_step(3).back();
+  EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * sy);
+  EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * dg2, tol * L * dg2);
+  report("plastic_bar_half_cycle_c3d8: |S11 - closed form| / S11", worst);
+}
+
+// Case 9g: linear kinematic hardening given at two temperatures
+// (plastic_bar_kinematic_temperature_c3d8.inp, the deck's header): pulled at T = 20, heated to
+// 420 at fixed length. Abaqus's backstress carries the term (1/C)(dC/dT) α Ṫ, so uniaxially
+// X = C(T) ε̄ᵖ and ε̄ᵖ = (E ε − σ|0(T))/(E + C(T)) at every increment of the heating; released
+// elastically. Exact to round-off (1e-10 relative).
+TEST(PlasticBar, KinematicHardeningFollowsTheTemperatureOfItsModulus) {
+  const auto r = run_deck(deck_path("plastic_bar_kinematic_temperature_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  constexpr double eps = 4e-3, tol = 1e-10;
+  auto plastic_strain = [&](double s) { return (E * eps - (250.0 - 100.0 * s)) / (E + 20000.0 - 10000.0 * s); };
+  const auto& pulled = *r->capture.of_step(1).back();
+  EXPECT_LE(worst_of(*r, pulled, "PEEQ", 0, plastic_strain(0.0)), tol * eps);
+  const auto heat = r->capture.of_step(2);
+  ASSERT_EQ(heat.size(), 10u);
+  double worst = 0;
+  for (const auto* f : heat) {
+    const double ep = plastic_strain(f->step_time), s = E * (eps - ep);
+    worst = std::max(worst, worst_of(*r, *f, "S", 0, s) / sy);
+    EXPECT_LE(worst_of(*r, *f, "S", 0, s), tol * sy) << "HEAT t = " << f->step_time;
+    EXPECT_LE(worst_of(*r, *f, "PEEQ", 0, ep), tol * eps) << "HEAT t = " << f->step_time;
+    EXPECT_LE(worst_of(*r, *f, "PE", 1, -ep / 2), tol * eps) << "HEAT t = " << f->step_time;
+  }
+  const auto& end = *r->capture.of_step(3).back();
+  EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * sy);
+  EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * plastic_strain(1.0), tol * L * eps);
+  report("plastic_bar_kinematic_temperature_c3d8: worst |S11 - closed form| / sigma_y while heated", worst);
 }
 
 // Case 9e: linear kinematic hardening at large strain (plastic_bar_nlgeom_kinematic_c3d8.inp), the
