@@ -710,22 +710,30 @@ def plastic_bar():
     return d
 
 
-def plastic_plate():
-    """The bar of plastic_bar() as a plate 4 x 1 of 4 CPS4 (plane stress, thickness 1)."""
+def plastic_plate(combined=False):
+    """The bar of plastic_bar() as a plate 4 x 1 of 4 CPS4 (plane stress, thickness 1); with
+    `combined` its hardening as HARDENING=COMBINED with C = H, gamma = 0 (the same curve while
+    loading, and unloading stays elastic)."""
     E, nu, sy, H, L, eps_max = (PLAST[k] for k in ("E", "nu", "sy", "H", "L", "eps_max"))
     eps = 1e-9
     coords, conn = grid_quad(4, 1, lambda s_, t: (L * s_, t), False)
+    lines = ["The bar of plastic_bar_c3d8.inp as a plane-stress plate (the local sigma_33 = 0 iteration of the",
+             "material): the same closed forms, and the thickness strain E33 = -nu sigma/E - eps_p/2."]
+    if combined:
+        lines += [f"Hardening given as HARDENING=COMBINED, DATATYPE=PARAMETERS: sigma|0 = {sy}, C = H = {H}, gamma = 0",
+                  "(linear kinematic): the same stress while loading; unloading to zero stress stays elastic",
+                  "(X = H eps_p < sigma|0). The Chaboche law through the plane-stress condensation."]
     d = Deck("Plate in uniaxial tension, plane stress (CPS4), Mises plasticity with linear hardening: load, unload",
-             ["The bar of plastic_bar_c3d8.inp as a plane-stress plate (the local sigma_33 = 0 iteration of the",
-              "material): the same closed forms, and the thickness strain E33 = -nu sigma/E - eps_p/2.",
-              "Tolerances in tests/verification/test_plastic_bar.cpp."])
+             lines + ["Tolerances in tests/verification/test_plastic_bar.cpp."])
     d.nodes(coords, 2)
     d.elements("CPS4", "BAR", conn)
     d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
     d.nset("RIGHT", select(coords, lambda x: abs(x[0] - L) < eps))
     d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+    hardening = (["*PLASTIC, HARDENING=COMBINED, DATATYPE=PARAMETERS", f"{sy}, {H}, 0."] if combined
+                 else ["*PLASTIC", f"{sy}, 0.", f"{sy + H * 0.1:g}, 0.1"])
     d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "1.", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
-          "*PLASTIC", f"{sy}, 0.", f"{sy + H * 0.1:g}, 0.1")
+          *hardening)
     d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2")
     out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ, PEMAG"]
     controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
@@ -1053,6 +1061,7 @@ def committed(out):
         "accelerating_block_c3d8.inp": accelerating_block(),
         "plastic_bar_c3d8.inp": plastic_bar(),
         "plastic_plate_cps4.inp": plastic_plate(),
+        "plastic_plate_combined_cps4.inp": plastic_plate(combined=True),
         "plastic_bar_temperature_c3d8.inp": plastic_bar_temperature(),
         "plastic_bar_half_cycle_c3d8.inp": plastic_bar_half_cycle(),
         "plastic_bar_kinematic_temperature_c3d8.inp": plastic_bar_kinematic_temperature(),

@@ -88,10 +88,10 @@ void add_point_contribution(ElementFamily family, int dim, const Mat6& D, bool n
 }
 
 void point_output(ElementFamily family, const Material& m, bool nlgeom, const PointData& pd,
-                  const PointState& st, PointResult& out) {
+                  const PointState& st, PointResult& out, std::span<const double> state) {
   Vec6 strain = st.strain;
   if (family == ElementFamily::PlaneStress)
-    strain(2) = m.plane_stress_thickness_strain(pd.x, strain, st.stress, pd.thermal_strain);
+    strain(2) = m.plane_stress_thickness_strain(pd.x, strain, st.stress, pd.thermal_strain, state);
   out.volume = pd.dv;
   if (!nlgeom) {
     for (int k = 0; k < 6; ++k) {

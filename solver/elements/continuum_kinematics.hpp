@@ -60,8 +60,9 @@ void add_point_contribution(model::ElementFamily family, int dim, const Mat6& D,
                             const PointData& pd, const PointState& st, Eigen::VectorXd* f, Eigen::MatrixXd* K);
 
 /// Cauchy stress and strain for output (Abaqus order, engineering shear): small strain passes
-/// σ and ε through (plane stress fills ε33 from the material); NLGEOM converts to σ = J⁻¹FSFᵀ and LE.
+/// σ and ε through (plane stress fills ε33 from the material and the point's `state`); NLGEOM
+/// converts to σ = J⁻¹FSFᵀ and LE.
 void point_output(model::ElementFamily family, const Material& m, bool nlgeom, const PointData& pd,
-                  const PointState& st, PointResult& out);
+                  const PointState& st, PointResult& out, std::span<const double> state);
 
 }  // namespace inpact::solver::elements

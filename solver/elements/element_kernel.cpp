@@ -175,7 +175,7 @@ void hex8_output(const Hex8Geometry& geo, int p, const Vec3& x, const Material& 
   st.strain = strain;
   st.stress = stress;
   PointResult& out = sys.points.emplace_back();
-  point_output(ElementFamily::Solid3D, law, nlgeom, pd, st, out);
+  point_output(ElementFamily::Solid3D, law, nlgeom, pd, st, out, {});
   out.coords = x;
 }
 
@@ -402,9 +402,10 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
   if (request.point_output) {
     sys.points.resize(geo.pts.size());
     for (std::size_t p = 0; p < geo.pts.size(); ++p) {
-      point_output(type.family, law, request.nlgeom, geo.pts[p], as.states[p], sys.points[p]);
+      const PointHistory h = history.at(p);
+      point_output(type.family, law, request.nlgeom, geo.pts[p], as.states[p], sys.points[p], h.trial);
       sys.points[p].coords = geo.point_coords[p];
-      if (const PointHistory h = history.at(p); !h.trial.empty()) law.plastic_output(h.trial, sys.points[p]);
+      if (!h.trial.empty()) law.plastic_output(h.trial, sys.points[p]);
     }
   }
   return sys;

@@ -14,7 +14,8 @@ bool Material::set_plastic_strain(std::span<double>, const Vec6&) const { return
 
 bool Material::increment_too_large(std::span<const double>, std::span<const double>) const { return false; }
 
-double Material::plane_stress_thickness_strain(const Vec3&, const Vec6& e, const Vec6&, double eth) const {
+double Material::plane_stress_thickness_strain(const Vec3&, const Vec6& e, const Vec6&, double eth,
+                                               std::span<const double>) const {
   const double nu = elastic().poissons_ratio;
   return -nu / (1 - nu) * (e(0) + e(1) - 2 * eth) + eth;
 }

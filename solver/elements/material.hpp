@@ -70,10 +70,11 @@ class Material {
   /// increment is then cut back.
   virtual bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const;
   /// Plane stress: the thickness strain ε33 (E33 with NLGEOM) that makes σ33 = 0 at a point of
-  /// in-plane `strain` and `stress`, for output. The default is the isotropic one of elastic(),
+  /// in-plane `strain` and `stress`, for output; `state` is the point's (trial) state, empty
+  /// when stateless. The default is the isotropic one of elastic(),
   /// ε33 = −ν/(1−ν)(ε11 + ε22 − 2ε_th) + ε_th.
   virtual double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
-                                               double thermal_strain) const;
+                                               double thermal_strain, std::span<const double> state) const;
   /// Whether the material reads MaterialPointInput::temperature (temperature-dependent data).
   virtual bool temperature_dependent() const { return false; }
   /// The element kernels' fast path: this material when it is isotropic linear elastic.

@@ -84,6 +84,10 @@ TEST(PlasticBar, StressAtEveryIncrementAndResidualPlasticStrainAreExact) { check
 // The plane-stress plate: the same closed forms through the material's local σ33 = 0 iteration.
 TEST(PlasticBar, PlaneStressPlateIsExactToo) { check_bar("plastic_plate_cps4.inp"); }
 
+// The plate with the same curve as linear kinematic hardening through the Chaboche law (C = H,
+// γ = 0): the same closed forms, through the plane-stress condensation of a 3D law.
+TEST(PlasticBar, PlaneStressCombinedHardeningPlateIsExactToo) { check_bar("plastic_plate_combined_cps4.inp"); }
+
 // Case 9b: the same bar stretched to λ = 1.5 with NLGEOM (plastic_bar_nlgeom_c3d8.inp), the
 // finite-strain law (solver/elements/finite_strain_mises.hpp), H = 1000 on the Kirchhoff stress.
 // Closed form at LE11 = ln λ: ε̄ᵖ = (LE11 − σ_y/E)/(1 + H/E), τ = σ_y + H ε̄ᵖ, Cauchy S11 = τ/J,
