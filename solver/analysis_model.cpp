@@ -73,9 +73,7 @@ bool several_temperatures(const model::Plastic& p) {
 /// NLGEOM: isotropic hardening in the exponential-map law (finite_strain_mises.hpp); kinematic
 /// and combined hardening, whose backstress needs a frame, through the Lagrangian logarithmic
 /// strain (log_strain_plasticity.hpp); both agree on paths with fixed principal axes. Plane
-/// stress elements take the small-strain Chaboche law through PlaneStressCondensation (S33 = 0
-/// at each point); finite-strain plane stress stops with a clear message: the condensation is
-/// exact at a point (tested) but the global iteration of a CPS4 bar does not converge yet.
+/// stress elements take the 3D laws through PlaneStressCondensation (S33 = 0 at each point).
 std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
                                                 model::ElementFamily family, const elements::ElasticConstants& c,
                                                 std::vector<std::string>& warnings) {
@@ -93,9 +91,6 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
   const bool nlgeom = std::any_of(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
   std::shared_ptr<elements::Material> law;
   if (!nlgeom && !combined) return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
-  if (nlgeom && family == model::ElementFamily::PlaneStress)
-    throw AnalysisError(fmt::format("{}: error: *PLASTIC: finite-strain plasticity (NLGEOM) with plane stress elements "
-                                    "is not supported yet (material '{}')", m.sources.describe(p.loc), mat.name));
   if (!nlgeom) law = combined_law(m, mat, c, warnings);
   else if (combined) law = std::make_shared<elements::LogStrainPlasticity>(combined_law(m, mat, c, warnings));
   else if (h.kinematic)

@@ -160,6 +160,16 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
                             history, out);
 }
 
+void Assembler::multiply(std::span<const std::int64_t> el_dofs, std::span<const double> k,
+                         const AssemblyRequest& request) const {
+  const std::size_t n = el_dofs.size();
+  for (std::size_t a = 0; a < n; ++a) {
+    double sum = 0.0;
+    for (std::size_t b = 0; b < n; ++b) sum += k[a * n + b] * request.multiply[static_cast<std::size_t>(el_dofs[b])];
+    request.product[static_cast<std::size_t>(el_dofs[a])] += sum;
+  }
+}
+
 AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int) {
   const ScopedSeconds clock(seconds_.element_assembly, &seconds_.element_assemblies);
   AssemblyResult result;
@@ -210,6 +220,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
       }
       force_count += el_dofs.size();
       if (request.tangent) scatter(el_dofs, sys.stiffness);
+      if (request.tangent && !request.multiply.empty()) multiply(el_dofs, sys.stiffness, request);
     }
   }
   result.average_force = force_count ? force_sum / static_cast<double>(force_count) : 0.0;

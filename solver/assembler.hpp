@@ -21,6 +21,10 @@ struct AssemblyRequest {
   /// Keep every element's integration-point results (stress, strain) at u: the output of a
   /// converged increment then reads them instead of computing the elements again.
   bool points = false;
+  /// With the tangent: also the product K·v of the element stiffnesses with the full DOF vector
+  /// `multiply`, over every DOF (prescribed ones too), added into `product` (full size).
+  std::span<const double> multiply = {};
+  std::span<double> product = {};
 };
 
 /// Integration-point results of every element, in element order.
@@ -112,6 +116,8 @@ class Assembler {
                elements::ElementSystem& out) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
+  /// request.product += k · request.multiply on the element's DOFs.
+  void multiply(std::span<const std::int64_t> el_dofs, std::span<const double> k, const AssemblyRequest& request) const;
 
   const AnalysisModel& am_;
   const DofMap& dofs_;

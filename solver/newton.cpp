@@ -33,6 +33,7 @@ class NewtonIterations {
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
   bool solve_correction(Residual& res);
   void apply_correction();
+  bool predict();
 
   NewtonContext& ctx_;
   IncrementState& state_;
@@ -75,7 +76,7 @@ NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState&
 NewtonOutcome NewtonIterations::run() {
   // A new increment commits the friction history of the converged state it starts from.
   if (ctx_.contact) ctx_.contact->begin_attempt(state_.contact, ctx_.at.step, ctx_.at.increment, u_start_);
-  for (int k = 0;; ++k) {
+  for (int k = predict() ? 1 : 0;; ++k) {
     const ContactIteration contact = update_contact(k);
     Residual res = assemble_residual(k);
     const double max_correction = largest_correction(k);
@@ -216,6 +217,36 @@ bool NewtonIterations::solve_correction(Residual& res) {
   out_.failure = std::move(solved.failure);
   out_.singular = solved.singular;
   return false;
+}
+
+/// The first iteration of prescribed motion, as Abaqus makes it: the tangent of the converged
+/// state at the increment start carries the prescribed increment Δu_p into the body,
+///   K(u_n) Δu = f_ext(t) − f_int(u_n) − K(u_n)·Δu_p,  u = u_n + Δu_p + Δu,
+/// instead of moving the prescribed DOFs alone, which strains only the elements next to them
+/// (with plasticity into a localised plastic state whose tangent Newton does not recover from).
+/// K(u_n)·Δu_p comes from the same element stiffnesses as the tangent. Not with contact,
+/// rotating rigid bodies or stabilisation, whose states follow u; false when nothing moves or
+/// the start's tangent is singular (then the iterations start from the moved DOFs).
+bool NewtonIterations::predict() {
+  if (ctx_.contact || ctx_.rotating_dofs || ctx_.stabilization) return false;
+  std::vector<double> delta(n_), product(n_, 0.0);
+  double largest = 0.0;
+  for (std::size_t d = 0; d < n_; ++d) largest = std::max(largest, std::abs(delta[d] = state_.u[d] - u_start_[d]));
+  if (largest == 0.0 || n_eq_ == 0) return false;
+  AssemblyRequest request;
+  request.nlgeom = ctx_.nlgeom;
+  request.delta_t = delta_t_;
+  request.multiply = delta;
+  request.product = product;
+  if (ctx_.assembler.assemble(u_start_, request, state_.f_int).min_jacobian <= 0.0) return false;
+  for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d] - product[d];
+  r_.assign(n_eq_, 0.0);
+  du_.assign(n_eq_, 0.0);
+  ctx_.assembler.reduce(r_full_, r_);
+  if (!std::all_of(r_.begin(), r_.end(), [](double v) { return std::isfinite(v); })) return false;
+  if (!solver_.solve(ctx_.assembler.tangent(), false, r_, du_, n_eq_, ctx_.am.size, 1.0).solved) return false;
+  apply_correction();
+  return true;
 }
 
 /// u_{k+1} = u_k + Δu on the free DOFs, the dependents follow; contact multipliers too.

@@ -1,7 +1,10 @@
 #pragma once
 /// The Newton iterations of one increment attempt:
 ///   K(u_k) Δu = f_ext(t) − f_int(u_k),  u_{k+1} = u_k + Δu.
-/// Each iteration, as the Abaqus manual describes it:
+/// When the increment moves prescribed DOFs (and no contact, rotating rigid body or
+/// stabilisation is in the step), the first iteration is Abaqus's: K(u_n) Δu = f_ext(t) −
+/// f_int(u_n) − K(u_n)·Δu_p from the converged start, which carries the prescribed motion into
+/// the body. Each iteration, as the Abaqus manual describes it:
 ///   1. contact search and status at u_k (a status change makes it a severe discontinuity
 ///      iteration);
 ///   2. assemble the residual r = f_ext − f_int (elements, then contact) and measure it against

@@ -2,7 +2,7 @@
 /// Plane stress for a material with state that has only a 3D law (finite-strain plasticity,
 /// combined hardening): the thickness strain e33 (ε33, or E33 with NLGEOM, where F33 =
 /// √(1 + 2 E33)) is found at each point by a local Newton iteration until the 3D law's
-/// S33 = 0 (to 1e-12 of the stress; with NLGEOM in ln λ3), started from the last converged
+/// S33 = 0 (to 1e-12 of the stress or of 1e-3 E; with NLGEOM in ln λ3), started from the last converged
 /// e33, which the state keeps after the law's own. The tangent is the 3D one condensed for S33 = 0,
 /// D − D·₃ D₃· / D₃₃ — the exact derivative of the converged plane-stress point when the 3D
 /// tangent is exact — with zero rows for 33, 13, 23 as the plane stress elements expect. A local

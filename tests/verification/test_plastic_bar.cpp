@@ -94,8 +94,9 @@ TEST(PlasticBar, PlaneStressCombinedHardeningPlateIsExactToo) { check_bar("plast
 // J = exp((1 − 2ν)τ/E), LE22 = −ν τ/E − ε̄ᵖ/2, the end's reaction τ A0/λ. The path is proportional
 // with fixed principal axes, where the exponential map is exact: every value to round-off
 // (1e-10 relative). Unloading is elastic to zero stress: the end at L(exp ε̄ᵖ − 1).
-TEST(PlasticBar, LargeStrainNlgeomBarFollowsTheClosedForm) {
-  const auto r = run_deck(deck_path("plastic_bar_nlgeom_c3d8.inp"));
+void check_nlgeom_bar(const std::string& deck) {
+  SCOPED_TRACE(deck);
+  const auto r = run_deck(deck_path(deck));
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
   constexpr double Hn = 1000.0, tol = 1e-10;
   double worst_s = 0, worst_e = 0;
@@ -124,8 +125,16 @@ TEST(PlasticBar, LargeStrainNlgeomBarFollowsTheClosedForm) {
   EXPECT_NEAR(face_u1(*r, end, "RIGHT"), L * (std::exp(ep_end) - 1), tol * L);
   EXPECT_LE(worst_of(*r, end, "S", 0, 0.0), tol * sy);
   EXPECT_LE(worst_of(*r, end, "E", 0, ep_end), tol * ep_end);
-  report("plastic_bar_nlgeom_c3d8: worst |S11 - closed form| / sigma_y", worst_s / sy);
-  report("plastic_bar_nlgeom_c3d8: worst |LE, PE, PEEQ - closed form| / LE11", worst_e);
+  report(deck + ": worst |S11 - closed form| / sigma_y", worst_s / sy);
+  report(deck + ": worst |LE, PE, PEEQ - closed form| / LE11", worst_e);
+}
+
+TEST(PlasticBar, LargeStrainNlgeomBarFollowsTheClosedForm) { check_nlgeom_bar("plastic_bar_nlgeom_c3d8.inp"); }
+
+// The same as a plane-stress plate (CPS4): the exponential-map law through the plane-stress
+// condensation (S33 = 0 at each point, solved in ln λ3), LE33 = LE22 from the thickness stretch.
+TEST(PlasticBar, LargeStrainNlgeomPlaneStressPlateFollowsTheClosedForm) {
+  check_nlgeom_bar("plastic_bar_nlgeom_cps4.inp");
 }
 
 // Case 9c: combined (Chaboche) hardening with a Voce surface (plastic_bar_combined_c3d8.inp):
@@ -242,8 +251,9 @@ TEST(PlasticBar, KinematicHardeningFollowsTheTemperatureOfItsModulus) {
 // fixed, so in LE11 = ln λ it is the 1D small-strain law with τ the Kirchhoff stress (the deck's
 // header): stretched to λ = 1.5, then pushed back to λ = 1.1 through elastic unloading and
 // reversed yield at τ_max − 2σ⁰ (Bauschinger). Every increment to round-off (1e-10 relative).
-TEST(PlasticBar, KinematicHardeningAtLargeStrainReversesYieldAtTwiceTheInitialYieldStress) {
-  const auto r = run_deck(deck_path("plastic_bar_nlgeom_kinematic_c3d8.inp"));
+void check_nlgeom_kinematic_bar(const std::string& deck) {
+  SCOPED_TRACE(deck);
+  const auto r = run_deck(deck_path(deck));
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
   constexpr double C = 1000.0, tol = 1e-10;
   double ep_max = 0, tau_max = 0, worst = 0;
@@ -281,7 +291,15 @@ TEST(PlasticBar, KinematicHardeningAtLargeStrainReversesYieldAtTwiceTheInitialYi
     check(*f, lambda, ep, ep_max + (ep_max - ep), tau, "REVERSE");
   }
   EXPECT_TRUE(reversed_yield);
-  report("plastic_bar_nlgeom_kinematic_c3d8: worst |S11 - closed form| / sigma_y", worst / sy);
+  report(deck + ": worst |S11 - closed form| / sigma_y", worst / sy);
+}
+
+TEST(PlasticBar, KinematicHardeningAtLargeStrainReversesYieldAtTwiceTheInitialYieldStress) {
+  check_nlgeom_kinematic_bar("plastic_bar_nlgeom_kinematic_c3d8.inp");
+}
+
+TEST(PlasticBar, KinematicHardeningAtLargeStrainInPlaneStressToo) {
+  check_nlgeom_kinematic_bar("plastic_bar_nlgeom_kinematic_cps4.inp");
 }
 
 }  // namespace
