@@ -160,14 +160,18 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
                             history, out);
 }
 
-void Assembler::multiply(std::span<const std::int64_t> el_dofs, std::span<const double> k,
-                         const AssemblyRequest& request) const {
+double Assembler::multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
+                           const AssemblyRequest& request) const {
   const std::size_t n = el_dofs.size();
+  const std::span<const double> k = sys.stiffness;
+  double moved = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     double sum = 0.0;
     for (std::size_t b = 0; b < n; ++b) sum += k[a * n + b] * request.multiply[static_cast<std::size_t>(el_dofs[b])];
     request.product[static_cast<std::size_t>(el_dofs[a])] += sum;
+    moved += std::abs(sys.internal_force[a] + sum);
   }
+  return moved;
 }
 
 AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int) {
@@ -188,7 +192,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
     points_.offset.assign(1, 0);
     points_.points.clear();
   }
-  double force_sum = 0.0;
+  double force_sum = 0.0, moved_sum = 0.0;
   std::size_t force_count = 0;
   for (std::size_t begin = 0; begin < n_el; begin += chunk) {
     const std::size_t end = std::min(begin + chunk, n_el);
@@ -220,11 +224,12 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
       }
       force_count += el_dofs.size();
       if (request.tangent) scatter(el_dofs, sys.stiffness);
-      if (request.tangent && !request.multiply.empty()) multiply(el_dofs, sys.stiffness, request);
+      if (request.tangent && !request.multiply.empty()) moved_sum += multiply(el_dofs, sys, request);
     }
   }
   result.average_force = force_count ? force_sum / static_cast<double>(force_count) : 0.0;
   result.n_force_entries = force_count;
+  result.moved_average_force = force_count ? moved_sum / static_cast<double>(force_count) : 0.0;
   if (request.points) {
     points_u_.assign(u.begin(), u.end());
     points_delta_t_.assign(request.delta_t.begin(), request.delta_t.end());

@@ -49,6 +49,9 @@ struct AssemblyResult {
   /// flux" that residuals are measured against.
   double average_force = 0.0;
   std::size_t n_force_entries = 0;  ///< how many element nodal forces the average is over
+  /// With AssemblyRequest::multiply: the same average for the element forces f_e + k_e·v (the
+  /// linearised state moved by v), which the increment measures its residuals against.
+  double moved_average_force = 0.0;
   /// Smallest Jacobian determinant met at an integration point, and its element row.
   double min_jacobian = 0.0;
   std::int64_t min_jacobian_element = -1;
@@ -116,8 +119,10 @@ class Assembler {
                elements::ElementSystem& out) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
-  /// request.product += k · request.multiply on the element's DOFs.
-  void multiply(std::span<const std::int64_t> el_dofs, std::span<const double> k, const AssemblyRequest& request) const;
+  /// request.product += k · request.multiply on the element's DOFs; returns Σ |f + k · v| over
+  /// them (f the element's forces).
+  double multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
+                  const AssemblyRequest& request) const;
 
   const AnalysisModel& am_;
   const DofMap& dofs_;

@@ -238,7 +238,13 @@ bool NewtonIterations::predict() {
   request.delta_t = delta_t_;
   request.multiply = delta;
   request.product = product;
-  if (ctx_.assembler.assemble(u_start_, request, state_.f_int).min_jacobian <= 0.0) return false;
+  AssemblyResult start = ctx_.assembler.assemble(u_start_, request, state_.f_int);
+  if (start.min_jacobian <= 0.0) return false;
+  // The increment's forces include those of the moved state, as they did when the first
+  // iteration moved the boundary alone: a rigid motion then has a force scale to converge to.
+  start.average_force = start.moved_average_force;
+  const double q_moved = average_force(start, state_.f_ext, 0.0, 0);
+  increment_force_.update(q_moved, q_moved);
   for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d] - product[d];
   r_.assign(n_eq_, 0.0);
   du_.assign(n_eq_, 0.0);
