@@ -747,6 +747,26 @@ def plastic_plate(combined=False):
 HOT = dict(T0=20.0, T1=420.0, sy0=250.0, H0=500.0, sy1=150.0, H1=250.0, eps=4e-3)
 
 
+def heated_bar_steps(d, L, eps, T0, T1):
+    """The temperature bars' set-up after the material: the supports, T = T0 at the start, and
+    the steps PULL (the end to strain eps at T0) and HEAT (T to T1 at fixed length)."""
+    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
+    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0:g}")
+    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
+    d.add("*STEP, NAME=PULL", "*STATIC, DIRECT", "0.25, 1.", *EXACT_CONTROLS, "*BOUNDARY",
+          f"RIGHT, 1, 1, {L * eps:g}", *out, "*END STEP")
+    d.add("*STEP, NAME=HEAT", "*STATIC, DIRECT", "0.1, 1.", *EXACT_CONTROLS, "*TEMPERATURE", f"ALL, {T1:g}", "*END STEP")
+
+
+def release_step(d):
+    """The last step of the temperature bars: the end released (OP=NEW)."""
+    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.5, 1.", *EXACT_CONTROLS, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
+          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+
+
+EXACT_CONTROLS = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
+
+
 def plastic_bar_temperature():
     """The bar of plastic_bar() with yield curves at two temperatures, pulled, heated at fixed
     length (the yield surface shrinks: plastic flow at constant strain), cooled, released."""
@@ -765,16 +785,10 @@ def plastic_bar_temperature():
     d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
           "*PLASTIC", f"{sy0:g}, 0., {T0:g}", f"{sy0 + H0 * 0.1:g}, 0.1, {T0:g}",
           f"{sy1:g}, 0., {T1:g}", f"{sy1 + H1 * 0.2:g}, 0.2, {T1:g}")
-    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
-    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0:g}")
-    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
-    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
-    d.add("*STEP, NAME=PULL", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps_max:g}",
-          *out, "*END STEP")
-    d.add("*STEP, NAME=HEAT", "*STATIC, DIRECT", "0.1, 1.", *controls, "*TEMPERATURE", f"ALL, {T1:g}", "*END STEP")
-    d.add("*STEP, NAME=COOL", "*STATIC, DIRECT", "0.25, 1.", *controls, "*TEMPERATURE", f"ALL, {T0:g}", "*END STEP")
-    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.5, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
-          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+    heated_bar_steps(d, L, eps_max, T0, T1)
+    d.add("*STEP, NAME=COOL", "*STATIC, DIRECT", "0.25, 1.", *EXACT_CONTROLS, "*TEMPERATURE", f"ALL, {T0:g}",
+          "*END STEP")
+    release_step(d)
     return d
 
 
@@ -835,15 +849,8 @@ def plastic_bar_kinematic_temperature():
     d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", "*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}",
           "*PLASTIC, HARDENING=KINEMATIC", f"{sy0:g}, 0., {T0:g}", f"{sy0 + C0 * 0.01:g}, 0.01, {T0:g}",
           f"{sy1:g}, 0., {T1:g}", f"{sy1 + C1 * 0.01:g}, 0.01, {T1:g}")
-    d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
-    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {T0:g}")
-    out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
-    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
-    d.add("*STEP, NAME=PULL", "*STATIC, DIRECT", "0.25, 1.", *controls, "*BOUNDARY", f"RIGHT, 1, 1, {L * eps:g}",
-          *out, "*END STEP")
-    d.add("*STEP, NAME=HEAT", "*STATIC, DIRECT", "0.1, 1.", *controls, "*TEMPERATURE", f"ALL, {T1:g}", "*END STEP")
-    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.5, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
-          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+    heated_bar_steps(d, L, eps, T0, T1)
+    release_step(d)
     return d
 
 

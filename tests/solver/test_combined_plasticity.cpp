@@ -141,26 +141,27 @@ TEST(CombinedPlasticity, BackstressSaturatesAtCOverGammaAndReversalShowsTheBausc
 namespace {
 
 /// A committed state with nonproportional plastic history (two increments along different paths).
-std::vector<double> history(const CP& m) {
+std::vector<double> history(const CP& m, double temperature = 0.0) {
   std::vector<double> s(m.state_size(), 0.0);
   Vec6 e;
   e << 3e-3, -1e-3, -1e-3, 2e-3, 0.0, 0.5e-3;
-  s = evaluate(m, s, e).trial;
+  s = evaluate(m, s, e, temperature).trial;
   e << 2e-3, -0.5e-3, -1.2e-3, 4e-3, 1e-3, -0.5e-3;
-  return evaluate(m, s, e).trial;
+  return evaluate(m, s, e, temperature).trial;
 }
 
-void check_tangent(const CP& m, bool symmetric_exact) {
-  const std::vector<double> c = history(m);
+void check_tangent(const CP& m, bool symmetric_exact, double temperature = 0.0) {
+  const std::vector<double> c = history(m, temperature);
   ASSERT_GT(c[CP::kEquivalent], 1e-4);
   Vec6 e;
   e << 3.5e-3, -0.2e-3, -1.5e-3, 5e-3, 0.8e-3, 0.2e-3;
-  const Eval base = evaluate(m, c, e);
+  const Eval base = evaluate(m, c, e, temperature);
   ASSERT_GT(base.trial[CP::kEquivalent], c[CP::kEquivalent]);
   Mat6 fd;
   const double h = 1e-8;
   for (int j = 0; j < 6; ++j)
-    fd.col(j) = (evaluate(m, c, e + h * Vec6::Unit(j)).stress - evaluate(m, c, e - h * Vec6::Unit(j)).stress) / (2 * h);
+    fd.col(j) = (evaluate(m, c, e + h * Vec6::Unit(j), temperature).stress -
+                 evaluate(m, c, e - h * Vec6::Unit(j), temperature).stress) / (2 * h);
   const double scale = fd.cwiseAbs().maxCoeff();
   const Mat6 sym = 0.5 * (fd + fd.transpose());
   EXPECT_LT((base.tangent - sym).cwiseAbs().maxCoeff(), 1e-6 * scale);
@@ -264,17 +265,5 @@ TEST(CombinedPlasticity, TheBackstressIsCarriedWithItsModulusWhenTheTemperatureC
 }
 
 TEST(CombinedPlasticity, TangentBetweenTemperaturesIsTheSymmetricPartOfCentralDifferences) {
-  const CP m = two_temperatures();
-  std::vector<double> c(m.state_size(), 0.0);
-  Vec6 e;
-  e << 3e-3, -1e-3, -1e-3, 2e-3, 0.0, 0.5e-3;
-  c = evaluate(m, c, e, 180.0).trial;
-  e << 3.5e-3, -0.2e-3, -1.5e-3, 5e-3, 0.8e-3, 0.2e-3;
-  const Eval base = evaluate(m, c, e, 180.0);
-  ASSERT_GT(base.trial[CP::kEquivalent], c[CP::kEquivalent]);
-  Mat6 fd;
-  const double h = 1e-8;
-  for (int j = 0; j < 6; ++j)
-    fd.col(j) = (evaluate(m, c, e + h * Vec6::Unit(j), 180.0).stress - evaluate(m, c, e - h * Vec6::Unit(j), 180.0).stress) / (2 * h);
-  EXPECT_LT((base.tangent - 0.5 * (fd + fd.transpose())).cwiseAbs().maxCoeff(), 1e-6 * fd.cwiseAbs().maxCoeff());
+  check_tangent(two_temperatures(), false, 180.0);
 }
