@@ -758,9 +758,9 @@ def heated_bar_steps(d, L, eps, T0, T1):
     d.add("*STEP, NAME=HEAT", "*STATIC, DIRECT", "0.1, 1.", *EXACT_CONTROLS, "*TEMPERATURE", f"ALL, {T1:g}", "*END STEP")
 
 
-def release_step(d):
-    """The last step of the temperature bars: the end released (OP=NEW)."""
-    d.add("*STEP, NAME=RELEASE", "*STATIC, DIRECT", "0.5, 1.", *EXACT_CONTROLS, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
+def release_step(d, name="RELEASE"):
+    """The last step of the plastic bars: the end released (OP=NEW) in two increments."""
+    d.add(f"*STEP, NAME={name}", "*STATIC, DIRECT", "0.5, 1.", *EXACT_CONTROLS, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
           "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
 
 
@@ -819,12 +819,10 @@ def plastic_bar_half_cycle():
           "*PLASTIC, HARDENING=COMBINED", *rows)
     d.add("*BOUNDARY", "LEFT, 1, 1", "Y0, 2, 2", "Z0, 3, 3")
     out = ["*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, E, PE, PEEQ"]
-    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-12, 1e-8, , , , , , 1e-12"]
     for name, x, dg in (("LOAD", x1, dg1), ("MORE", x2, dg2)):
-        d.add(f"*STEP, NAME={name}", "*STATIC, DIRECT", "1., 1.", *controls, "*BOUNDARY",
+        d.add(f"*STEP, NAME={name}", "*STATIC, DIRECT", "1., 1.", *EXACT_CONTROLS, "*BOUNDARY",
               f"RIGHT, 1, 1, {L * ((sy + x) / E + dg):.15g}", *out, "*END STEP")
-    d.add("*STEP, NAME=UNLOAD", "*STATIC, DIRECT", "0.5, 1.", *controls, "*BOUNDARY, OP=NEW", "LEFT, 1, 1",
-          "Y0, 2, 2", "Z0, 3, 3", "*END STEP")
+    release_step(d, "UNLOAD")
     return d
 
 
