@@ -23,7 +23,7 @@ const Mat6& PlaneStressCondensation::update(const MaterialPointInput& in, const 
   strain(4) = strain(5) = 0.0;
   // The unknown: ε33, or with NLGEOM κ = ln λ3 (E33 = (e^{2κ} − 1)/2), in which the Kirchhoff
   // stress τ33 = λ3² S33 is close to linear: Newton then converges from far away (a point whose
-  // in-plane stretch doubles in one iteration) where a step in E33 would leave λ3 > 0.
+  // in-plane stretch doubles in one iteration), where a step in E33 could take λ3² below zero.
   const double committed = point.committed.back();
   double unknown = in.nlgeom ? 0.5 * std::log1p(2 * committed) : committed, previous = unknown;
   Mat6 full;
