@@ -9,8 +9,9 @@
 
 namespace inpact::model {
 
-/// *ELASTIC (temperature dependence not yet supported: one set of constants).
-/// ISOTROPIC: E, ν. The other types keep their constants as written, in Abaqus's order:
+/// *ELASTIC. ISOTROPIC: E, ν, and with several data lines `temperature_table` (E and ν at each
+/// temperature; Abaqus interpolates linearly between the rows and holds the end rows outside).
+/// The other types, one temperature, keep their constants as written, in Abaqus's order:
 ///  - ENGINEERING CONSTANTS: E1, E2, E3, ν12, ν13, ν23, G12, G13, G23;
 ///  - ORTHOTROPIC: D1111, D1122, D2222, D1133, D2233, D3333, D1212, D1313, D2323;
 ///  - ANISOTROPIC: the upper triangle of D column by column in the Voigt order 11 22 33 12 13 23
@@ -24,6 +25,21 @@ struct Elastic {
   SourceLoc loc;
   Type type = Type::Isotropic;    // after the isotropic fields: Elastic{E, ν, loc} stays valid
   std::vector<double> constants = {};  ///< the other types: the values above, in that order
+  struct IsotropicRow {
+    double youngs_modulus = 0.0;
+    double poissons_ratio = 0.0;
+    double temperature = 0.0;
+  };
+  /// ISOTROPIC: every data line, temperatures strictly increasing; youngs_modulus and
+  /// poissons_ratio above hold the first line's. One line (or none, when built by hand): the
+  /// constants do not depend on temperature.
+  std::vector<IsotropicRow> temperature_table = {};
+  /// Whether E or ν changes with temperature (rows that all hold the same E and ν do not).
+  bool temperature_dependent() const {
+    for (const IsotropicRow& row : temperature_table)
+      if (row.youngs_modulus != youngs_modulus || row.poissons_ratio != poissons_ratio) return true;
+    return false;
+  }
 };
 
 /// *ORIENTATION, SYSTEM=RECTANGULAR | CYLINDRICAL, DEFINITION=COORDINATES: the local material
@@ -42,11 +58,25 @@ struct Orientation {
   SourceLoc loc;
 };
 
-/// *EXPANSION, TYPE=ISO: α, measured from the reference temperature ZERO (Abaqus default 0).
+/// *EXPANSION, TYPE=ISO: α, the secant coefficient measured from the reference temperature ZERO
+/// (Abaqus default 0), with several data lines a function of temperature: the thermal strain is
+/// then α(T)(T − ZERO) − α(Tᴵ)(Tᴵ − ZERO), Tᴵ the initial temperature (Abaqus).
 struct Expansion {
-  double alpha = 0.0;
+  double alpha = 0.0;  ///< the first line's α
   double zero = 0.0;
   SourceLoc loc;
+  struct Row {
+    double alpha = 0.0;
+    double temperature = 0.0;
+  };
+  /// Every data line, temperatures strictly increasing (one line: no temperature dependence).
+  std::vector<Row> temperature_table = {};
+  /// Whether α changes with temperature (equal α on every row is today's α (T − Tᴵ)).
+  bool temperature_dependent() const {
+    for (const Row& row : temperature_table)
+      if (row.alpha != alpha) return true;
+    return false;
+  }
 };
 
 /// *PLASTIC (Mises yield): yield stress against equivalent plastic strain, the first point at

@@ -16,6 +16,7 @@
 #include "anisotropic_law.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
+#include "elastic_law.hpp"
 #include "elements/combined_plasticity.hpp"
 #include "elements/finite_strain_mises.hpp"
 #include "elements/log_strain_plasticity.hpp"
@@ -112,11 +113,12 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     const bool hyperelastic = mat && mat->hyperelastic;
     const elements::Material*& l = laws[{section, family, hyperelastic && type.hybrid}];
     if (l) return l;
+    if (mat && !model::is_continuum(type)) refuse_temperature_tables(m, *mat, fmt::format("{} elements", type.name));
     if (hyperelastic) l = am.materials.emplace_back(hyperelastic_law(m, *mat, family, type.hybrid, am.warnings)).get();
     else if (mat && mat->elastic && mat->elastic->type != model::Elastic::Type::Isotropic)
       l = am.materials.emplace_back(anisotropic_law(m, m.mesh.sections[section], *mat, family)).get();
     else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c, am.warnings)).get();
-    else l = am.materials.emplace_back(std::make_shared<elements::IsotropicElastic>(family, c)).get();
+    else l = am.materials.emplace_back(isotropic_elastic_law(mat, family, c)).get();
     return l;
   };
   for (std::size_t k = 0; k < m.mesh.sections.size(); ++k) {
@@ -125,6 +127,9 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     if (!mat.elastic && !mat.hyperelastic)
       throw AnalysisError(fmt::format("{}: error: *MATERIAL: material '{}' has no *ELASTIC definition, which a static "
                                       "analysis needs", m.sources.describe(mat.loc), mat.name));
+    if (mat.plastic) refuse_temperature_tables(m, mat, "*PLASTIC");
+    if (mat.elastic && mat.elastic->type != model::Elastic::Type::Isotropic)
+      refuse_temperature_tables(m, mat, "a directional *ELASTIC");
     elements::ElasticConstants c;
     c.youngs_modulus = mat.elastic ? mat.elastic->youngs_modulus : 0.0;
     c.poissons_ratio = mat.elastic ? mat.elastic->poissons_ratio : 0.0;

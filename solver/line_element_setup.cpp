@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "elastic_law.hpp"
 #include "elements/beam_elements.hpp"
 #include "elements/beam_section.hpp"
 #include "elements/line_elements.hpp"
@@ -77,6 +78,7 @@ elements::BeamProperties beam_section_properties(const model::Model& m, const mo
                                       "supported yet (small rotations only)", where(), step.name));
   if (sec.material.empty()) return elements::beam_properties(sec, 0.0, 0.0);
   const model::Material& mat = m.materials.at(sec.material);
+  refuse_temperature_tables(m, mat, "beam elements");
   if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.plastic || mat.hyperelastic)
     throw AnalysisError(fmt::format("{}: error: *BEAM SECTION: material '{}' is not isotropic linear elastic; beams "
                                     "take *ELASTIC, TYPE=ISOTROPIC only so far", where(), mat.name));

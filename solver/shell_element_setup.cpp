@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "elastic_law.hpp"
 #include "elements/shell_section.hpp"
 
 namespace inpact::solver {
@@ -24,6 +25,7 @@ elements::ShellProperties shell_section_properties(const model::Model& m, const 
       throw AnalysisError(fmt::format("{}: error: {}: shell elements under NLGEOM (step '{}') are not supported yet "
                                       "(small rotations only)", where(), keyword_of(sec), step.name));
   const model::Material& mat = m.materials.at(sec.material);
+  refuse_temperature_tables(m, mat, "shell elements");
   if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.plastic || mat.hyperelastic)
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not isotropic linear elastic; shells take "
                                     "*ELASTIC, TYPE=ISOTROPIC only so far", where(), keyword_of(sec), mat.name));

@@ -77,7 +77,7 @@ const Mat6& AnisotropicElastic::update(const MaterialPointInput& in, const Point
 }
 
 double AnisotropicElastic::plane_stress_thickness_strain(const Vec3& x, const Vec6&, const Vec6& stress,
-                                                         double thermal_strain, std::span<const double>) const {
+                                                         double thermal_strain, double, std::span<const double>) const {
   if (lamina_) return thermal_strain;
   const Mat6 d = orientation_ ? rotate_stiffness(d_material_, orientation_->axes_at(x)) : d_material_;
   const Mat6 s = d.inverse();

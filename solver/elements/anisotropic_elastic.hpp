@@ -38,7 +38,8 @@ class AnisotropicElastic final : public Material {
   /// + D66)) / 15, which are frame independent and exact for an isotropic D. α as given.
   const ElasticConstants& elastic() const override { return constants_; }
   double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
-                                       double thermal_strain, std::span<const double> state) const override;
+                                       double thermal_strain, double temperature,
+                                       std::span<const double> state) const override;
 
   /// The tangent (and stiffness) at a point at `x`, in the global frame, for the family.
   Mat6 stiffness_at(const Vec3& x) const;

@@ -91,7 +91,7 @@ void point_output(ElementFamily family, const Material& m, bool nlgeom, const Po
                   const PointState& st, PointResult& out, std::span<const double> state) {
   Vec6 strain = st.strain;
   if (family == ElementFamily::PlaneStress)
-    strain(2) = m.plane_stress_thickness_strain(pd.x, strain, st.stress, pd.thermal_strain, state);
+    strain(2) = m.plane_stress_thickness_strain(pd.x, strain, st.stress, pd.thermal_strain, pd.temperature, state);
   out.volume = pd.dv;
   if (!nlgeom) {
     for (int k = 0; k < 6; ++k) {

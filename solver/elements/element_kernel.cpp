@@ -196,17 +196,17 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
   } else {
     strain << H(0, 0), H(1, 1), H(2, 2), H(0, 1) + H(1, 0), H(0, 2) + H(2, 0), H(1, 2) + H(2, 1);
   }
+  double temperature = 0.0;
+  for (std::size_t a = 0; a < request.temperature.size(); ++a) temperature += rule.N[p][a] * request.temperature[a];
   double thermal_strain = 0.0;
   if (!delta_t.empty()) {
     double dt = 0.0;
     for (int a = 0; a < 8; ++a) dt += rule.N[p][a] * delta_t[a];
-    thermal_strain = law.elastic().expansion * dt;
+    thermal_strain = law.thermal_strain(temperature, dt);
   }
   Vec3 x{};  // the point's reference coordinates
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i) x[i] += rule.N[p][a] * geo.X(a, i);
-  double temperature = 0.0;
-  for (std::size_t a = 0; a < request.temperature.size(); ++a) temperature += rule.N[p][a] * request.temperature[a];
   Vec6 stress;
   Mat6 scratch;
   const Mat6& D = law.update({F, strain, thermal_strain, &x, request.nlgeom, temperature}, history, stress, scratch);
@@ -267,7 +267,7 @@ struct ElementGeometry {
   double min_jacobian = std::numeric_limits<double>::infinity();
 };
 
-ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, double expansion,
+ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const Material& law,
                                  const SectionData& section, std::span<const double> delta_t,
                                  std::span<const double> temperature) {
   const int dim = type.dim, n = type.n_nodes;
@@ -304,12 +304,12 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
       const double j = m.det * (family == ElementFamily::Axisymmetric ? m.radius : 1.0);
       pd.grad.bottomRows(n_modes) = incompatible_mode_gradients(dim, q.xi.data(), J0_inv_t, j0, j);
     }
+    for (std::size_t a = 0; a < temperature.size(); ++a) pd.temperature += sv.N[a] * temperature[a];
     if (!delta_t.empty()) {
       double dt = 0.0;
       for (int a = 0; a < n; ++a) dt += sv.N[a] * delta_t[a];
-      pd.thermal_strain = expansion * dt;
+      pd.thermal_strain = law.thermal_strain(pd.temperature, dt);
     }
-    for (std::size_t a = 0; a < temperature.size(); ++a) pd.temperature += sv.N[a] * temperature[a];
     geo.pts.push_back(std::move(pd));
     geo.point_coords.push_back(m.x);
   }
@@ -367,8 +367,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
   const int n_total = type.n_nodes + (incompatible ? n_incompatible_modes(dim) : 0);
   ElementSystem sys;
   sys.n_dof = n_dof;
-  const ElementGeometry geo = element_geometry(type, coords, law.elastic().expansion, section, delta_t,
-                                               request.temperature);
+  const ElementGeometry geo = element_geometry(type, coords, law, section, delta_t, request.temperature);
   sys.min_jacobian = geo.min_jacobian;
   if (sys.min_jacobian <= 0.0) return sys;  // the caller reports the distorted element
 
@@ -386,10 +385,10 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
     if (request.stiffness) K = std::move(as.K);
   }
   if (hourglass) {
-    const double volume = geo.pts.front().dv;  // the one-point rule integrates the whole element
+    const PointData& centre = geo.pts.front();  // the one-point rule integrates the whole element
     const Eigen::MatrixXd b = geo.centre.grad.leftCols(dim);
-    const Eigen::MatrixXd Khg =
-        hourglass_stiffness(dim, geo.X, b, volume, law.elastic().shear_modulus(), section.hourglass_scale);
+    const double shear_modulus = law.elastic_at(centre.temperature).shear_modulus();
+    const Eigen::MatrixXd Khg = hourglass_stiffness(dim, geo.X, b, centre.dv, shear_modulus, section.hourglass_scale);
     f += Khg * uf.head(n_dof);
     if (request.stiffness) K += Khg;
   }

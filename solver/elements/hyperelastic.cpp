@@ -297,7 +297,7 @@ double Hyperelastic::thickness_stretch_squared(Eigen::Matrix3d C, Vec6& stress, 
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-double Hyperelastic::plane_stress_thickness_strain(const Vec3&, const Vec6& strain, const Vec6&, double,
+double Hyperelastic::plane_stress_thickness_strain(const Vec3&, const Vec6& strain, const Vec6&, double, double,
                                                    std::span<const double>) const {
   Eigen::Matrix3d C = Eigen::Matrix3d::Identity() + 2 * voigt_to_tensor(strain, true);
   C(2, 2) = 1 / std::max(C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0), 1e-12);

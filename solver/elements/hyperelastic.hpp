@@ -118,7 +118,8 @@ class Hyperelastic final : public Material {
                      Mat6& scratch) const override;
   /// Plane stress: E33 = (λ3² − 1)/2 of the state update() converges to.
   double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
-                                       double thermal_strain, std::span<const double> state) const override;
+                                       double thermal_strain, double temperature,
+                                       std::span<const double> state) const override;
   /// Small-strain constants of the initial moduli μ0, K0 (hourglass control, output).
   const ElasticConstants& elastic() const override { return constants_; }
   const StrainEnergy& energy() const { return *energy_; }

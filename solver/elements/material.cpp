@@ -14,14 +14,37 @@ bool Material::set_plastic_strain(std::span<double>, const Vec6&) const { return
 
 bool Material::increment_too_large(std::span<const double>, std::span<const double>) const { return false; }
 
-double Material::plane_stress_thickness_strain(const Vec3&, const Vec6& e, const Vec6&, double eth,
+double Material::plane_stress_thickness_strain(const Vec3&, const Vec6& e, const Vec6&, double eth, double temperature,
                                                std::span<const double>) const {
-  const double nu = elastic().poissons_ratio;
+  const double nu = elastic_at(temperature).poissons_ratio;
   return -nu / (1 - nu) * (e(0) + e(1) - 2 * eth) + eth;
 }
 
 IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants)
-    : constants_(constants), D_(elasticity_matrix(family, constants)) {}
+    : family_(family), constants_(constants), D_(elasticity_matrix(family, constants)) {}
+
+IsotropicElastic::IsotropicElastic(ElementFamily family, const ElasticConstants& constants,
+                                   std::optional<ElasticTable> elastic_table,
+                                   std::optional<ExpansionTable> expansion_table)
+    : IsotropicElastic(family, constants) {
+  elastic_table_ = std::move(elastic_table);
+  expansion_table_ = std::move(expansion_table);
+}
+
+ElasticConstants IsotropicElastic::elastic_at(double temperature) const {
+  return elastic_table_ ? elastic_constants_at(*elastic_table_, temperature, constants_) : constants_;
+}
+
+double IsotropicElastic::thermal_strain(double temperature, double temperature_change) const {
+  if (!expansion_table_) return constants_.expansion * temperature_change;
+  // Tᴵ = T − ΔT: both interpolated from the nodes with the same shape functions.
+  return elements::thermal_strain(*expansion_table_, temperature, temperature - temperature_change);
+}
+
+const Mat6& IsotropicElastic::stiffness_at(double temperature, Mat6& scratch) const {
+  scratch = elasticity_matrix(family_, elastic_at(temperature));
+  return scratch;
+}
 
 Mat6 elasticity_matrix(ElementFamily family, const ElasticConstants& m) {
   const double E = m.youngs_modulus, nu = m.poissons_ratio;

@@ -71,10 +71,10 @@ bool PlaneStressCondensation::increment_too_large(std::span<const double> commit
 }
 
 double PlaneStressCondensation::plane_stress_thickness_strain(const Vec3& x, const Vec6& strain, const Vec6& stress,
-                                                              double thermal_strain,
+                                                              double thermal_strain, double temperature,
                                                               std::span<const double> state) const {
   if (state.size() == state_size()) return state.back();
-  return Material::plane_stress_thickness_strain(x, strain, stress, thermal_strain, state);
+  return Material::plane_stress_thickness_strain(x, strain, stress, thermal_strain, temperature, state);
 }
 
 }  // namespace inpact::solver::elements

@@ -30,7 +30,8 @@ class PlaneStressCondensation final : public Material {
   bool increment_too_large(std::span<const double> committed, std::span<const double> trial) const override;
   /// e33 of the state (the trial state of the last update()).
   double plane_stress_thickness_strain(const Vec3& position, const Vec6& strain, const Vec6& stress,
-                                       double thermal_strain, std::span<const double> state) const override;
+                                       double thermal_strain, double temperature,
+                                       std::span<const double> state) const override;
   bool temperature_dependent() const override { return law_->temperature_dependent(); }
 
  private:

@@ -178,7 +178,7 @@ TEST(AnisotropicElastic, PlaneStressCondensationAndThicknessStrain) {
   const Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
   law.update({F, strain, eth}, {}, stress, scratch);
   const double expected = -nu / (1 - nu) * (strain(0) + strain(1) - 2 * eth) + eth;
-  EXPECT_NEAR(law.plane_stress_thickness_strain({0, 0, 0}, strain, stress, eth, {}), expected, 1e-15);
+  EXPECT_NEAR(law.plane_stress_thickness_strain({0, 0, 0}, strain, stress, eth, 0.0, {}), expected, 1e-15);
   // The isotropic stand-ins of elastic() are E and ν themselves.
   EXPECT_NEAR(law.elastic().youngs_modulus, E, 1e-12 * E);
   EXPECT_NEAR(law.elastic().poissons_ratio, nu, 1e-14);

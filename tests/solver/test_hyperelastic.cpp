@@ -311,7 +311,7 @@ TEST(HyperelasticPlaneStress, UniaxialSheetIsThe3DUniaxialStateAndTheTangentIsEx
   const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
   inpact::solver::elements::Vec6 strain;
   strain << E(0, 0), E(1, 1), 0, 0, 0, 0;
-  const double lambda3 = std::sqrt(1 + 2 * sheet.plane_stress_thickness_strain({}, strain, S, 0.0, {}));
+  const double lambda3 = std::sqrt(1 + 2 * sheet.plane_stress_thickness_strain({}, strain, S, 0.0, 0.0, {}));
   EXPECT_NEAR(lambda3, F(1, 1), 1e-10);
   Eigen::Matrix3d F3 = F;
   F3(2, 2) = lambda3;

@@ -61,7 +61,7 @@ void check(const Material& law_3d, const PlaneStressCondensation& m, bool nlgeom
   const double scale = base.stress.cwiseAbs().maxCoeff();
   EXPECT_LT(std::abs(s3(2)), 1e-11 * scale);
   EXPECT_LT((s3 - base.stress).cwiseAbs().maxCoeff(), 1e-11 * scale);
-  EXPECT_EQ(m.plane_stress_thickness_strain({}, e2, base.stress, 0.0, base.trial), e3(2));
+  EXPECT_EQ(m.plane_stress_thickness_strain({}, e2, base.stress, 0.0, 0.0, base.trial), e3(2));
   // The condensed tangent against central differences in E11, E22, E12.
   const double h = 1e-8;
   for (int j : {0, 1, 3}) {
