@@ -25,31 +25,59 @@ void material(KeywordContext& ctx) {
   ctx.state.open_parent = kMaterial;
 }
 
-/// The one data line of a material option that is not temperature dependent.
-const Line* single_line(KeywordContext& ctx) {
-  if (ctx.data.size() > 1)
-    ctx.error(ctx.data[1].loc, "temperature-dependent data (more than one data line) is not supported yet");
-  return ctx.data.empty() ? nullptr : &ctx.data[0];
+/// The temperature in field k of a material table's line. A table of one line may leave it out
+/// (0); with several lines every line needs it, strictly above the line before (Abaqus
+/// interpolates between consecutive lines). nullopt after an error.
+std::optional<double> table_temperature(KeywordContext& ctx, const std::vector<Field>& f, std::size_t k,
+                                        std::optional<double> previous) {
+  if (f.size() <= k || f[k].empty()) {
+    if (ctx.data.size() == 1) return 0.0;
+    ctx.error(f.size() > k ? f[k].loc : f.back().loc,  // where it is missing, as check_count reports
+              fmt::format("field {} (the temperature) is required on every data line when there are several", k + 1));
+    return std::nullopt;
+  }
+  const auto t = ctx.real(f[k], fmt::format("field {}", k + 1));  // "field 3: expected a number", as elsewhere
+  if (t && previous && *t <= *previous) {
+    ctx.error(f[k].loc, fmt::format("the temperatures must increase strictly from line to line, found {} after {}", *t,
+                                    *previous));
+    return std::nullopt;
+  }
+  return t;
 }
 
-// *ELASTIC, TYPE=ISOTROPIC: E, ν[, temperature] on one line.
-void isotropic_elastic(KeywordContext& ctx) {
-  const Line* line = single_line(ctx);
+/// One *ELASTIC, TYPE=ISOTROPIC line: E, ν[, temperature]; nullopt when a field is unusable.
+std::optional<model::Elastic::IsotropicRow> isotropic_row(KeywordContext& ctx, const Line& line,
+                                                          std::optional<double> previous_temperature) {
   std::vector<Field> f;
-  split_fields(*line, f);
-  if (!ctx.check_count(f, *line, 2, 3, "Young's modulus, Poisson's ratio[, temperature]")) return;
+  split_fields(line, f);
+  if (!ctx.check_count(f, line, 2, 3, "Young's modulus, Poisson's ratio[, temperature]")) return std::nullopt;
   auto e = ctx.real(f[0], "Young's modulus");
   auto nu = ctx.real(f[1], "Poisson's ratio");
-  if (!e || !nu) return;
+  if (!e || !nu) return std::nullopt;
   if (*e <= 0) ctx.error(f[0].loc, fmt::format("Young's modulus must be positive, found {}", *e));
   // ν = 0.5 makes the bulk modulus infinite; Abaqus/Standard rejects it for these elements too.
   if (*nu <= -1.0 || *nu >= 0.5)
     ctx.error(f[1].loc, fmt::format("Poisson's ratio must lie in (-1, 0.5), found {}", *nu));
+  const auto t = table_temperature(ctx, f, 2, previous_temperature);
+  if (!t) return std::nullopt;
+  return model::Elastic::IsotropicRow{*e, *nu, *t};
+}
+
+// *ELASTIC, TYPE=ISOTROPIC: E, ν[, temperature], one line per temperature.
+void isotropic_elastic(KeywordContext& ctx) {
   model::Elastic el;
-  el.youngs_modulus = *e;
-  el.poissons_ratio = *nu;
-  el.loc = line->loc;
-  ctx.state.material->elastic = el;
+  for (const Line& line : ctx.data) {
+    std::optional<double> previous;
+    if (!el.temperature_table.empty()) previous = el.temperature_table.back().temperature;
+    const auto row = isotropic_row(ctx, line, previous);
+    if (!row) break;  // reported; the rows before it keep the material from a second error
+    el.temperature_table.push_back(*row);
+  }
+  if (el.temperature_table.empty()) return;
+  el.youngs_modulus = el.temperature_table.front().youngs_modulus;
+  el.poissons_ratio = el.temperature_table.front().poissons_ratio;
+  el.loc = ctx.keyword.loc;  // the *ELASTIC line, as *PLASTIC's: what the solver refuses cites it
+  ctx.state.material->elastic = std::move(el);
 }
 
 /// The constants of the other types, as Abaqus lays them out (8 to a line) and what they are.
@@ -217,29 +245,51 @@ void plastic(KeywordContext& ctx) {
   ctx.state.material->plastic = std::move(p);
 }
 
-// *DENSITY: ρ. Kept for gravity loads and later procedures.
+// *DENSITY: ρ[, temperature]. Kept for gravity loads and later procedures, which take one
+// density: several lines must repeat it (CalculiX decks write it per temperature).
 void density(KeywordContext& ctx) {
-  const Line* line = single_line(ctx);
-  std::vector<Field> f;
-  split_fields(*line, f);
-  if (!ctx.check_count(f, *line, 1, 2, "density[, temperature]")) return;
-  if (auto rho = ctx.real(f[0], "density")) ctx.state.material->density = *rho;
+  std::optional<double> rho;
+  for (const Line& line : ctx.data) {
+    std::vector<Field> f;
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 1, 2, "density[, temperature]")) return;
+    const auto value = ctx.real(f[0], "density");
+    if (!value) return;
+    if (rho && *value != *rho) {
+      ctx.error(f[0].loc, fmt::format("a temperature-dependent density (here {} after {}) is not supported yet", *value,
+                                      *rho));
+      return;
+    }
+    rho = value;
+  }
+  ctx.state.material->density = *rho;
 }
 
-// *EXPANSION, TYPE=ISO, ZERO=: α (secant coefficient from the reference temperature ZERO).
+// *EXPANSION, TYPE=ISO, ZERO=: α[, temperature], one line per temperature (the secant
+// coefficient from the reference temperature ZERO).
 void expansion(KeywordContext& ctx) {
   const std::string type = ctx.choice_value("TYPE");
   if (!type.empty() && type != "ISO") {
     ctx.error_param("TYPE", fmt::format("TYPE={} is not supported yet (only ISO)", type));
     return;
   }
-  const Line* line = single_line(ctx);
-  std::vector<Field> f;
-  split_fields(*line, f);
-  if (!ctx.check_count(f, *line, 1, 2, "expansion coefficient[, temperature]")) return;
-  auto alpha = ctx.real(f[0], "expansion coefficient");
-  if (!alpha) return;
-  ctx.state.material->expansion = model::Expansion{*alpha, ctx.real_value("ZERO").value_or(0.0), line->loc};
+  model::Expansion ex;
+  for (const Line& line : ctx.data) {
+    std::vector<Field> f;
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 1, 2, "expansion coefficient[, temperature]")) return;
+    const auto alpha = ctx.real(f[0], "expansion coefficient");
+    if (!alpha) return;
+    std::optional<double> previous;
+    if (!ex.temperature_table.empty()) previous = ex.temperature_table.back().temperature;
+    const auto t = table_temperature(ctx, f, 1, previous);
+    if (!t) return;
+    ex.temperature_table.push_back({*alpha, *t});
+  }
+  ex.alpha = ex.temperature_table.front().alpha;
+  ex.zero = ctx.real_value("ZERO").value_or(0.0);
+  ex.loc = ctx.keyword.loc;
+  ctx.state.material->expansion = std::move(ex);
 }
 
 /// True when the element set `elset` (already defined) holds truss elements: its data line is
