@@ -467,6 +467,64 @@ def thermal_bar():
     return d
 
 
+# Temperature-dependent *ELASTIC and *EXPANSION: E, nu, alpha linear between the rows and held
+# outside; eps_th = alpha(T)(T - ZERO) - alpha(Ti)(Ti - ZERO). Three steps of uniform T: inside
+# the tables, above them, below them.
+TABLE = dict(elastic=((200000.0, 0.30, 0.0), (150000.0, 0.32, 500.0), (100000.0, 0.35, 1000.0)),
+             expansion=((1.0e-5, 0.0), (1.4e-5, 600.0), (2.0e-5, 1200.0)), zero=20.0, Ti=150.0,
+             steps=(400.0, 1300.0, -100.0))
+
+
+def thermal_table(etype, held):
+    """A bar (C3D8), plate (CPS4, CPE4) or axisymmetric tube (CAX4) heated uniformly with the
+    TABLE material: free (symmetry planes only), or held at both ends along its axis."""
+    eps = 1e-9
+    closed = {"C3D8": "S11 = -E eps_th, U2 = (1 + nu) eps_th y, U3 = (1 + nu) eps_th z",
+              "CPS4": "S11 = -E eps_th, U2 = (1 + nu) eps_th y, E33 = (1 + nu) eps_th",
+              "CPE4": "S11 = S33 = -E eps_th/(1 - nu), U2 = (1 + nu)/(1 - nu) eps_th y",
+              "CAX4": "S22 (axial) = -E eps_th, U1 = (1 + nu) eps_th r"}[etype]
+    d = Deck(f"{'Held' if held else 'Free'} {etype} {'bar' if etype != 'CAX4' else 'tube'} heated with "
+             "temperature-dependent *ELASTIC and *EXPANSION",
+             ["E, nu at T: " + ", ".join(f"({E:g}, {nu:g}) at {T:g}" for E, nu, T in TABLE["elastic"]) +
+              "; alpha at T: " + ", ".join(f"{a:g} at {T:g}" for a, T in TABLE["expansion"]) +
+              f", ZERO = {TABLE['zero']:g}; linear between rows, held outside.",
+              f"Initial T = {TABLE['Ti']:g}; steps to T = " + ", ".join(f"{T:g}" for T in TABLE["steps"]) +
+              ": eps_th = alpha(T)(T - ZERO) - alpha(Ti)(Ti - ZERO).",
+              ("Held at both ends along the axis: " + closed) if held else
+              "Free (symmetry planes only): stress free, U = eps_th x.",
+              "Tolerances in tests/verification/test_thermal_tables.cpp."])
+    if etype == "C3D8":
+        L = 4.0
+        coords, conn = bar_mesh(0.0, L, 4)
+        c3d8_bar(d, coords, conn, L)
+        d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT")
+        ends = "LEFT, 1, 1", "RIGHT, 1, 1"
+        d.add("*BOUNDARY", *(ends if held else ends[:1]), "Y0, 2, 2", "Z0, 3, 3")
+    elif etype == "CAX4":
+        coords, conn = grid_quad(2, 4, lambda s, t: (1.0 + s, 4.0 * t), False)
+        d.nodes(coords, 2)
+        d.elements(etype, "BAR", conn)
+        d.nset("BOTTOM", select(coords, lambda x: abs(x[1]) < eps))
+        d.nset("TOP", select(coords, lambda x: abs(x[1] - 4.0) < eps))
+        d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT", "1.")
+        d.add("*BOUNDARY", "BOTTOM, 2, 2", *(["TOP, 2, 2"] if held else []))
+    else:
+        coords, conn = grid_quad(4, 2, lambda s, t: (4.0 * s, t), False)
+        d.nodes(coords, 2)
+        d.elements(etype, "BAR", conn)
+        d.nset("LEFT", select(coords, lambda x: abs(x[0]) < eps))
+        d.nset("RIGHT", select(coords, lambda x: abs(x[0] - 4.0) < eps))
+        d.nset("Y0", select(coords, lambda x: abs(x[1]) < eps))
+        d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=MAT", "1.")
+        d.add("*BOUNDARY", "LEFT, 1, 1", *(["RIGHT, 1, 1"] if held else []), "Y0, 2, 2")
+    d.add("*MATERIAL, NAME=MAT", "*ELASTIC", *(f"{E:g}, {nu:g}, {T:g}" for E, nu, T in TABLE["elastic"]),
+          f"*EXPANSION, ZERO={TABLE['zero']:g}", *(f"{a:g}, {T:g}" for a, T in TABLE["expansion"]))
+    d.add("*INITIAL CONDITIONS, TYPE=TEMPERATURE", f"ALL, {TABLE['Ti']:g}")
+    for k, T in enumerate(TABLE["steps"], 1):
+        d.add(f"*STEP, NAME=T{k}", "*STATIC", "*TEMPERATURE", f"ALL, {T:g}", *OUTPUT, "*END STEP")
+    return d
+
+
 # --------------------------------------------------------------------------- 4. NLGEOM
 
 
@@ -1053,6 +1111,11 @@ def committed(out):
         "thermal_ring_cps8.inp": thermal_ring("CPS8", 3, 6),
         "thermal_ring_cax4.inp": thermal_ring("CAX4", 4, 2),
         "thermal_bar_c3d8.inp": thermal_bar(),
+        "thermal_table_free_c3d8.inp": thermal_table("C3D8", False),
+        "thermal_table_held_c3d8.inp": thermal_table("C3D8", True),
+        "thermal_table_held_cps4.inp": thermal_table("CPS4", True),
+        "thermal_table_held_cpe4.inp": thermal_table("CPE4", True),
+        "thermal_table_held_cax4.inp": thermal_table("CAX4", True),
         "nlgeom_rigid_rotation_c3d8.inp": rigid_rotation("C3D8", 2, 10),
         "nlgeom_rigid_rotation_c3d8i.inp": rigid_rotation("C3D8I", 2, 10),
         "nlgeom_elastica_cpe8r.inp": elastica("CPE8R", 40, 2),
