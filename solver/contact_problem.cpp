@@ -748,6 +748,48 @@ AugmentationCheck ContactProblem::check_augmentation(const ContactState& state) 
   return c;
 }
 
+AugmentedPenetrations ContactProblem::augmented_penetrations() const {
+  AugmentedPenetrations out;
+  for (const auto& p : pairs_) {
+    if (!p->enforcement->augmented()) continue;
+    auto& pens = out.pairs.emplace_back(p->kin.size(), -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < p->kin.size(); ++i)
+      if (p->kin[i].found) pens[i] = p->enforcement->penetration(p->node_gap(i));
+  }
+  return out;
+}
+
+namespace {
+
+/// The smallest fraction of a correction overshoot_fraction() keeps: Newton must still move.
+constexpr double kMinOvershootFraction = 1e-2;
+/// The penetration, as a fraction of the pair's tolerance, a node may always reach in one
+/// correction: a pair that has no closed node yet must be able to close one.
+constexpr double kFreePenetrationFraction = 1e-2;
+
+}  // namespace
+
+double ContactProblem::overshoot_fraction(const AugmentedPenetrations& before) const {
+  const AugmentedPenetrations after = augmented_penetrations();
+  if (after.pairs.size() != before.pairs.size()) return 1.0;
+  double fraction = 1.0;
+  std::size_t row = 0;
+  for (const auto& p : pairs_) {
+    if (!p->enforcement->augmented()) continue;
+    const auto& b = before.pairs[row];
+    const auto& a = after.pairs[row++];
+    if (a.size() != b.size()) continue;
+    double deepest = kFreePenetrationFraction * p->resolved->tolerance;
+    for (double h : b) deepest = std::max(deepest, h);
+    // Only nodes that were open overshoot: their stiffness was not in the tangent. Gaps change
+    // nearly linearly along one correction: interpolate where such a node reaches the depth.
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i] > deepest && b[i] < 0.0 && std::isfinite(b[i]))
+        fraction = std::min(fraction, (deepest - b[i]) / (a[i] - b[i]));
+  }
+  return std::max(fraction, kMinOvershootFraction);
+}
+
 void ContactProblem::augment(ContactState& state) const {
   for (const auto& p : pairs_) {
     if (!p->enforcement->augmented()) continue;

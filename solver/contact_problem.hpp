@@ -89,6 +89,12 @@ struct ContactIteration {
   std::string failure;             ///< chattering or HCRIT exceeded: the attempt must be cut back
 };
 
+/// The penetration of every slave node of the augmented-Lagrange pairs at one update, per pair
+/// (−∞ where no master faces the node): ContactProblem::overshoot_fraction's "before".
+struct AugmentedPenetrations {
+  std::vector<std::vector<double>> pairs;
+};
+
 /// The augmented-Lagrange check after Newton converged.
 struct AugmentationCheck {
   bool converged = true;       ///< every penetration within its tolerance
@@ -183,6 +189,12 @@ class ContactProblem {
 
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
+  /// The augmented-Lagrange pairs' penetrations at the last update.
+  AugmentedPenetrations augmented_penetrations() const;
+  /// The fraction of the last Newton correction that takes no node of an augmented-Lagrange
+  /// pair that was open `before` it deeper into its master than the deepest node of the pair
+  /// was (or 1 % of the pair's penetration tolerance); 1 when the whole correction does not.
+  double overshoot_fraction(const AugmentedPenetrations& before) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
   void augment(ContactState& state) const;
 

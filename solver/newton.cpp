@@ -33,6 +33,8 @@ class NewtonIterations {
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
   bool solve_correction(Residual& res);
   void apply_correction();
+  void limit_overshoot(int k, ContactIteration& contact, Residual& res);
+  void scale_last_correction(double factor);
   bool predict();
 
   NewtonContext& ctx_;
@@ -48,6 +50,7 @@ class NewtonIterations {
   CorrectionSolver solver_;
   IncrementForce increment_force_;
   bool status_changed_at_start_ = false;
+  AugmentedPenetrations penetrations_;  ///< augmented-Lagrange pairs: before the last correction
   NewtonOutcome out_;
 };
 
@@ -77,8 +80,9 @@ NewtonOutcome NewtonIterations::run() {
   // A new increment commits the friction history of the converged state it starts from.
   if (ctx_.contact) ctx_.contact->begin_attempt(state_.contact, ctx_.at.step, ctx_.at.increment, u_start_);
   for (int k = predict() ? 1 : 0;; ++k) {
-    const ContactIteration contact = update_contact(k);
+    ContactIteration contact = update_contact(k);
     Residual res = assemble_residual(k);
+    limit_overshoot(k, contact, res);
     const double max_correction = largest_correction(k);
     ctx_.observer.iteration({ctx_.at.step, ctx_.at.increment, ctx_.at.attempt, k, res.max,
                              res.q > 0 ? res.max / res.q : 0.0, std::abs(max_correction), res.worst});
@@ -253,6 +257,44 @@ bool NewtonIterations::predict() {
   if (!solver_.solve(ctx_.assembler.tangent(), false, r_, du_, n_eq_, ctx_.am.size, 1.0).solved) return false;
   apply_correction();
   return true;
+}
+
+/// Augmented Lagrange at its 1000 k_e: a correction computed while nodes were open can drive
+/// them deep into the master (a body held by a force sinks into a ring of open nodes), and the
+/// force of that penetration throws the next iterate off again: Newton cycles. A correction that
+/// takes a node that was open deeper than the deepest node of its pair was is cut back to the
+/// fraction where none is (ContactProblem::overshoot_fraction), and the iterate evaluated again.
+void NewtonIterations::limit_overshoot(int k, ContactIteration& contact, Residual& res) {
+  if (!ctx_.contact || !ctx_.contact->has_augmented_lagrange()) return;
+  if (k > 0) {
+    const double fraction = ctx_.contact->overshoot_fraction(penetrations_);
+    if (fraction < 1.0) {
+      scale_last_correction(fraction);
+      const bool changed_before = contact.status_changes > 0;
+      ContactIteration again = ctx_.contact->update(state_.u, state_.contact, ctx_.assembler);
+      // One iteration: a status change in either evaluation makes it a severe one, once.
+      if (again.status_changes > 0 && !changed_before && !(k == 1 && status_changed_at_start_))
+        ++out_.severe_iterations;
+      again.status_changes += contact.status_changes;
+      again.blocks_convergence = again.blocks_convergence || contact.blocks_convergence;
+      contact = std::move(again);
+      res = assemble_residual(k);
+    }
+  }
+  penetrations_ = ctx_.contact->augmented_penetrations();
+}
+
+/// u_k = u_{k−1} + factor Δu instead of u_{k−1} + Δu on the free DOFs. Contact multipliers
+/// (a direct pair beside the augmented one) keep the whole correction: the update in between
+/// may have renumbered them, and the next solve corrects them anyway.
+void NewtonIterations::scale_last_correction(double factor) {
+  for (std::int64_t d = 0; d < dofs_.n_dof(); ++d) {
+    const std::int64_t eq = dofs_.equation(d);
+    if (eq >= 0) state_.u[d] -= (1.0 - factor) * du_[eq];
+  }
+  dofs_.update_dependent(state_.u);
+  if (ctx_.rotating_dofs) ctx_.rotating_dofs->relinearize(ctx_.am, state_.u);
+  for (std::size_t e = 0; e < n_eq_; ++e) du_[e] *= factor;
 }
 
 /// u_{k+1} = u_k + Δu on the free DOFs, the dependents follow; contact multipliers too.

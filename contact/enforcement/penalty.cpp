@@ -18,16 +18,15 @@ bool PenaltyLaw::closed(const PressureValue& pv) const {
 
 StatusUpdate PenaltyLaw::update_status(SlaveState& s, const NodeGap& g, const StatusLimits& limits) const {
   const PressureValue pv = law_pressure(s, g);
-  // An augmented-Lagrange node that keeps crossing the law's kink is damped: after two
-  // crossings in this attempt its stiffness stays in the tangent while it is open (the force
-  // is still the law's), so Newton stops bouncing between the branches at 1000 k_e. Plain
-  // penalty keeps the exact tangent, which its quadratic convergence needs.
+  // The tangent is the law's exact one, which Newton's quadratic convergence needs; at
+  // augmented Lagrange's 1000 k_e the Newton loop keeps nodes from bouncing across the kink
+  // instead (solver/newton.cpp, limit_overshoot).
   // A node touching within round-off brings the law's first slope too: a penalty law acts only
   // from h + c0 ≥ 0, and a body resting on its contact at a gap of +1e-12 would otherwise have
   // no stiffness at all. So does a node that starts closed (it touched when the pair came into
   // force): the first system of a body resting on it is regular.
   const bool touching = g.found && (g.gap < limits.close_below || g.starts_closed);
-  return {closed(pv), pv.active || touching || (options_.augmented && g.found && s.flips >= 2)};
+  return {closed(pv), pv.active || touching};
 }
 
 NormalForce PenaltyLaw::normal_force(const SlaveState& s, const NodeGap& g) const {

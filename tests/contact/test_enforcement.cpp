@@ -114,7 +114,7 @@ TEST(PenaltyLaw, UserAdaptiveScalesPressureAndSlope) {
   EXPECT_DOUBLE_EQ(adaptive.pressure(s, gap(-0.02)), 2.0);
 }
 
-TEST(AugmentedLagrange, TheMultiplierShiftsTheLawAndADampedNodeStaysInTheTangent) {
+TEST(AugmentedLagrange, TheMultiplierShiftsTheLawAndAnOpenNodeLeavesTheTangent) {
   PenaltyOptions options;
   options.augmented = true;
   const PenaltyLaw augmented(linear_law(kStiffness), options);
@@ -128,10 +128,12 @@ TEST(AugmentedLagrange, TheMultiplierShiftsTheLawAndADampedNodeStaysInTheTangent
   SlaveState next = s;
   augmented.augment(next, gap(-0.02));  // λ ← p
   EXPECT_DOUBLE_EQ(next.lambda, 5.0);
-  s.flips = 2;  // after two crossings an open node keeps the law's slope in the tangent
-  const StatusUpdate damped = augmented.update_status(s, gap(0.05), kLimits);
-  EXPECT_FALSE(damped.closed);
-  EXPECT_TRUE(damped.contributes);
+  // However often it crossed the law's kink, an open node has the law's tangent: none
+  // (solver/newton.cpp limits the corrections that would make it bounce).
+  s.flips = 5;
+  const StatusUpdate open = augmented.update_status(s, gap(0.05), kLimits);
+  EXPECT_FALSE(open.closed);
+  EXPECT_FALSE(open.contributes);
 }
 
 TEST(LawWithMultipliers, ClosesAtTheLawsPressureAndItsRowIsTheLawsInverse) {

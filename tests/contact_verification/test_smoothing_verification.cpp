@@ -285,8 +285,7 @@ std::unique_ptr<Run> fine_reference() {
 //   direct              −0.32 … +0.84 %
 //   penalty             −0.75 … +0.35 %, penetration 0.50 % of δ
 //   nonlinear penalty   −4.5 … −3.1 %, penetration 4.7 % of δ
-//   augmented Lagrange  at stiffness scale factor 0.3: −0.32 … +0.82 %; at its default 1000 k_e it
-//                       does not converge here (DISABLED_AugmentedLagrangeAtItsDefault...)
+//   augmented Lagrange  +0.08 … +0.35 %, penetration 0.005 % of δ (its default 1000 k_e)
 // Unsmoothed, direct: −44 … +34 %.
 // Physics: the two bodies' reactions on y = 0 balance, and the ring's is the axial contact force
 // Σ CFN2 of the sleeve (measured −1.8e-4 apart).
@@ -298,11 +297,7 @@ TEST(SmoothedToroidalSurface, EverySlaveNodeWithinTwoPercentOfTheFineMesh) {
   const TubeProfile ref(slave_values(*fine, fine->capture.last()));
   auto p_ref = [&](const std::array<double, 3>& x) { return ref.at(tube_angle(x)); };
   double smoothed_worst = 0.0;
-  for (auto [name, params] : kMethods) {
-    if (name == "augmented Lagrange") {
-      params["sf"] = "0.3";
-      name += " (stiffness scale factor 0.3)";
-    }
+  for (const auto& [name, params] : kMethods) {
     auto r = run(deck_path("oring_axi_smoothed"), params);
     ASSERT_TRUE(r->outcome.completed) << name << ": " << r->outcome.message;
     const std::string label = "oring_axi smoothed, " + name;
@@ -371,19 +366,12 @@ TEST(SmoothedToroidalSurface, FineReferenceHasConvergedAndAgreesWithTheUnsmoothe
 }
 
 // Augmented Lagrange at its default stiffness (1000 k_e = 2.13e9 per unit area) on the O-ring,
-// smoothed or not: the first increment does not converge, and the step stops after 5 cutbacks
-// (exit code 4). Measured on the smoothed deck: after the penalty's spikes of the first
-// iterations (largest residual 4.4e7 at the start, 5.0e7 at the second), the residual stays at
-// 1.41e3 … 1.40e3 (1.94 times the average force) from the fourth to the 28th iteration, with
-// corrections of 7e-7 … 9e-7, and 12 of the 28 iterations change a contact status: slave nodes at
-// the edges of the contact zone open and close by less than a micrometre, which at this stiffness
-// is a pressure of about 2e3 (k × 8e-7 = 1.7e3), the size of the residual. Unsmoothed: the same,
-// 31 iterations of which 15 change a status, the residual stalling at 1.24e3 … 1.20e3. Cutting
-// back does not help: the interference is resolved in the first increment whatever its length,
-// and every attempt repeats the same iterations. At stiffness scale factor 0.3 (0.1) both decks
-// converge: the first increment in 10 (2) iterations smoothed, 6 (5) unsmoothed, the second in 2
-// (the test above runs 0.3). Enable once the solver converges at the default stiffness.
-TEST(SmoothedToroidalSurface, DISABLED_AugmentedLagrangeAtItsDefaultStiffnessEndsInEquilibrium) {
+// smoothed or not. Measured: the first increment in 4 iterations smoothed (8 unsmoothed), the
+// second in 1. Before Newton took the law's exact tangent at every node (solver/newton.cpp,
+// limit_overshoot), nodes at the edges of the contact zone that had crossed the law's kink kept
+// its stiffness while open: the residual then stalled at 1.4e3 (1.9 times the average force)
+// with corrections below a micrometre, and the step stopped after 5 cutbacks.
+TEST(SmoothedToroidalSurface, AugmentedLagrangeAtItsDefaultStiffnessEndsInEquilibrium) {
   for (const char* deck : {"oring_axi_smoothed", "oring_axi"}) {
     auto r = run(deck_path(deck), {{"method", "AUGMENTED LAGRANGE"}});
     ASSERT_TRUE(r->outcome.completed) << deck << ": " << r->outcome.message;
