@@ -129,7 +129,8 @@ std::optional<double> penetration_tolerance(const ResolvedNormalBehavior& r, dou
 //     M = E / (1 − ν²)                     (plane stress)
 // because the layer under a contact patch is held laterally by the material around it, so it
 // deforms in uniaxial strain, not uniaxial stress. k_e is the median over the facets: robust to
-// a few distorted or tiny elements, and O(n) with nth_element.
+// a few distorted or tiny elements, and O(n) with nth_element. A pair of two materials takes
+// the softer one's M over the slave's h (softer_element_stiffness).
 // Characteristic length: the median facet size, √A_f in 3-D and the edge length in 2-D — the
 // "typical facet size" the manuals name (the averaging rule is not published either).
 // Only corner nodes are used (straight-sided elements): an estimate, and cheap.
@@ -214,9 +215,10 @@ double median(std::vector<double>& v) {
 std::optional<SurfaceScales> surface_scales(const model::Model& m, const model::Surface& surface) {
   if (surface.kind != model::Surface::Kind::Element) return std::nullopt;
   const auto elastic = element_elasticity(m);
-  std::vector<double> stiffness, size;
+  std::vector<double> stiffness, size, modulus;
   stiffness.reserve(surface.faces.size());
   size.reserve(surface.faces.size());
+  modulus.reserve(surface.faces.size());
   for (const model::Face& face : surface.faces) {
     const std::size_t e = static_cast<std::size_t>(face.element);
     if (!elastic[e]) continue;
@@ -232,7 +234,8 @@ std::optional<SurfaceScales> surface_scales(const model::Model& m, const model::
       thickness = facet > 0 ? element_area(m, e) / facet : 0.0;
     }
     if (thickness <= 0) continue;  // a degenerate element says nothing about stiffness
-    stiffness.push_back(constrained_modulus(*elastic[e], info.family) / thickness);
+    modulus.push_back(constrained_modulus(*elastic[e], info.family));
+    stiffness.push_back(modulus.back() / thickness);
     size.push_back(facet);
   }
   if (stiffness.empty()) return std::nullopt;
@@ -240,7 +243,13 @@ std::optional<SurfaceScales> surface_scales(const model::Model& m, const model::
   s.n_facets = stiffness.size();
   s.element_stiffness = median(stiffness);
   s.characteristic_length = median(size);
+  s.modulus = median(modulus);
   return s;
+}
+
+double softer_element_stiffness(const SurfaceScales& own, const SurfaceScales& other) {
+  if (!(other.modulus < own.modulus)) return own.element_stiffness;
+  return own.element_stiffness * (other.modulus / own.modulus);
 }
 
 }  // namespace inpact::contact

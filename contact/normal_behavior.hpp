@@ -79,6 +79,7 @@ std::optional<double> penetration_tolerance(const ResolvedNormalBehavior& r, dou
 /// surface of the pair).
 struct SurfaceScales {
   double element_stiffness = 0.0;      ///< k_e, pressure per length
+  double modulus = 0.0;                ///< median constrained modulus M of the facets' elements
   double characteristic_length = 0.0;  ///< median facet size
   std::size_t n_facets = 0;
 };
@@ -86,6 +87,13 @@ struct SurfaceScales {
 /// k_e and the characteristic length of `surface`. Abaqus computes both but does not publish
 /// how (KEYWORDS.md Part C a); inpact's estimators are documented in normal_behavior.cpp.
 std::optional<SurfaceScales> surface_scales(const model::Model& model, const model::Surface& surface);
+
+/// k_e of `own` taken with the softer of the two surfaces' materials: own.k_e × M_other / M_own
+/// when the other side is softer, own.k_e otherwise. A penalty's error and its round-off
+/// (k ε L) are measured against the body that deforms: a stiff slave's k_e on a soft master
+/// (E 1e6 apart) gave augmented Lagrange a stiffness whose round-off pressure was 0.25 % of p.
+/// The slave's own facets keep the length scale (the contact zone's mesh).
+double softer_element_stiffness(const SurfaceScales& own, const SurfaceScales& other);
 
 
 }  // namespace inpact::contact

@@ -55,16 +55,18 @@ class ScaleCache {
 /// Step 3: k_e and the characteristic length.
 void resolve_scales(const model::Model& m, const ContactInteraction& entry, ScaleCache& cache, ResolvedInteraction& r) {
   auto scales = cache.of(entry.slave);
-  if (!scales) scales = cache.of(entry.master);
-  // A balanced two-row interaction (general contact): both rows take the mean of the two
-  // surfaces' scales, so they hold one law, see the same gap, and each reports the pressure
-  // that acts (with its own k_e each row would carry a different share of the load).
-  if (entry.general && entry.weight != 1.0 && entry.slave != entry.master) {
-    const auto other = cache.of(entry.master);
-    if (scales && other) {
-      scales->element_stiffness = 0.5 * (scales->element_stiffness + other->element_stiffness);
+  const auto other = entry.slave != entry.master ? cache.of(entry.master) : std::nullopt;
+  if (!scales) scales = other;
+  else if (other) {
+    double ke = softer_element_stiffness(*scales, *other);
+    // A balanced two-row interaction (general contact): both rows take the mean of the two
+    // surfaces' scales, so they hold one law, see the same gap, and each reports the pressure
+    // that acts (with its own k_e each row would carry a different share of the load).
+    if (entry.general && entry.weight != 1.0) {
+      ke = 0.5 * (ke + softer_element_stiffness(*other, *scales));
       scales->characteristic_length = 0.5 * (scales->characteristic_length + other->characteristic_length);
     }
+    scales->element_stiffness = ke;
   }
   r.scales_from_mesh = scales.has_value();
   r.ke = scales ? scales->element_stiffness : 0.0;

@@ -12,8 +12,9 @@
 ///   2. the normal behaviour Abaqus would choose (normal_behavior.hpp; self-contact: augmented
 ///      Lagrange by default);
 ///   3. k_e and the characteristic length from the slave surface (the master when the slave is
-///      node based); a balanced two-row general-contact interaction takes the mean of both
-///      surfaces' scales, so both rows hold one law and report the pressure that acts;
+///      node based), k_e with the softer of the two surfaces' moduli; a balanced two-row
+///      general-contact interaction takes the mean of both surfaces' scales, so both rows hold
+///      one law and report the pressure that acts;
 ///   4. the law (pressure_overclosure.hpp) and the enforcement (enforcement.hpp): direct
 ///      multipliers, a penalty-type law, a law stiffer than 1000 k_e with multipliers (table
 ///      38.1.21), augmented Lagrange; a balanced interaction whose law needs multipliers keeps

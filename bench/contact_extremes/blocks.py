@@ -15,7 +15,8 @@ solves d = p (Hs/Ms + Hm/Mm) + h(p) + g for p. Node-to-surface passes this test 
 every master node lies under a slave node (nested meshes: n_s a multiple of n_m, or n_m = 1).
 
 k_e is computed as inpact documents it (contact/normal_behavior.cpp): M/h of the slave element
-under the facet (h its thickness normal to the facet), median over the facets; the
+under the facet (h its thickness normal to the facet, M the softer of the two blocks' constrained
+moduli), median over the facets; the
 characteristic length is the median facet size (edge in 2-D, √area in 3-D).
 
 discretization: NODE TO SURFACE, SURFACE TO SURFACE (the pair's TYPE) or GENERAL (general contact,
@@ -202,7 +203,9 @@ def expectation(c):
     general = c["discretization"] == GENERAL
     # (k_e, characteristic length) of each row's slave: the upper block's bottom; with balanced
     # general contact also the lower block's top
-    upper, lower = (Ms / (c["Hs"] / nms), c["W"] / ns), (Mm / (c["Hm"] / nmm), c["W"] / nm)
+    # k_e with the softer of the two materials (contact/normal_behavior.cpp, softer_element_stiffness)
+    M = min(Ms, Mm)
+    upper, lower = (M / (c["Hs"] / nms), c["W"] / ns), (M / (c["Hm"] / nmm), c["W"] / nm)
     if not general:
         sides = [upper]
     elif method not in ("DIRECT", "AUGMENTED LAGRANGE"):

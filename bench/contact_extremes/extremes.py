@@ -94,7 +94,7 @@ def run(inpact, deck_path, work, job, params=()):
             info[key] = found[0]
             info[key + "_all"] = found
     # how the pair's law is enforced, from the pair line inpact prints at the step's start
-    if "Lagrange multipliers (slope" in out:
+    if "Lagrange multipliers (slope >" in out:
         info["enforcement"] = "multipliers"
     elif "direct hard contact" in out:
         info["enforcement"] = "direct"

@@ -36,10 +36,11 @@ def lines(items, per=8):
     return "\n".join(", ".join(items[k:k + per]) for k in range(0, len(items), per)) + "\n"
 
 
-def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=None, n_upper=4):
+def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=None, n_upper=4, stiff_upper=None):
     """Two stacked blocks 2 × 1 (n_lower and n_upper elements across), side rollers, bottom held.
     n_lower = 2: every master node is also a slave node position (nested meshes), where
-    node-to-surface contact passes the patch test; n_lower = 3: it does not (offset meshes)."""
+    node-to-surface contact passes the patch test; n_lower = 3: it does not (offset meshes).
+    stiff_upper: the upper (slave) block's E is this multiple of the lower one's."""
     ln, le = grid2d(1, n_lower, 2, 0.0, 2.0, 0.0, 1.0)
     un, ue = grid2d(101, n_upper, 2, 0.0, 2.0, 1.0 + offset, 2.0 + offset)
     m = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
@@ -52,6 +53,8 @@ def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=N
               " elements across) under a\n"
               f" uniform pressure p = {P:g} on top, side rollers. Exact state: uniaxial strain, CPRESS = p\n"
               f" at every slave node; M = E(1-nu)/((1+nu)(1-2nu)) = {m:.6g}.\n")
+        if stiff_upper:
+            s += f" The upper block is {stiff_upper:g} times stiffer than the lower one.\n"
     if offset:
         s += (f" The upper block starts {abs(offset):g} {'above' if offset > 0 else 'into'} the lower one"
               + (f"; ADJUST={adjust} moves its bottom nodes onto it, strain-free.\n" if adjust is not None else
@@ -65,8 +68,11 @@ def patch_2d(method, lift_off=False, n_lower=2, disc="n2s", offset=0.0, adjust=N
     s += "*ELSET, ELSET=UPPER_TOP\n" + lines([e[0] for e in ue[n_upper:]])
     s += "*SURFACE, NAME=MASTER_S\nLOWER_TOP, S3\n*SURFACE, NAME=SLAVE_S\nUPPER_BOTTOM, S1\n"
     s += "*SURFACE, NAME=TOP_S\nUPPER_TOP, S3\n"
-    s += "*SOLID SECTION, ELSET=LOWER, MATERIAL=SOFT\n*SOLID SECTION, ELSET=UPPER, MATERIAL=SOFT\n"
+    upper = "STIFF" if stiff_upper else "SOFT"
+    s += f"*SOLID SECTION, ELSET=LOWER, MATERIAL=SOFT\n*SOLID SECTION, ELSET=UPPER, MATERIAL={upper}\n"
     s += f"*MATERIAL, NAME=SOFT\n*ELASTIC\n{E:g}, {NU:g}\n"
+    if stiff_upper:
+        s += f"*MATERIAL, NAME=STIFF\n*ELASTIC\n{E * stiff_upper:g}, {NU:g}\n"
     s += "*SURFACE INTERACTION, NAME=SMOOTH\n" + (BEHAVIOR_S2S if disc == "s2s" else BEHAVIOR)[method]
     s += f"*CONTACT PAIR, INTERACTION=SMOOTH, TYPE={TYPE[disc]}" + ("" if adjust is None else f", ADJUST={adjust}")
     s += "\nSLAVE_S, MASTER_S\n"
@@ -323,6 +329,10 @@ def main():
             f.write(patch_2d(method, n_lower=3, disc="s2s"))
         with open(os.path.join(HERE, f"patch_3d_s2s_{method}.inp"), "w") as f:
             f.write(patch_3d(method, n_lower=3, disc="s2s"))
+    # A slave 1e6 times stiffer than its master: k_e takes the softer material (normal_behavior.hpp).
+    with open(os.path.join(HERE, "patch_2d_s2s_augmented_stiff_slave.inp"), "w") as f:
+        f.write(patch_2d("augmented", n_lower=3, disc="s2s", stiff_upper=1e6)
+                .replace("AUGMENTED LAGRANGE\n1000.\n", "AUGMENTED LAGRANGE\n"))  # the default 1000 k_e
     for name, text in coarse_slave_decks().items():
         with open(os.path.join(HERE, name), "w") as f:
             f.write(text)

@@ -52,6 +52,17 @@ TEST(ContactPatchTest2D, AugmentedLagrangeKeepsPenetrationUnderTolerance) {
   EXPECT_GE(fig.augmentations, 1);
 }
 
+// A slave 1e6 times stiffer than its master, augmented Lagrange at its default 1000 k_e. k_e takes
+// the softer material over the slave's element (test_resolved_interaction.cpp): with the slave's
+// own M the stiffness was 1e6 times larger, its round-off pressure k ε L about 1e-4 of p here
+// (0.25 % on bench/contact_extremes's steel block), and Newton cut back 12 times there.
+TEST(ContactPatchTest2D, StiffSlaveOnASoftMasterTakesTheSofterElementStiffness) {
+  auto r = verification::run_deck(contact_deck("patch_2d_s2s_augmented_stiff_slave.inp"));
+  const auto fig = check_patch(*r, "augmented Lagrange, stiff slave");
+  EXPECT_LE(fig.max_cpress_error, 1e-7);  // uniform pressure, far below the round-off of 1e6 k_e
+  for (const auto& row : r->capture.rows) EXPECT_FALSE(row.cut_back);  // (at 1e6 k_e: 12 cutbacks)
+}
+
 TEST(ContactPatchTest2D, NonlinearPenaltyGivesUniformPressure) {
   auto r = verification::run_deck(contact_deck("patch_2d_nonlinear_penalty.inp"));
   const auto fig = check_patch(*r, "nonlinear penalty");

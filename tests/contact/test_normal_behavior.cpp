@@ -211,3 +211,18 @@ TEST(NormalBehavior, PlaneStressEdgeScales) {
   EXPECT_DOUBLE_EQ(s->characteristic_length, 2.0);
 }
 
+
+TEST(NormalBehavior, TwoMaterialsTakeTheSofterModulusOverTheSlavesThickness) {
+  // Unit cube, ν = 0: M = E. A stiff slave (E = 1e6, k_e = 1e6) against a soft master
+  // (M = 1, k_e = 4 on a brick of thickness 1/4): the slave's h with the master's M, 1 · 1/1.
+  const model::Model stiff = one_element("C3D8", brick(1, 1, 1), 1e6, 0.0);
+  const model::Model soft = one_element("C3D8", brick(1, 1, 0.25), 1.0, 0.0);
+  const auto s = contact::surface_scales(stiff, element_surface(1));
+  const auto m = contact::surface_scales(soft, element_surface(1));
+  ASSERT_TRUE(s && m);
+  EXPECT_DOUBLE_EQ(s->modulus, 1e6);
+  EXPECT_DOUBLE_EQ(m->element_stiffness, 4.0);
+  EXPECT_DOUBLE_EQ(contact::softer_element_stiffness(*s, *m), 1.0);
+  // The soft side keeps its own: its modulus is already the softer.
+  EXPECT_DOUBLE_EQ(contact::softer_element_stiffness(*m, *s), 4.0);
+}

@@ -69,6 +69,15 @@ TEST(ResolvedInteraction, DirectPairHasNoLawAndAugmentedLagrangeItsTolerance) {
   EXPECT_NEAR(i.tolerance, 0.001 * kSlaveFacet, 1e-15);  // 0.1 % of l_char [AX p.782]
 }
 
+TEST(ResolvedInteraction, AStiffSlaveTakesTheSofterMastersModulus) {
+  // The upper (slave) block has E = 1e9, the lower 1000: k_e = M_lower / h_slave, not 1e6 times it.
+  const Resolved r = resolve_deck("patch_2d_s2s_augmented_stiff_slave.inp");
+  const contact::ResolvedInteraction& i = r.steps[0][0];
+  EXPECT_NEAR(i.ke, kKe, 1e-12 * kKe);
+  ASSERT_TRUE(i.law);
+  EXPECT_NEAR(i.law->stiffness(), 1000.0 * kKe, 1e-12 * kKe);
+}
+
 TEST(ResolvedInteraction, GeneralContactIsTwoHalfWeightRowsWithTheMeanOfBothScales) {
   const Resolved r = resolve_deck("patch_2d_general.inp");
   ASSERT_EQ(r.steps[0].size(), 2u);
