@@ -748,6 +748,40 @@ AugmentationCheck ContactProblem::check_augmentation(const ContactState& state) 
   return c;
 }
 
+namespace {
+
+/// The penetration, as a fraction of the characteristic length, beyond which the end of a step
+/// warns. Surface to surface takes a point behind a facing master facet as penetrating only
+/// within half that facet's size (surface_to_surface.cpp, project_onto_facing), and facets
+/// range about the median size; a quarter of it keeps the warning ahead of that rule.
+/// Enforcement within its defaults stays far below: penalty p/(10 k_e) is about 1e-3 of the
+/// length at a strain of 1 %, augmented Lagrange's tolerance 5 % at most.
+constexpr double kTrustedDepthFraction = 0.25;
+
+}  // namespace
+
+std::optional<std::string> ContactProblem::deep_penetration_warning() const {
+  const Pair* deepest_pair = nullptr;
+  std::size_t deepest_node = 0;
+  double deepest = 0.0;  // as a fraction of the pair's l_char
+  for (const auto& p : pairs_)
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      if (!p->kin[i].found || !(p->l_char > 0.0)) continue;
+      const double depth = -p->kin[i].projection.gap / p->l_char;
+      if (depth > deepest) {
+        deepest = depth;
+        deepest_pair = p.get();
+        deepest_node = i;
+      }
+    }
+  if (!deepest_pair || deepest <= kTrustedDepthFraction) return std::nullopt;
+  return fmt::format("warning: {} penetrates its master by {:.4g}, {:.0f} % of the characteristic length {:.4g}: at such depths "
+                     "contact cannot tell a penetration from the far side of a body, and the contact area and pressure "
+                     "may be wrong; the contact stiffness is too soft for this load",
+                     node_name(*deepest_pair, deepest_node), -deepest_pair->kin[deepest_node].projection.gap,
+                     100.0 * deepest, deepest_pair->l_char);
+}
+
 AugmentedPenetrations ContactProblem::augmented_penetrations() const {
   AugmentedPenetrations out;
   for (const auto& p : pairs_) {

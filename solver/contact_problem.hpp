@@ -187,6 +187,12 @@ class ContactProblem {
   /// Σ f_stab·Δu of the last assemble() (at a converged state: the increment's share of ALLSD).
   double damping_dissipated() const { return damping_dissipated_; }
 
+  /// The step's end: a warning naming the deepest slave node when it penetrates its master by
+  /// more than kTrustedDepthFraction of its pair's characteristic length at the last update,
+  /// else nothing. At a facet's depth the search cannot tell a penetration from the far side of
+  /// a body, and the area it loses carries no pressure: the answer may be wrong.
+  std::optional<std::string> deep_penetration_warning() const;
+
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
   /// The augmented-Lagrange pairs' penetrations at the last update.

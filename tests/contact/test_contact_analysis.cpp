@@ -2,6 +2,7 @@
 // checked against their hand references, each with its tolerance stated at the assertion.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +62,26 @@ TEST(ContactPatchTest2D, StiffSlaveOnASoftMasterTakesTheSofterElementStiffness) 
   const auto fig = check_patch(*r, "augmented Lagrange, stiff slave");
   EXPECT_LE(fig.max_cpress_error, 1e-7);  // uniform pressure, far below the round-off of 1e6 k_e
   for (const auto& row : r->capture.rows) EXPECT_FALSE(row.cut_back);  // (at 1e6 k_e: 12 cutbacks)
+}
+
+// A penalty so soft that the slave sinks a large part of a facet into its master: the end of the
+// step warns (ContactProblem::deep_penetration_warning, beyond a quarter of the characteristic
+// length 0.5). k = 10 k_e f with k_e = M / 0.5: f = 2e-3 gives p/k = 0.186 (37 %), f = 1e-2 0.037.
+TEST(ContactPatchTest2D, APenetrationDeeperThanAQuarterFacetIsWarnedOf) {
+  const DeckDir dir;
+  const std::string deck = read_text(contact_deck("patch_2d_s2s_penalty.inp"));
+  for (const double f : {2e-3, 1e-2}) {
+    std::string text = deck;
+    text.insert(text.find("*DSLOAD"), "*CONTACT CONTROLS, STIFFNESS SCALE FACTOR=" + std::to_string(f) + "\n");
+    auto r = verification::run_deck(dir.write("deep.inp", text));
+    ASSERT_TRUE(r->outcome.completed) << f << ": " << r->outcome.message;
+    const double k = 10.0 * kM / kSlaveElementHeight * f;
+    EXPECT_NEAR(-contact_field(r->capture.last(), "COPEN").values.at(0), kP / k, 1e-6 * kP / k) << f;
+    const bool warned = std::any_of(r->capture.messages.begin(), r->capture.messages.end(), [](const std::string& m) {
+      return m.find("penetrates its master by 0.1857, 37 % of the characteristic length 0.5") != std::string::npos;
+    });
+    EXPECT_EQ(warned, f < 5e-3) << f;
+  }
 }
 
 TEST(ContactPatchTest2D, NonlinearPenaltyGivesUniformPressure) {
