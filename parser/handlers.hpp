@@ -19,6 +19,7 @@ void add_amplitude_keywords(std::vector<KeywordSpec>& table);  // kw_amplitude.c
 void add_equation_keywords(std::vector<KeywordSpec>& table);   // kw_equation.cpp
 void add_step_keywords(std::vector<KeywordSpec>& table);      // kw_step.cpp
 void add_output_keywords(std::vector<KeywordSpec>& table);    // kw_output.cpp
+void add_job_control_keywords(std::vector<KeywordSpec>& table);  // kw_job_control.cpp
 void add_contact_keywords(std::vector<KeywordSpec>& table);   // kw_contact.cpp
 void add_step_contact_keywords(std::vector<KeywordSpec>& table);  // kw_step_contact.cpp
 void add_tie_keywords(std::vector<KeywordSpec>& table);       // kw_tie.cpp

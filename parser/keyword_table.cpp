@@ -17,6 +17,7 @@ std::span<const KeywordSpec> keyword_table() {
     add_load_keywords(t);
     add_step_keywords(t);
     add_output_keywords(t);
+    add_job_control_keywords(t);
     add_contact_keywords(t);
     add_step_contact_keywords(t);
     add_tie_keywords(t);
@@ -42,7 +43,7 @@ bool is_unsupported_abaqus_keyword(std::string_view normalized_name) {
       "MEMBRANESECTION", "COHESIVESECTION", "HYPERFOAM", "VISCOELASTIC", "CREEP",
       "DAMAGEINITIATION", "USERMATERIAL", "DEPVAR", "CONDUCTIVITY", "SPECIFICHEAT",
       "MASS", "DASHPOT", "CONNECTORSECTION",
-      "RESTART", "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
+      "IMPORT", "SUBMODEL", "SFILM", "FILM", "CFLUX", "DFLUX", "GAP"};
   return std::find(std::begin(kUnsupported), std::end(kUnsupported), normalized_name) != std::end(kUnsupported);
 }
 

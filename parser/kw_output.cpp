@@ -258,6 +258,13 @@ void section_print(KeywordContext& ctx) {
   ctx.warning(ctx.keyword.loc, "section output (SOF, SOM, SOAREA, ...) is not written yet; the request is ignored");
 }
 
+// *ENERGY OUTPUT (whole-model or element-set energies as history output: ALLSE, ALLWK, ...):
+// read so that the deck runs, not written yet.
+void energy_output(KeywordContext& ctx) {
+  ctx.warning(ctx.keyword.loc, "energy history output (ALLSE, ALLWK, ...) is not written yet; the request is "
+                               "ignored (ALLSD and ALLSE of a stabilised step are in the results file)");
+}
+
 }  // namespace
 
 void add_output_keywords(std::vector<KeywordSpec>& t) {
@@ -287,6 +294,8 @@ void add_output_keywords(std::vector<KeywordSpec>& t) {
                {{"ELSET", VK::Required}, variable, position, {"DIRECTIONS", VK::Required, VT::Choice, {"YES", "NO"}},
                 {"EXTERIOR", VK::None}, {"REBAR", VK::Optional}, {"SECTION POINTS", VK::Required}},
                DataLines::Optional, element_output, parent});
+  t.push_back({"*ENERGY OUTPUT", kStepScope, {{"ELSET", VK::Required}, variable}, DataLines::Optional, energy_output,
+               parent});
   std::vector<ParamSpec> contact_output_params = surfaces;
   contact_output_params.push_back({"SURFACE", VK::Required});
   contact_output_params.push_back(variable);
