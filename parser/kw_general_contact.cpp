@@ -107,14 +107,16 @@ void read_inclusions(KeywordContext& ctx, std::vector<model::GeneralContact::Inc
 
 }  // namespace
 
-// *CONTACT: opens general contact [K16 §3.54]. Its only parameter, OP, is Abaqus/Explicit's.
+// *CONTACT: opens general contact [K16 §3.54]. Its only parameter, OP, changes general contact
+// in a step (Abaqus/Explicit); in the model data OP=NEW (what Abaqus/CAE writes) is the one
+// definition there is, and OP=MOD has nothing to modify.
 void contact(KeywordContext& ctx) {
   ctx.state.open_parent = kContact;
   if (in_step(ctx)) {
     ctx.error(ctx.keyword.loc, "general contact in a step (activating or changing it) is not supported yet; define it in the model data");
     return;
   }
-  warn_ignored(ctx, "OP", "it applies to Abaqus/Explicit only");
+  if (ctx.choice_value("OP") == "MOD") warn_ignored(ctx, "OP", "it applies to Abaqus/Explicit only");
   model::GeneralContact& gc = ctx.model().general_contact;
   if (gc.defined) {
     ctx.error(ctx.keyword.loc, "general contact is defined twice (one *CONTACT block per model)");

@@ -295,13 +295,19 @@ bool rotary_axis_fits(KeywordContext& ctx, const Field& at, const model::DloadEn
   return true;
 }
 
+std::vector<std::int32_t> all_elements(KeywordContext& ctx) {
+  std::vector<std::int32_t> rows(ctx.mesh().elements.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) rows[r] = static_cast<std::int32_t>(r);
+  return rows;
+}
+
 // *DLOAD, OP=, AMPLITUDE=: `element|elset, Pn, p` (pressure on face n, positive into the
 // element), `element|elset, GRAV, g, n1, n2, n3` (gravity: g along the direction n, which is
 // normalised; needs *DENSITY), `element|elset, CENTRIF, ω², x0, y0, z0, n1, n2, n3` (the
 // centrifugal force ρ ω² r of a rotation about the axis through x0 along n; needs *DENSITY),
 // `element|elset, ROTA, α, x0, y0, z0, n1, n2, n3` (the rotary acceleration α about that axis;
 // its d'Alembert force −ρ α n × r; needs *DENSITY), `element|elset, BX|BY|BZ, b` (force per unit
-// volume).
+// volume). GRAV with the element field empty loads every element of the model.
 void dload(KeywordContext& ctx) {
   if (!data_or_new(ctx)) return;
   model::DloadBlock b = dload_block(ctx);
@@ -309,8 +315,9 @@ void dload(KeywordContext& ctx) {
   for (const Line& line : ctx.data) {
     split_fields(line, f);
     if (!ctx.check_count(f, line, 3, 9, "element or element set, load type, magnitude[, direction or axis]")) continue;
-    auto elements = ctx.elements(f[0]);
     const std::string label = normalize_name(f[1].text);
+    // GRAV without an element set loads the whole model (Abaqus/CAE writes `, GRAV, g, n1, n2, n3`).
+    auto elements = f[0].empty() && label == "GRAV" ? std::optional(all_elements(ctx)) : ctx.elements(f[0]);
     auto magnitude = ctx.real(f[2], "magnitude");
     if (!elements || !magnitude) continue;
     model::DloadEntry e;

@@ -302,3 +302,16 @@ TEST(Equation, CountMismatchAndZeroLeadingCoefficient) {
                                     "number of nodes (4 and 8)"))
       << sizes.report();
 }
+
+TEST(Loads, GravityWithoutAnElementSetLoadsTheWholeModel) {
+  // Abaqus/CAE writes a model-wide gravity load with the element field empty.
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck("*DENSITY\n7.8e-9\n*STEP\n*STATIC\n*DLOAD\n, GRAV, 9.81, 0, 0, -1\n*END STEP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& e = r.model.steps[0].dloads[0].entries[0];
+  EXPECT_EQ(e.kind, model::DloadEntry::Kind::Gravity);
+  EXPECT_EQ(e.elements, std::vector<std::int32_t>{0});
+  // Other loads still name their elements.
+  auto bad = dir.read(one_cube_deck("*STEP\n*STATIC\n*DLOAD\n, BZ, 3.\n*END STEP\n"));
+  EXPECT_FALSE(bad.ok());
+}
