@@ -124,6 +124,18 @@ inline constexpr const char* nlgeom_switched_on_note() {
          "NONLINEARITY";
 }
 
+/// One *MODEL CHANGE, TYPE=ELEMENT: elements removed from this step on, or reactivated [K16
+/// *MODEL CHANGE], [CCX]. A removed element carries no stiffness; the forces it exerted at the end
+/// of the previous step ramp to zero over this one. A reactivated one starts from a virgin
+/// material state, STRAIN FREE (the default) with its strain measured from where its nodes are
+/// at the step start, WITH STRAIN from the original configuration.
+struct ElementChange {
+  bool add = false;            ///< ADD; else REMOVE
+  bool with_strain = false;    ///< ADD=WITH STRAIN
+  std::vector<std::int32_t> elements;  ///< element rows
+  SourceLoc loc;
+};
+
 struct Step {
   std::string name;         ///< NAME, as written; default "Step-N" (N = 1-based position)
   std::string description;  ///< the optional data line of *STEP
@@ -155,6 +167,7 @@ struct Step {
   std::vector<FrictionChange> friction_changes;         ///< *CHANGE FRICTION
   std::vector<SurfaceBehaviorChange> behavior_changes;  ///< *CHANGE SURFACE BEHAVIOR
   std::vector<ContactPairChange> pair_changes;          ///< *MODEL CHANGE, TYPE=CONTACT PAIR
+  std::vector<ElementChange> element_changes;           ///< *MODEL CHANGE, TYPE=ELEMENT
   SourceLoc loc;
 };
 

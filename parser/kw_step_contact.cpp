@@ -1,9 +1,12 @@
 /// The step-wise changes of contact (history data): *CHANGE FRICTION (Abaqus/Standard and
-/// CalculiX), *CHANGE SURFACE BEHAVIOR (CalculiX) and *MODEL CHANGE, TYPE=CONTACT PAIR. They are
-/// stored in the step (model::Step::friction_changes, behavior_changes, pair_changes);
+/// CalculiX), *CHANGE SURFACE BEHAVIOR (CalculiX) and *MODEL CHANGE (TYPE=CONTACT PAIR, and
+/// TYPE=ELEMENT, which it reads too). They are stored in the step (model::Step::friction_changes,
+/// behavior_changes, pair_changes, element_changes);
 /// contact/step_changes.hpp says what is in force in each step. Sources: [K16 *CHANGE FRICTION,
 /// *MODEL CHANGE], [IG ctc_contactpair_std "Removing and Reactivating Contact Pairs"], [CCX]
 /// (parser/KEYWORDS.md).
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "handlers.hpp"
@@ -129,12 +132,37 @@ void pair_change_line(KeywordContext& ctx, const Line& line, bool add) {
 
 }  // namespace
 
+// *MODEL CHANGE, TYPE=ELEMENT (the default TYPE), ADD[=STRAIN FREE | WITH STRAIN] | REMOVE: data
+// lines of element labels and element sets (model::ElementChange).
+void element_change(KeywordContext& ctx, bool add) {
+  if (ctx.data.empty()) {
+    ctx.error(ctx.keyword.loc, "data lines are missing: the elements or element sets to " +
+                                   std::string(add ? "reactivate" : "remove"));
+    return;
+  }
+  model::ElementChange c;
+  c.add = add;
+  c.with_strain = add && ctx.choice_value("ADD") == "WITHSTRAIN";
+  c.loc = ctx.keyword.loc;
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    for (const Field& field : f) {
+      if (field.empty()) continue;
+      if (auto rows = ctx.elements(field)) c.elements.insert(c.elements.end(), rows->begin(), rows->end());
+    }
+  }
+  std::sort(c.elements.begin(), c.elements.end());
+  c.elements.erase(std::unique(c.elements.begin(), c.elements.end()), c.elements.end());
+  ctx.state.step->element_changes.push_back(std::move(c));
+}
+
 // *MODEL CHANGE, TYPE=CONTACT PAIR, ADD | REMOVE [K16], [IG], [CCX]: data lines `slave, master`
 // name *CONTACT PAIRs (Abaqus: of the model data; inpact also those an earlier step defined).
 // REMOVE: the pair is not in force from this step on; the contact forces it carried at the end
 // of the previous step are applied as loads that ramp linearly to zero over the step [IG]
 // (solver/step_conditions.hpp). ADD: it is in force again from this step on, every slave node
-// starting open, with no friction history. TYPE=ELEMENT (the Abaqus default) is not supported.
+// starting open, with no friction history. TYPE=ELEMENT (the Abaqus default): element_change.
 void model_change(KeywordContext& ctx) {
   int n_actions = 0;
   for (const KeywordParam& p : ctx.keyword.params) {
@@ -155,12 +183,11 @@ void model_change(KeywordContext& ctx) {
     ctx.error(ctx.keyword.loc, "one of ADD or REMOVE is required");
     return;
   }
+  const bool add = ctx.has("ADD");
   if (ctx.choice_value("TYPE") != "CONTACTPAIR") {
-    ctx.error(ctx.param_loc("TYPE"), "TYPE=ELEMENT (removing or reactivating elements, the default TYPE) is not "
-                                     "supported by inpact yet; only TYPE=CONTACT PAIR is");
+    element_change(ctx, add);
     return;
   }
-  const bool add = ctx.has("ADD");
   if (add && ctx.choice_value("ADD") == "WITHSTRAIN")
     ctx.warning(ctx.param_loc("ADD"), "ADD=WITH STRAIN applies to elements, not to contact pairs [K16]; ignored");
   if (ctx.data.empty()) {

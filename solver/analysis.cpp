@@ -15,6 +15,7 @@
 #include "contact/step_changes.hpp"
 #include "contact_problem.hpp"
 #include "dof_map.hpp"
+#include "element_activity.hpp"
 #include "field_output.hpp"
 #include "increment_controller.hpp"
 #include "linear_solve.hpp"
@@ -71,7 +72,8 @@ struct StepRun {
         number(static_cast<int>(index + 1)),
         start_time(total_time),
         conditions(am, step, history, total_time),
-        dofs(DofMap::build(am, conditions.prescribed(), step.nlgeom)),
+        elements(step_elements(*am.model, index)),
+        dofs(DofMap::build(am, conditions.prescribed(), step.nlgeom, elements.active)),
         assembler(am, dofs, threads, &material_states),
         controls(solution_controls(step)),
         output(am, index),
@@ -87,6 +89,7 @@ struct StepRun {
   int number;  ///< 1-based
   double start_time;
   StepConditions conditions;
+  StepElements elements;  ///< *MODEL CHANGE, TYPE=ELEMENT: the active ones
   DofMap dofs;
   Assembler assembler;
   SolutionControls controls;
@@ -119,6 +122,18 @@ std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
 }
 
 /// The output due at a converged increment: a results frame and/or the printed tables.
+/// The assembler's element points at u (its forces are discarded).
+const ElementPoints* assemble_points(StepRun& run, std::span<const double> u, std::span<const double> delta_t) {
+  AssemblyRequest request;
+  request.tangent = false;
+  request.points = true;
+  request.nlgeom = run.step.nlgeom;
+  request.delta_t = delta_t;
+  std::vector<double> f_int(u.size());
+  run.assembler.assemble(u, request, f_int);
+  return run.assembler.points_at(u, delta_t, run.step.nlgeom);
+}
+
 void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
                   double dt, const OutputDue& due, AnalysisObserver& observer, std::vector<HistoryValue> history) {
   if (!due.any_field() && !due.any_print()) return;
@@ -126,8 +141,10 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   ContactResults contact;
   if (run.contact) contact = run.contact->results(s.u, s.contact);
   const std::vector<double> delta_t = run.conditions.temperature_change(t);
-  // The element point values of the converged state, as its last assembly kept them.
+  // The element point values of the converged state, as its last assembly kept them. With
+  // *MODEL CHANGE only the assembler knows where each element's strain is measured from.
   const ElementPoints* points = run.assembler.points_at(s.u, delta_t, run.step.nlgeom);
+  if (!points && !run.elements.active.empty()) points = assemble_points(run, s.u, delta_t);
   std::vector<double> rf = reactions(run.dofs, s);
   report_pretension_forces(am, s.f_int, s.f_ext, rf);  // RF1 of a pre-tension node: the bolt force
   OutputValues values = compute_output(am, run.output, due, s.u, rf, run.step.nlgeom, delta_t,
@@ -285,6 +302,31 @@ std::unique_ptr<StepStabilization> step_stabilization(const AnalysisModel& am, S
                                              run.dofs, run.assembler, u, previous_factor, allsd, contact_damping);
 }
 
+/// *MODEL CHANGE at the step's start: the reactivated elements start from a virgin material
+/// state, the strain-free ones from where their nodes are; the assembler sees the active set.
+void begin_element_changes(const AnalysisModel& am, StepRun& run, std::span<const double> u,
+                           ElementReferences& references) {
+  if (run.elements.active.empty()) return;
+  references.begin_step(am, run.elements, u);
+  for (std::int32_t e : run.elements.added) run.states.reset(am, static_cast<std::size_t>(e));
+  run.assembler.set_elements(&run.elements, &references);
+}
+
+/// The forces the elements that `next` removes exert at the end of this step, added to what the
+/// next step releases (ConditionHistory::released_forces).
+void release_element_forces(StepRun& run, const StepElements& next,
+                            const IncrementState& state, ConditionHistory& history) {
+  if (next.removed.empty()) return;
+  AssemblyRequest request;
+  request.tangent = false;
+  request.nlgeom = run.step.nlgeom;
+  const std::vector<double> delta_t = run.conditions.temperature_change(run.step.static_procedure->time_period);
+  request.delta_t = delta_t;
+  const std::vector<double> f = run.assembler.element_forces(next.removed, state.u, request);
+  if (history.released_forces.empty()) history.released_forces.assign(f.size(), 0.0);
+  for (std::size_t d = 0; d < f.size(); ++d) history.released_forces[d] += f[d];
+}
+
 }  // namespace
 
 AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observer, const AnalysisOptions& options) {
@@ -309,10 +351,12 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
   double previous_factor = 0.0;  // the damping factor the last step ended with (CONTINUE=YES)
   double allsd = 0.0;            // ALLSD over the steps so far
   IterationSeconds iteration_seconds;
+  ElementReferences references;  // elements reactivated strain free (*MODEL CHANGE)
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     observer.step_started(step, static_cast<int>(s + 1));
     StepRun run(am, s, history, total_time, options.threads, material_states);
+    begin_element_changes(am, run, state.u, references);
     if (options.linear_solver == SolverKind::Petsc) run.solvers.petsc = make_petsc_solver(equation_points(am, run.dofs));
     if (run.contact) {
       const std::vector<std::string> lines = run.contact->describe();
@@ -344,10 +388,11 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
       return outcome;
     }
     history = run.conditions.end_state(reactions(run.dofs, state));
-    // *MODEL CHANGE, REMOVE in the next step releases the contact forces of the pairs it removes.
+    // *MODEL CHANGE, REMOVE in the next step releases the forces of the pairs and elements it removes.
     const std::vector<std::size_t> removed = contact::rows_removed_in(model, *am.contact, s + 1);
     if (run.contact && !removed.empty() && s + 1 < model.steps.size())
-      history.released_contact = run.contact->pair_forces(removed, state.contact);
+      history.released_forces = run.contact->pair_forces(removed, state.contact);
+    if (s + 1 < model.steps.size()) release_element_forces(run, step_elements(model, s + 1), state, history);
     total_time += step.static_procedure->time_period;
   }
   AnalysisOutcome outcome;

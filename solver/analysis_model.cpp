@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "element_activity.hpp"
 #include "analytical_contact.hpp"
 #include "combined_hardening_setup.hpp"
 #include "anisotropic_law.hpp"
@@ -293,6 +294,7 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   assign_materials(m, am);
   setup_line_elements(m, am);
   setup_shell_elements(m, am);
+  check_element_changes(am);
   check_initial_plastic_strains(m, am);
   warn_about_locking(am);
   std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};

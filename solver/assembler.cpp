@@ -153,6 +153,18 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   for (std::size_t a = 0; a < n_rows; ++a)
     for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[static_cast<std::size_t>(rows[a]) * dim + c];
   const std::size_t n = nodes.size();
+  // *MODEL CHANGE: an inactive element is at zero strain (its output is zero); one reactivated
+  // strain free measures its displacement from its reference one, on the original geometry at
+  // small strain and from the configuration it was reactivated in under NLGEOM.
+  const bool inactive = elements_ && !elements_->is_active(e);
+  const std::span<const double> reference = inactive || !references_ ? std::span<const double>() : references_->of(e);
+  if (inactive || !reference.empty())
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t c = 0; c < dim; ++c) {
+        const double shift = inactive ? u_el[a * dim + c] : reference[a * dim + c];
+        if (request.nlgeom) x[a][c] += shift;
+        u_el[a * dim + c] -= shift;
+      }
   const elements::ElementHistory history = states_ ? states_->assembly_history(e) : elements::ElementHistory{};
   elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n_rows * dim), *setup.material,
                             setup.section, er,
@@ -216,6 +228,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
         points_.points.insert(points_.points.end(), sys.points.begin(), sys.points.end());
         points_.offset.push_back(points_.points.size());
       }
+      if (elements_ && !elements_->is_active(e)) continue;
       element_dofs(e, el_dofs);
       if (sys.internal_force.size() != el_dofs.size()) continue;  // inverted: reported by min_jacobian
       for (std::size_t i = 0; i < el_dofs.size(); ++i) {
@@ -237,6 +250,24 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
     have_points_ = true;
   }
   return result;
+}
+
+std::vector<double> Assembler::element_forces(std::span<const std::int32_t> rows, std::span<const double> u,
+                                             const AssemblyRequest& request) {
+  std::vector<double> f(u.size(), 0.0);
+  elements::ElementSystem sys;
+  std::vector<std::int64_t> el_dofs;
+  AssemblyRequest forces_only = request;
+  forces_only.tangent = false;
+  forces_only.points = false;
+  for (std::int32_t row : rows) {
+    const auto e = static_cast<std::size_t>(row);
+    compute(e, u, forces_only, sys);
+    element_dofs(e, el_dofs);
+    if (sys.internal_force.size() != el_dofs.size()) continue;
+    for (std::size_t i = 0; i < el_dofs.size(); ++i) f[static_cast<std::size_t>(el_dofs[i])] += sys.internal_force[i];
+  }
+  return f;
 }
 
 const ElementPoints* Assembler::points_at(std::span<const double> u, std::span<const double> delta_t,

@@ -6,6 +6,7 @@
 
 #include "analysis_model.hpp"
 #include "dof_map.hpp"
+#include "element_activity.hpp"
 #include "elements/element_kernel.hpp"
 #include "iteration_seconds.hpp"
 #include "linear/sparse_matrix.hpp"
@@ -106,6 +107,17 @@ class Assembler {
   /// when it was made at exactly this u, temperature change and NLGEOM; otherwise null.
   const ElementPoints* points_at(std::span<const double> u, std::span<const double> delta_t, bool nlgeom) const;
 
+  /// *MODEL CHANGE: the step's active elements (inactive ones add no force and no stiffness;
+  /// their points, kept for output, are at zero strain) and the reference displacements of the
+  /// elements reactivated strain free. Both must outlive the assembler's use.
+  void set_elements(const StepElements* elements, const ElementReferences* references) {
+    elements_ = elements;
+    references_ = references;
+  }
+  /// The internal forces (full vector) of elements `rows` alone at u: what a removal releases.
+  std::vector<double> element_forces(std::span<const std::int32_t> rows, std::span<const double> u,
+                                     const AssemblyRequest& request);
+
   /// Wall time in assemble() so far (element_assembly and its count only).
   const IterationSeconds& seconds() const { return seconds_; }
 
@@ -133,6 +145,8 @@ class Assembler {
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;
   IterationSeconds seconds_;
+  const StepElements* elements_ = nullptr;
+  const ElementReferences* references_ = nullptr;
 };
 
 }  // namespace inpact::solver

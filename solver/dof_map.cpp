@@ -290,7 +290,8 @@ void DofMap::lay_out(const Dependents& dependent) {
   }
 }
 
-DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed, bool finite_rotations) {
+DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed, bool finite_rotations,
+                     std::span<const std::uint8_t> active) {
   const model::Model& m = *am.model;
   const std::int64_t n = static_cast<std::int64_t>(am.n_dof());
   DofMap map;
@@ -301,7 +302,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
   // A DOF is used when an element connects its node.
   std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
   for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
-    for (std::size_t a = 0, n_rows = am.element_rows(e, rows); a < n_rows; ++a)
+    for (std::size_t a = 0, n_rows = active.empty() || active[e] ? am.element_rows(e, rows) : 0; a < n_rows; ++a)
       for (int c = 0; c < am.dim; ++c) map.kind_[static_cast<std::int64_t>(rows[a]) * am.dim + c] = Kind::Free;
   for (const model::PretensionSection& s : m.pretension_sections)
     map.kind_[static_cast<std::int64_t>(s.node) * am.dim] = Kind::Free;

@@ -37,8 +37,10 @@ class DofMap {
   /// Throws AnalysisError when an equation's dependent DOF is also prescribed, or appears as
   /// the dependent DOF of two equations, or the equations form a cycle.
   /// `finite_rotations`: rigid bodies turn by R(θ) (NLGEOM) instead of θ × r.
+  /// `active` (per element row; empty: all): only active elements make their nodes' DOFs used
+  /// (*MODEL CHANGE, element_activity.hpp).
   static DofMap build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed,
-                      bool finite_rotations = false);
+                      bool finite_rotations = false, std::span<const std::uint8_t> active = {});
 
   std::int64_t n_dof() const { return static_cast<std::int64_t>(kind_.size()); }
   std::int64_t n_equations() const { return n_eq_; }

@@ -43,6 +43,15 @@ void MaterialStates::apply_initial_plastic_strains(const AnalysisModel& am) {
   }
 }
 
+void MaterialStates::reset(const AnalysisModel& am, std::size_t e) {
+  if (empty() || per_point_[e] == 0) return;
+  for (std::size_t p = offset_[e]; p < offset_[e + 1]; p += per_point_[e])
+    am.elements[e].material->initial_state(std::span(committed_).subspan(p, per_point_[e]));
+  std::copy(committed_.begin() + static_cast<std::ptrdiff_t>(offset_[e]),
+            committed_.begin() + static_cast<std::ptrdiff_t>(offset_[e + 1]),
+            trial_.begin() + static_cast<std::ptrdiff_t>(offset_[e]));
+}
+
 std::size_t MaterialStates::bytes() const {
   return offset_.size() * sizeof(std::size_t) + per_point_.size() * sizeof(std::uint32_t) +
          (committed_.size() + trial_.size()) * sizeof(double);

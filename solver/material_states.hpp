@@ -50,6 +50,8 @@ class MaterialStates {
   /// (elements::Material::increment_too_large).
   std::size_t points_with_too_large_increments(const AnalysisModel& am) const;
 
+  /// Element e back to its initial state, committed and trial (*MODEL CHANGE, ADD).
+  void reset(const AnalysisModel& am, std::size_t e);
   /// The increment converged: its trial states become the committed ones.
   void commit();
   /// The attempt failed: its trial states are dropped.

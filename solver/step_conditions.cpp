@@ -249,12 +249,12 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
     }
   });
   for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
-  if (!previous_.released_contact.empty()) {
-    // The removed pairs' contact forces, linearly to zero whatever the step's amplitude [IG]: as
-    // loads they act against f_int's contact part, f_ext = −(1 − t/T) f_c.
+  if (!previous_.released_forces.empty()) {
+    // The removed pairs' and elements' forces, linearly to zero whatever the step's amplitude
+    // [IG]: as loads they act against f_int's part they were, f_ext = −(1 − t/T) f_r.
     const double period = step_.static_procedure ? step_.static_procedure->time_period : 1.0;
     const double left = 1.0 - std::clamp(t / period, 0.0, 1.0);
-    for (std::size_t d = 0; d < f.size(); ++d) f[d] -= left * previous_.released_contact[d];
+    for (std::size_t d = 0; d < f.size(); ++d) f[d] -= left * previous_.released_forces[d];
   }
 }
 
@@ -307,7 +307,7 @@ ConditionHistory StepConditions::end_state(std::span<const double> reactions) co
   for (auto& [k, v] : h.dload) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   for (auto& [n, v] : h.temperature) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   h.reactions.assign(reactions.begin(), reactions.end());
-  h.released_contact.clear();  // released over this step only
+  h.released_forces.clear();  // released over this step only
   return h;
 }
 

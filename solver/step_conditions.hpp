@@ -57,10 +57,10 @@ struct ConditionHistory {
   std::map<DloadKey, DloadValue> dload;
   std::map<std::int32_t, Value> temperature;  ///< key: node row
   std::vector<double> reactions;              ///< per global DOF, at the end of the step
-  /// The contact forces (f_int's part, per global DOF; empty: none) of the pairs the next step
-  /// removes (*MODEL CHANGE, REMOVE), at the end of this step: the next step applies them as
-  /// loads that ramp linearly down to zero [IG ctc_contactpair_std].
-  std::vector<double> released_contact;
+  /// The forces (f_int's part, per global DOF; empty: none) of the contact pairs and elements
+  /// the next step removes (*MODEL CHANGE, REMOVE), at the end of this step: the next step
+  /// applies them as loads that ramp linearly down to zero [IG ctc_contactpair_std].
+  std::vector<double> released_forces;
 };
 
 /// The state before the first step: the model-level boundary conditions (in force from the

@@ -145,9 +145,7 @@ TEST(StepContactKeywordErrors, ModelChangeChecks) {
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:28:1: error: *MODEL CHANGE: no *CONTACT PAIR has slave 'BOTTOM' and master "
                                 "'TOP'"))
       << r.report();
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:29:1: error: *MODEL CHANGE: TYPE=ELEMENT (removing or reactivating elements, "
-                                "the default TYPE) is not supported by inpact yet"))
-      << r.report();
+  EXPECT_FALSE(has_diagnostic(r, "deck.inp:29:")) << r.report();  // TYPE=ELEMENT, the default: element 1
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:31:1: error: *MODEL CHANGE: one of ADD or REMOVE is required")) << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:33:40: error: *MODEL CHANGE: ADD, REMOVE and ACTIVATE are mutually exclusive"))
       << r.report();
@@ -155,6 +153,24 @@ TEST(StepContactKeywordErrors, ModelChangeChecks) {
                                 "has nothing to reactivate"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:37:1: error: *MODEL CHANGE: data lines are missing")) << r.report();
+}
+
+TEST(StepContactKeywords, ModelChangeOfElementsReadsLabelsAndSets) {
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck("*ELSET, ELSET=E\n1\n*STEP\n*STATIC\n*MODEL CHANGE, TYPE=ELEMENT, REMOVE\nE, 1\n*END STEP\n"
+                                  "*STEP\n*STATIC\n*MODEL CHANGE, ADD=WITH STRAIN\n1\n*END STEP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& removed = r.model.steps[0].element_changes.at(0);
+  EXPECT_FALSE(removed.add);
+  EXPECT_EQ(removed.elements, std::vector<std::int32_t>{0});  // the set and the label: one element
+  const auto& added = r.model.steps[1].element_changes.at(0);
+  EXPECT_TRUE(added.add);
+  EXPECT_TRUE(added.with_strain);
+  auto bad = dir.read(one_cube_deck("*STEP\n*STATIC\n*MODEL CHANGE, REMOVE\n*MODEL CHANGE, ADD\n7\n*END STEP\n"));
+  EXPECT_TRUE(has_diagnostic(bad, "*MODEL CHANGE: data lines are missing: the elements or element sets to remove"))
+      << bad.report();
+  EXPECT_TRUE(has_diagnostic(bad, "7")) << bad.report();
+  EXPECT_FALSE(bad.ok());
 }
 
 TEST(StepContactKeywordErrors, ATiedContactPairCannotBeRemoved) {
