@@ -7,9 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include "analysis_error_of.hpp"
 #include "fixtures/deck_fixture.hpp"
-#include "solver/analysis_error.hpp"
-#include "solver/analysis_model.hpp"
 
 namespace inpact::test {
 namespace {
@@ -28,19 +27,6 @@ std::string edited(const std::string& from, const std::string& to) {
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) s.replace(at, from.size(), to);
   return s;
-}
-
-/// The AnalysisError message building the analysis model of `deck` raises ("" when none).
-std::string analysis_error(const std::string& deck) {
-  const DeckDir dir;
-  const auto r = dir.read(deck);
-  EXPECT_TRUE(r.ok()) << r.report();
-  try {
-    (void)solver::build_analysis_model(r.model);
-  } catch (const solver::AnalysisError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(AnalyticalContactChecks, TheDeckItselfPasses) { EXPECT_EQ(analysis_error(punch_deck()), ""); }

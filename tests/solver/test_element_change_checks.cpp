@@ -4,25 +4,11 @@
 
 #include <string>
 
+#include "analysis_error_of.hpp"
 #include "fixtures/deck_fixture.hpp"
-#include "solver/analysis_error.hpp"
-#include "solver/analysis_model.hpp"
 
 namespace inpact::test {
 namespace {
-
-/// The AnalysisError message building the analysis model of `deck` raises ("" when none).
-std::string analysis_error(const std::string& deck) {
-  const DeckDir dir;
-  const auto r = dir.read(deck);
-  EXPECT_TRUE(r.ok()) << r.report();
-  try {
-    (void)solver::build_analysis_model(r.model);
-  } catch (const solver::AnalysisError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 const std::string kRemoveCube = "*STEP\n*STATIC\n*MODEL CHANGE, REMOVE\n1\n*END STEP\n";
 
