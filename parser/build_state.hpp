@@ -54,6 +54,10 @@ struct OpenInstance {
   bool has_rotation = false;
   std::array<double, 7> rotation{};  ///< point a, point b, angle in degrees
   model::SourceLoc loc;
+  /// Rigid bodies and analytical surfaces defined inside the instance (an analytical rigid part,
+  /// as Abaqus/CAE writes it) start at these indices: their node and element rows are the
+  /// instance's own until *END INSTANCE moves them into the model's mesh.
+  std::size_t first_rigid_body = 0, first_analytical_surface = 0;
 };
 
 struct BuildState {

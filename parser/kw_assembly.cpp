@@ -69,6 +69,8 @@ void instance(KeywordContext& ctx) {
   } else {
     inst.def = pit->second;
   }
+  inst.first_rigid_body = ctx.model().rigid_bodies.size();
+  inst.first_analytical_surface = ctx.model().analytical_surfaces.size();
   ctx.state.instance = std::move(inst);
   ctx.state.part = &ctx.state.instance->def;
   ctx.state.scope = kInstanceScope;
@@ -88,6 +90,8 @@ std::array<double, 3> rotate(const std::array<double, 3>& x, const std::array<do
   for (int i = 0; i < 3; ++i) out[i] = r[i] + v[i] * c + kxv[i] * s + k[i] * kv * (1 - c);
   return out;
 }
+
+void move_rigid_bodies(KeywordContext& ctx, const OpenInstance& inst, std::int32_t node_base, std::int32_t elem_base);
 
 /// Copies the part's mesh into the model's mesh as a new instance.
 void end_instance(KeywordContext& ctx) {
@@ -176,6 +180,54 @@ void end_instance(KeywordContext& ctx) {
     dst.shell_sections.push_back(std::move(copy));
   }
   for (const auto& [node, thickness] : src.nodal_thickness) dst.nodal_thickness[node + node_base] = thickness;
+  move_rigid_bodies(ctx, inst, node_base, elem_base);
+}
+
+/// An analytical surface defined inside the instance, moved with it like its nodes: translated,
+/// then turned (the origin as a point, the axes as directions). A SEGMENTS profile lies in the
+/// global (x, y) plane: it takes an in-plane translation; a turned one is refused.
+void move_analytical_surface(KeywordContext& ctx, const OpenInstance& inst, model::AnalyticalSurface& a) {
+  const auto& t = inst.translation;
+  if (a.type == model::AnalyticalSurface::Type::Segments) {
+    if (inst.has_rotation || t[2] != 0.0) {
+      ctx.diags.error(inst.loc, "*INSTANCE",
+                      fmt::format("instance '{}' holds the SEGMENTS surface '{}' and is rotated or moved out of its "
+                                  "plane: only an in-plane translation of a SEGMENTS profile is supported",
+                                  inst.name, a.name));
+      return;
+    }
+    auto shift = [&](std::array<double, 2>& p) { p = {p[0] + t[0], p[1] + t[1]}; };
+    shift(a.start);
+    for (model::ProfileSegment& s : a.segments) {
+      shift(s.end);
+      if (s.kind == model::ProfileSegment::Kind::Arc) shift(s.center);
+    }
+    return;
+  }
+  for (int i = 0; i < 3; ++i) a.origin[i] += t[i];
+  if (!inst.has_rotation) return;
+  const auto& r = inst.rotation;
+  a.origin = rotate(a.origin, r);
+  for (auto& axis : a.axes) {  // a direction turns as the difference of two turned points
+    const auto tip = rotate({r[0] + axis[0], r[1] + axis[1], r[2] + axis[2]}, r);
+    for (int i = 0; i < 3; ++i) axis[i] = tip[i] - r[i];
+  }
+}
+
+/// The rigid bodies and analytical surfaces defined inside the instance (an analytical rigid part
+/// as Abaqus/CAE writes it) onto the model's rows and coordinates.
+void move_rigid_bodies(KeywordContext& ctx, const OpenInstance& inst, std::int32_t node_base, std::int32_t elem_base) {
+  auto& bodies = ctx.model().rigid_bodies;
+  for (std::size_t b = inst.first_rigid_body; b < bodies.size(); ++b) {
+    model::RigidBody& body = bodies[b];
+    body.ref_node += node_base;
+    if (body.rot_node >= 0 && !body.rot_node_added) body.rot_node += node_base;
+    for (auto& n : body.nodes) n += node_base;
+    for (auto& e : body.elements) e += elem_base;
+  }
+  auto& surfaces = ctx.model().analytical_surfaces;
+  for (std::size_t a = inst.first_analytical_surface; a < surfaces.size(); ++a)
+    move_analytical_surface(ctx, inst, surfaces[a]);
 }
 
 }  // namespace

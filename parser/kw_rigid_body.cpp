@@ -85,7 +85,9 @@ void rigid_body(KeywordContext& ctx) {
 void add_rigid_body_keywords(std::vector<KeywordSpec>& t) {
   using VK = ValueKind;
   using VT = ValueType;
-  t.push_back({"*RIGID BODY", kModelDataScopes,
+  // In an *INSTANCE too: Abaqus/CAE writes an analytical rigid part's body there, beside its
+  // reference point and surface (names resolve in the instance as for its sets).
+  t.push_back({"*RIGID BODY", kModelDataScopes | kInstanceScope,
                {{"REF NODE", VK::Required, VT::Text, {}, true},
                 {"ROT NODE", VK::Required, VT::Text},
                 {"ELSET", VK::Required, VT::Text},

@@ -262,6 +262,17 @@ void controls(KeywordContext& ctx) {
   }
 }
 
+// *SOLUTION TECHNIQUE, TYPE=FULL NEWTON | QUASI-NEWTON | SEPARATED [K16]: how Abaqus/Standard
+// iterates to equilibrium, not what equilibrium is. inpact always uses full Newton: the
+// converged answer is the same (to the tolerances), the iteration count is its own.
+void solution_technique(KeywordContext& ctx) {
+  const std::string type = ctx.choice_value("TYPE");
+  if (!type.empty() && type != "FULLNEWTON")
+    ctx.warning(ctx.param_loc("TYPE"), fmt::format("TYPE={}: inpact iterates with full Newton; the converged answer is "
+                                                   "the same, the iterations are not",
+                                                   ctx.param("TYPE")->value.value_or("")));
+}
+
 }  // namespace
 
 void add_step_keywords(std::vector<KeywordSpec>& t) {
@@ -294,6 +305,10 @@ void add_step_keywords(std::vector<KeywordSpec>& t) {
                DataLines::Optional, static_step});
   t.back().numbers_from = 0;
   t.push_back({"*END STEP", kStepScope, {}, DataLines::None, end_step});
+  t.push_back({"*SOLUTION TECHNIQUE", kStepScope,
+               {{"TYPE", VK::Required, VT::Choice, {"FULL NEWTON", "QUASI-NEWTON", "SEPARATED", "CONTACT ITERATIONS"}},
+                {"REFORM KERNEL", VK::Required, VT::Int}},
+               DataLines::None, solution_technique});
   t.push_back({"*CONTROLS", kStepScope,
                {{"PARAMETERS", VK::Required, VT::Choice, {"FIELD", "TIME INCREMENTATION", "LINE SEARCH", "CONSTRAINTS", "CONTACT"}},
                 {"ANALYSIS", VK::Required, VT::Choice, {"DISCONTINUOUS"}},

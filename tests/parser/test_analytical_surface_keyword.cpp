@@ -73,3 +73,32 @@ TEST(AnalyticalSurfaceKeyword, DeckErrorsNameTheLine) {
                              "*RIGID BODY, REF NODE=50, ANALYTICAL SURFACE=P\n*RIGID BODY, REF NODE=5, ANALYTICAL SURFACE=P\n"));
   EXPECT_TRUE(has_diagnostic(twice, "error: *RIGID BODY: surface 'P' is carried by another *RIGID BODY already")) << twice.report();
 }
+
+// Abaqus/CAE writes an analytical rigid part as an instance holding its reference point, its
+// surface and its *RIGID BODY; the names resolve inside the instance, and the instance's
+// translation moves the profile with the reference node.
+TEST(AnalyticalSurfaceKeyword, ARigidBodyInsideAnInstanceAsAbaqusCaeWritesIt) {
+  DeckDir dir;
+  auto r = dir.read("*Part, name=block\n*Node\n1, 0., 0.\n2, 1., 0.\n3, 1., 1.\n4, 0., 1.\n"
+                    "*Element, type=CPE4\n1, 1, 2, 3, 4\n*Elset, elset=all\n1\n"
+                    "*Solid Section, elset=all, material=steel\n,\n*End Part\n"
+                    "*Part, name=indenter\n*End Part\n"
+                    "*Assembly, name=Assembly\n*Instance, name=block-1, part=block\n*End Instance\n"
+                    "*Instance, name=indenter-1, part=indenter\n0., 1., 0.\n*Node\n1, 0.5, 2.\n"
+                    "*Nset, nset=indenter-1-RefPt_, internal\n1,\n"
+                    "*Surface, type=SEGMENTS, name=RigidSurface_, internal\nSTART, 2., 1.5\nLINE, -1., 1.5\n"
+                    "*Rigid Body, ref node=indenter-1-RefPt_, analytical surface=RigidSurface_\n*End Instance\n"
+                    "*End Assembly\n*Material, name=steel\n*Elastic\n210000., 0.3\n"
+                    "*Step\n*Static\n*End Step\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  ASSERT_EQ(r.model.rigid_bodies.size(), 1u);
+  const auto& body = r.model.rigid_bodies[0];
+  EXPECT_EQ(body.analytical_surface, 0);
+  EXPECT_TRUE(r.model.mesh.surfaces.count("INDENTER-1.RIGIDSURFACE_"));
+  // The reference node is the indenter's own (after the block's four), moved to (0.5, 3).
+  EXPECT_EQ(body.ref_node, 4);
+  EXPECT_EQ(r.model.mesh.nodes.coords[4], (std::array<double, 3>{0.5, 3.0, 0.0}));
+  const auto& a = r.model.analytical_surfaces[0];
+  EXPECT_EQ(a.start, (std::array<double, 2>{2.0, 2.5}));
+  EXPECT_EQ(a.segments[0].end, (std::array<double, 2>{-1.0, 2.5}));
+}

@@ -156,3 +156,14 @@ TEST(Controls, ResetAndMissingSelection) {
   EXPECT_TRUE(has_diagnostic(bad, "deck.inp:20:4: error: *CONTROLS: control value: expected a number, found 'x'"))
       << bad.report();
 }
+
+TEST(StepKeywords, SolutionTechniqueIsReadAndQuasiNewtonSaysInpactIteratesWithFullNewton) {
+  inpact::test::DeckDir dir;
+  auto r = dir.read(inpact::test::one_cube_deck("*STEP\n*STATIC\n*SOLUTION TECHNIQUE, TYPE=QUASI-NEWTON, REFORM KERNEL=8\n"
+                                                "*END STEP\n*STEP\n*STATIC\n*SOLUTION TECHNIQUE, TYPE=FULL NEWTON\n*END STEP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  EXPECT_TRUE(inpact::test::has_diagnostic(r, "warning: *SOLUTION TECHNIQUE: TYPE=QUASI-NEWTON: inpact iterates with full "
+                                              "Newton"))
+      << r.report();
+  EXPECT_EQ(r.report().find("FULL NEWTON"), std::string::npos) << r.report();
+}
