@@ -344,7 +344,9 @@ void dload(KeywordContext& ctx) {
       e.kind = model::DloadEntry::Kind::Pressure;
       e.faces.assign(elements->size(), *face);
     } else if (label == "GRAV") {
-      if (!ctx.check_count(f, line, 6, 6, "element or element set, GRAV, magnitude, direction x, y, z")) continue;
+      // (a 2D model's direction may stop at y, as Abaqus/CAE writes it)
+      if (!ctx.check_count(f, line, 5, 6, "element or element set, GRAV, magnitude, direction x, y[, z]")) continue;
+      if (f.size() == 5) f.push_back(Field{"0", f[4].loc});
       if (!read_vector(ctx, f, 3, "gravity direction", e.direction) || !normalize(ctx, f[3], "gravity direction", e.direction))
         continue;
       e.kind = model::DloadEntry::Kind::Gravity;

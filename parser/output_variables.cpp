@@ -41,7 +41,8 @@ constexpr Variable kNode[] = {
 // logarithmic, nominal, rates), energies, volumes, state variables, temperature, heat flux,
 // nodal forces, section forces and moments SF, SM (Abaqus); ME, ZZS, ERR, HER, MAXE, MAXS, SMID/SNEG/SPOS, SVF, PHS, EMFE/EMFB,
 // ECD, HFLF, ELKE, EMAS, EBHE, CENT are CalculiX *EL FILE/*EL PRINT keys; NOE is CalculiX's
-// "no error estimate" (it switches ZZS/ERR off and asks for nothing).
+// "no error estimate" (it switches ZZS/ERR off and asks for nothing). DG (deformation gradient),
+// FV (field variables), UVARM, SE and SK (section strains and curvatures) are Abaqus's too.
 constexpr Variable kElement[] = {
     {"S", C::Tensor},     {"SP", C::Vector},    {"MISES", C::None},   {"TRESCA", C::None},  {"PRESS", C::None},
     {"INV3", C::None},    {"TRIAX", C::None},   {"E", C::Tensor},     {"EP", C::Vector},    {"EE", C::Tensor},
@@ -57,7 +58,8 @@ constexpr Variable kElement[] = {
     {"ERR", C::None},     {"HER", C::None},     {"MAXE", C::None},    {"MAXS", C::None},    {"SMID", C::None},
     {"SNEG", C::None},    {"SPOS", C::None},    {"SVF", C::None},     {"PHS", C::None},     {"EMFE", C::None},
     {"EMFB", C::None},    {"ECD", C::None},     {"EMAS", C::None},    {"EBHE", C::None},    {"CENT", C::None},
-    {"NOE", C::None}};
+    {"NOE", C::None},     {"DG", C::Tensor},    {"FV", C::Index},     {"UVARM", C::Index},  {"SE", C::Vector},
+    {"SK", C::Vector}};
 
 // Contact: stresses (CSTRESS = CPRESS + CSHEAR1/2), relative displacements (CDISP = COPEN +
 // CSLIP1/2), status, areas and resultant forces/moments and their centres (Abaqus); CDIS,

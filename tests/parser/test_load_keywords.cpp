@@ -315,3 +315,11 @@ TEST(Loads, GravityWithoutAnElementSetLoadsTheWholeModel) {
   auto bad = dir.read(one_cube_deck("*STEP\n*STATIC\n*DLOAD\n, BZ, 3.\n*END STEP\n"));
   EXPECT_FALSE(bad.ok());
 }
+
+TEST(Loads, GravityInAPlaneModelMayGiveItsDirectionInThePlane) {
+  // Abaqus/CAE writes a 2D model's gravity as `, GRAV, g, n1, n2`.
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck("*DENSITY\n7.8e-9\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 9.81, 0., -2.\n*END STEP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  EXPECT_EQ(r.model.steps[0].dloads[0].entries[0].direction, (std::array<double, 3>{0, -1, 0}));
+}

@@ -133,3 +133,11 @@ TEST(Output, SubOptionsNeedOutputAndEveryRequestIsStepData) {
                                           "in *STEP"))
       << model_level.report();
 }
+
+TEST(Output, AbaqusVariablesInpactDoesNotComputeAreStillRequests) {
+  // DG (the deformation gradient) and FV are Abaqus variables: the request is read, and the run
+  // says what it does not compute.
+  DeckDir dir;
+  auto r = dir.read(cube_step("*EL PRINT, ELSET=CUBE\nDG, FV1\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nSE, SK\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+}
