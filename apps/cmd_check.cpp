@@ -25,6 +25,8 @@ int run_check(const CheckOptions& options) {
   // run will enforce, from the same records (load_analysable_deck has validated it already).
   const solver::AnalysisModel am = solver::build_analysis_model(result->model);
   io::write_model_summary(std::cout, result->model, am.interactions);
+  // What contact leaves out or decides for the deck (the run prints the same notes).
+  for (const auto& note : am.contact->notes) std::cout << "\n" << note << "\n";
   std::cout << "\n" << solver::describe(choice) << "\n";
   std::cout << "\n" << options.deck << ": the deck is valid\n";
   return kOk;

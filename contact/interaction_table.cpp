@@ -145,6 +145,15 @@ void add_contact_pairs(const model::Model& m, InteractionTable& t) {
     ci.first_step = step;
     // Self-contact: every contact is seen from both sides, like a balanced two-row interaction.
     if (p.slave == p.master) ci.weight = 0.5;
+    // A node-based slave has no faces to integrate over: Abaqus/Standard discretizes such a pair
+    // node to surface whatever TYPE says (Abaqus/CAE writes picked slave nodes as a node-based
+    // surface under TYPE=SURFACE TO SURFACE).
+    if (p.type == model::ContactDiscretization::SurfaceToSurface && ci.slave->kind == model::Surface::Kind::Node) {
+      ci.pair.type = model::ContactDiscretization::NodeToSurface;
+      t.notes.push_back(fmt::format("{}: *CONTACT PAIR {}/{}: the slave surface is node based: node to surface, as "
+                                    "Abaqus/Standard discretizes it",
+                                    m.sources.describe(p.loc), p.slave, p.master));
+    }
     t.rows.push_back(std::move(ci));
   };
   auto add_step_pair = [&](const model::ContactPair& p, std::size_t step) {

@@ -380,3 +380,30 @@ TEST(ContactPrint, CstrAndCdisPrintThePressureAndOpeningPerSlaveNode) {
 
 }  // namespace
 }  // namespace inpact::test
+
+namespace inpact::test {
+namespace {
+
+// A node-based slave under TYPE=SURFACE TO SURFACE (what Abaqus/CAE writes for picked slave
+// nodes) is discretized node to surface, as Abaqus/Standard does, and says so; the bottom then
+// carries the whole load p × width.
+TEST(ContactPatchTest2D, ANodeBasedSlaveOfASurfaceToSurfacePairIsNodeToSurface) {
+  std::string text = read_text(contact_deck("patch_2d_s2s_direct.inp"));
+  const std::string slave = "*SURFACE, NAME=SLAVE_S\nUPPER_BOTTOM, S1\n";
+  ASSERT_NE(text.find(slave), std::string::npos);
+  text.replace(text.find(slave), slave.size(),
+               "*NSET, NSET=SLAVE_N\n101, 102, 103, 104, 105\n*SURFACE, NAME=SLAVE_S, TYPE=NODE\nSLAVE_N\n");
+  const DeckDir dir;
+  auto r = verification::run_deck(dir.write("node_slave.inp", text));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto said = [&](const std::string& what) {
+    return std::any_of(r->capture.messages.begin(), r->capture.messages.end(),
+                       [&](const std::string& m) { return m.find(what) != std::string::npos; });
+  };
+  EXPECT_TRUE(said("the slave surface is node based: node to surface, as Abaqus/Standard discretizes it"));
+  EXPECT_TRUE(said("contact pair SLAVE_S/MASTER_S: node to surface"));
+  EXPECT_NEAR(verification::sum_rf(*r, r->capture.last())[1], kP * kWidth, 1e-9 * kP * kWidth);
+}
+
+}  // namespace
+}  // namespace inpact::test
