@@ -121,7 +121,6 @@ std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
                      d % am.dim + 1);
 }
 
-/// The output due at a converged increment: a results frame and/or the printed tables.
 /// The assembler's element points at u (its forces are discarded).
 const ElementPoints* assemble_points(StepRun& run, std::span<const double> u, std::span<const double> delta_t) {
   AssemblyRequest request;
@@ -134,6 +133,7 @@ const ElementPoints* assemble_points(StepRun& run, std::span<const double> u, st
   return run.assembler.points_at(u, delta_t, run.step.nlgeom);
 }
 
+/// The output due at a converged increment: a results frame and/or the printed tables.
 void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s, int increment, double t,
                   double dt, const OutputDue& due, AnalysisObserver& observer, std::vector<HistoryValue> history) {
   if (!due.any_field() && !due.any_print()) return;
