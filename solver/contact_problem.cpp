@@ -337,9 +337,6 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
     const std::string kw = e.general ? "*CONTACT" : "*CONTACT PAIR";
     if (e.slave->kind == model::Surface::Kind::Analytical)
       refuse(m, p.loc, kw, fmt::format("the analytical surface {} can only be a master surface", p.slave));
-    if (p.type == model::ContactDiscretization::SurfaceToSurface && e.slave->kind != model::Surface::Kind::Element)
-      refuse(m, p.loc, kw, fmt::format("TYPE=SURFACE TO SURFACE needs an element-based slave surface; {} is node based "
-                                       "(use TYPE=NODE TO SURFACE)", p.slave));
     if ((p.adjust_distance || !p.adjust_nset.empty()) && e.step_data)
       refuse(m, p.loc, kw, "ADJUST on a contact pair defined in a step is not analysed by this version of inpact "
                            "yet; define the pair in the model data");
