@@ -133,6 +133,15 @@ struct Equation {
   SourceLoc loc;
 };
 
+/// *MPC TIE between two nodes. Their translations are *EQUATIONs from the start; their
+/// rotations are tied too where both nodes have them (beam and shell nodes), which is known only
+/// once the rotation nodes exist (parser/finalize.cpp adds those equations).
+struct MpcTie {
+  std::int32_t dependent = -1;
+  std::int32_t independent = -1;
+  SourceLoc loc;
+};
+
 /// One data line of *TIE (model data): every node of the slave surface that lies within the
 /// position tolerance of the master surface moves with the master point it projects onto,
 /// u_s = Σ N_m(ξ) u_m (its translations eliminated like an *EQUATION's first DOF). The geometry

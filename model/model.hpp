@@ -39,6 +39,7 @@ struct Model {
   std::map<std::string, Orientation> orientations;  ///< *ORIENTATION; key: upper-case name
   std::map<std::string, Amplitude> amplitudes;
   std::vector<Equation> equations;
+  std::vector<MpcTie> mpc_ties;  ///< *MPC TIE node pairs, for their rotations
   std::vector<Tie> ties;  ///< *TIE, one per data line, in deck order
   std::vector<PretensionSection> pretension_sections;  ///< in deck order
   std::vector<RigidBody> rigid_bodies;                 ///< *RIGID BODY, in deck order

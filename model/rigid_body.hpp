@@ -17,10 +17,20 @@ struct RigidBody {
   /// Every node that follows the body (TIE NSET, PIN NSET, CalculiX's NSET, the ELSET's
   /// nodes): sorted, unique, without the reference and rotation nodes.
   std::vector<std::int32_t> nodes;
+  /// PIN NSET: the nodes among `nodes` that follow in translation only. The others tie their
+  /// rotations too where they have them (beam and shell nodes): θ_node = θ_body.
+  std::vector<std::int32_t> pinned;
   std::vector<std::int32_t> elements;  ///< ELSET: elements made rigid (no stiffness), sorted
   std::int32_t analytical_surface = -1;  ///< ANALYTICAL SURFACE: index into Model::analytical_surfaces
   SourceLoc loc;                       ///< the keyword line
   SourceLoc ref_loc;                   ///< REF NODE='s value
+  /// Made from *MPC BEAM lines sharing their independent node (the reference node): a rigid
+  /// beam from it to each dependent node (parser/kw_equation.cpp). Messages name *MPC.
+  bool mpc_beam = false;
+
+  /// Does `node` (one of `nodes`) turn with the body as well as move with it?
+  bool ties_rotation(std::int32_t node) const;
+  const char* keyword() const { return mpc_beam ? "*MPC" : "*RIGID BODY"; }
 };
 
 /// The rigid body whose reference node is `node`, or null.

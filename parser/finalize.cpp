@@ -329,6 +329,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   }
   finalize_couplings(m, diags);
   if (!diags.has_errors()) add_rotation_nodes(m);
+  if (!diags.has_errors()) tie_mpc_rotations(m);
   if (!diags.has_errors()) finalize_transforms(m, diags);
   switch_on_nlgeom_for_hyperelasticity(m);
 }

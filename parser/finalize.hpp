@@ -25,6 +25,11 @@ void check_shell_sections(const model::Model& m, Diagnostics& diags, std::vector
 /// (rotation_nodes.cpp).
 void add_rotation_nodes(model::Model& m);
 
+/// *MPC TIE: the rotations of each pair whose two nodes both have them (beam and shell nodes),
+/// as *EQUATIONs θ_dep − θ_ind = 0 on DOFs 4–6 (DOF 6 in 2D). After add_rotation_nodes
+/// (rotation_nodes.cpp).
+void tie_mpc_rotations(model::Model& m);
+
 void finalize_model(BuildState& state, Diagnostics& diags);
 
 }  // namespace inpact::parser

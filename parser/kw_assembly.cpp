@@ -223,6 +223,7 @@ void move_rigid_bodies(KeywordContext& ctx, const OpenInstance& inst, std::int32
     body.ref_node += node_base;
     if (body.rot_node >= 0 && !body.rot_node_added) body.rot_node += node_base;
     for (auto& n : body.nodes) n += node_base;
+    for (auto& n : body.pinned) n += node_base;
     for (auto& e : body.elements) e += elem_base;
   }
   auto& surfaces = ctx.model().analytical_surfaces;

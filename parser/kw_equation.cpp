@@ -114,13 +114,55 @@ void equation(KeywordContext& ctx) {
   }
 }
 
+/// The (dependent, independent) node pairs of an *MPC line: sets matched in label order, or
+/// every dependent node with a single independent one. Empty after an error.
+std::vector<std::pair<std::int32_t, std::int32_t>> mpc_pairs(KeywordContext& ctx, std::vector<std::int32_t> dependent,
+                                                             std::vector<std::int32_t> independent, const Field& at) {
+  sort_by_label(ctx.mesh().nodes, dependent);
+  sort_by_label(ctx.mesh().nodes, independent);
+  if (independent.size() != 1 && independent.size() != dependent.size()) {
+    ctx.error(at.loc, fmt::format("the independent nodes ({}) must be one node or as many as the dependent ones ({})",
+                                  independent.size(), dependent.size()));
+    return {};
+  }
+  std::vector<std::pair<std::int32_t, std::int32_t>> pairs;
+  for (std::size_t k = 0; k < dependent.size(); ++k) {
+    const std::int32_t b = independent.size() == 1 ? independent[0] : independent[k];
+    if (dependent[k] == b) {
+      ctx.error(at.loc, fmt::format("node {} is both the dependent and the independent node",
+                                    ctx.mesh().nodes.labels[static_cast<std::size_t>(b)]));
+      return {};
+    }
+    pairs.emplace_back(dependent[k], b);
+  }
+  return pairs;
+}
+
+/// MPC BEAM: a rigid beam from the independent node b to each dependent node a, u_a and θ_a
+/// following b's rigid motion. The lines that share b form one rigid body with b as its
+/// reference node (one rotation for b); finalize_rigid_bodies checks it with the *RIGID BODYs.
+void add_rigid_beam(KeywordContext& ctx, std::int32_t a, std::int32_t b, const Line& line, const Field& b_field) {
+  auto& bodies = ctx.model().rigid_bodies;
+  auto it = std::find_if(bodies.begin(), bodies.end(), [&](const model::RigidBody& r) { return r.mpc_beam && r.ref_node == b; });
+  if (it == bodies.end()) {
+    model::RigidBody body;
+    body.ref_node = b;
+    body.loc = line.loc;
+    body.ref_loc = b_field.loc;
+    body.mpc_beam = true;
+    it = bodies.insert(bodies.end(), std::move(body));
+  }
+  it->nodes.push_back(a);
+}
+
 }  // namespace
 
-// *MPC: one constraint a data line, `type, dependent node|set, independent node|set`. TIE and PIN
-// join the translations of each dependent node to its independent one (solid and plane nodes
-// have no rotations, so the two are the same here): u_dep − u_ind = 0 per DOF, an *EQUATION
-// whose first, eliminated term is the dependent node's [K16 *MPC]. The other types are refused;
-// CalculiX's PLANE, STRAIGHT and BEAM mean other things than Abaqus's BEAM.
+// *MPC: one constraint a data line, `type, dependent node|set, independent node|set` [K16 *MPC].
+//  - TIE: all the active DOFs equal. The translations are *EQUATIONs u_dep − u_ind = 0 whose
+//    first, eliminated term is the dependent node's; the rotations where both nodes have them.
+//  - PIN: the translations only.
+//  - BEAM: a rigid beam (add_rigid_beam).
+// The other types are refused; CalculiX's PLANE, STRAIGHT and BEAM mean other things.
 void mpc(KeywordContext& ctx) {
   if (ctx.has("USER")) {
     ctx.error_param("USER", "user subroutine MPCs (USER) are not supported");
@@ -132,18 +174,24 @@ void mpc(KeywordContext& ctx) {
     split_fields(line, f);
     if (!ctx.check_count(f, line, 3, 3, "MPC type, dependent node or node set, independent node or node set")) continue;
     const std::string type = normalize_name(f[0].text);
-    if (type != "TIE" && type != "PIN") {
-      ctx.error(f[0].loc, fmt::format("MPC type '{}' is not supported yet (TIE and PIN are; CalculiX's PLANE, STRAIGHT "
-                                      "and BEAM mean other things than Abaqus's BEAM)",
+    if (type != "TIE" && type != "PIN" && type != "BEAM") {
+      ctx.error(f[0].loc, fmt::format("MPC type '{}' is not supported yet (TIE, PIN and BEAM are; CalculiX's PLANE, "
+                                      "STRAIGHT and MEANROT mean other things)",
                                       f[0].text));
       continue;
     }
     auto dependent = ctx.nodes(f[1]);
     auto independent = ctx.nodes(f[2]);
     if (!dependent || !independent) continue;
-    sort_by_label(ctx.mesh().nodes, *dependent);
-    sort_by_label(ctx.mesh().nodes, *independent);
-    for (int dof = 1; dof <= dim; ++dof) add_equations(ctx, {{*dependent, dof, 1.0}, {*independent, dof, -1.0}}, line.loc);
+    const auto pairs = mpc_pairs(ctx, std::move(*dependent), std::move(*independent), f[2]);
+    for (const auto& [a, b] : pairs) {
+      if (type == "BEAM") {
+        add_rigid_beam(ctx, a, b, line, f[2]);
+        continue;
+      }
+      for (int dof = 1; dof <= dim; ++dof) add_equations(ctx, {{{a}, dof, 1.0}, {{b}, dof, -1.0}}, line.loc);
+      if (type == "TIE") ctx.model().mpc_ties.push_back({a, b, line.loc});
+    }
   }
 }
 

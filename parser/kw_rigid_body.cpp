@@ -42,9 +42,10 @@ std::int32_t analytical_surface_index(KeywordContext& ctx) {
 }
 
 // *RIGID BODY, REF NODE=, ELSET= | TIE NSET= | PIN NSET= [, ROT NODE=, NSET= (CalculiX)].
-// The nodes of TIE NSET and PIN NSET both follow the body in translation; inpact's nodes have no
-// rotations of their own, so tying and pinning are the same. CalculiX's NSET is a TIE NSET, and
-// its ROT NODE holds the rotations (in its translations) instead of the reference node's 4–6.
+// The nodes of TIE NSET and PIN NSET both follow the body in translation; tied nodes with
+// rotations (beam and shell nodes) turn with it too, pinned ones keep their own. CalculiX's NSET
+// is a TIE NSET, and its ROT NODE holds the rotations (in its translations) instead of the
+// reference node's 4–6.
 void rigid_body(KeywordContext& ctx) {
   for (std::string_view p : {"ISOTHERMAL", "POSITION", "DENSITY"})
     if (ctx.has(p)) {
@@ -61,9 +62,11 @@ void rigid_body(KeywordContext& ctx) {
     ctx.error_param("ROT NODE", "the rotation node must not be the reference node");
     return;
   }
-  if (!add_set_nodes(ctx, "TIE NSET", b.nodes) || !add_set_nodes(ctx, "PIN NSET", b.nodes) ||
+  if (!add_set_nodes(ctx, "TIE NSET", b.nodes) || !add_set_nodes(ctx, "PIN NSET", b.pinned) ||
       !add_set_nodes(ctx, "NSET", b.nodes))
     return;
+  b.nodes.insert(b.nodes.end(), b.pinned.begin(), b.pinned.end());
+  std::sort(b.pinned.begin(), b.pinned.end());
   if (const KeywordParam* p = ctx.param("ELSET")) {
     auto rows = ctx.elements(Field{*p->value, p->value_loc});
     if (!rows) return;

@@ -7,6 +7,7 @@
 
 #include "finalize.hpp"
 #include "model/element_types.hpp"
+#include "model/mesh_queries.hpp"
 #include "model/reference_nodes.hpp"
 
 namespace inpact::parser {
@@ -104,6 +105,18 @@ void add_rotation_nodes(model::Model& m) {
         "beam and shell elements: {} nodes added to hold the rotations of their nodes (labels from {}; their U are "
         "those nodes' UR, their RF the moments RM, as CalculiX's rotational nodes)",
         added, mesh.nodes.labels[n_nodes]));
+}
+
+void tie_mpc_rotations(model::Model& m) {
+  if (m.mpc_ties.empty()) return;
+  std::vector<std::uint8_t> rotating(m.mesh.nodes.size(), 0);
+  for (const model::RotatingNode& r : model::rotating_nodes(m, 3)) rotating[static_cast<std::size_t>(r.ref_node)] = 1;
+  const int dim = model::spatial_dimension(m.mesh.elements);
+  for (const model::MpcTie& t : m.mpc_ties) {
+    if (!rotating[static_cast<std::size_t>(t.dependent)] || !rotating[static_cast<std::size_t>(t.independent)]) continue;
+    for (int dof = dim == 3 ? 4 : 6; dof <= 6; ++dof)
+      m.equations.push_back({{{t.dependent, dof, 1.0}, {t.independent, dof, -1.0}}, t.loc});
+  }
 }
 
 }  // namespace inpact::parser

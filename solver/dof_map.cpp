@@ -152,6 +152,66 @@ void add_rigid_dependents(const AnalysisModel& am, std::span<const DofMap::Rigid
   }
 }
 
+/// One rotation DOF of a beam or shell node that turns with a rigid body (not pinned) or a
+/// kinematic coupling that lists it: θ_node,k = θ_body,k. Equal rotations have equal rotation
+/// vectors, so the rule is exact with finite rotations too.
+struct RotationFollower {
+  std::int64_t dof, body_dof;
+  std::int32_t node, ref;
+};
+
+std::vector<RotationFollower> rotation_followers(const AnalysisModel& am) {
+  const model::Model& m = *am.model;
+  std::vector<RotationFollower> out;
+  auto add = [&](std::int32_t node, std::int32_t ref, std::int32_t body_rot, std::array<bool, 3> listed) {
+    const std::int32_t rot = am.rotation_node_of[static_cast<std::size_t>(node)];
+    if (rot < 0) return;
+    for (int k = 0; k < (am.dim == 3 ? 3 : 1); ++k)
+      if (listed[static_cast<std::size_t>(am.dim == 3 ? k : 2)])
+        out.push_back({static_cast<std::int64_t>(rot) * am.dim + k, static_cast<std::int64_t>(body_rot) * am.dim + k,
+                       node, ref});
+  };
+  for (const model::RigidBody& b : m.rigid_bodies)
+    for (std::int32_t n : b.nodes)
+      if (b.ties_rotation(n)) add(n, b.ref_node, b.rot_node, {true, true, true});
+  for (const model::Coupling& c : m.couplings) {
+    if (c.kind != model::Coupling::Kind::Kinematic) continue;
+    const std::array<bool, 3> listed{c.dofs[3], c.dofs[4], c.dofs[5]};
+    const bool all_listed = am.dim == 3 ? listed[0] && listed[1] && listed[2] : listed[2];
+    for (std::int32_t n : c.nodes) {
+      if (!c.orientation.empty() && !all_listed && am.rotation_node_of[static_cast<std::size_t>(n)] >= 0)
+        throw AnalysisError(fmt::format("{}: error: *COUPLING: coupling '{}' with ORIENTATION lists some rotations of "
+                                        "node {}, a beam or shell node: local rotation subsets are not supported yet "
+                                        "(list all of DOFs 4–6 or none)",
+                                        m.sources.describe(c.loc), c.name, m.mesh.nodes.labels[static_cast<std::size_t>(n)]));
+      add(n, c.ref_node, c.rot_node, listed);
+    }
+  }
+  return out;
+}
+
+/// The body rotations that beam and shell nodes follow are unknowns of the system.
+void mark_followed_rotations_used(std::span<const RotationFollower> followers, std::vector<DofMap::Kind>& kind) {
+  for (const RotationFollower& f : followers)
+    if (kind[static_cast<std::size_t>(f.dof)] != DofMap::Kind::Unused) kind[static_cast<std::size_t>(f.body_dof)] = DofMap::Kind::Free;
+}
+
+void add_rotation_dependents(const AnalysisModel& am, std::span<const RotationFollower> followers,
+                             std::vector<DofMap::Kind>& kind, Dependents& dependent) {
+  const auto& labels = am.model->mesh.nodes.labels;
+  for (const RotationFollower& f : followers) {
+    if (kind[static_cast<std::size_t>(f.dof)] == DofMap::Kind::Unused) continue;
+    if (kind[static_cast<std::size_t>(f.dof)] == DofMap::Kind::Prescribed || dependent.count(f.dof))
+      throw AnalysisError(fmt::format("error: node {} turns with the rigid body, rigid beam or kinematic coupling of "
+                                      "reference node {} and also has a boundary condition or another constraint on "
+                                      "its rotations; constrain the reference node {}",
+                                      labels[static_cast<std::size_t>(f.node)], labels[static_cast<std::size_t>(f.ref)],
+                                      labels[static_cast<std::size_t>(f.ref)]));
+    dependent[f.dof] = {{f.body_dof, 1.0}};
+    kind[static_cast<std::size_t>(f.dof)] = DofMap::Kind::Dependent;
+  }
+}
+
 /// A distributing coupling's coupled reference DOFs get a rule (distributing_coupling.hpp): they
 /// take part though no element connects them. Its rotations are linear in u, so a step with
 /// NLGEOM refuses them.
@@ -244,7 +304,7 @@ DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector
       const std::int64_t d = am.dof_index(t.node, t.dof);
       if (d < 0)
         throw AnalysisError(fmt::format("{}: error: *EQUATION: node {} has no degree of freedom {} in this model (nodes "
-                                        "have {}; rotations only at rigid bodies' reference nodes)",
+                                        "have {}; rotations only at reference, beam and shell nodes)",
                                         where, m.mesh.nodes.labels[t.node], t.dof, am.dim));
       return d;
     };
@@ -266,6 +326,7 @@ DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector
   add_tie_dependents(am, kind_, dependent);
   add_pretension_dependents(am, kind_, dependent);
   add_rigid_dependents(am, rigid_, u, finite_rotations_, kind_, dependent);
+  add_rotation_dependents(am, rotation_followers(am), kind_, dependent);
   if (has_finite_rotations()) check_no_chain_through_rigid_nodes(am, rigid_, dependent);
   add_oriented_kinematic_dependents(am, kind_, dependent);
   add_distributing_dependents(am, kind_, dependent);
@@ -318,6 +379,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
       if (c == 0 || am.dim == 3) map.kind_[static_cast<std::int64_t>(b.rot_node) * am.dim + c] = Kind::Free;
     }
   mark_reference_dofs_used(am.dim, map.rigid_, map.kind_);
+  mark_followed_rotations_used(rotation_followers(am), map.kind_);
   mark_distributing_reference_dofs(am, finite_rotations, map.kind_);
   mark_oriented_reference_dofs(am, finite_rotations, map.kind_);
   for (std::int64_t d = 0; d < n; ++d)

@@ -9,7 +9,8 @@
 ///    *COUPLING, u_d = Σ w_i u_i over independent DOFs, or by a *RIGID BODY or kinematic
 ///    *COUPLING, u = u_R + (R(θ) − I) r (model/rigid_motion.hpp): linear for small rotations; with
 ///    finite rotations (NLGEOM) the weights are ∂u/∂(u_R, θ) at the current θ, renewed by
-///    relinearize() each iteration;
+///    relinearize() each iteration; a beam or shell node of such a body (not pinned) or coupling
+///    (its rotations listed) turns with it, θ = θ_R (exact, finite rotations too);
 ///  - unused: a node no element connects (no stiffness; held at zero, not reported).
 /// Assembly expands each element DOF into its independent DOFs ("masters") with weights, so
 /// K_reduced = Tᵀ K T without ever forming T.

@@ -50,6 +50,8 @@ TEST(RigidBodyKeyword, AnAbaqusBodyGetsARotationNodeBesideItsReferenceNode) {
   EXPECT_EQ(nodes.labels[b.rot_node], 52);  // the next free label
   EXPECT_EQ(nodes.coords[b.rot_node], nodes.coords[b.ref_node]);
   EXPECT_EQ(b.nodes.size(), 8u);  // TIE NSET and PIN NSET alike
+  EXPECT_EQ(b.pinned.size(), 4u);  // but only the pinned ones keep their own rotations
+  EXPECT_FALSE(b.ties_rotation(b.pinned[0]));
   ASSERT_EQ(r.model.preprocessing_notes.size(), 1u);
   EXPECT_NE(r.model.preprocessing_notes[0].find("node 52 added to hold the rotations of reference node 50"),
             std::string::npos);
@@ -77,8 +79,8 @@ TEST(RigidBodyKeyword, DeckErrorsNameTheNodeAndTheLine) {
       << r.report();
   // A node in two bodies.
   r = dir.read(cube("*RIGID BODY, REF NODE=50, TIE NSET=TOP\n*RIGID BODY, REF NODE=51, PIN NSET=ALL\n"));
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:1: error: *RIGID BODY: node 5 belongs to this rigid body and to the one "
-                                "at line 22; a node can follow one body only"))
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:1: error: *RIGID BODY: node 5 follows the rigid body at line 23 and the "
+                                "rigid body at line 22; a node can follow one only"))
       << r.report();
   // No nodes, a reference set of two nodes, an analytical surface.
   r = dir.read(cube("*RIGID BODY, REF NODE=50\n"));

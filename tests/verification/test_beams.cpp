@@ -151,5 +151,50 @@ TEST(Beams, GravityOnTheCantileverMatchesTheUniformLoadClosedForm) {
   }
 }
 
+/// beam_cantilever_b33_2.inp with its tip held by a reference node REF one unit above it
+/// (`hold`: the lines that tie the tip to REF), loaded at REF instead of the tip.
+std::unique_ptr<Run> run_held_tip(const std::string& tag, const std::vector<std::string>& hold) {
+  const auto path = edited_deck("beam_cantilever_b33_2.inp", tag, [&](const std::string& line) {
+    if (line == "3, 10, 0., 0.") return std::vector<std::string>{line, "4, 10, 0., 1."};
+    if (line == "*NSET, NSET=ROOT") return std::vector<std::string>{"*NSET, NSET=REF", "4", line};
+    if (line == "ROOT, ENCASTRE") {
+      std::vector<std::string> out{line};
+      out.insert(out.end(), hold.begin(), hold.end());
+      return out;
+    }
+    if (line == "TIP, 2, 1.0") return std::vector<std::string>{"REF, 2, 1.0"};
+    if (line == "TIP, 4, 5.0") return std::vector<std::string>{"REF, 4, 5.0"};
+    return std::vector<std::string>{line};
+  });
+  auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  return r;
+}
+
+// A beam node tied to a rigid body or kinematically coupled turns with the reference node: the
+// reference node's force F along y one above the tip bends the tip as F at the tip and twists it
+// by the torque −F; its moment twists the tip as TL/(GJ). A tip that kept its own rotation would
+// leave the reference node's rotation about z free: the system would be singular.
+// Measured: 1e-14 and better, both holds.
+TEST(Beams, ABeamNodeTiedToARigidBodyOrCouplingTurnsWithIt) {
+  const std::vector<std::vector<std::string>> holds{
+      {"*RIGID BODY, REF NODE=REF, TIE NSET=TIP"},
+      {"*SURFACE, TYPE=NODE, NAME=TIPS", "TIP", "*COUPLING, REF NODE=REF, SURFACE=TIPS, CONSTRAINT NAME=C", "*KINEMATIC"}};
+  const double GJ = kG * torsion_constant();
+  for (std::size_t k = 0; k < holds.size(); ++k) {
+    const auto r = run_held_tip("beam-held-tip-" + std::to_string(k), holds[k]);
+    ASSERT_TRUE(r->outcome.completed) << holds[k][0] << ": " << r->outcome.message;
+    const std::size_t tip = row_of(*r, 3), ref = row_of(*r, 4);
+    const solver::Frame& y = *r->capture.of_step(1).back();
+    const solver::Frame& t = *r->capture.of_step(3).back();
+    const double dy = tip_deflection(1.0, kI22, kL / 2, false, false);
+    EXPECT_NEAR(nodal(y, "U", tip, 1), dy, 1e-9 * dy) << holds[k][0];
+    EXPECT_NEAR(nodal(y, "UR", tip, 0), -kL / GJ, 1e-9 * kL / GJ) << holds[k][0];
+    EXPECT_NEAR(nodal(y, "UR", ref, 0), nodal(y, "UR", tip, 0), 1e-12 * kL / GJ) << holds[k][0];
+    EXPECT_NEAR(nodal(t, "UR", tip, 0), 5.0 * kL / GJ, 5e-9 * kL / GJ) << holds[k][0];
+    report(holds[k][0] + ": tip twist under the reference node's force / (-L/GJ)", nodal(y, "UR", tip, 0) / (-kL / GJ));
+  }
+}
+
 }  // namespace
 }  // namespace inpact::verification

@@ -13,11 +13,8 @@
 //    --ccx): its *NODE PRINT of the top face, held below.
 #include "verification_fixture.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <span>
 
@@ -35,18 +32,6 @@ V3 vec(const solver::Frame& f, const std::string& key, std::int32_t n, int dim =
 }
 
 std::int32_t ref_node(const model::Model& m) { return nset(m, "REF").front(); }
-
-/// A verification deck with its lines edited (each line replaced by the lines `edit` returns),
-/// written to the temporary folder under `tag`; the caller removes it.
-std::filesystem::path edited_deck(const std::string& name, const std::string& tag,
-                                  const std::function<std::vector<std::string>(const std::string&)>& edit) {
-  std::ifstream in(deck_path(name));
-  const auto path = std::filesystem::temp_directory_path() / ("inpact-coupling-" + tag + "-" + std::to_string(::getpid()) + ".inp");
-  std::ofstream out(path);
-  for (std::string line; std::getline(in, line);)
-    for (const std::string& l : edit(line)) out << l << "\n";
-  return path;
-}
 
 /// The area weight of a node of the columns' 1 × 1 top face, meshed 2 × 2: ¼ at an edge of the
 /// square and ½ inside it, in each direction.
@@ -130,7 +115,7 @@ TEST(Coupling, KinematicTangentialDofOfACylindricalOrientationTwistsTheFace) {
 // couples DOF 3 only) would act on nothing: the run stops naming the load's line.
 TEST(Coupling, ALoadOnAnUncoupledReferenceDofIsADeckError) {
   int line_no = 0, cload_line = 0;
-  const auto path = edited_deck("coupling_kinematic_push_c3d8.inp", "cload", [&](const std::string& line) {
+  const auto path = edited_deck("coupling_kinematic_push_c3d8.inp", "coupling-cload", [&](const std::string& line) {
     ++line_no;
     if (line != "REF, 3, 3, -0.001") return std::vector<std::string>{line};
     cload_line = line_no + 2;
@@ -172,7 +157,7 @@ TEST(Coupling, DistributingSpreadsTheLoadByAreaWeightsAboutTheCentroid) {
 // reference node, so the face's four corners carry nothing; the resultant is still F and the
 // moment M (about the reference node), whatever the weights. Measured: corners 0, sums 6.6e-15.
 TEST(Coupling, LinearWeightingLeavesTheFarthestNodesUnloadedAndTheResultantExact) {
-  const auto path = edited_deck("coupling_distributing_held_c3d8.inp", "linear", [](const std::string& line) {
+  const auto path = edited_deck("coupling_distributing_held_c3d8.inp", "coupling-linear", [](const std::string& line) {
     return std::vector<std::string>{line == "*DISTRIBUTING" ? "*DISTRIBUTING, WEIGHTING METHOD=LINEAR" : line};
   });
   const auto r = run_deck(path.string());
@@ -265,7 +250,7 @@ TEST(Coupling, DistributingPrescribedReferenceNodeSetsTheFaceMeanMotion) {
 // each time. The pull deck with translations only, NLGEOM, and a held one-node rigid body far
 // away (which makes the map re-linearise): the face's mean u3 is still the prescribed 0.001.
 TEST(Coupling, PrescribedReferenceNodeKeepsItsPivotsWhenTheMapIsLaidOutAgain) {
-  const auto path = edited_deck("coupling_distributing_pull_c3d8.inp", "nlgeom", [](const std::string& line) {
+  const auto path = edited_deck("coupling_distributing_pull_c3d8.inp", "coupling-nlgeom", [](const std::string& line) {
     std::vector<std::string> out;
     if (line == "REF, 4, 4, 0.0005") return out;
     out.push_back(line == "*STEP" ? "*STEP, NLGEOM" : line);

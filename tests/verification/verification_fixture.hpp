@@ -3,6 +3,7 @@
 // nodal and integration-point values by position. Each test states its analytic reference and
 // tolerance next to the assertion (shared/STYLE.md §11).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "contact/initial_adjustment.hpp"
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
@@ -29,6 +31,18 @@ namespace inpact::verification {
 
 inline std::string deck_path(const std::string& name) {
   return std::string(INPACT_SOURCE_DIR) + "/decks/verification/" + name;
+}
+
+/// A verification deck with its lines edited (each line replaced by the lines `edit` returns),
+/// written to the temporary folder under `tag`; the caller removes it.
+inline std::filesystem::path edited_deck(const std::string& name, const std::string& tag,
+                                         const std::function<std::vector<std::string>(const std::string&)>& edit) {
+  std::ifstream in(deck_path(name));
+  const auto path = std::filesystem::temp_directory_path() / ("inpact-" + tag + "-" + std::to_string(::getpid()) + ".inp");
+  std::ofstream out(path);
+  for (std::string line; std::getline(in, line);)
+    for (const std::string& l : edit(line)) out << l << "\n";
+  return path;
 }
 
 /// Where decks generated at test time go: the test's working directory (ctest runs it in the
