@@ -239,6 +239,7 @@ Projection closest_projection(std::span<const Facet> facets, std::span<const std
   const double len = norm(nbar);
   const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
   const Vec3 r = sub(xs, best.x_master);
+  best.shared_normal = len > 0 ? scale(1.0 / len, nbar) : best.facet_normal;
   if (best.distance <= tol) {
     // On the surface to round-off at an edge or vertex: the averaged normal, and the signed
     // distance along it (not 0: under a stiff penalty p/k can be below this tolerance, and a

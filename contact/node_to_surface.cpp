@@ -26,7 +26,7 @@ void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinemat
     const std::int32_t own[1] = {nodes[i]};
     if (self_contact_) drop_neighbours(master_.facets(), own, candidates_);
     k.projection = closest_projection(master_.facets(), candidates_, x, x[nodes[i]]);
-    k.found = k.projection.facet >= 0;
+    k.found = k.projection.facet >= 0 && (!at_free_edge(k.projection) || extend_master(x, x[nodes[i]], k.projection));
     if (k.found && self_contact_) {
       // The node's outward normal: the sum of its facets' normals there.
       Vec3 n{};
@@ -43,6 +43,24 @@ void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinemat
     }
     if (k.found && !master_correction_.empty()) correct(x, i, k.projection);
   }
+}
+
+bool NodeToSurfacePair::at_free_edge(const Projection& p) {
+  constexpr double kSameNormal = 1.0 - 1e-9;
+  return p.region != ProjectionRegion::Interior && dot(p.shared_normal, p.facet_normal) >= kSameNormal;
+}
+
+bool NodeToSurfacePair::extend_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const {
+  const Facet& f = master_.facets()[static_cast<std::size_t>(p.facet)];
+  const Vec3 r = sub(xs, p.x_master);
+  const double gap = dot(r, p.facet_normal);
+  const double beside = norm(axpy(-gap, p.facet_normal, r));
+  if (beside > extension_zone_ * std::sqrt(facet_box(f, x).size2)) return false;
+  p.normal = p.facet_normal;
+  p.gap = gap;
+  p.extended = true;
+  tangent_basis(p.normal, dim_, p.t1, p.t2);
+  return true;
 }
 
 void NodeToSurfacePair::set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave) {
@@ -68,7 +86,10 @@ void NodeToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, b
   // At a facet edge or vertex the gap is a distance to a point, whose curvature 1/d blows up
   // as the slave node reaches the surface (a closed node sits there): within 1e-3 of a facet
   // size of it, the corner is taken as flat (no curvature term), as away from corners.
-  const bool corner_contact = k.projection.region != ProjectionRegion::Interior && k.projection.distance < 1e-3 * radius_;
+  // On the extended plane beyond a free edge the gap is not a distance to the edge: no
+  // curvature either.
+  const bool corner_contact = k.projection.region != ProjectionRegion::Interior &&
+                              (k.projection.distance < 1e-3 * radius_ || k.projection.extended);
   if (!finite_sliding || corner_contact || !master_correction_.empty())
     std::fill(k.lin.hessian.begin(), k.lin.hessian.end(), 0.0);
 }

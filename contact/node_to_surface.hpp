@@ -25,7 +25,12 @@ class NodeToSurfacePair final : public PairKinematics {
   /// based). `dim`: 2 or 3, the model's DOFs per node.
   NodeToSurfacePair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim, double out_of_plane_thickness);
 
-  /// Largest distance at which a master facet is guaranteed to be found (a facet size).
+  /// *CONTACT PAIR, EXTENSION ZONE (default 0.1): a slave node beside a free edge or end of the
+  /// master, within this fraction of the facet's size of it, meets the facet's plane extended,
+  /// in front or behind (Abaqus extends the master so that a node at its edge does not drop out
+  /// of contact as it bulges past it, nor get pushed sideways by the edge). Farther beside it,
+  /// the node does not face the master: not found.
+  void set_extension_zone(double zone) { extension_zone_ = zone; }
 
   /// Searches and projects every slave node on coordinates `x` (all node rows); `out` has one
   /// entry per slave node, in slave().nodes() order. Rebuilds the search tree when the master
@@ -47,7 +52,15 @@ class NodeToSurfacePair final : public PairKinematics {
   /// Replaces p's point, normal and gap by those of the corrected surfaces (slave node `slave`).
   void correct(std::span<const Vec3> x, std::size_t slave, Projection& p) const;
 
+  /// The closest point is on an edge or vertex that no other facet shares (no other normal
+  /// there): a free edge or end of the master, where a convex corner's rounding does not apply.
+  static bool at_free_edge(const Projection& p);
+  /// The extension zone's rule beside a free edge: true, with p's normal and gap those of the
+  /// facet's plane extended, when the node lies within the zone beside the edge.
+  bool extend_master(std::span<const Vec3> x, const Vec3& xs, Projection& p) const;
+
   SurfaceCorrections master_correction_, slave_correction_;
+  double extension_zone_ = 0.1;
 };
 
 }  // namespace inpact::contact

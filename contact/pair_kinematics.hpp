@@ -99,12 +99,19 @@ inline void drop_neighbours(std::span<const Facet> facets, std::span<const std::
   });
 }
 
+/// Does the point project onto the master within 45° of the facet's normal? Beyond a free edge
+/// or end of the master the distance turns tangential: a point beside it does not face the
+/// master, and the sign of its gap would be round-off (the same rule in both discretisations).
+inline bool projects_orthogonally(const Projection& p) {
+  constexpr double kCos45 = 0.7071;
+  return p.region == ProjectionRegion::Interior || p.gap == 0.0 || std::abs(dot(p.normal, p.facet_normal)) >= kCos45;
+}
+
 /// Self-contact: does a slave point with outward normal `n_slave` see projection `p` across the
 /// gap (facing it, orthogonally), rather than along its own surface?
 inline bool faces_across(const Vec3& n_slave, const Projection& p) {
   constexpr double kCos45 = 0.7071;
-  return dot(n_slave, p.normal) <= -kCos45 &&
-         (p.region == ProjectionRegion::Interior || std::abs(dot(p.normal, p.facet_normal)) >= kCos45);
+  return dot(n_slave, p.normal) <= -kCos45 && projects_orthogonally(p);
 }
 
 }  // namespace inpact::contact

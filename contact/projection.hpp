@@ -56,8 +56,15 @@ struct Projection {
   double gap = 0.0;       ///< signed normal gap (x_s − x_m)·n
   Vec3 normal{};          ///< contact normal, outward from the master body
   Vec3 facet_normal{};    ///< the facet's own normal at ξ*
+  /// closest_projection: the unit sum of the normals at x_m of every candidate facet sharing
+  /// that point (the facet's own at an interior point; at a free edge too).
+  Vec3 shared_normal{};
   Vec3 t1{}, t2{};        ///< tangent basis (CSLIP1/2 directions)
   bool converged = true;  ///< false: Newton ran out of iterations (the boundary result is kept)
+  /// Node to surface, beyond a free edge of the master within its EXTENSION ZONE: x_master is
+  /// the edge's point, the normal the facet's, and the gap the distance to the facet's plane
+  /// extended (contact/node_to_surface.hpp).
+  bool extended = false;
 };
 
 /// Closest point of `xs` on facet `f` on coordinates `x` (all node rows); `facet_index` is

@@ -177,9 +177,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     pt.hint = {pr.region == ProjectionRegion::Interior && pr.converged ? pr.facet : -1, pr.xi};
     // (judged on the faceted projection: beyond the master's free edge the idealised one
     // would look orthogonal too)
-    pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine &&
-                  (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
-                   std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+    pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine && projects_orthogonally(pr);
     if (!pt.overlaps) continue;
     const bool warm = pt.corrected_hint.facet == pt.projection.facet;
     pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
@@ -219,8 +217,7 @@ void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics
   // the edge, seen sideways (the distance turns tangential), and a slip measured there runs the
   // wrong way (a node whose faces overlap the master by a sliver got μ p against the slide).
   const Projection& pr = k.projection;
-  k.friction_found = pr.facet >= 0 && (pr.region == ProjectionRegion::Interior || pr.gap == 0.0 ||
-                                       std::abs(dot(pr.normal, pr.facet_normal)) >= kOverlapCosine);
+  k.friction_found = pr.facet >= 0 && projects_orthogonally(pr);
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
 }
 

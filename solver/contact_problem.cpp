@@ -243,7 +243,9 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
     }
     geometry = std::move(s2s);
   } else {
-    geometry = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
+    auto nts = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
+    if (!entry.general) nts->set_extension_zone(entry.pair.extension_zone);
+    geometry = std::move(nts);
   }
   geometry->set_area_weight(r.weight);
   geometry->set_self_contact(r.self_contact);
