@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "model/element_types.hpp"
+#include "model/mesh_queries.hpp"
 
 namespace inpact::contact {
 
@@ -191,15 +192,27 @@ double constrained_modulus(const model::Elastic& el, model::ElementFamily family
   return e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
 }
 
-/// The elastic constants of every element (null where no section or no *ELASTIC).
-std::vector<const model::Elastic*> element_elasticity(const model::Model& m) {
-  std::vector<const model::Elastic*> out(m.mesh.elements.size(), nullptr);
-  for (const model::SolidSection& sec : m.mesh.sections) {
-    auto set = m.mesh.elsets.find(sec.elset);
-    auto mat = m.materials.find(sec.material);
-    if (set == m.mesh.elsets.end() || mat == m.materials.end() || !mat->second.elastic) continue;
-    for (std::int32_t e : set->second.rows) out[e] = &*mat->second.elastic;
-  }
+/// The elastic constants of every element (null where no section or no *ELASTIC), and each
+/// shell's thickness (0 for other elements).
+struct ElementElasticity {
+  std::vector<const model::Elastic*> elastic;
+  std::vector<double> shell_thickness;
+};
+
+ElementElasticity element_elasticity(const model::Model& m) {
+  ElementElasticity out{std::vector<const model::Elastic*>(m.mesh.elements.size(), nullptr),
+                        std::vector<double>(m.mesh.elements.size(), 0.0)};
+  auto assign = [&](const std::string& elset, const std::string& material) -> const std::vector<std::int32_t>* {
+    auto set = m.mesh.elsets.find(elset);
+    auto mat = m.materials.find(material);
+    if (set == m.mesh.elsets.end() || mat == m.materials.end() || !mat->second.elastic) return nullptr;
+    for (std::int32_t e : set->second.rows) out.elastic[e] = &*mat->second.elastic;
+    return &set->second.rows;
+  };
+  for (const model::SolidSection& sec : m.mesh.sections) assign(sec.elset, sec.material);
+  for (const model::ShellSection& sec : m.mesh.shell_sections)
+    if (const auto* rows = assign(sec.elset, sec.material))
+      for (std::int32_t e : *rows) out.shell_thickness[e] = model::shell_thickness(m.mesh, sec, static_cast<std::size_t>(e));
   return out;
 }
 
@@ -214,7 +227,7 @@ double median(std::vector<double>& v) {
 
 std::optional<SurfaceScales> surface_scales(const model::Model& m, const model::Surface& surface) {
   if (surface.kind != model::Surface::Kind::Element) return std::nullopt;
-  const auto elastic = element_elasticity(m);
+  const auto [elastic, shell_thickness] = element_elasticity(m);
   std::vector<double> stiffness, size, modulus;
   stiffness.reserve(surface.faces.size());
   size.reserve(surface.faces.size());
@@ -225,7 +238,10 @@ std::optional<SurfaceScales> surface_scales(const model::Model& m, const model::
     const model::ElementTypeInfo& info = model::element_type(m.mesh.elements.type[e]);
     const auto c = corners(m, e, info.faces[face.face]);
     double facet = 0.0, thickness = 0.0;
-    if (info.dim == 3) {
+    if (model::is_shell(info)) {  // the face is the element: its depth is the shell's thickness
+      facet = std::sqrt(facet_area(c));
+      thickness = shell_thickness[e];
+    } else if (info.dim == 3) {
       const double area = facet_area(c);
       facet = std::sqrt(area);
       thickness = area > 0 ? element_volume(m, e) / area : 0.0;

@@ -73,4 +73,12 @@ std::vector<Face> exterior_faces(const Elements& elements, std::span<const std::
   return out;
 }
 
+double shell_thickness(const Mesh& mesh, const ShellSection& section, std::size_t element) {
+  if (!section.nodal_thickness) return section.thickness;
+  const auto nodes = mesh.elements.nodes_of(element);
+  double sum = 0.0;
+  for (std::int32_t n : nodes) sum += mesh.nodal_thickness.at(n);
+  return sum / static_cast<double>(nodes.size());
+}
+
 }  // namespace inpact::model

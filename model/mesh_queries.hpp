@@ -19,4 +19,8 @@ std::vector<std::int32_t> face_nodes(const Elements& elements, Face face);
 /// without face identifiers, and for ALL EXTERIOR general contact.
 std::vector<Face> exterior_faces(const Elements& elements, std::span<const std::int32_t> subset);
 
+/// A shell element's thickness: its section's, or with NODAL THICKNESS the mean of its nodes'
+/// *NODAL THICKNESS (the analysis and the default contact stiffness both take this one).
+double shell_thickness(const Mesh& mesh, const ShellSection& section, std::size_t element);
+
 }  // namespace inpact::model

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "shell_contact_offsets.hpp"
 #include "model/element_types.hpp"
 #include "step_conditions.hpp"
 #include "contact/analytical_pair.hpp"
@@ -292,6 +293,9 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     p->hcrit = r.hcrit;
     if (r.offsets == contact::GapOffsets::Clearance) p->gap_offset = clearance_offsets(m, entry.pair, *p->geometry);
     if (r.offsets == contact::GapOffsets::InitialGap) p->gap_offset = tied_offsets(m, *p->geometry);
+    // (a clearance or a tied start sets the gap itself: the shells' faces do not shift it again)
+    if (r.offsets == contact::GapOffsets::None && !entry.general)
+      p->gap_offset = shell_thickness_offsets(am, entry.pair, *p->geometry);
     pairs_.push_back(std::move(p));
   }
 }
@@ -347,10 +351,10 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
     if (e.master->kind == model::Surface::Kind::Node)
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
     for (const model::Surface* s : {e.slave, e.master})
-      if (on_shells(m, *s) && !(p.no_thickness && !e.general))
-        refuse(m, p.loc, kw, fmt::format("surface {} lies on shell elements: contact on the shell's outer surface, half "
-                                         "its thickness from the nodes (Abaqus's default), is not supported yet; give NO "
-                                         "THICKNESS on *CONTACT PAIR to make contact at the shells' reference surface",
+      if (on_shells(m, *s) && e.general)
+        refuse(m, p.loc, kw, fmt::format("surface {} lies on shell elements: general contact with shells is not "
+                                         "supported yet; use *CONTACT PAIR (contact on the shells' faces, or with NO "
+                                         "THICKNESS at their nodes)",
                                          s->name));
   }
 }

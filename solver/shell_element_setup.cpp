@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "model/mesh_queries.hpp"
 #include "elastic_law.hpp"
 #include "elements/shell_section.hpp"
 
@@ -33,15 +34,6 @@ elements::ShellProperties shell_section_properties(const model::Model& m, const 
                                     mat.expansion ? mat.expansion->alpha : 0.0);
 }
 
-/// The element's thickness: the section's, or with NODAL THICKNESS the mean of its nodes'.
-double element_thickness(const model::Model& m, const model::ShellSection& sec, std::size_t e) {
-  if (!sec.nodal_thickness) return sec.thickness;
-  const auto nodes = m.mesh.elements.nodes_of(e);
-  double sum = 0.0;
-  for (std::int32_t n : nodes) sum += m.mesh.nodal_thickness.at(n);
-  return sum / static_cast<double>(nodes.size());
-}
-
 }  // namespace
 
 void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
@@ -52,7 +44,7 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];
       s.section.shell = p;
-      s.section.thickness = element_thickness(m, sec, e);
+      s.section.thickness = model::shell_thickness(m.mesh, sec, e);
       s.density = m.materials.at(sec.material).density.value_or(0.0);
     }
   }

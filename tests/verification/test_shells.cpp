@@ -163,24 +163,70 @@ TEST(Shells, APlatePressedOnABlockPassesItsPressureThroughContact) {
   report("shell on block: worst |CPRESS - P| / P", worst);
 }
 
-// Without NO THICKNESS, Abaqus makes contact on the shell's outer surface, half its thickness
-// from the nodes, which inpact does not model yet: the pair is refused at its deck line.
-TEST(Shells, ContactOnShellsWithoutNoThicknessIsRefusedAtThePairsLine) {
-  std::ifstream in(deck_path("shell_on_block_s4.inp"));
-  const auto path = generated_dir() / "shell_on_block_thickness.inp";
-  std::ofstream out(path);
-  for (std::string line; std::getline(in, line);)
-    out << (line.starts_with("*CONTACT PAIR") ? "*CONTACT PAIR, INTERACTION=HARD" : line) << "\n";
-  out.close();
-  std::string message;
-  try {
-    message = run_deck(path.string())->outcome.message;
-  } catch (const std::exception& e) {
-    message = e.what();
+/// The block's bottom carries the 4 (1e-9); every slave node's CPRESS is the pressure within
+/// `pressure_tol` and its COPEN within `gap_tol` of zero.
+void expect_plate_on_block(const Run& r, const std::string& what, double pressure_tol, double gap_tol) {
+  const solver::Frame& f = r.capture.last();
+  double bottom = 0.0;
+  for (std::int32_t n : nset(r.model(), "BOTTOM")) bottom += nodal(f, "RF", static_cast<std::size_t>(n), 2);
+  EXPECT_NEAR(bottom, 4.0, 1e-9 * 4.0) << what;
+  const auto* cpress = field(f, "CPRESS");
+  const auto* copen = field(f, "COPEN");
+  ASSERT_TRUE(cpress && copen) << what;
+  ASSERT_EQ(cpress->values.size(), 25u);
+  double worst_p = 0.0, worst_gap = 0.0;
+  for (double p : cpress->values) worst_p = std::max(worst_p, std::abs(p - 1.0));
+  for (double g : copen->values) worst_gap = std::max(worst_gap, std::abs(g));
+  EXPECT_LT(worst_p, pressure_tol) << what;
+  EXPECT_LT(worst_gap, gap_tol) << what;
+  report(what + ": worst |CPRESS - P| / P", worst_p);
+  report(what + ": worst |COPEN|", worst_gap);
+}
+
+// Without NO THICKNESS the contact is on the shell's face, as Abaqus has it: the plate of the
+// deck above with its midsurface half a thickness above the block (shell_on_block_offset_s4.inp),
+// and with OFFSET=SPOS its nodes a whole thickness above (shell_on_block_spos_s4.inp). The
+// underside touches the block: the block carries the load, CPRESS is the pressure and COPEN is
+// zero (node to surface, direct) or p/k (surface to surface, penalty), so the plate sits t/2
+// (t) above the block's top. Measured, node to surface: CPRESS within 0.35 % / 0.90 %, COPEN
+// ≤ 3e-16; surface to surface: 0.79 % / 2.0 % (the mortar rows at the plate's edges), COPEN
+// 3.8e-8 (p/k).
+TEST(Shells, APlateTouchesTheBlockWithItsFaceNotItsNodes) {
+  for (const std::string deck : {"shell_on_block_offset_s4.inp", "shell_on_block_spos_s4.inp"}) {
+    const auto nts = run_deck(deck_path(deck));
+    ASSERT_TRUE(nts->outcome.completed) << deck << ": " << nts->outcome.message;
+    expect_plate_on_block(*nts, deck + ", node to surface", 1e-2, 1e-12);
+    const auto path = edited_deck(deck, "shell-s2s", [](const std::string& line) {
+      if (line.starts_with("*CONTACT PAIR")) return std::vector<std::string>{line + ", TYPE=SURFACE TO SURFACE"};
+      return std::vector<std::string>{line};
+    });
+    const auto s2s = run_deck(path.string());
+    std::filesystem::remove(path);
+    ASSERT_TRUE(s2s->outcome.completed) << deck << ": " << s2s->outcome.message;
+    expect_plate_on_block(*s2s, deck + ", surface to surface", 3e-2, 1e-6);
   }
-  EXPECT_NE(message.find("shell_on_block_thickness.inp:"), std::string::npos) << message;
-  EXPECT_NE(message.find("surface UNDERSIDE lies on shell elements"), std::string::npos) << message;
-  EXPECT_NE(message.find("NO THICKNESS"), std::string::npos) << message;
+}
+
+// Two shell plates stacked, the upper one's SNEG face on the lower one's SPOS face
+// (shells_stacked_s4.inp): both surfaces are offset. The lower plate is held along z, so the
+// contact passes the pressure unchanged: CPRESS = 1 and the lower plate's reactions carry 4, and
+// the upper plate does not move. Measured: CPRESS 1 to 7e-16, U3 of the upper plate 0.
+TEST(Shells, StackedShellsTouchOnTheirFaces) {
+  const auto r = run_deck(deck_path("shells_stacked_s4.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const solver::Frame& f = r->capture.last();
+  double lower = 0.0, worst_u = 0.0, worst_p = 0.0;
+  for (std::int32_t n : nset(r->model(), "LOWER_NODES")) lower += nodal(f, "RF", static_cast<std::size_t>(n), 2);
+  for (std::int32_t n : nset(r->model(), "UPPER_NODES"))
+    worst_u = std::max(worst_u, std::abs(nodal(f, "U", static_cast<std::size_t>(n), 2)));
+  const auto* cpress = field(f, "CPRESS");
+  ASSERT_NE(cpress, nullptr);
+  for (double p : cpress->values) worst_p = std::max(worst_p, std::abs(p - 1.0));
+  EXPECT_NEAR(lower, 4.0, 1e-9 * 4.0);
+  EXPECT_LT(worst_p, 1e-9);
+  EXPECT_LT(worst_u, 1e-12);
+  report("stacked shells: worst |CPRESS - P| / P", worst_p);
+  report("stacked shells: worst |U3| of the upper plate", worst_u);
 }
 
 }  // namespace
