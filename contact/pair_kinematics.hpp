@@ -27,6 +27,10 @@ struct SlaveKinematics {
   /// facet and ξ are those of the node's own projection (what friction anchors to).
   Projection projection;
   double area = 0.0;         ///< the slave node's share of the contact area
+  /// Surface to surface: how much of the node's facets overlaps the master — `area` (before the
+  /// pair's area weight) over the node's nodal area on the reference coordinates, at most 1; 1
+  /// for node to surface.
+  double overlap = 1.0;
   GapLinearization lin;      ///< of `projection.gap`; filled by linearize() only
   /// Surface to surface only: the node's own closest-point projection and its linearisation
   /// (friction acts there); `friction_found` false when the node itself does not project.

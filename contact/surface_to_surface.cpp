@@ -87,6 +87,7 @@ SurfaceToSurfacePair::SurfaceToSurfacePair(const model::Model& model, const mode
     throw std::invalid_argument("surface-to-surface contact needs an element-based slave surface; '" + slave_.name() +
                                 "' is node based (use TYPE=NODE TO SURFACE)");
   points_.resize(slave_.facets().size());
+  node_area_ = slave_.nodal_areas(reference_coordinates(model.mesh.nodes));
 }
 
 void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) {
@@ -125,6 +126,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
       return;
     }
     k.projection.gap = weighted_gap[i] / k.area;
+    if (node_area_[i] > 0.0) k.overlap = std::min(1.0, k.area / node_area_[i]);
     k.area *= area_weight_;
     k.projection.normal = scale(1.0 / len, weighted_normal[i]);
     tangent_basis(k.projection.normal, dim_, k.projection.t1, k.projection.t2);

@@ -130,6 +130,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
   void project_onto_facing(std::span<const Vec3> x, const FacetGeometry& g, std::span<const std::int32_t> candidates,
                            Projection& p) const;
   std::vector<std::vector<Point>> points_;  ///< per slave facet
+  std::vector<double> node_area_;           ///< per slave node: its nodal area on the reference coordinates
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
   SurfaceCorrections master_correction_, slave_correction_;

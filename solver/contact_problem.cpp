@@ -77,6 +77,20 @@ constexpr double kTouchingTolerance = 1e-9;
 /// about 1e-8 of the model's size, which is up to 1e-6 l_char for a model of 100 facets across.
 constexpr double kStartClosedTolerance = 1e-6;
 
+/// A multiplier's row is its node's weighted gap, ∫ W g over the part of the node's facets that
+/// overlaps the master. Where that part is a sliver of width δ at a master edge (a node of the
+/// next row of facets beyond a flat punch's edge, its W vanishing there), the row is ~(δ/h)² of
+/// an ordinary one and all but a combination of its neighbours' rows (the rest roughly (δ/h)³):
+/// on a flat-on-flat contact such a node touches within round-off and closes, and the
+/// saddle-point system is numerically singular. Rigid punch, C3D8, DIRECT: a sliver 5e-7 wide on
+/// facets 0.5 wide (overlap 3e-13 of the nodal area) gave multipliers of 1e19 on it and ±1e7 on
+/// its neighbours, and the punch's nodes chattered; an overlap of 1e-9 still gave 6e12 and
+/// chattered; limits from 1e-6 to 0.1 all ran the deck in one increment. Below this fraction of
+/// its nodal area a node gets no multiplier (the pressure there is carried by its neighbours'
+/// multipliers, whose rows cover the sliver too); penalty-type laws keep such a node (its
+/// stiffness is small, not singular).
+constexpr double kMinMultiplierOverlap = 1e-3;
+
 /// One contact pair in force: its geometry, enforcement and the last kinematics.
 struct ContactProblem::Pair {
   std::int32_t row = 0;
@@ -141,7 +155,12 @@ struct ContactProblem::Pair {
                r[2] * k.projection.facet_normal[2] <= tolerance;
   }
   double gap(std::size_t i) const { return kin[i].found ? kin[i].projection.gap : std::numeric_limits<double>::infinity(); }
-  contact::NodeGap node_gap(std::size_t i) const { return {kin[i].found, gap(i), starting && closed_at_start[i]}; }
+  /// A multiplier method leaves out a node whose facets overlap the master by a sliver
+  /// (kMinMultiplierOverlap): it faces nothing for it.
+  contact::NodeGap node_gap(std::size_t i) const {
+    const bool found = kin[i].found && (!uses_multipliers() || kin[i].overlap >= kMinMultiplierOverlap);
+    return {found, gap(i), starting && closed_at_start[i]};
+  }
   /// The contact pressure of slave i as the enforcement gives it (never tensile).
   double node_pressure(std::size_t i, const SlaveState& s) const { return enforcement->pressure(s, node_gap(i)); }
 
