@@ -314,7 +314,7 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     if (r.offsets == contact::GapOffsets::InitialGap) p->gap_offset = tied_offsets(m, *p->geometry);
     // (a clearance or a tied start sets the gap itself: the shells' faces do not shift it again)
     if (r.offsets == contact::GapOffsets::None && !entry.general)
-      p->gap_offset = shell_thickness_offsets(am, entry.pair, *p->geometry);
+      p->gap_offset = shell_thickness_offsets(m, entry.pair, *p->geometry);
     pairs_.push_back(std::move(p));
   }
 }
@@ -375,6 +375,7 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
                                          "supported yet; use *CONTACT PAIR (contact on the shells' faces, or with NO "
                                          "THICKNESS at their nodes)",
                                          s->name));
+    if (!e.general && e.master->kind == model::Surface::Kind::Element) check_shell_master(m, p, *e.master);
   }
 }
 

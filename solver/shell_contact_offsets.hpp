@@ -7,17 +7,20 @@
 /// the normal, as the shell's own rotation of the offset is left out: small rotations).
 #include <vector>
 
-#include "analysis_model.hpp"
 #include "contact/pair_kinematics.hpp"
-#include "model/contact.hpp"
+#include "model/model.hpp"
 
 namespace inpact::solver {
 
+/// Throws AnalysisError (the pair's line) when the pair's master lies on shell faces at different
+/// distances from their nodes: one distance per master is what inpact supports yet. Nothing to
+/// check with NO THICKNESS.
+void check_shell_master(const model::Model& model, const model::ContactPair& pair, const model::Surface& master);
+
 /// Per slave node (slave().nodes() order), what is added to the gap: −(the slave's face distance
 /// at the node, the mean over its shell facets, + the master's). Empty when neither surface is on
-/// shells or the pair has NO THICKNESS. Throws AnalysisError when the master's shell faces lie at
-/// different distances from their nodes (one per master is what inpact supports yet).
-std::vector<double> shell_thickness_offsets(const AnalysisModel& am, const model::ContactPair& pair,
+/// shells or the pair has NO THICKNESS. The master passed check_shell_master.
+std::vector<double> shell_thickness_offsets(const model::Model& model, const model::ContactPair& pair,
                                             const contact::PairKinematics& geometry);
 
 }  // namespace inpact::solver

@@ -229,5 +229,28 @@ TEST(Shells, StackedShellsTouchOnTheirFaces) {
   report("stacked shells: worst |U3| of the upper plate", worst_u);
 }
 
+// A shell master whose faces lie at different distances from their nodes (two thicknesses) is a
+// deck error at the pair's line, found before the analysis starts (`inpact check` too).
+TEST(Shells, AShellMasterOfTwoThicknessesIsRefusedAtThePairsLine) {
+  const auto path = edited_deck("shells_stacked_s4.inp", "shell-master-two-t", [](const std::string& line) {
+    if (line == "*SHELL SECTION, ELSET=LOWER, MATERIAL=STEEL")
+      return std::vector<std::string>{"*ELSET, ELSET=L1", "1, 2", "*ELSET, ELSET=L2, GENERATE", "3, 16, 1",
+                                      "*SHELL SECTION, ELSET=L1, MATERIAL=STEEL", "0.2",
+                                      "*SHELL SECTION, ELSET=L2, MATERIAL=STEEL"};
+    return std::vector<std::string>{line};
+  });
+  std::string message;
+  try {
+    message = run_deck(path.string())->outcome.message;
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_NE(message.find(".inp:114:1: error: *CONTACT PAIR: the master surface LOWER_TOP lies on shells whose faces "
+                         "are at different distances from their nodes (0.1 and 0.05"),
+            std::string::npos)
+      << message;
+}
+
 }  // namespace
 }  // namespace inpact::verification
