@@ -14,6 +14,7 @@ packages=(
   python3-h5py python3-meshio python3-paraview xvfb xauth  # results-file reader tests (tests/io)
   parallel                                   # GNU parallel running study shards (tests/decks)
   petsc-dev                                  # iterative solver (--solver petsc; optional at configure)
+  openmpi-bin                                # mpirun for distributed runs and their tests (tests/decks mpi.*)
 )
 
 missing=()

@@ -23,6 +23,7 @@
 #include "parser/read_deck.hpp"
 #include "solver/analysis.hpp"
 #include "solver/analysis_error.hpp"
+#include "solver/linear/mpi_launch.hpp"
 #include "solver/linear_solver_choice.hpp"
 
 namespace inpact::app {
@@ -170,15 +171,51 @@ std::optional<solver::SolverChoice> start_linear_solver(const RunOptions& option
   }
 }
 
+/// The folder a rank writes its results to. Rank 0 of an MPI run (and a run without one) writes
+/// to --output-dir. The other ranks compute the same results (the run is replicated but for the
+/// linear solve) and write them to a scratch folder that they remove at the end, so that the
+/// user gets one set of files and no two processes write the same one.
+class RankOutput {
+ public:
+  RankOutput(const RunOptions& options, solver::LaunchRanks ranks) : writer_(ranks.rank == 0) {
+    if (writer_) {
+      dir_ = options.output_dir;
+      return;
+    }
+    dir_ = std::filesystem::temp_directory_path() / fmt::format("inpact-rank{}-{}", ranks.rank, ::getpid());
+  }
+  ~RankOutput() {
+    std::error_code ignored;
+    if (!writer_) std::filesystem::remove_all(dir_, ignored);
+  }
+  RankOutput(const RankOutput&) = delete;
+  RankOutput& operator=(const RankOutput&) = delete;
+  const std::filesystem::path& dir() const { return dir_; }
+  /// Whether this rank's files and messages are the run's (the others stay quiet).
+  bool writer() const { return writer_; }
+
+ private:
+  bool writer_;
+  std::filesystem::path dir_;
+};
+
 }  // namespace
 
-int run_analysis(const RunOptions& options) {
+int run_analysis(const RunOptions& rank_options) {
+  const RankOutput output(rank_options, solver::launch_ranks());
+  RunOptions options = rank_options;
+  if (!output.writer()) {
+    options.quiet = true;
+    options.verbose = false;
+    options.timings.clear();
+    options.values.clear();
+  }
   PhaseClock clock;
   const auto loaded = load_analysable_deck(options.deck, options.parameters);
   if (!loaded) return kDeckError;
   const parser::ReadResult& result = *loaded;
   const std::string job = options.job.empty() ? std::filesystem::path(options.deck).stem().string() : options.job;
-  const std::filesystem::path dir = options.output_dir;
+  const std::filesystem::path& dir = output.dir();
   const std::optional<solver::SolverChoice> choice = start_linear_solver(options, result.model);
   if (!choice) return kUsage;
   try {
@@ -219,7 +256,8 @@ int run_analysis(const RunOptions& options) {
     clock.mark("finish");
     clock.write(options.timings);
     if (!outcome.completed) {
-      std::fprintf(stderr, "%s: the analysis stopped: %s\n", options.deck.c_str(), outcome.message.c_str());
+      if (output.writer())
+        std::fprintf(stderr, "%s: the analysis stopped: %s\n", options.deck.c_str(), outcome.message.c_str());
       return kAnalysisFailed;
     }
     if (!options.quiet) std::printf("%s: completed; results in %s\n", job.c_str(), results.h5_path().c_str());

@@ -9,7 +9,7 @@ namespace inpact::app {
 struct CheckOptions {
   std::string deck;
   std::map<std::string, std::string> parameters;
-  std::string solver = "direct";  ///< --solver direct|petsc|auto (what `run` would use)
+  std::string solver{};  ///< --solver direct|petsc|auto, "" when not given (what `run` would use)
 };
 
 struct RunOptions {
@@ -21,7 +21,7 @@ struct RunOptions {
   bool quiet = false;
   bool verbose = false;
   std::string timings;  ///< --timings FILE: the wall time of each phase, key=value lines
-  std::string solver = "direct";  ///< --solver direct|petsc|auto (solver/linear_solver_choice.hpp)
+  std::string solver{};  ///< --solver direct|petsc|auto, "" when not given (solver/linear_solver_choice.hpp)
   /// A study's forked case: the values to collect (OP:VAR[@NSET]) and where to write them.
   std::vector<std::string> collect;
   std::string values;

@@ -32,6 +32,36 @@ std::vector<std::string> missing_from(const std::vector<std::string>& x, const s
   return out;
 }
 
+/// The largest finite |value| of frame k of a field.
+double frame_max(const ResultsField& f, std::size_t k) {
+  double m = 0.0;
+  if (k >= f.n_frames) return m;
+  for (std::size_t v = k * f.n_loc * f.n_comp; v < (k + 1) * f.n_loc * f.n_comp; ++v)
+    if (std::isfinite(f.data[v])) m = std::max(m, std::abs(f.data[v]));
+  return m;
+}
+
+/// The field whose frame maximum bounds a frame-max scale from below, or null: a closed
+/// contact's COPEN (a stuck one's CSLIP) is round-off of the coordinates, 1e-16 whatever the
+/// load, and is measured in the units of the motion U; the moment RM of a symmetric load is
+/// round-off of the forces RF.
+const char* scale_partner(const std::string& key) {
+  if (key == "COPEN" || key == "CSLIP1" || key == "CSLIP2") return "U";
+  if (key == "RM") return "RF";
+  return nullptr;
+}
+
+/// The frame-max scale of frame k of field `key` in steps sa and sb (its own largest |value|,
+/// at least its partner's).
+double frame_scale(const ResultsStep& sa, const ResultsStep& sb, const std::string& key, std::size_t k) {
+  double scale = 0.0;
+  const char* partner = scale_partner(key);
+  for (const ResultsStep* step : {&sa, &sb})
+    for (const std::string& name : {key, std::string(partner ? partner : "")})
+      if (const ResultsField* f = name.empty() ? nullptr : step->field(name)) scale = std::max(scale, frame_max(*f, k));
+  return scale;
+}
+
 /// One value pair against one tolerance: (pass, |a−b|, allowed, ratio).
 struct PairVerdict {
   bool pass;
@@ -60,7 +90,8 @@ PairVerdict judge(double a, double b, const FieldTolerance& t, double scale) {
   return {d <= allowed, d, allowed, ratio};
 }
 
-void compare_field(const ResultsStep& sa, const ResultsField& fa, const ResultsField& fb, const Tolerances& tol,
+void compare_field(const ResultsStep& sa, const ResultsStep& sb, const ResultsField& fa, const ResultsField& fb,
+                   const Tolerances& tol,
                    FieldDifference& diff, std::vector<std::string>& structure) {
   const std::string where = fmt::format("step '{}', field {}", sa.name, fa.key);
   if (fa.position != fb.position) {
@@ -92,12 +123,7 @@ void compare_field(const ResultsStep& sa, const ResultsField& fa, const ResultsF
   const FieldTolerance& t = tol.of(fa.key);
   const std::size_t n_frames = std::min({fa.n_frames, fb.n_frames, sa.n_frames()});
   for (std::size_t k = 0; k < n_frames; ++k) {
-    double scale = 0.0;
-    if (t.scale_by_frame_max) {
-      for (const ResultsField* f : {&fa, &fb})
-        for (std::size_t v = k * f->n_loc * f->n_comp; v < (k + 1) * f->n_loc * f->n_comp; ++v)
-          if (std::isfinite(f->data[v])) scale = std::max(scale, std::abs(f->data[v]));
-    }
+    const double scale = t.scale_by_frame_max ? frame_scale(sa, sb, fa.key, k) : 0.0;
     for (const auto& [ia, ib] : matched)
       for (std::size_t c = 0; c < fa.n_comp; ++c) {
         const double a = fa.value(k, ia, c), b = fb.value(k, ib, c);
@@ -223,7 +249,7 @@ CompareResult compare_results(const ResultsFile& a, const ResultsFile& b, const 
         r.fields.emplace_back();
         r.fields.back().key = fa.key;
       }
-      compare_field(sa, fa, *fb, tolerances, r.fields[it->second], r.structure);
+      compare_field(sa, *sb, fa, *fb, tolerances, r.fields[it->second], r.structure);
     }
   }
   for (FieldDifference& f : r.fields) f.pass = f.n_failed <= tolerances.of(f.key).allowed_mismatches;

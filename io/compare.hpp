@@ -10,7 +10,9 @@
 /// NaN against a number never passes. With `scale = frame-max`, atol and floor are fractions
 /// of the frame's largest magnitude of the field (over both files, every location and
 /// component): for fields full of near-zeros, such as S away from a load or CPRESS at open
-/// nodes. An `exact` field (CSTATUS) passes only on a == b, and the field as a whole passes
+/// nodes. The lengths COPEN and CSLIP1/2 scale by at least the frame's largest |U|, the moment
+/// RM by at least its largest |RF|: a closed contact's COPEN and a symmetric load's RM are
+/// round-off of the coordinates and forces, whose own maximum is no scale. An `exact` field (CSTATUS) passes only on a == b, and the field as a whole passes
 /// with up to `allowed_mismatches` failing values.
 #include <cstdint>
 #include <filesystem>

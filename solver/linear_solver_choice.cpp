@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "linear/mpi_launch.hpp"
 #include "linear/petsc_module.hpp"
 
 namespace inpact::solver {
@@ -12,6 +13,7 @@ std::optional<SolverRequest> parse_solver_request(std::string_view text) {
   if (text == "direct") return SolverRequest::Direct;
   if (text == "petsc") return SolverRequest::Petsc;
   if (text == "auto") return SolverRequest::Auto;
+  if (text.empty()) return SolverRequest::Default;
   return std::nullopt;
 }
 
@@ -20,6 +22,7 @@ const char* request_name(SolverRequest request) {
     case SolverRequest::Direct: return "direct";
     case SolverRequest::Petsc: return "petsc";
     case SolverRequest::Auto: return "auto";
+    case SolverRequest::Default: return "default";
   }
   return "?";
 }
@@ -33,14 +36,23 @@ static std::int64_t model_dofs(const model::Model& model) {
   return static_cast<std::int64_t>(model.mesh.nodes.size()) * dim;
 }
 
-SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model) {
+SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks) {
   SolverChoice choice;
   choice.requested = request;
   choice.model_dofs = model_dofs(model);
+  choice.ranks = ranks;
+  const bool distributed = ranks > 1;
+  if (distributed && !petsc_built())
+    throw std::invalid_argument(fmt::format("a run on {} MPI ranks solves with PETSc, and this inpact was built without "
+                                            "it (pkg-config PETSc was not found when it was configured, or "
+                                            "INPACT_PETSC=OFF)", ranks));
+  if (distributed && request == SolverRequest::Direct)
+    throw std::invalid_argument(fmt::format("--solver direct: the direct solvers run on one process, and this run has "
+                                            "{} MPI ranks; use --solver petsc (or none), or run without mpirun", ranks));
   if (request == SolverRequest::Petsc && !petsc_built())
     throw std::invalid_argument("--solver petsc: this inpact was built without PETSc "
                                 "(PETSc, pkg-config PETSc, was not found when it was configured, or INPACT_PETSC=OFF)");
-  const bool petsc = request == SolverRequest::Petsc ||
+  const bool petsc = distributed || request == SolverRequest::Petsc ||
                      (request == SolverRequest::Auto && petsc_built() && choice.model_dofs >= kPetscFromDofs);
   choice.kind = petsc ? SolverKind::Petsc : SolverKind::Direct;
   return choice;
@@ -49,15 +61,17 @@ SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& mo
 SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model) {
   const auto parsed = parse_solver_request(request);
   if (!parsed) throw std::invalid_argument(fmt::format("--solver {}: expected direct, petsc or auto", request));
-  return resolve_linear_solver(*parsed, model);
+  return resolve_linear_solver(*parsed, model, launch_ranks().size);
 }
 
 std::string describe(const SolverChoice& c) {
   const std::string what = c.kind == SolverKind::Petsc
                                ? "petsc (CG or GMRES with GAMG; MUMPS for contact multipliers)"
                                : "direct (CHOLMOD; UMFPACK for contact multipliers and friction)";
-  std::string why = "requested";
-  if (c.requested == SolverRequest::Auto)
+  std::string why = c.requested == SolverRequest::Default ? "default" : "requested";
+  if (c.ranks > 1)
+    why = fmt::format("{} MPI ranks", c.ranks);
+  else if (c.requested == SolverRequest::Auto)
     why = !petsc_built() ? "auto: built without PETSc"
                          : fmt::format("auto: {} DOF {} {}", c.model_dofs, c.kind == SolverKind::Petsc ? ">=" : "<",
                                        kPetscFromDofs);

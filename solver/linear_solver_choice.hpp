@@ -5,7 +5,9 @@
 ///  - direct: CHOLMOD (symmetric positive definite), UMFPACK (multipliers, friction);
 ///  - petsc:  CG / GMRES with algebraic multigrid (GAMG), MUMPS for multipliers (linear/petsc_solver.cpp);
 ///  - auto:   direct below kPetscFromDofs DOFs of the model, petsc from there (when built with
-///            PETSc) — the crossover measured on a C3D8 cube (bench/petsc_solver).
+///            PETSc) — the crossover measured on a C3D8 cube (bench/petsc_solver);
+///  - none given: direct on one process, petsc on several MPI ranks (`mpirun -np N`), where the
+///    direct solvers cannot go (they are one process's).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -15,7 +17,7 @@
 
 namespace inpact::solver {
 
-enum class SolverRequest { Direct, Petsc, Auto };
+enum class SolverRequest { Direct, Petsc, Auto, Default };
 enum class SolverKind { Direct, Petsc };
 
 /// `auto` takes petsc from this many DOFs (nodes × DOFs per node) of the model.
@@ -25,16 +27,19 @@ struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
   SolverKind kind = SolverKind::Direct;
   std::int64_t model_dofs = 0;
+  int ranks = 1;  ///< MPI ranks of the run (mpi_launch.hpp); petsc whenever more than one
 };
 
-/// "direct", "petsc", "auto" → the request; anything else → nullopt.
+/// "direct", "petsc", "auto" → the request, "" (no --solver) → Default; anything else → nullopt.
 std::optional<SolverRequest> parse_solver_request(std::string_view text);
 const char* request_name(SolverRequest request);
 
-/// The solver `request` comes to for `model`. Throws std::invalid_argument when petsc is
-/// requested from a build without PETSc (auto then takes direct).
-SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model);
-/// The same for the text of `--solver`; throws std::invalid_argument for an unknown one too.
+/// The solver `request` comes to for `model` on `ranks` MPI ranks. Throws std::invalid_argument
+/// when petsc is requested from a build without PETSc (auto then takes direct on one rank), and
+/// when direct is requested on several ranks.
+SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks);
+/// The same for the text of `--solver` on the ranks this process was launched among; throws
+/// std::invalid_argument for an unknown request too.
 SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model);
 
 /// "petsc" or "direct": the name the results file records.

@@ -6,7 +6,7 @@
 #include "linear_solver.hpp"
 
 extern "C" {
-/// PetscInitialize (MPI_Init with it) on one rank; 0 on success.
+/// PetscInitialize (MPI_Init with it), on one rank or on those of mpirun; 0 on success.
 int inpact_petsc_start();
 /// PetscFinalize (MPI_Finalize with it).
 void inpact_petsc_finish();

@@ -1,4 +1,7 @@
-/// The PETSc solver path on one process (the module libinpact_petsc.so, loaded on use):
+/// The PETSc solver path (the module libinpact_petsc.so, loaded on use), on one process or on
+/// the ranks of `mpirun -np N` (PETSC_COMM_WORLD). Every rank holds the whole inpact system (the
+/// run is replicated up to here, mpi_launch.hpp) and gives PETSc its own block of rows; the
+/// solution comes back to every rank.
 ///  - a symmetric system (upper_only): CG preconditioned by smoothed-aggregation algebraic
 ///    multigrid (GAMG) whose near null space is the mesh's rigid-body modes
 ///    (MatNullSpaceCreateRigidBody from the node coordinates);
@@ -74,6 +77,21 @@ struct SlotLayout {
   }
 };
 
+/// The rows [begin, end) of the PETSc system this rank owns: an even share of the node blocks
+/// (whole blocks, so that GAMG keeps a node's DOFs together), or of the rows of a saddle-point
+/// system (MUMPS needs no blocks).
+struct RowOwnership {
+  PetscInt begin = 0, end = 0;
+
+  RowOwnership(PetscInt n, PetscInt block, PetscMPIInt rank, PetscMPIInt ranks) {
+    const PetscInt units = n / block, share = units / ranks, extra = units % ranks;
+    const auto first_unit = [&](PetscMPIInt r) { return r * share + std::min<PetscInt>(r, extra); };
+    begin = first_unit(rank) * block;
+    end = first_unit(rank + 1) * block;
+  }
+  PetscInt size() const { return end - begin; }
+};
+
 /// The CSR pattern of the PETSc matrix and where each entry of the inpact matrix goes.
 struct CsrMap {
   std::vector<PetscInt> row_ptr, col;
@@ -147,7 +165,7 @@ class PetscSolver final : public LinearSolver {
   void build(const SparseMatrix& a);
   void fill_values(const SparseMatrix& a);
   void configure_krylov(KSPType type);
-  void set_up_krylov(bool symmetric);
+  bool set_up_krylov(bool symmetric);
   FactorStatus set_up_lu();
   bool krylov_solve(KSPType type);
   void release();
@@ -156,10 +174,16 @@ class PetscSolver final : public LinearSolver {
   std::vector<std::int64_t> col_ptr_, row_idx_;  ///< pattern of the current matrix
   std::unique_ptr<SlotLayout> layout_;
   std::unique_ptr<CsrMap> csr_;
+  std::unique_ptr<RowOwnership> rows_;
+  std::vector<PetscScalar> values_;  ///< the PETSc matrix's values in csr_'s order (every row)
+  MPI_Comm comm_ = PETSC_COMM_WORLD;
+  PetscMPIInt ranks_ = 1;
   std::int64_t n_ = 0;
-  bool saddle_point_ = false, symmetric_ = true, lu_ready_ = false;
+  bool saddle_point_ = false, symmetric_ = true, lu_ready_ = false, krylov_ready_ = false;
   Mat a_ = nullptr;
   Vec b_ = nullptr, x_ = nullptr;
+  Vec x_everywhere_ = nullptr;          ///< the whole solution on every rank
+  VecScatter to_everywhere_ = nullptr;
   KSP krylov_ = nullptr, lu_ = nullptr;
   double rtol_ = 1e-8;
   long krylov_iterations_ = 0;
@@ -173,10 +197,12 @@ void PetscSolver::release() {
   if (a_) MatDestroy(&a_);
   if (b_) VecDestroy(&b_);
   if (x_) VecDestroy(&x_);
+  if (x_everywhere_) VecDestroy(&x_everywhere_);
+  if (to_everywhere_) VecScatterDestroy(&to_everywhere_);
 }
 
-/// A new pattern: the slot layout, the CSR map, the matrix (with its block size and near null
-/// space when it is solved iteratively), the vectors and both solvers.
+/// A new pattern: the slot layout, the CSR map, this rank's rows of the matrix (with its block
+/// size and near null space when it is solved iteratively), the vectors and both solvers.
 void PetscSolver::build(const SparseMatrix& a) {
   release();
   n_ = a.n;
@@ -185,17 +211,28 @@ void PetscSolver::build(const SparseMatrix& a) {
   layout_ = std::make_unique<SlotLayout>(points_, n_);
   const PetscInt n = layout_->size(n_, n_disp);
   csr_ = std::make_unique<CsrMap>(a, *layout_, n);
-  check(MatCreate(PETSC_COMM_SELF, &a_), "MatCreate");
-  check(MatSetSizes(a_, n, n, n, n), "MatSetSizes");
+  values_.assign(csr_->col.size(), 0.0);
+  PetscMPIInt rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  MPI_Comm_size(comm_, &ranks_);
+  rows_ = std::make_unique<RowOwnership>(n, saddle_point_ ? 1 : points_.dim, rank, ranks_);
+  const PetscInt m = rows_->size();
+  check(MatCreate(comm_, &a_), "MatCreate");
+  check(MatSetSizes(a_, m, m, n, n), "MatSetSizes");
   if (!saddle_point_) check(MatSetBlockSize(a_, points_.dim), "MatSetBlockSize");
-  check(MatSetType(a_, MATSEQAIJ), "MatSetType");
-  std::vector<PetscScalar> zeros(csr_->col.size(), 0.0);
-  check(MatSeqAIJSetPreallocationCSR(a_, csr_->row_ptr.data(), csr_->col.data(), zeros.data()), "preallocation");
+  check(MatSetType(a_, MATAIJ), "MatSetType");
+  // This rank's rows of the CSR pattern, their pointers counted from 0; the columns are global.
+  std::vector<PetscInt> local_ptr(static_cast<std::size_t>(m) + 1);
+  for (PetscInt r = 0; r <= m; ++r) local_ptr[r] = csr_->row_ptr[rows_->begin + r] - csr_->row_ptr[rows_->begin];
+  const PetscInt* local_col = csr_->col.data() + csr_->row_ptr[rows_->begin];
+  // One of the two applies: SEQAIJ on one rank, MPIAIJ on several.
+  check(MatSeqAIJSetPreallocationCSR(a_, local_ptr.data(), local_col, values_.data()), "preallocation");
+  check(MatMPIAIJSetPreallocationCSR(a_, local_ptr.data(), local_col, values_.data()), "preallocation");
   check(MatSetOption(a_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
   if (!saddle_point_) {
     Vec coords;
-    check(VecCreateSeqWithArray(PETSC_COMM_SELF, points_.dim, layout_->n_displacement_slots,
-                                      layout_->block_coords.data(), &coords), "coords");
+    check(VecCreateMPIWithArray(comm_, points_.dim, m, n, layout_->block_coords.data() + rows_->begin, &coords),
+          "coords");
     MatNullSpace rigid;
     check(MatNullSpaceCreateRigidBody(coords, &rigid), "MatNullSpaceCreateRigidBody");
     check(MatSetNearNullSpace(a_, rigid), "MatSetNearNullSpace");
@@ -203,7 +240,8 @@ void PetscSolver::build(const SparseMatrix& a) {
     VecDestroy(&coords);
   }
   check(MatCreateVecs(a_, &x_, &b_), "MatCreateVecs");
-  check(KSPCreate(PETSC_COMM_SELF, &lu_), "KSPCreate");
+  check(VecScatterCreateToAll(x_, &to_everywhere_, &x_everywhere_), "VecScatterCreateToAll");
+  check(KSPCreate(comm_, &lu_), "KSPCreate");
   check(KSPSetType(lu_, KSPPREONLY), "KSPSetType");
   PC pc;
   check(KSPGetPC(lu_, &pc), "KSPGetPC");
@@ -212,7 +250,7 @@ void PetscSolver::build(const SparseMatrix& a) {
   check(KSPSetOptionsPrefix(lu_, "lu_"), "prefix");
   check(KSPSetFromOptions(lu_), "KSPSetFromOptions");
   if (!saddle_point_) {
-    check(KSPCreate(PETSC_COMM_SELF, &krylov_), "KSPCreate");
+    check(KSPCreate(comm_, &krylov_), "KSPCreate");
     check(KSPGetPC(krylov_, &pc), "KSPGetPC");
     check(PCSetType(pc, PCGAMG), "PCSetType");
     // The prolongator of the first Newton iteration serves the later ones of the pattern.
@@ -221,25 +259,36 @@ void PetscSolver::build(const SparseMatrix& a) {
   ++analyses_;
 }
 
-/// The inpact values into the PETSc matrix; the identity rows take the mean diagonal.
+/// The inpact values into the PETSc matrix (this rank's rows); the identity rows take the mean
+/// diagonal.
 void PetscSolver::fill_values(const SparseMatrix& a) {
-  PetscScalar* v = nullptr;
-  check(MatSeqAIJGetArray(a_, &v), "MatSeqAIJGetArray");
-  std::fill(v, v + csr_->col.size(), 0.0);
+  std::fill(values_.begin(), values_.end(), 0.0);
   double diagonal_sum = 0.0;
   std::int64_t diagonals = 0;
   for (std::int64_t c = 0; c < a.n; ++c)
     for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
-      v[csr_->target[k]] += a.values[k];
-      if (a.upper_only && a.row_idx[k] != c) v[csr_->mirror_target[k]] += a.values[k];
+      values_[csr_->target[k]] += a.values[k];
+      if (a.upper_only && a.row_idx[k] != c) values_[csr_->mirror_target[k]] += a.values[k];
       if (a.row_idx[k] == c && c < static_cast<std::int64_t>(points_.node.size())) {
         diagonal_sum += std::abs(a.values[k]);
         ++diagonals;
       }
     }
   const double scale = diagonals > 0 && diagonal_sum > 0 ? diagonal_sum / static_cast<double>(diagonals) : 1.0;
-  for (PetscInt t : csr_->fixed_target) v[t] = scale;
-  check(MatSeqAIJRestoreArray(a_, &v), "MatSeqAIJRestoreArray");
+  for (PetscInt t : csr_->fixed_target) values_[t] = scale;
+  if (ranks_ == 1) {  // the SEQAIJ arrays are csr_'s order: one copy
+    PetscScalar* v = nullptr;
+    check(MatSeqAIJGetArray(a_, &v), "MatSeqAIJGetArray");
+    std::copy(values_.begin(), values_.end(), v);
+    check(MatSeqAIJRestoreArray(a_, &v), "MatSeqAIJRestoreArray");
+    return;
+  }
+  for (PetscInt r = rows_->begin; r < rows_->end; ++r) {
+    const PetscInt at = csr_->row_ptr[r], count = csr_->row_ptr[r + 1] - at;
+    check(MatSetValues(a_, 1, &r, count, csr_->col.data() + at, values_.data() + at, INSERT_VALUES), "MatSetValues");
+  }
+  check(MatAssemblyBegin(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
 }
 
 /// CG (left preconditioning) or GMRES (right); both stop on the true residual norm.
@@ -253,10 +302,12 @@ void PetscSolver::configure_krylov(KSPType type) {
   check(KSPSetFromOptions(krylov_), "KSPSetFromOptions");  // PETSC_OPTIONS may override any of these
 }
 
-void PetscSolver::set_up_krylov(bool symmetric) {
+/// Whether GAMG could be set up: on a tangent far from a converged state (a diverging
+/// increment about to be cut back) its eigenvalue estimate may find nothing to smooth.
+bool PetscSolver::set_up_krylov(bool symmetric) {
   check(KSPSetOperators(krylov_, a_, a_), "KSPSetOperators");
   configure_krylov(symmetric ? KSPCG : KSPGMRES);
-  check(KSPSetUp(krylov_), "GAMG set-up");
+  return KSPSetUp(krylov_) == 0;
 }
 
 FactorStatus PetscSolver::set_up_lu() {
@@ -266,8 +317,12 @@ FactorStatus PetscSolver::set_up_lu() {
   KSPGetPC(lu_, &pc);
   PCFailedReason reason = PC_NOERROR;
   PCGetFailedReason(pc, &reason);
+  // A factor fails on one rank's rows: every rank must take the same branch after it.
+  int failure[2] = {static_cast<int>(reason), code != 0 ? 1 : 0};
+  MPI_Allreduce(MPI_IN_PLACE, failure, 2, MPI_INT, MPI_MAX, comm_);
+  reason = static_cast<PCFailedReason>(failure[0]);
   if (reason == PC_FACTOR_OUTMEMORY) return FactorStatus::OutOfMemory;
-  if (code != 0 || reason != PC_NOERROR) return FactorStatus::Singular;
+  if (failure[1] != 0 || reason != PC_NOERROR) return FactorStatus::Singular;
   lu_ready_ = true;
   return FactorStatus::Ok;
 }
@@ -281,13 +336,16 @@ FactorStatus PetscSolver::factorize(const SparseMatrix& a) {
   fill_values(a);
   symmetric_ = a.upper_only;
   lu_ready_ = false;
+  krylov_ready_ = false;
   if (saddle_point_) {
     name_ = "PETSc MUMPS";
     return set_up_lu();
   }
   name_ = symmetric_ ? "PETSc CG+GAMG" : "PETSc GMRES+GAMG";
-  set_up_krylov(symmetric_);
-  return FactorStatus::Ok;
+  krylov_ready_ = set_up_krylov(symmetric_);
+  if (krylov_ready_) return FactorStatus::Ok;
+  name_ = "PETSc MUMPS (GAMG could not be set up)";
+  return set_up_lu();
 }
 
 /// One Krylov solve of b_ into x_ from zero; whether it converged.
@@ -306,10 +364,13 @@ void PetscSolver::solve(std::span<const double> b, std::span<double> x) {
   PetscScalar* bv = nullptr;
   check(VecSet(b_, 0.0), "VecSet");
   check(VecGetArray(b_, &bv), "VecGetArray");
-  for (std::size_t e = 0; e < b.size(); ++e) bv[layout_->slot_of_eq[e]] = b[e];
+  for (std::size_t e = 0; e < b.size(); ++e) {
+    const PetscInt slot = layout_->slot_of_eq[e];
+    if (slot >= rows_->begin && slot < rows_->end) bv[slot - rows_->begin] = b[e];
+  }
   check(VecRestoreArray(b_, &bv), "VecRestoreArray");
   bool solved = false;
-  if (!saddle_point_) {
+  if (krylov_ready_) {
     solved = krylov_solve(symmetric_ ? KSPCG : KSPGMRES);
     if (!solved && symmetric_) solved = krylov_solve(KSPGMRES);  // CG met an indefinite tangent
     if (!solved) name_ = "PETSc MUMPS (the Krylov solve did not converge)";
@@ -321,10 +382,12 @@ void PetscSolver::solve(std::span<const double> b, std::span<double> x) {
     }
     check(KSPSolve(lu_, b_, x_), "MUMPS solve");
   }
+  check(VecScatterBegin(to_everywhere_, x_, x_everywhere_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(to_everywhere_, x_, x_everywhere_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
   const PetscScalar* xv = nullptr;
-  check(VecGetArrayRead(x_, &xv), "VecGetArrayRead");
+  check(VecGetArrayRead(x_everywhere_, &xv), "VecGetArrayRead");
   for (std::size_t e = 0; e < x.size(); ++e) x[e] = xv[layout_->slot_of_eq[e]];
-  check(VecRestoreArrayRead(x_, &xv), "VecRestoreArrayRead");
+  check(VecRestoreArrayRead(x_everywhere_, &xv), "VecRestoreArrayRead");
 }
 
 }  // namespace

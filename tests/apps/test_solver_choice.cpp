@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 #include "parser/read_deck.hpp"
@@ -26,9 +27,10 @@ struct Output {
   int exit_code = -1;
 };
 
-Output run_inpact(const std::string& args) {
+/// Runs inpact with `args`, after `environment` ("NAME=value " words for the shell).
+Output run_inpact_with(const std::string& environment, const std::string& args) {
   Output out;
-  const std::string command = "\"" + std::string(INPACT_EXECUTABLE) + "\" " + args + " 2>&1";
+  const std::string command = environment + "\"" + std::string(INPACT_EXECUTABLE) + "\" " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return out;
   char buffer[4096];
@@ -37,6 +39,8 @@ Output run_inpact(const std::string& args) {
   if (WIFEXITED(status)) out.exit_code = WEXITSTATUS(status);
   return out;
 }
+
+Output run_inpact(const std::string& args) { return run_inpact_with("", args); }
 
 const std::string kDeck = std::string(INPACT_SOURCE_DIR) + "/decks/thick_cylinder.inp";
 
@@ -56,18 +60,45 @@ std::string read_file(const fs::path& p) {
 TEST(SolverChoice, AutoTakesDirectBelowTheCrossoverAndPetscAbove) {
   const auto deck = parser::read_deck(kDeck);
   ASSERT_TRUE(deck.ok());
-  const auto small = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model);
+  const auto small = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1);
   EXPECT_LT(small.model_dofs, solver::kPetscFromDofs);
   EXPECT_EQ(small.kind, solver::SolverKind::Direct);
   model::Model large = deck.model;
   const std::size_t nodes = static_cast<std::size_t>(solver::kPetscFromDofs);  // × 2 DOF per node (CPE8R)
   large.mesh.nodes.labels.resize(nodes);
-  const auto big = solver::resolve_linear_solver(solver::SolverRequest::Auto, large);
+  const auto big = solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1);
   EXPECT_GE(big.model_dofs, solver::kPetscFromDofs);
   EXPECT_EQ(big.kind, solver::petsc_built() ? solver::SolverKind::Petsc : solver::SolverKind::Direct);
-  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Direct, large).kind, solver::SolverKind::Direct);
+  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Direct, large, 1).kind, solver::SolverKind::Direct);
   EXPECT_EQ(solver::parse_solver_request("auto"), solver::SolverRequest::Auto);
   EXPECT_FALSE(solver::parse_solver_request("cholmod"));
+}
+
+// Under mpirun (its environment says how many ranks) the run is PETSc's: without --solver, and
+// with auto whatever the size; the direct solvers, one process's, are refused.
+TEST(SolverChoice, SeveralMpiRanksTakePetscAndRefuseDirect) {
+  const auto deck = parser::read_deck(kDeck);
+  ASSERT_TRUE(deck.ok());
+  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Default, deck.model, 1).kind,
+            solver::SolverKind::Direct);
+  if (!solver::petsc_built()) {
+    EXPECT_THROW(solver::resolve_linear_solver(solver::SolverRequest::Default, deck.model, 2), std::invalid_argument);
+    return;
+  }
+  for (auto request : {solver::SolverRequest::Default, solver::SolverRequest::Auto, solver::SolverRequest::Petsc}) {
+    const auto choice = solver::resolve_linear_solver(request, deck.model, 2);
+    EXPECT_EQ(choice.kind, solver::SolverKind::Petsc);
+    EXPECT_NE(solver::describe(choice).find("; 2 MPI ranks"), std::string::npos) << solver::describe(choice);
+  }
+  EXPECT_THROW(solver::resolve_linear_solver(solver::SolverRequest::Direct, deck.model, 2), std::invalid_argument);
+  // `inpact check` reads the launcher's environment as `run` does (no MPI is started by check).
+  const std::string two_ranks = "OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=0 ";
+  const Output check = run_inpact_with(two_ranks, "check " + kDeck);
+  EXPECT_EQ(check.exit_code, 0) << check.text;
+  EXPECT_NE(solver_line(check.text).find("LINEAR SOLVER: petsc"), std::string::npos) << check.text;
+  const Output direct = run_inpact_with(two_ranks, "check " + kDeck + " --solver direct");
+  EXPECT_EQ(direct.exit_code, 2) << direct.text;
+  EXPECT_NE(direct.text.find("the direct solvers run on one process"), std::string::npos) << direct.text;
 }
 
 TEST(SolverChoice, AnUnknownSolverIsAUsageError) {

@@ -67,6 +67,22 @@ TEST(CompareValues, values_under_the_floor_pass_and_absolute_floor_is_used_for_u
   EXPECT_FALSE(compare_values("U", {1e-9}, {2e-9}).same());
 }
 
+// Interference fit, every node closed: COPEN is round-off (±1e-16) in both runs, and its own
+// frame maximum is round-off too; measured against the motion U (1e-3) the runs agree.
+TEST(CompareValues, a_closed_contacts_gap_is_measured_in_the_units_of_the_motion) {
+  const std::vector<std::string> locs = {"node 1", "node 2"};
+  const auto with_motion = [&](std::vector<double> copen) {
+    ResultsFile r = one_field("COPEN", locs, copen);
+    ResultsField u = one_field("U", locs, {1e-3, -5e-4}).steps[0].fields[0];
+    r.steps[0].fields.push_back(u);
+    return r;
+  };
+  EXPECT_TRUE(compare_results(with_motion({-1.1e-16, 2e-17}), with_motion({1.1e-16, 0.0}), default_tolerances()).same());
+  EXPECT_FALSE(compare_values("COPEN", {-1.1e-16, 2e-17}, {1.1e-16, 0.0}).same());  // no U: its own scale
+  // An open gap that differs by 1e-5 of itself still fails.
+  EXPECT_FALSE(compare_results(with_motion({1e-4, 0.0}), with_motion({1e-4 + 1e-9, 0.0}), default_tolerances()).same());
+}
+
 TEST(CompareValues, frame_max_scaling_lets_near_zero_stress_differ_by_round_off) {
   // S scaled by the frame's largest value (1e6): 1e-5 differences at near-zero points pass.
   EXPECT_TRUE(compare_values("S", {1e6, 1e-5}, {1e6, 2e-5}).same());
