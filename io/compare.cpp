@@ -43,11 +43,11 @@ double frame_max(const ResultsField& f, std::size_t k) {
 
 /// The field whose frame maximum bounds a frame-max scale from below, or null: a closed
 /// contact's COPEN (a stuck one's CSLIP) is round-off of the coordinates, 1e-16 whatever the
-/// load, and is measured in the units of the motion U; the moment RM of a symmetric load is
-/// round-off of the forces RF.
+/// load, and is measured in the units of the motion U; the moment RM and section force SF of a
+/// symmetric load are round-off of the forces RF.
 const char* scale_partner(const std::string& key) {
   if (key == "COPEN" || key == "CSLIP1" || key == "CSLIP2") return "U";
-  if (key == "RM") return "RF";
+  if (key == "RM" || key == "SF") return "RF";
   return nullptr;
 }
 

@@ -11,7 +11,7 @@
 /// of the frame's largest magnitude of the field (over both files, every location and
 /// component): for fields full of near-zeros, such as S away from a load or CPRESS at open
 /// nodes. The lengths COPEN and CSLIP1/2 scale by at least the frame's largest |U|, the moment
-/// RM by at least its largest |RF|: a closed contact's COPEN and a symmetric load's RM are
+/// RM and section force SF by at least its largest |RF|: a closed contact's COPEN and a symmetric load's RM are
 /// round-off of the coordinates and forces, whose own maximum is no scale. An `exact` field (CSTATUS) passes only on a == b, and the field as a whole passes
 /// with up to `allowed_mismatches` failing values.
 #include <cstdint>

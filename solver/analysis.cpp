@@ -341,6 +341,10 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
   const model::Model& model = *am.model;
   for (const auto& note : model.preprocessing_notes) observer.message(note);
   for (const auto& note : am.contact->notes) observer.message(note);
+  if (const std::string shared = describe_distribution(am, rank_world()); !shared.empty()) {
+    observer.message(shared);
+    observer.status_note(shared);
+  }
   ConditionHistory history = initial_history(am);
   IncrementState state;
   state.u.assign(am.n_dof(), 0.0);

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <thread>
+#include <tuple>
+
+#include <fmt/format.h>
 
 #include "elements/element_kernel.hpp"
 #include "elements/material.hpp"
@@ -21,8 +24,29 @@ void Assembler::element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) con
 }
 
 Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, MaterialStates* states)
-    : am_(am), dofs_(dofs), threads_(threads), states_(states) {
+    : am_(am), dofs_(dofs), threads_(threads), states_(states), world_(rank_world()) {
+  std::tie(first_element_, end_element_) = element_share(am.model->mesh.elements.size(), world_.rank, world_.size);
   build_pattern(nullptr);
+}
+
+std::pair<std::size_t, std::size_t> element_share(std::size_t n_elements, int rank, int ranks) {
+  const auto r = static_cast<std::size_t>(rank), n = static_cast<std::size_t>(ranks);
+  return {n_elements * r / n, n_elements * (r + 1) / n};
+}
+
+std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
+  if (!world.distributed()) return "";
+  const std::size_t n_el = am.model->mesh.elements.size();
+  std::size_t fewest = n_el, most = 0;
+  for (int r = 0; r < world.size; ++r) {
+    const auto [first, end] = element_share(n_el, r, world.size);
+    fewest = std::min(fewest, end - first);
+    most = std::max(most, end - first);
+  }
+  return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (a contiguous range "
+                     "of the deck's order) and PETSc owns an even share of the system's rows; contact, constraints "
+                     "and output are computed alike on every rank, rank 0 writes the results",
+                     world.size, fewest, most, n_el);
 }
 
 void Assembler::set_extra_couplings(const ExtraCouplings& extra) { build_pattern(&extra); }
@@ -192,12 +216,15 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   std::fill(f_int.begin(), f_int.end(), 0.0);
   if (request.tangent) tangent_.set_zero();
   const std::size_t n_el = am_.model->mesh.elements.size();
+  // Points are kept for every element; otherwise a distributed run's rank evaluates its own.
+  const bool partitioned = world_.distributed() && !request.points;
+  const std::size_t first = partitioned ? first_element_ : 0, last = partitioned ? end_element_ : n_el;
 
   // Element systems are computed in parallel chunk by chunk and added in element order by one
   // thread, so the assembled numbers do not depend on the thread count.
   const std::size_t n_threads = static_cast<std::size_t>(std::max(threads_, 1));
   const std::size_t chunk = n_threads == 1 ? 1 : 512 * n_threads;
-  std::vector<elements::ElementSystem> systems(std::min(chunk, n_el));
+  std::vector<elements::ElementSystem> systems(std::min(chunk, last - first));
   std::vector<std::int64_t> el_dofs;
   if (request.points) {
     have_points_ = false;  // until every element is in
@@ -206,8 +233,8 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   }
   double force_sum = 0.0, moved_sum = 0.0;
   std::size_t force_count = 0;
-  for (std::size_t begin = 0; begin < n_el; begin += chunk) {
-    const std::size_t end = std::min(begin + chunk, n_el);
+  for (std::size_t begin = first; begin < last; begin += chunk) {
+    const std::size_t end = std::min(begin + chunk, last);
     auto work = [&](std::size_t t) {
       for (std::size_t e = begin + t; e < end; e += n_threads) compute(e, u, request, systems[e - begin]);
     };
@@ -236,10 +263,11 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
         force_sum += std::abs(sys.internal_force[i]);
       }
       force_count += el_dofs.size();
-      if (request.tangent) scatter(el_dofs, sys.stiffness);
+      if (request.tangent && owns(e)) scatter(el_dofs, sys.stiffness);
       if (request.tangent && !request.multiply.empty()) moved_sum += multiply(el_dofs, sys, request);
     }
   }
+  if (partitioned) sum_over_ranks(request, f_int, force_sum, moved_sum, force_count, result);
   result.average_force = force_count ? force_sum / static_cast<double>(force_count) : 0.0;
   result.n_force_entries = force_count;
   result.moved_average_force = force_count ? moved_sum / static_cast<double>(force_count) : 0.0;
@@ -250,6 +278,36 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
     have_points_ = true;
   }
   return result;
+}
+
+/// The product K·v (request.product, zero before the assembly) is summed with the forces.
+void Assembler::sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum,
+                               double& moved_sum, std::size_t& force_count, AssemblyResult& result) const {
+  world_.sum(f_int);
+  if (request.tangent && !request.multiply.empty()) world_.sum(request.product);
+  std::array<double, 3> sums = {force_sum, moved_sum, static_cast<double>(force_count)};
+  world_.sum(sums);
+  force_sum = sums[0];
+  moved_sum = sums[1];
+  force_count = static_cast<std::size_t>(sums[2]);
+  // The smallest Jacobian and the lowest element row that has it (a rank without elements: none).
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  const double local = result.min_jacobian_element < 0 ? kNone : result.min_jacobian;
+  result.min_jacobian = world_.min(local);
+  const double element = world_.min(local == result.min_jacobian ? static_cast<double>(result.min_jacobian_element) : kNone);
+  if (result.min_jacobian == kNone) {  // no elements anywhere: as one rank reports it
+    result.min_jacobian = 0.0;
+    result.min_jacobian_element = -1;
+    return;
+  }
+  result.min_jacobian_element = static_cast<std::int64_t>(element);
+}
+
+void Assembler::complete_states(std::span<const double> u, const AssemblyRequest& request) {
+  if (!world_.distributed()) return;
+  AssemblyRequest everywhere{.tangent = false, .nlgeom = request.nlgeom, .delta_t = request.delta_t, .points = true};
+  std::vector<double> f_int(u.size());
+  assemble(u, everywhere, f_int);
 }
 
 std::vector<double> Assembler::element_forces(std::span<const std::int32_t> rows, std::span<const double> u,
@@ -289,6 +347,9 @@ void Assembler::reduce(std::span<const double> full, std::span<double> reduced) 
 
 void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<const double> k,
                                        std::vector<SkewEntry>& skew) {
+  // Off rank 0 nothing is added, yet the skew entries are kept (at zero): whether Newton solves
+  // the unsymmetric system must be the same on every rank.
+  const double share = adds_shared_terms() ? 1.0 : 0.0;
   const std::size_t n = eqs.size();
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a; b < n; ++b) {
@@ -299,8 +360,8 @@ void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<cons
         for (const auto& [eb, wb] : eqs[b]) {
           // Entry (ea, eb) gets w (sym + skw), entry (eb, ea) w (sym − skw); when a ≠ b both land
           // in the upper triangle's one position for the symmetric part.
-          const double w = wa * wb;
-          if (sym != 0.0) {
+          const double w = share * wa * wb;
+          if (sym != 0.0 && share != 0.0) {
             const std::int64_t pos = tangent_.find(std::min(ea, eb), std::max(ea, eb));
             if (pos >= 0) tangent_.values[pos] += (ea == eb && a != b ? 2.0 : 1.0) * w * sym;
           }
@@ -314,6 +375,7 @@ void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<cons
 
 void Assembler::add_multiplier_column(std::int64_t row, std::span<const std::int64_t> dofs, double scale,
                                       std::span<const double> gradient, double diagonal) {
+  if (!adds_shared_terms()) return;
   if (diagonal != 0.0)
     if (const std::int64_t pos = tangent_.find(row, row); pos >= 0) tangent_.values[pos] += diagonal;
   for (std::size_t a = 0; a < dofs.size(); ++a)

@@ -2,6 +2,8 @@
 /// Assembly of the element contributions: the reduced tangent K_r = Tᵀ K T into a pattern built
 /// once per DOF map, and the full internal force vector f_int(u) (reactions are read from it).
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis_model.hpp"
@@ -9,6 +11,7 @@
 #include "element_activity.hpp"
 #include "elements/element_kernel.hpp"
 #include "iteration_seconds.hpp"
+#include "linear/petsc_module.hpp"
 #include "linear/sparse_matrix.hpp"
 
 namespace inpact::solver {
@@ -58,6 +61,18 @@ struct AssemblyResult {
   std::int64_t min_jacobian_element = -1;
 };
 
+/// The elements [first, second) that rank `rank` of `ranks` evaluates: contiguous in the deck's
+/// order, as even as counts go.
+std::pair<std::size_t, std::size_t> element_share(std::size_t n_elements, int rank, int ranks);
+/// One line on how a distributed run shares its work (for the log and the .sta); "" on one rank.
+std::string describe_distribution(const AnalysisModel& am, RankWorld world);
+
+/// On the ranks of a distributed run (mpirun, linear/petsc_module.hpp RankWorld) each rank
+/// evaluates its share of the elements, a contiguous range of them: the internal forces are
+/// summed over the ranks (every rank has f_int whole), the tangent is not (each rank holds its
+/// elements' part, which the PETSc solver adds up). The terms every rank computes alike (contact,
+/// stabilisation: add_local_matrix and the other add_ functions) go into rank 0's tangent only.
+/// An assembly that keeps points evaluates every element on every rank (complete_states).
 class Assembler {
  public:
   /// `threads`: element computations run on this many threads (the sum stays in element order).
@@ -77,13 +92,22 @@ class Assembler {
   /// Internal forces at u (full, overwritten) and, when asked, the reduced tangent.
   AssemblyResult assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int);
 
+  /// Whether the ranks share the elements (a distributed run).
+  bool distributed() const { return world_.distributed(); }
+  /// A distributed run at a converged state: every element evaluated once at u on every rank,
+  /// its points kept (request's NLGEOM and temperature), so that each rank has the trial material
+  /// state of every element to commit and the output its points. Nothing on one rank.
+  void complete_states(std::span<const double> u, const AssemblyRequest& request);
+
   /// Reduces a full vector to the equations: r_eq = Σ_d w_d r_d over the DOFs feeding each one.
   void reduce(std::span<const double> full, std::span<double> reduced) const;
 
   /// Adds a local matrix k (n × n, row-major) on global DOFs `dofs` into the reduced tangent,
   /// through the DOF map's masters, as the elements' are (contact blocks: their couplings must
   /// be in the pattern, set_extra_couplings).
-  void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) { scatter(dofs, k); }
+  void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) {
+    if (adds_shared_terms()) scatter(dofs, k);
+  }
 
   /// The equations each local unknown feeds, with their weights (the DOF map's masters of a
   /// DOF, or a multiplier's own equation).
@@ -124,6 +148,13 @@ class Assembler {
  private:
   /// Global DOFs of element e, node-major.
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
+  /// Whether this rank evaluates element e for the tangent (every element on one rank).
+  bool owns(std::size_t e) const { return e >= first_element_ && e < end_element_; }
+  /// Whether the terms every rank computes alike go into this rank's tangent (rank 0's).
+  bool adds_shared_terms() const { return world_.rank == 0; }
+  /// Sums a partitioned assembly's forces and force measures over the ranks.
+  void sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum, double& moved_sum,
+                      std::size_t& force_count, AssemblyResult& result) const;
   void build_pattern(const ExtraCouplings* extra);
 
   /// Element e's system into `out` (its buffers are reused from element to element).
@@ -141,6 +172,8 @@ class Assembler {
   SparseMatrix tangent_;
   int threads_ = 1;
   MaterialStates* states_ = nullptr;
+  RankWorld world_;
+  std::size_t first_element_ = 0, end_element_ = 0;  ///< this rank's elements
   ElementPoints points_;
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;

@@ -21,16 +21,16 @@ EquationPoints equation_points(const AnalysisModel& am, const DofMap& dofs) {
   return p;
 }
 
-double krylov_tolerance(double residual_ratio) {
+double krylov_tolerance(double residual_ratio, double residual_tolerance) {
   if (!(residual_ratio > 0.0)) return 1e-10;
-  return std::clamp(kKrylovTarget / residual_ratio, 1e-10, 1e-2);
+  return std::clamp(kKrylovTarget * residual_tolerance / residual_ratio, 1e-10, 1e-2);
 }
 
 CorrectionOutcome CorrectionSolver::solve(const SparseMatrix& tangent, bool saddle_point, std::span<const double> r,
                                           std::span<double> du, std::size_t n_displacement, double model_size,
                                           double residual_ratio) {
   CorrectionOutcome out;
-  if (solvers_.petsc) solvers_.petsc->set_relative_tolerance(krylov_tolerance(residual_ratio));
+  if (solvers_.petsc) solvers_.petsc->set_relative_tolerance(krylov_tolerance(residual_ratio, residual_tolerance_));
   else if (saddle_point || !tangent.upper_only) current_ = solvers_.umfpack.get();
   FactorStatus status;
   {

@@ -68,6 +68,7 @@ NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState&
       du_(n_eq_),
       solver_(ctx.solvers) {
   // Impose the boundary conditions of time t, then iterate on the free DOFs.
+  solver_.set_residual_tolerance(ctx.controls.residual_tolerance);
   ctx.conditions.apply_prescribed(t, u_start_, state.u);
   dofs_.update_dependent(state.u);
   if (ctx.rotating_dofs) ctx.rotating_dofs->relinearize(ctx.am, state.u);
@@ -93,6 +94,7 @@ NewtonOutcome NewtonIterations::run() {
          .max_gap_error = contact.max_gap_error},
         ctx_.controls);
     if (check.converged) {
+      ctx_.assembler.complete_states(state_.u, res.request);
       out_.converged = true;
       return out_;
     }
@@ -128,7 +130,9 @@ Residual NewtonIterations::assemble_residual(int k) {
   res.request.delta_t = delta_t_;
   // The first pass seldom converges (it would need no residual at all to start with): its
   // points are not kept, and should it converge the output computes them instead.
-  res.request.points = ctx_.keep_points && k > 0;
+  // A distributed run's ranks evaluate their own elements here, and every element once the
+  // increment has converged (Assembler::complete_states).
+  res.request.points = ctx_.keep_points && k > 0 && !ctx_.assembler.distributed();
   res.assembly = ctx_.assembler.assemble(state_.u, res.request, state_.f_int);
   double contact_force_sum = 0.0;
   std::size_t contact_force_count = 0;

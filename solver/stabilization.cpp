@@ -83,6 +83,9 @@ double factor_from_diagonals(double fraction, const SparseMatrix& tangent, const
     m_sum += mass[d];
     ++m_n;
   }
+  // A distributed run's ranks hold parts of the tangent (Assembler): their diagonals add up.
+  const RankWorld world = rank_world();
+  if (world.distributed()) world.sum(std::span(&k_sum, 1));
   if (k_n == 0 || m_sum <= 0.0) return 0.0;
   const double quotient = (k_sum / static_cast<double>(k_n)) / (m_sum / static_cast<double>(m_n));
   return fraction * 0.5 * time_period * quotient;

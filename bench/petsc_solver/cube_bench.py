@@ -4,7 +4,11 @@ solver benchmark cube (bench/solver_gen_cube.py: N³ C3D8, clamped bottom, press
 linear static step), whole `inpact run` processes under /usr/bin/time -v.
 
   /usr/bin/python3 bench/petsc_solver/cube_bench.py --inpact build/apps/inpact --sizes 31 45 \
-      [--runs 3] [--direct-max-n 45] [--work DIR] [--threads 1]
+      [--runs 3] [--direct-max-n 45] [--work DIR] [--threads 1] [--solvers direct petsc petsc:2]
+
+A solver `petsc:N` is a distributed run, `mpirun -np N inpact run ...`; its peak RSS is that
+of the largest rank (what /usr/bin/time reports for the process tree), its CPU time that of
+all ranks together.
 
 Per size and solver: the median (and min-max) of RUNS runs of the wall time, the CPU time
 (user + system: what the process itself spent, steadier than the wall time on a loaded machine), the peak RSS,
@@ -28,10 +32,16 @@ def deck(n, work):
 
 
 def one_run(inpact, path, solver, work, threads):
-    job = f"{os.path.basename(path)[:-4]}_{solver}"
+    solver, _, ranks = solver.partition(":")
+    job = f"{os.path.basename(path)[:-4]}_{solver}{ranks}"
     timings = os.path.join(work, job + ".timings")
     load = os.getloadavg()[0]
-    cmd = ["/usr/bin/time", "-v", inpact, "run", path, "-j", job, "-o", work, "-q", "--solver", solver,
+    launcher = []
+    if ranks:
+        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+        launcher = ["mpirun", "-np", ranks, "--oversubscribe", "--bind-to", "none"]
+    cmd = ["/usr/bin/time", "-v"] + launcher + [inpact, "run", path, "-j", job, "-o", work, "-q", "--solver", solver,
            "--threads", str(threads), "--timings", timings]
     p = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     if p.returncode != 0:

@@ -5,6 +5,7 @@
 
 #include <dlfcn.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
@@ -19,6 +20,8 @@ struct Module {
   void* handle = nullptr;
   decltype(&inpact_petsc_create) create = nullptr;
   decltype(&inpact_petsc_finish) finish = nullptr;
+  decltype(&inpact_mpi_world) world = nullptr;
+  decltype(&inpact_mpi_allreduce) allreduce = nullptr;
   std::string error;  ///< why it could not be started
 };
 
@@ -36,6 +39,12 @@ std::vector<std::string> module_candidates() {
 }
 
 void finish_at_exit();
+
+/// Set once PETSc runs: rank_world() then asks it, and never loads the module itself.
+std::atomic<bool>& petsc_started() {
+  static std::atomic<bool> started{false};
+  return started;
+}
 
 Module& module() {
   static Module m;
@@ -59,7 +68,9 @@ Module& module() {
     auto start = reinterpret_cast<decltype(&inpact_petsc_start)>(dlsym(m.handle, "inpact_petsc_start"));
     m.create = reinterpret_cast<decltype(&inpact_petsc_create)>(dlsym(m.handle, "inpact_petsc_create"));
     m.finish = reinterpret_cast<decltype(&inpact_petsc_finish)>(dlsym(m.handle, "inpact_petsc_finish"));
-    if (!start || !m.create || !m.finish) {
+    m.world = reinterpret_cast<decltype(&inpact_mpi_world)>(dlsym(m.handle, "inpact_mpi_world"));
+    m.allreduce = reinterpret_cast<decltype(&inpact_mpi_allreduce)>(dlsym(m.handle, "inpact_mpi_allreduce"));
+    if (!start || !m.create || !m.finish || !m.world || !m.allreduce) {
       m.error = "the PETSc module lacks its entry points";
       m.create = nullptr;
       return;
@@ -70,6 +81,7 @@ Module& module() {
       return;
     }
     std::atexit(finish_at_exit);
+    petsc_started().store(true);
   });
   return m;
 }
@@ -98,6 +110,21 @@ std::string petsc_build_version() {
 
 void start_petsc() {
   if (!module().create) throw std::runtime_error(module().error);
+}
+
+RankWorld rank_world() {
+  RankWorld world;
+  if (petsc_started().load()) module().world(&world.rank, &world.size);
+  return world;
+}
+
+void RankWorld::sum(std::span<double> values) const {
+  if (distributed()) module().allreduce(values.data(), static_cast<long>(values.size()), 0);
+}
+
+double RankWorld::min(double value) const {
+  if (distributed()) module().allreduce(&value, 1, 1);
+  return value;
 }
 
 std::unique_ptr<LinearSolver> make_petsc_solver(const EquationPoints& points) {

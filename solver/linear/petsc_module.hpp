@@ -1,6 +1,7 @@
 #pragma once
 /// The C entry points of the PETSc module (libinpact_petsc.so, petsc_solver.cpp) that
 /// petsc_module.cpp looks up after loading it; and the process-wide PETSc session.
+#include <span>
 #include <string>
 
 #include "linear_solver.hpp"
@@ -10,6 +11,10 @@ extern "C" {
 int inpact_petsc_start();
 /// PetscFinalize (MPI_Finalize with it).
 void inpact_petsc_finish();
+/// This process's rank and the ranks of PETSC_COMM_WORLD.
+void inpact_mpi_world(int* rank, int* size);
+/// values[0..n) combined over every rank, in place: op 0 sum, 1 min, 2 max.
+void inpact_mpi_allreduce(double* values, long n, int op);
 /// A new solver; the caller owns it. Null (with the reason in `error`) on failure.
 inpact::solver::LinearSolver* inpact_petsc_create(const inpact::solver::EquationPoints* points, std::string* error);
 }
@@ -23,5 +28,18 @@ std::string petsc_build_version();
 /// Loads the module and starts PETSc (MPI_Init, PetscInitialize), once per process; later
 /// calls do nothing. PetscFinalize runs at exit. Throws std::runtime_error when it cannot.
 void start_petsc();
+
+/// The ranks of this run as the analysis sees them: PETSC_COMM_WORLD once PETSc is started
+/// (mpirun), one rank otherwise (no call loads the module).
+struct RankWorld {
+  int rank = 0;
+  int size = 1;
+  bool distributed() const { return size > 1; }
+  /// values summed over the ranks, in place (nothing on one rank).
+  void sum(std::span<double> values) const;
+  /// The smallest value over the ranks.
+  double min(double value) const;
+};
+RankWorld rank_world();
 
 }  // namespace inpact::solver

@@ -1,7 +1,7 @@
 /// The PETSc solver path (the module libinpact_petsc.so, loaded on use), on one process or on
-/// the ranks of `mpirun -np N` (PETSC_COMM_WORLD). Every rank holds the whole inpact system (the
-/// run is replicated up to here, mpi_launch.hpp) and gives PETSc its own block of rows; the
-/// solution comes back to every rank.
+/// the ranks of `mpirun -np N` (PETSC_COMM_WORLD). Every rank holds the pattern of the whole
+/// inpact system and a partial sum of its values (the ranks share the elements: fill_values);
+/// PETSc owns an even share of the rows on each, and the solution comes back to every rank.
 ///  - a symmetric system (upper_only): CG preconditioned by smoothed-aggregation algebraic
 ///    multigrid (GAMG) whose near null space is the mesh's rigid-body modes
 ///    (MatNullSpaceCreateRigidBody from the node coordinates);
@@ -259,8 +259,10 @@ void PetscSolver::build(const SparseMatrix& a) {
   ++analyses_;
 }
 
-/// The inpact values into the PETSc matrix (this rank's rows); the identity rows take the mean
-/// diagonal.
+/// The inpact values into the PETSc matrix; the identity rows take the mean diagonal. On
+/// several ranks each holds a partial sum (its share of the elements; rank 0 the contact and
+/// other terms every rank computes alike, solver/assembler.hpp): every rank adds what it has,
+/// the rows of others included, and PETSc's assembly sends those to their owners.
 void PetscSolver::fill_values(const SparseMatrix& a) {
   std::fill(values_.begin(), values_.end(), 0.0);
   double diagonal_sum = 0.0;
@@ -274,8 +276,11 @@ void PetscSolver::fill_values(const SparseMatrix& a) {
         ++diagonals;
       }
     }
+  if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &diagonal_sum, 1, MPI_DOUBLE, MPI_SUM, comm_);
   const double scale = diagonals > 0 && diagonal_sum > 0 ? diagonal_sum / static_cast<double>(diagonals) : 1.0;
-  for (PetscInt t : csr_->fixed_target) values_[t] = scale;
+  for (std::size_t f = 0; f < csr_->fixed_target.size(); ++f)
+    if (const PetscInt slot = layout_->fixed_slots[f]; slot >= rows_->begin && slot < rows_->end)
+      values_[csr_->fixed_target[f]] = scale;
   if (ranks_ == 1) {  // the SEQAIJ arrays are csr_'s order: one copy
     PetscScalar* v = nullptr;
     check(MatSeqAIJGetArray(a_, &v), "MatSeqAIJGetArray");
@@ -283,9 +288,14 @@ void PetscSolver::fill_values(const SparseMatrix& a) {
     check(MatSeqAIJRestoreArray(a_, &v), "MatSeqAIJRestoreArray");
     return;
   }
-  for (PetscInt r = rows_->begin; r < rows_->end; ++r) {
+  check(MatZeroEntries(a_), "MatZeroEntries");
+  const PetscInt n = static_cast<PetscInt>(csr_->row_ptr.size()) - 1;
+  for (PetscInt r = 0; r < n; ++r) {
     const PetscInt at = csr_->row_ptr[r], count = csr_->row_ptr[r + 1] - at;
-    check(MatSetValues(a_, 1, &r, count, csr_->col.data() + at, values_.data() + at, INSERT_VALUES), "MatSetValues");
+    const PetscScalar* row = values_.data() + at;
+    const bool owned = r >= rows_->begin && r < rows_->end;
+    if (!owned && std::all_of(row, row + count, [](PetscScalar v) { return v == 0.0; })) continue;
+    check(MatSetValues(a_, 1, &r, count, csr_->col.data() + at, row, ADD_VALUES), "MatSetValues");
   }
   check(MatAssemblyBegin(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
@@ -415,6 +425,24 @@ int inpact_petsc_start() {
 }
 
 void inpact_petsc_finish() { PetscFinalize(); }
+
+void inpact_mpi_world(int* rank, int* size) {
+  MPI_Comm_rank(PETSC_COMM_WORLD, rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, size);
+}
+
+/// Reduced on rank 0 and sent to every rank, not MPI_Allreduce: with more than two ranks an
+/// all-reduce may add in different orders on different ranks, and every rank must take the
+/// same decisions (contact status, convergence) from bit-identical numbers.
+void inpact_mpi_allreduce(double* values, long n, int op) {
+  const MPI_Op mpi_op = op == 1 ? MPI_MIN : op == 2 ? MPI_MAX : MPI_SUM;
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  const int count = static_cast<int>(n);
+  MPI_Reduce(rank == 0 ? MPI_IN_PLACE : values, rank == 0 ? values : nullptr, count, MPI_DOUBLE, mpi_op, 0,
+             PETSC_COMM_WORLD);
+  MPI_Bcast(values, count, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+}
 
 inpact::solver::LinearSolver* inpact_petsc_create(const inpact::solver::EquationPoints* points, std::string* error) {
   try {

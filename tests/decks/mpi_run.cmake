@@ -14,7 +14,7 @@ endforeach()
 file(REMOVE_RECURSE "${WORK}")
 execute_process(COMMAND /usr/bin/python3 "${SOURCE}/bench/petsc_solver/compare_solvers.py" --inpact "${INPACT}"
                         --out "${WORK}" --only "${CASE}" --ranks 2
-                RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 900)
+                RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 280)
 message(STATUS "${o}${e}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "compare_solvers.py --ranks 2 --only ${CASE}: exit ${rc}")
