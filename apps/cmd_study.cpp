@@ -41,6 +41,7 @@ int study_main(const StudyOptions& options) {
   runner.executable = options.executable;
   runner.jobs = options.jobs;
   runner.threads = options.threads;
+  runner.ranks_per_case = options.ranks_per_case;
   runner.quiet = options.quiet;
   runner.shard = study::parse_shard(options.shard);
 

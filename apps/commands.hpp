@@ -42,6 +42,7 @@ struct StudyOptions {
   std::vector<std::string> collect;  ///< OP:VAR[@NSET]
   int jobs = 1;
   int threads = 1;
+  int ranks_per_case = 1;  ///< --ranks-per-case N: each case under mpirun -np N
   std::string shard = "1/1";
   std::string dir;  ///< default: DECK-stem.study (run-case, collect: .)
   std::string run_case;       ///< `study run-case ID`

@@ -100,6 +100,9 @@ int main(int argc, char** argv) {
                         "OP:VAR[@NSET] per case, OP max|min|maxabs|sum (max:CPRESS, max:-COPEN, sum:RF2@TOP)");
   study_cmd->add_option("-j,--jobs", study.jobs, "Worker processes")->check(CLI::PositiveNumber);
   study_cmd->add_option("--threads", study.threads, "Threads of each case")->check(CLI::PositiveNumber);
+  study_cmd->add_option("--ranks-per-case", study.ranks_per_case,
+                        "MPI ranks of each case: a distributed run, mpirun -np N inpact run ... (needs PETSc)")
+      ->check(CLI::PositiveNumber);
   study_cmd->add_option("--shard", study.shard, "Run shard i of n: cases k with k mod n = i-1");
   study_cmd->add_option("-o,--output-dir", study.dir, "Study folder (default: DECK-stem.study)");
   study_cmd->add_option("--inpact", study.executable,
@@ -110,6 +113,8 @@ int main(int argc, char** argv) {
   run_case_cmd->add_option("id", study.run_case, "Case id (c0001, ...)")->required();
   run_case_cmd->add_option("-o,--output-dir", study.dir, "Study folder");
   run_case_cmd->add_option("--threads", study.threads, "Threads of the case")->check(CLI::PositiveNumber);
+  run_case_cmd->add_option("--ranks-per-case", study.ranks_per_case, "MPI ranks of the case (mpirun -np N)")
+      ->check(CLI::PositiveNumber);
   CLI::App* collect_cmd = study_cmd->add_subcommand("collect", "Write results.csv of the study in -o DIR (default .)");
   collect_cmd->add_option("-o,--output-dir", study.dir, "Study folder");
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -53,10 +54,16 @@ RunOptions case_run_options(const Manifest& m, const Case& c, const RunnerOption
   return r;
 }
 
-/// The command line of the same run, for an `--inpact EXE` given to the study.
-std::vector<std::string> case_command(const RunOptions& r, const std::string& executable) {
-  std::vector<std::string> args{executable, "run", r.deck, "-j", r.job, "-o", r.output_dir,
-                                "--threads", std::to_string(r.threads), "-q", "--timings", r.timings};
+/// The command line of the same run, for an `--inpact EXE` given to the study; under
+/// `mpirun -np N` for N ranks per case ($INPACT_MPIRUN names another launcher).
+std::vector<std::string> case_command(const RunOptions& r, const std::string& executable, int ranks) {
+  std::vector<std::string> args;
+  if (ranks > 1) {
+    const char* launcher = std::getenv("INPACT_MPIRUN");
+    args = {launcher && *launcher ? launcher : "mpirun", "-np", std::to_string(ranks)};
+  }
+  args.insert(args.end(), {executable, "run", r.deck, "-j", r.job, "-o", r.output_dir, "--threads",
+                           std::to_string(r.threads), "-q", "--timings", r.timings});
   for (const auto& [name, value] : r.parameters) {
     args.push_back("-P");
     args.push_back(name + "=" + value);
@@ -111,7 +118,8 @@ class ExecLauncher {
   std::size_t running() const { return running_.size(); }
   void start(std::size_t k) {
     const Case& c = m_.cases[k];
-    const std::vector<std::string> args = case_command(case_run_options(m_, c, o_), o_.executable);
+    const std::vector<std::string> args =
+        case_command(case_run_options(m_, c, o_), o_.executable, o_.ranks_per_case);
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -121,7 +129,7 @@ class ExecLauncher {
     if (pid == 0) {
       case_thread_environment(o_);
       redirect_output(case_dir(o_.dir, c.id) / "log.txt");
-      execv(argv[0], argv.data());
+      execvp(argv[0], argv.data());  // mpirun from PATH
       std::fprintf(stderr, "inpact study: cannot run %s: %s\n", argv[0], std::strerror(errno));
       _exit(127);
     }
@@ -355,9 +363,11 @@ std::size_t run_on(Launcher& launcher, const Manifest& m, const RunnerOptions& o
 /// The cases k of `pending` on o.jobs workers: forked workers, or exec'd cases with --inpact.
 std::size_t run_pending(const Manifest& m, const RunnerOptions& o, std::deque<std::size_t> pending, bool progress) {
   prepare_for_cases();
-  if (!o.executable.empty()) {
-    ExecLauncher launcher(m, o);
-    return run_on(launcher, m, o, std::move(pending), progress);
+  if (!o.executable.empty() || o.ranks_per_case > 1) {
+    RunnerOptions exec = o;
+    if (exec.executable.empty()) exec.executable = fs::read_symlink("/proc/self/exe").string();
+    ExecLauncher launcher(m, exec);
+    return run_on(launcher, m, exec, std::move(pending), progress);
   }
   WorkerPool pool(o.jobs, [&](std::size_t k) { return run_case_here(m, m.cases[k], o); });
   return run_on(pool, m, o, std::move(pending), progress);
@@ -386,9 +396,10 @@ int run_cases(const Manifest& m, const RunnerOptions& o) {
     else pending.push_back(k);
   }
   if (!o.quiet)
-    std::printf("study: %zu case(s)%s, %zu already completed, %zu to run on %d worker(s)\n", n_shard,
+    std::printf("study: %zu case(s)%s, %zu already completed, %zu to run on %d worker(s)%s\n", n_shard,
                 o.shard.count > 1 ? fmt::format(" in shard {}/{}", o.shard.index, o.shard.count).c_str() : "", n_skipped,
-                pending.size(), o.jobs);
+                pending.size(), o.jobs,
+                o.ranks_per_case > 1 ? fmt::format(" of {} MPI ranks each", o.ranks_per_case).c_str() : "");
   std::fflush(stdout);
   const std::size_t n_failed = run_pending(m, o, std::move(pending), !o.quiet);
   write_table(m, o.dir);

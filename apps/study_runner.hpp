@@ -22,6 +22,9 @@ struct RunnerOptions {
   std::string executable;        ///< --inpact EXE: exec EXE for each case (default: fork and run in-process)
   int jobs = 1;                  ///< worker processes
   int threads = 1;               ///< --threads of each case
+  /// --ranks-per-case N: each case a distributed run, `mpirun -np N EXE run ...` (exec'd; EXE
+  /// the --inpact executable or this one). 1: a case is one process.
+  int ranks_per_case = 1;
   Shard shard;
   bool quiet = false;
 };

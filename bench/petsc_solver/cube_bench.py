@@ -59,6 +59,11 @@ def one_run(inpact, path, solver, work, threads):
         r["newton"] = int(np.sum(f["status"]["total_iters"]))
         u = f["steps"]["Step-1" if "Step-1" in f["steps"] else list(f["steps"])[0]]["fieldOutputs"]["U"]["data"][-1]
         r["tip_u3"] = float(u[np.argmax(np.abs(u[:, 2])), 2])
+        fields = f["steps"][list(f["steps"])[-1]]["fieldOutputs"]
+        if "CPRESS" in fields:  # contact decks (blocks_bench.py): the pressure's range
+            p = fields["CPRESS"]["data"][-1]
+            p = p[np.isfinite(p) & (p > 0)]
+            r["cpress"] = (float(p.min()), float(p.max())) if p.size else (0.0, 0.0)
     os.remove(os.path.join(work, job + ".h5"))
     return r
 

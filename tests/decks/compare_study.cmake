@@ -4,7 +4,8 @@
 #   cmake -DINPACT=path/to/inpact -DSOURCE=repo -DWORK=scratch-folder -DMODE=<mode> -P compare_study.cmake
 #
 # MODE: compare_rerun | compare_changed_load | compare_renumbered | compare_incomplete |
-#       study_resume | study_failed_case | study_gnu_parallel | study_fork_matches_exec
+#       study_resume | study_failed_case | study_gnu_parallel | study_fork_matches_exec |
+#       study_ranks_per_case
 cmake_minimum_required(VERSION 3.22)
 foreach(var INPACT SOURCE WORK MODE)
   if(NOT DEFINED ${var})
@@ -214,6 +215,27 @@ elseif(MODE STREQUAL "study_fork_matches_exec")
   endif()
   file(READ "${WORK}/F/cases/c0001/timings.txt" timings)
   expect_text("output_s=" "${timings}" "timings")
+
+elseif(MODE STREQUAL "study_ranks_per_case")
+  # --ranks-per-case 2: each case a distributed run (mpirun -np 2 inpact run ...). Its results
+  # are the one-process study's: the patch test's uniform pressure, 10 and 12.5, to 1e-6.
+  set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
+  set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
+  set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
+  inpact(0 out study patch.inp --grid load=10,12.5 -o R ${collect} --ranks-per-case 2)
+  expect_text("to run on 1 worker(s) of 2 MPI ranks each" "${out}" "progress")
+  inpact(0 out study patch.inp --grid load=10,12.5 -o S ${collect})
+  file(READ "${WORK}/R/cases/c0002/c0002.dat" dat)
+  expect_text("; 2 MPI ranks" "${dat}" "case .dat")
+  file(WRITE "${WORK}/acceptance.toml" "[default]\nrtol = 1e-6\natol = 1e-6\nscale = \"frame-max\"\n[CSTATUS]\nexact = true\n")
+  foreach(id c0001 c0002)
+    inpact(0 out compare R/cases/${id}/${id}.h5 S/cases/${id}/${id}.h5 --tolerances acceptance.toml)
+  endforeach()
+  file(STRINGS "${WORK}/R/results.csv" rows)
+  list(GET rows 2 row)
+  if(NOT row MATCHES "^c0002,12.5,completed,0,")
+    string(APPEND failures "  row 2 of the distributed study: ${row}\n")
+  endif()
 
 else()
   message(FATAL_ERROR "compare_study.cmake: unknown MODE=${MODE}")

@@ -9,3 +9,10 @@ foreach(mode compare_rerun compare_changed_load compare_renumbered compare_incom
   set_tests_properties(decks.${mode} PROPERTIES LABELS "decks;compare_study" TIMEOUT 300)
 endforeach()
 set_tests_properties(decks.study_gnu_parallel PROPERTIES SKIP_REGULAR_EXPRESSION "GNU parallel not installed")
+if(INPACT_HAVE_PETSC AND MPIEXEC_EXECUTABLE)
+  add_test(NAME decks.study_ranks_per_case
+           COMMAND ${CMAKE_COMMAND} -DINPACT=$<TARGET_FILE:inpact> -DSOURCE=${PROJECT_SOURCE_DIR}
+                   -DWORK=${CMAKE_CURRENT_BINARY_DIR}/compare_study/study_ranks_per_case -DMODE=study_ranks_per_case
+                   -P ${compare_study_runner})
+  set_tests_properties(decks.study_ranks_per_case PROPERTIES LABELS "decks;compare_study;mpi" TIMEOUT 300 PROCESSORS 2)
+endif()
