@@ -16,6 +16,7 @@
 #include "exit_codes.hpp"
 #include "process_setup.hpp"
 #include "solver/blas_info.hpp"
+#include "solver/linear/petsc_module.hpp"
 #include "solver/linear_solver_choice.hpp"
 
 using namespace inpact::app;
@@ -138,6 +139,8 @@ int main(int argc, char** argv) {
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "inpact: internal error: %s\n", e.what());
+    // The other ranks of a distributed run would wait for this one in their next collective.
+    inpact::solver::rank_world().abort(kAnalysisFailed);
     return kAnalysisFailed;
   }
   return kUsage;

@@ -84,7 +84,7 @@ void start_linear_solver(const SolverChoice& choice) {
 
 std::string petsc_availability() {
   if (!petsc_built()) return "PETSc: not built (--solver petsc unavailable)";
-  return petsc_build_version() + " (--solver petsc|auto available)";
+  return petsc_build_version() + " (--solver petsc|auto available; mpirun -np N inpact run: a distributed run)";
 }
 
 }  // namespace inpact::solver

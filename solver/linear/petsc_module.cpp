@@ -22,6 +22,7 @@ struct Module {
   decltype(&inpact_petsc_finish) finish = nullptr;
   decltype(&inpact_mpi_world) world = nullptr;
   decltype(&inpact_mpi_allreduce) allreduce = nullptr;
+  decltype(&inpact_mpi_abort) abort = nullptr;
   std::string error;  ///< why it could not be started
 };
 
@@ -70,7 +71,8 @@ Module& module() {
     m.finish = reinterpret_cast<decltype(&inpact_petsc_finish)>(dlsym(m.handle, "inpact_petsc_finish"));
     m.world = reinterpret_cast<decltype(&inpact_mpi_world)>(dlsym(m.handle, "inpact_mpi_world"));
     m.allreduce = reinterpret_cast<decltype(&inpact_mpi_allreduce)>(dlsym(m.handle, "inpact_mpi_allreduce"));
-    if (!start || !m.create || !m.finish || !m.world || !m.allreduce) {
+    m.abort = reinterpret_cast<decltype(&inpact_mpi_abort)>(dlsym(m.handle, "inpact_mpi_abort"));
+    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.abort) {
       m.error = "the PETSc module lacks its entry points";
       m.create = nullptr;
       return;
@@ -120,6 +122,10 @@ RankWorld rank_world() {
 
 void RankWorld::sum(std::span<double> values) const {
   if (distributed()) module().allreduce(values.data(), static_cast<long>(values.size()), 0);
+}
+
+void RankWorld::abort(int code) const {
+  if (distributed()) module().abort(code);
 }
 
 double RankWorld::min(double value) const {

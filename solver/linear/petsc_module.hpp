@@ -15,6 +15,8 @@ void inpact_petsc_finish();
 void inpact_mpi_world(int* rank, int* size);
 /// values[0..n) combined over every rank, in place: op 0 sum, 1 min, 2 max.
 void inpact_mpi_allreduce(double* values, long n, int op);
+/// Ends every rank of the run (MPI_Abort) with exit code `code`.
+void inpact_mpi_abort(int code);
 /// A new solver; the caller owns it. Null (with the reason in `error`) on failure.
 inpact::solver::LinearSolver* inpact_petsc_create(const inpact::solver::EquationPoints* points, std::string* error);
 }
@@ -39,6 +41,8 @@ struct RankWorld {
   void sum(std::span<double> values) const;
   /// The smallest value over the ranks.
   double min(double value) const;
+  /// A rank that cannot go on ends them all (on one rank: nothing; the caller exits).
+  void abort(int code) const;
 };
 RankWorld rank_world();
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <numeric>
 #include <stdexcept>
@@ -429,6 +430,11 @@ void inpact_petsc_finish() { PetscFinalize(); }
 void inpact_mpi_world(int* rank, int* size) {
   MPI_Comm_rank(PETSC_COMM_WORLD, rank);
   MPI_Comm_size(PETSC_COMM_WORLD, size);
+}
+
+void inpact_mpi_abort(int code) {
+  std::fflush(nullptr);
+  MPI_Abort(PETSC_COMM_WORLD, code);
 }
 
 /// Reduced on rank 0 and sent to every rank, not MPI_Allreduce: with more than two ranks an
