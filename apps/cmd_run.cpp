@@ -172,9 +172,9 @@ std::optional<solver::SolverChoice> start_linear_solver(const RunOptions& option
 }
 
 /// The folder a rank writes its results to. Rank 0 of an MPI run (and a run without one) writes
-/// to --output-dir. The other ranks compute the same results (the run is replicated but for the
-/// linear solve) and write them to a scratch folder that they remove at the end, so that the
-/// user gets one set of files and no two processes write the same one.
+/// to --output-dir. The other ranks hold the same state (every rank follows the same increments,
+/// solver/assembler.hpp) and write the same results to a scratch folder that they remove at the
+/// end, so that the user gets one set of files and no two processes write the same one.
 class RankOutput {
  public:
   RankOutput(const RunOptions& options, solver::LaunchRanks ranks) : writer_(ranks.rank == 0) {

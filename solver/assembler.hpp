@@ -80,7 +80,8 @@ class Assembler {
   /// from its committed state and writes its trial state. Null: no element has state.
   Assembler(const AnalysisModel& am, const DofMap& dofs, int threads = 1, MaterialStates* states = nullptr);
 
-  /// The reduced tangent's pattern (upper triangle); assemble() fills its values.
+  /// The reduced tangent's pattern (upper triangle); assemble() fills its values (on a
+  /// distributed run this rank's part of them).
   SparseMatrix& tangent() { return tangent_; }
   const DofMap& dofs() const { return dofs_; }
   /// Size of the system: the DOF map's equations plus the multipliers of set_extra_couplings().

@@ -21,8 +21,8 @@ ROUND_OFF = 1e-12  # inpact compare's default absolute atol (io/compare.hpp)
 METHODS = {"direct": "DIRECT", "penalty": "PENALTY", "auglag": "AUGMENTED LAGRANGE"}
 
 
-def cases():
-    out = []
+def cases(extra=()):
+    out = [(os.path.basename(deck)[:-4], os.path.abspath(deck), {}) for deck in extra]
     for deck in sorted(glob.glob(os.path.join(ROOT, "decks/contact_verification/*.inp"))):
         name = os.path.basename(deck)[:-4]
         if "<method>" in open(deck).read():
@@ -122,13 +122,14 @@ def main():
     ap.add_argument("--only", nargs="*")
     ap.add_argument("--tolerance", type=float, default=1e-6)
     ap.add_argument("--ranks", type=int, default=1, help="MPI ranks of the PETSc runs (mpirun -np N)")
+    ap.add_argument("--extra", nargs="*", default=[], help="more decks, each a case named by its file")
     ap.add_argument("--reuse", action="store_true",
                     help="compare the results already in --out (times: the runs' total_s) instead of running")
     a = ap.parse_args()
     rows = [f"| case | direct s | petsc{f' ({a.ranks} ranks)' if a.ranks > 1 else ''} s | Newton direct / petsc | Krylov its | worst rel. diff | where | pass |",
             "|---|---|---|---|---|---|---|---|"]
     failed = 0
-    for job, deck, params in cases():
+    for job, deck, params in cases(a.extra):
         if a.only and not any(o in job for o in a.only):
             continue
         rc_d, s_d, _, err_d = run(a.inpact, deck, job, params, "direct", os.path.join(a.out, "direct"), a.reuse)

@@ -4,7 +4,8 @@
 # frame within 1e-6 of the field's largest value over the step. The differences are the Krylov
 # tolerance's (solver/linear_solve.cpp), not the distribution's.
 #
-#   cmake -DINPACT=inpact -DSOURCE=repo -DCASE=name -DWORK=dir -P mpi_run.cmake
+#   cmake -DINPACT=inpact -DSOURCE=repo -DCASE=name -DWORK=dir [-DDECK=path] -P mpi_run.cmake
+# CASE names a case of compare_solvers.py, or with DECK that deck (named by its file).
 cmake_minimum_required(VERSION 3.22)
 foreach(var INPACT SOURCE CASE WORK)
   if(NOT DEFINED ${var})
@@ -12,8 +13,12 @@ foreach(var INPACT SOURCE CASE WORK)
   endif()
 endforeach()
 file(REMOVE_RECURSE "${WORK}")
+set(extra "")
+if(DEFINED DECK)
+  set(extra --extra "${DECK}")
+endif()
 execute_process(COMMAND /usr/bin/python3 "${SOURCE}/bench/petsc_solver/compare_solvers.py" --inpact "${INPACT}"
-                        --out "${WORK}" --only "${CASE}" --ranks 2
+                        --out "${WORK}" --only "${CASE}" --ranks 2 ${extra}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 280)
 message(STATUS "${o}${e}")
 if(NOT rc EQUAL 0)
