@@ -5,12 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <thread>
-#include <tuple>
 
 #include <fmt/format.h>
 
 #include "elements/element_kernel.hpp"
 #include "elements/material.hpp"
+#include "element_partition.hpp"
 #include "material_states.hpp"
 
 namespace inpact::solver {
@@ -25,28 +25,22 @@ void Assembler::element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) con
 
 Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, MaterialStates* states)
     : am_(am), dofs_(dofs), threads_(threads), states_(states), world_(rank_world()) {
-  std::tie(first_element_, end_element_) = element_share(am.model->mesh.elements.size(), world_.rank, world_.size);
+  if (world_.distributed()) {
+    rank_of_element_ = element_partition(am, world_).rank_of_element;
+    for (std::size_t e = 0; e < rank_of_element_.size(); ++e)
+      if (rank_of_element_[e] == world_.rank) own_elements_.push_back(e);
+  }
   build_pattern(nullptr);
-}
-
-std::pair<std::size_t, std::size_t> element_share(std::size_t n_elements, int rank, int ranks) {
-  const auto r = static_cast<std::size_t>(rank), n = static_cast<std::size_t>(ranks);
-  return {n_elements * r / n, n_elements * (r + 1) / n};
 }
 
 std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
   if (!world.distributed()) return "";
-  const std::size_t n_el = am.model->mesh.elements.size();
-  std::size_t fewest = n_el, most = 0;
-  for (int r = 0; r < world.size; ++r) {
-    const auto [first, end] = element_share(n_el, r, world.size);
-    fewest = std::min(fewest, end - first);
-    most = std::max(most, end - first);
-  }
-  return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (a contiguous range "
-                     "of the deck's order) and PETSc owns an even share of the system's rows; contact, constraints "
-                     "and output are computed alike on every rank, rank 0 writes the results",
-                     world.size, fewest, most, n_el);
+  const std::vector<std::size_t>& counts = element_partition(am, world).counts;
+  const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
+  return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (PETSc's "
+                     "partitioner on the element graph) and PETSc owns an even share of the system's rows; contact, "
+                     "constraints and output are computed alike on every rank, rank 0 writes the results",
+                     world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 
 void Assembler::set_extra_couplings(const ExtraCouplings& extra) { build_pattern(&extra); }
@@ -218,13 +212,14 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   const std::size_t n_el = am_.model->mesh.elements.size();
   // Points are kept for every element; otherwise a distributed run's rank evaluates its own.
   const bool partitioned = world_.distributed() && !request.points;
-  const std::size_t first = partitioned ? first_element_ : 0, last = partitioned ? end_element_ : n_el;
+  const std::size_t n_listed = partitioned ? own_elements_.size() : n_el;
+  const auto element_at = [&](std::size_t i) { return partitioned ? own_elements_[i] : i; };
 
   // Element systems are computed in parallel chunk by chunk and added in element order by one
   // thread, so the assembled numbers do not depend on the thread count.
   const std::size_t n_threads = static_cast<std::size_t>(std::max(threads_, 1));
   const std::size_t chunk = n_threads == 1 ? 1 : 512 * n_threads;
-  std::vector<elements::ElementSystem> systems(std::min(chunk, last - first));
+  std::vector<elements::ElementSystem> systems(std::min(chunk, n_listed));
   std::vector<std::int64_t> el_dofs;
   if (request.points) {
     have_points_ = false;  // until every element is in
@@ -233,10 +228,10 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   }
   double force_sum = 0.0, moved_sum = 0.0;
   std::size_t force_count = 0;
-  for (std::size_t begin = first; begin < last; begin += chunk) {
-    const std::size_t end = std::min(begin + chunk, last);
+  for (std::size_t begin = 0; begin < n_listed; begin += chunk) {
+    const std::size_t end = std::min(begin + chunk, n_listed);
     auto work = [&](std::size_t t) {
-      for (std::size_t e = begin + t; e < end; e += n_threads) compute(e, u, request, systems[e - begin]);
+      for (std::size_t i = begin + t; i < end; i += n_threads) compute(element_at(i), u, request, systems[i - begin]);
     };
     if (n_threads == 1) {
       work(0);
@@ -245,8 +240,9 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
       for (std::size_t t = 1; t < n_threads; ++t) pool.emplace_back(work, t);
       work(0);
     }
-    for (std::size_t e = begin; e < end; ++e) {
-      const elements::ElementSystem& sys = systems[e - begin];
+    for (std::size_t at = begin; at < end; ++at) {
+      const std::size_t e = element_at(at);
+      const elements::ElementSystem& sys = systems[at - begin];
       if (result.min_jacobian_element < 0 || sys.min_jacobian < result.min_jacobian) {
         result.min_jacobian = sys.min_jacobian;
         result.min_jacobian_element = static_cast<std::int64_t>(e);

@@ -3,7 +3,6 @@
 /// once per DOF map, and the full internal force vector f_int(u) (reactions are read from it).
 #include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "analysis_model.hpp"
@@ -61,14 +60,11 @@ struct AssemblyResult {
   std::int64_t min_jacobian_element = -1;
 };
 
-/// The elements [first, second) that rank `rank` of `ranks` evaluates: contiguous in the deck's
-/// order, as even as counts go.
-std::pair<std::size_t, std::size_t> element_share(std::size_t n_elements, int rank, int ranks);
 /// One line on how a distributed run shares its work (for the log and the .sta); "" on one rank.
 std::string describe_distribution(const AnalysisModel& am, RankWorld world);
 
 /// On the ranks of a distributed run (mpirun, linear/petsc_module.hpp RankWorld) each rank
-/// evaluates its share of the elements, a contiguous range of them: the internal forces are
+/// evaluates its share of the elements (element_partition.hpp): the internal forces are
 /// summed over the ranks (every rank has f_int whole), the tangent is not (each rank holds its
 /// elements' part, which the PETSc solver adds up). The terms every rank computes alike (contact,
 /// stabilisation: add_local_matrix and the other add_ functions) go into rank 0's tangent only.
@@ -150,7 +146,7 @@ class Assembler {
   /// Global DOFs of element e, node-major.
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
   /// Whether this rank evaluates element e for the tangent (every element on one rank).
-  bool owns(std::size_t e) const { return e >= first_element_ && e < end_element_; }
+  bool owns(std::size_t e) const { return !world_.distributed() || rank_of_element_[e] == world_.rank; }
   /// Whether the terms every rank computes alike go into this rank's tangent (rank 0's).
   bool adds_shared_terms() const { return world_.rank == 0; }
   /// Sums a partitioned assembly's forces and force measures over the ranks.
@@ -174,7 +170,8 @@ class Assembler {
   int threads_ = 1;
   MaterialStates* states_ = nullptr;
   RankWorld world_;
-  std::size_t first_element_ = 0, end_element_ = 0;  ///< this rank's elements
+  std::vector<int> rank_of_element_;        ///< a distributed run's partition (else empty)
+  std::vector<std::size_t> own_elements_;   ///< the elements this rank evaluates, ascending
   ElementPoints points_;
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;

@@ -50,6 +50,9 @@ struct EquationPoints {
   std::vector<std::int64_t> node;    ///< per equation: its node (a row of the mesh's nodes)
   std::vector<int> component;        ///< per equation: 0 .. dim-1
   std::vector<double> coordinates;   ///< per node row: x, y, z (3 per node, every node)
+  /// A distributed run: per node row, the rank whose elements it belongs to (the lowest of
+  /// them), which owns its rows of the system. Empty: the rows are shared evenly in order.
+  std::vector<int> node_rank;
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();

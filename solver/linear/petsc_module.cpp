@@ -5,6 +5,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
@@ -23,6 +24,7 @@ struct Module {
   decltype(&inpact_mpi_world) world = nullptr;
   decltype(&inpact_mpi_allreduce) allreduce = nullptr;
   decltype(&inpact_mpi_abort) abort = nullptr;
+  decltype(&inpact_partition_elements) partition = nullptr;
   std::string error;  ///< why it could not be started
 };
 
@@ -72,7 +74,8 @@ Module& module() {
     m.world = reinterpret_cast<decltype(&inpact_mpi_world)>(dlsym(m.handle, "inpact_mpi_world"));
     m.allreduce = reinterpret_cast<decltype(&inpact_mpi_allreduce)>(dlsym(m.handle, "inpact_mpi_allreduce"));
     m.abort = reinterpret_cast<decltype(&inpact_mpi_abort)>(dlsym(m.handle, "inpact_mpi_abort"));
-    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.abort) {
+    m.partition = reinterpret_cast<decltype(&inpact_partition_elements)>(dlsym(m.handle, "inpact_partition_elements"));
+    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.abort || !m.partition) {
       m.error = "the PETSc module lacks its entry points";
       m.create = nullptr;
       return;
@@ -131,6 +134,16 @@ void RankWorld::abort(int code) const {
 double RankWorld::min(double value) const {
   if (distributed()) module().allreduce(&value, 1, 1);
   return value;
+}
+
+std::vector<int> partition_graph(std::span<const long> xadj, std::span<const long> adjacency) {
+  const long n = static_cast<long>(xadj.size()) - 1;
+  std::vector<int> rank(static_cast<std::size_t>(std::max(n, 0L)), 0);
+  if (!petsc_started().load() || n <= 0) return rank;
+  std::string error;
+  if (module().partition(n, xadj.data(), adjacency.data(), rank.data(), &error) != 0)
+    throw std::runtime_error("the elements could not be partitioned: " + error);
+  return rank;
 }
 
 std::unique_ptr<LinearSolver> make_petsc_solver(const EquationPoints& points) {

@@ -3,6 +3,7 @@
 /// petsc_module.cpp looks up after loading it; and the process-wide PETSc session.
 #include <span>
 #include <string>
+#include <vector>
 
 #include "linear_solver.hpp"
 
@@ -17,6 +18,11 @@ void inpact_mpi_world(int* rank, int* size);
 void inpact_mpi_allreduce(double* values, long n, int op);
 /// Ends every rank of the run (MPI_Abort) with exit code `code`.
 void inpact_mpi_abort(int code);
+/// PETSc's graph partitioner (petsc_partition.cpp) on the graph of n vertices whose neighbours
+/// are adjacency[xadj[v] .. xadj[v+1]) (no self-loops, sorted), the same on every rank: the
+/// rank of each vertex into rank_of_element. Nonzero (the reason in `error`) on failure.
+int inpact_partition_elements(long n, const long* xadj, const long* adjacency, int* rank_of_element,
+                              std::string* error);
 /// A new solver; the caller owns it. Null (with the reason in `error`) on failure.
 inpact::solver::LinearSolver* inpact_petsc_create(const inpact::solver::EquationPoints* points, std::string* error);
 }
@@ -45,5 +51,9 @@ struct RankWorld {
   void abort(int code) const;
 };
 RankWorld rank_world();
+
+/// The rank of each vertex of a graph (CSR: xadj, adjacency, as inpact_partition_elements
+/// takes it) by PETSc's partitioner over the ranks of the run. Throws std::runtime_error.
+std::vector<int> partition_graph(std::span<const long> xadj, std::span<const long> adjacency);
 
 }  // namespace inpact::solver

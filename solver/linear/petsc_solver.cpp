@@ -49,20 +49,32 @@ struct SlotLayout {
   std::vector<double> block_coords;    ///< per node block: dim coordinates
   PetscInt n_displacement_slots = 0;
 
-  SlotLayout(const EquationPoints& p, std::int64_t n_equations) {
+  std::vector<PetscInt> blocks_of_rank;  ///< node blocks per rank, in slot order (node_rank given)
+
+  SlotLayout(const EquationPoints& p, std::int64_t n_equations, PetscMPIInt ranks) {
     const auto n_disp = static_cast<std::int64_t>(p.node.size());
-    std::vector<PetscInt> block_of_node;
-    std::vector<std::int64_t> node_of_block;
-    slot_of_eq.resize(static_cast<std::size_t>(n_equations));
+    std::vector<std::int64_t> node_of_block;  // the nodes with equations, in order of appearance
+    std::vector<char> listed;
     for (std::int64_t e = 0; e < n_disp; ++e) {
       const auto node = static_cast<std::size_t>(p.node[e]);
-      if (block_of_node.size() <= node) block_of_node.resize(node + 1, -1);
-      if (block_of_node[node] < 0) {
-        block_of_node[node] = static_cast<PetscInt>(node_of_block.size());
-        node_of_block.push_back(p.node[e]);
-      }
-      slot_of_eq[e] = block_of_node[node] * p.dim + p.component[e];
+      if (listed.size() <= node) listed.resize(node + 1, 0);
+      if (!listed[node]) node_of_block.push_back(p.node[e]);
+      listed[node] = 1;
     }
+    // A distributed run: each rank's nodes together, so that it owns the rows of its elements.
+    if (!p.node_rank.empty()) {
+      const auto rank_of = [&](std::int64_t node) { return p.node_rank[static_cast<std::size_t>(node)]; };
+      std::stable_sort(node_of_block.begin(), node_of_block.end(),
+                       [&](std::int64_t a, std::int64_t b) { return rank_of(a) < rank_of(b); });
+      blocks_of_rank.assign(static_cast<std::size_t>(ranks), 0);
+      for (std::int64_t node : node_of_block) ++blocks_of_rank[static_cast<std::size_t>(rank_of(node))];
+    }
+    std::vector<PetscInt> block_of_node(listed.size(), -1);
+    for (std::size_t b = 0; b < node_of_block.size(); ++b)
+      block_of_node[static_cast<std::size_t>(node_of_block[b])] = static_cast<PetscInt>(b);
+    slot_of_eq.resize(static_cast<std::size_t>(n_equations));
+    for (std::int64_t e = 0; e < n_disp; ++e)
+      slot_of_eq[e] = block_of_node[static_cast<std::size_t>(p.node[e])] * p.dim + p.component[e];
     n_displacement_slots = static_cast<PetscInt>(node_of_block.size()) * p.dim;
     for (std::int64_t e = n_disp; e < n_equations; ++e)
       slot_of_eq[e] = n_displacement_slots + static_cast<PetscInt>(e - n_disp);
@@ -78,13 +90,22 @@ struct SlotLayout {
   }
 };
 
-/// The rows [begin, end) of the PETSc system this rank owns: an even share of the node blocks
-/// (whole blocks, so that GAMG keeps a node's DOFs together), or of the rows of a saddle-point
-/// system (MUMPS needs no blocks).
+/// The rows [begin, end) of the PETSc system this rank owns: the node blocks of its elements
+/// (SlotLayout::blocks_of_rank; the last rank takes the multipliers too), or else an even share
+/// of the node blocks (whole blocks, so that GAMG keeps a node's DOFs together) or of the rows
+/// of a saddle-point system (MUMPS needs no blocks).
 struct RowOwnership {
   PetscInt begin = 0, end = 0;
 
-  RowOwnership(PetscInt n, PetscInt block, PetscMPIInt rank, PetscMPIInt ranks) {
+  RowOwnership(const SlotLayout& layout, PetscInt n, PetscInt dim, bool saddle_point, PetscMPIInt rank,
+               PetscMPIInt ranks) {
+    if (!layout.blocks_of_rank.empty()) {
+      for (PetscMPIInt r = 0; r < rank; ++r) begin += layout.blocks_of_rank[static_cast<std::size_t>(r)] * dim;
+      end = begin + layout.blocks_of_rank[static_cast<std::size_t>(rank)] * dim;
+      if (rank == ranks - 1) end = n;
+      return;
+    }
+    const PetscInt block = saddle_point ? 1 : dim;
     const PetscInt units = n / block, share = units / ranks, extra = units % ranks;
     const auto first_unit = [&](PetscMPIInt r) { return r * share + std::min<PetscInt>(r, extra); };
     begin = first_unit(rank) * block;
@@ -209,14 +230,14 @@ void PetscSolver::build(const SparseMatrix& a) {
   n_ = a.n;
   const auto n_disp = static_cast<std::int64_t>(points_.node.size());
   saddle_point_ = n_ > n_disp;
-  layout_ = std::make_unique<SlotLayout>(points_, n_);
-  const PetscInt n = layout_->size(n_, n_disp);
-  csr_ = std::make_unique<CsrMap>(a, *layout_, n);
-  values_.assign(csr_->col.size(), 0.0);
   PetscMPIInt rank = 0;
   MPI_Comm_rank(comm_, &rank);
   MPI_Comm_size(comm_, &ranks_);
-  rows_ = std::make_unique<RowOwnership>(n, saddle_point_ ? 1 : points_.dim, rank, ranks_);
+  layout_ = std::make_unique<SlotLayout>(points_, n_, ranks_);
+  const PetscInt n = layout_->size(n_, n_disp);
+  csr_ = std::make_unique<CsrMap>(a, *layout_, n);
+  values_.assign(csr_->col.size(), 0.0);
+  rows_ = std::make_unique<RowOwnership>(*layout_, n, points_.dim, saddle_point_, rank, ranks_);
   const PetscInt m = rows_->size();
   check(MatCreate(comm_, &a_), "MatCreate");
   check(MatSetSizes(a_, m, m, n, n), "MatSetSizes");
