@@ -63,4 +63,16 @@ const ElementPartition& element_partition(const AnalysisModel& am, RankWorld wor
   return partition;
 }
 
+std::vector<int> node_ranks(const AnalysisModel& am, RankWorld world) {
+  const std::vector<int>& rank_of_element = element_partition(am, world).rank_of_element;
+  const auto& elements = am.model->mesh.elements;
+  std::vector<int> rank(am.model->mesh.nodes.size(), world.size - 1);
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    for (const auto node : elements.nodes_of(e)) {
+      int& owner = rank[static_cast<std::size_t>(node)];
+      owner = std::min(owner, rank_of_element[e]);
+    }
+  return rank;
+}
+
 }  // namespace inpact::solver

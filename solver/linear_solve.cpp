@@ -20,14 +20,7 @@ EquationPoints equation_points(const AnalysisModel& am, const DofMap& dofs) {
       p.component[eq] = static_cast<int>(d % am.dim);
     }
   for (const auto& x : am.model->mesh.nodes.coords) p.coordinates.insert(p.coordinates.end(), x.begin(), x.end());
-  if (const RankWorld world = rank_world(); world.distributed()) {
-    const std::vector<int>& rank_of_element = element_partition(am, world).rank_of_element;
-    const auto& elements = am.model->mesh.elements;
-    p.node_rank.assign(am.model->mesh.nodes.size(), world.size - 1);  // a node of no element: the last rank
-    for (std::size_t e = 0; e < elements.size(); ++e)
-      for (const auto node : elements.nodes_of(e))
-        p.node_rank[static_cast<std::size_t>(node)] = std::min(p.node_rank[static_cast<std::size_t>(node)], rank_of_element[e]);
-  }
+  if (const RankWorld world = rank_world(); world.distributed()) p.node_rank = node_ranks(am, world);
   return p;
 }
 
