@@ -38,7 +38,7 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
   const std::vector<std::size_t>& counts = element_partition(am, world).counts;
   const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
   return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (PETSc's "
-                     "partitioner on the element graph) and PETSc owns an even share of the system's rows; contact, "
+                     "partitioner on the element graph) and owns the system's rows of their nodes; contact, "
                      "constraints and output are computed alike on every rank, rank 0 writes the results",
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
@@ -290,7 +290,8 @@ void Assembler::sum_over_ranks(const AssemblyRequest& request, std::span<double>
   constexpr double kNone = std::numeric_limits<double>::infinity();
   const double local = result.min_jacobian_element < 0 ? kNone : result.min_jacobian;
   result.min_jacobian = world_.min(local);
-  const double element = world_.min(local == result.min_jacobian ? static_cast<double>(result.min_jacobian_element) : kNone);
+  const double candidate = local == result.min_jacobian ? static_cast<double>(result.min_jacobian_element) : kNone;
+  const double element = world_.min(candidate);
   if (result.min_jacobian == kNone) {  // no elements anywhere: as one rank reports it
     result.min_jacobian = 0.0;
     result.min_jacobian_element = -1;

@@ -1,7 +1,8 @@
 /// The PETSc solver path (the module libinpact_petsc.so, loaded on use), on one process or on
 /// the ranks of `mpirun -np N` (PETSC_COMM_WORLD). Every rank holds the pattern of the whole
 /// inpact system and a partial sum of its values (the ranks share the elements: fill_values);
-/// PETSc owns an even share of the rows on each, and the solution comes back to every rank.
+/// each owns the rows of its elements' nodes (RowOwnership), and the solution comes back to
+/// every rank.
 ///  - a symmetric system (upper_only): CG preconditioned by smoothed-aggregation algebraic
 ///    multigrid (GAMG) whose near null space is the mesh's rigid-body modes
 ///    (MatNullSpaceCreateRigidBody from the node coordinates);
@@ -339,7 +340,9 @@ void PetscSolver::configure_krylov(KSPType type) {
 bool PetscSolver::set_up_krylov(bool symmetric) {
   check(KSPSetOperators(krylov_, a_, a_), "KSPSetOperators");
   configure_krylov(symmetric ? KSPCG : KSPGMRES);
-  return KSPSetUp(krylov_) == 0;
+  int failed = KSPSetUp(krylov_) != 0 ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm_);  // every rank takes the same branch
+  return failed == 0;
 }
 
 FactorStatus PetscSolver::set_up_lu() {
