@@ -29,6 +29,7 @@ Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, M
     rank_of_element_ = element_partition(am, world_).rank_of_element;
     for (std::size_t e = 0; e < rank_of_element_.size(); ++e)
       if (rank_of_element_[e] == world_.rank) own_elements_.push_back(e);
+    rank_of_node_ = node_ranks(am, world_);
   }
   build_pattern(nullptr);
 }
@@ -38,8 +39,9 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
   const std::vector<std::size_t>& counts = element_partition(am, world).counts;
   const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
   return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (PETSc's "
-                     "partitioner on the element graph) and owns the system's rows of their nodes; contact, "
-                     "constraints and output are computed alike on every rank, rank 0 writes the results",
+                     "partitioner on the element graph), holds their part of the system and owns the rows of their "
+                     "nodes; contact, constraints and output are computed alike on every rank (contact's part of "
+                     "the system on rank 0), rank 0 writes the results",
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 
@@ -49,7 +51,9 @@ void Assembler::build_pattern(const ExtraCouplings* extra) {
   const DofMap& dofs = dofs_;
   const std::size_t n_el = am_.model->mesh.elements.size();
   const std::int64_t n_mult = extra ? static_cast<std::int64_t>(extra->multiplier_dofs.size()) : 0;
-  // Pattern: every pair of equations reached from one element's DOFs through their masters.
+  // Pattern: every pair of equations reached from one element's DOFs through their masters (of
+  // this rank's elements), and on rank 0 the shared terms' couplings; every diagonal is in it.
+  tangent_ = SparseMatrix{};  // the old pattern's memory is free for the new one
   PatternBuilder pattern(dofs.n_equations() + n_mult);
   std::vector<std::int64_t> el_dofs, eqs;
   auto add = [&](std::span<const std::int64_t> block, std::int64_t multiplier_eq) {
@@ -64,14 +68,20 @@ void Assembler::build_pattern(const ExtraCouplings* extra) {
     }
   };
   for (std::size_t e = 0; e < n_el; ++e) {
+    if (!owns(e)) continue;
     element_dofs(e, el_dofs);
     add(el_dofs, -1);
   }
-  if (extra) {
+  if (extra && adds_shared_terms()) {
     for (const auto& block : extra->dof_blocks) add(block, -1);
     for (std::int64_t m = 0; m < n_mult; ++m) add(extra->multiplier_dofs[m], dofs.n_equations() + m);
   }
   tangent_ = pattern.build(true);
+}
+
+void Assembler::add_diagonal(std::int64_t dof, double value) {
+  if (dofs_.kind(dof) != DofMap::Kind::Free || !owns_node(dof / am_.dim)) return;
+  tangent_.values[tangent_.find(dofs_.equation(dof), dofs_.equation(dof))] += value;
 }
 
 // Positions are found in each column rather than cached: a cache of every element entry's

@@ -65,10 +65,11 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world);
 
 /// On the ranks of a distributed run (mpirun, linear/petsc_module.hpp RankWorld) each rank
 /// evaluates its share of the elements (element_partition.hpp): the internal forces are
-/// summed over the ranks (every rank has f_int whole), the tangent is not (each rank holds its
-/// elements' part, which the PETSc solver adds up). The terms every rank computes alike (contact,
-/// stabilisation: add_local_matrix and the other add_ functions) go into rank 0's tangent only.
-/// An assembly that keeps points evaluates every element on every rank (complete_states).
+/// summed over the ranks (every rank has f_int whole), the tangent is not: each rank's pattern
+/// and values hold its elements' part (add_diagonal: the diagonal of its nodes' equations,
+/// node_ranks), which the PETSc solver adds up. The terms every rank computes alike (contact:
+/// add_local_matrix and the other add_ functions but add_diagonal) go into rank 0's tangent
+/// only. An assembly that keeps points evaluates every element on every rank (complete_states).
 class Assembler {
  public:
   /// `threads`: element computations run on this many threads (the sum stays in element order).
@@ -77,7 +78,7 @@ class Assembler {
   Assembler(const AnalysisModel& am, const DofMap& dofs, int threads = 1, MaterialStates* states = nullptr);
 
   /// The reduced tangent's pattern (upper triangle); assemble() fills its values (on a
-  /// distributed run this rank's part of them).
+  /// distributed run this rank's part of both).
   SparseMatrix& tangent() { return tangent_; }
   const DofMap& dofs() const { return dofs_; }
   /// Size of the system: the DOF map's equations plus the multipliers of set_extra_couplings().
@@ -105,6 +106,10 @@ class Assembler {
   void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) {
     if (adds_shared_terms()) scatter(dofs, k);
   }
+
+  /// Adds `value` to the diagonal of free DOF `dof` (nothing for another kind): on a distributed
+  /// run on the rank of its node, so that each rank adds its own.
+  void add_diagonal(std::int64_t dof, double value);
 
   /// The equations each local unknown feeds, with their weights (the DOF map's masters of a
   /// DOF, or a multiplier's own equation).
@@ -147,6 +152,10 @@ class Assembler {
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
   /// Whether this rank evaluates element e for the tangent (every element on one rank).
   bool owns(std::size_t e) const { return !world_.distributed() || rank_of_element_[e] == world_.rank; }
+  /// Whether this rank adds the diagonal terms of node `node`'s equations (node_ranks).
+  bool owns_node(std::int64_t node) const {
+    return !world_.distributed() || rank_of_node_[static_cast<std::size_t>(node)] == world_.rank;
+  }
   /// Whether the terms every rank computes alike go into this rank's tangent (rank 0's).
   bool adds_shared_terms() const { return world_.rank == 0; }
   /// Sums a partitioned assembly's forces and force measures over the ranks.
@@ -172,6 +181,7 @@ class Assembler {
   RankWorld world_;
   std::vector<int> rank_of_element_;        ///< a distributed run's partition (else empty)
   std::vector<std::size_t> own_elements_;   ///< the elements this rank evaluates, ascending
+  std::vector<int> rank_of_node_;           ///< a distributed run's node_ranks (else empty)
   ElementPoints points_;
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;

@@ -1,6 +1,7 @@
 #include "element_partition.hpp"
 
 #include <algorithm>
+#include <array>
 #include <mutex>
 
 namespace inpact::solver {
@@ -67,11 +68,14 @@ std::vector<int> node_ranks(const AnalysisModel& am, RankWorld world) {
   const std::vector<int>& rank_of_element = element_partition(am, world).rank_of_element;
   const auto& elements = am.model->mesh.elements;
   std::vector<int> rank(am.model->mesh.nodes.size(), world.size - 1);
-  for (std::size_t e = 0; e < elements.size(); ++e)
-    for (const auto node : elements.nodes_of(e)) {
-      int& owner = rank[static_cast<std::size_t>(node)];
+  std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's or shell's rotation nodes too
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const std::size_t n_rows = am.element_rows(e, rows);
+    for (std::size_t a = 0; a < n_rows; ++a) {
+      int& owner = rank[static_cast<std::size_t>(rows[a])];
       owner = std::min(owner, rank_of_element[e]);
     }
+  }
   return rank;
 }
 

@@ -21,8 +21,9 @@ struct ElementPartition {
 /// once per model and kept (the steps' assemblers share it).
 const ElementPartition& element_partition(const AnalysisModel& am, RankWorld world);
 
-/// The rank that owns each node's rows of the system: the lowest rank among its elements'
-/// (a node of no element: the last rank). Collective, as element_partition.
+/// The rank that owns each node's rows of the system: the lowest rank among the elements whose
+/// rows it is (AnalysisModel::element_rows: a shell's rotation node too; a node of no element:
+/// the last rank). Collective, as element_partition.
 std::vector<int> node_ranks(const AnalysisModel& am, RankWorld world);
 
 }  // namespace inpact::solver

@@ -42,9 +42,7 @@ void ViscousForces::add_tangent(Assembler& assembler) const {
   const double scale = factor_ / dt_;
   for (std::int64_t d = 0; d < dofs_->n_dof(); ++d) {
     if (dofs_->kind(d) != DofMap::Kind::Free || mass_[d] == 0.0) continue;
-    const std::int64_t dof[1] = {d};
-    const double k[1] = {scale * mass_[d]};
-    assembler.add_local_matrix(dof, k);
+    assembler.add_diagonal(d, scale * mass_[d]);
   }
 }
 
@@ -71,24 +69,22 @@ double factor_from_first_increment(double fraction, double strain_energy, double
 // quotient is estimated by mean(diag K)/mean(diag M*) over the equations (inpact's choice).
 double factor_from_diagonals(double fraction, const SparseMatrix& tangent, const DofMap& dofs,
                              std::span<const double> mass, double time_period) {
+  // A distributed run's ranks hold parts of the tangent (Assembler): their diagonals add up.
+  std::vector<double> diagonal(static_cast<std::size_t>(dofs.n_equations()), 0.0);
+  for (std::int64_t eq = 0; eq < dofs.n_equations(); ++eq)
+    if (const std::int64_t pos = tangent.find(eq, eq); pos >= 0) diagonal[eq] = tangent.values[pos];
+  if (const RankWorld world = rank_world(); world.distributed()) world.sum(diagonal);
   double k_sum = 0.0, m_sum = 0.0;
-  std::int64_t k_n = 0, m_n = 0;
+  std::int64_t n = 0;
   for (std::int64_t d = 0; d < dofs.n_dof(); ++d) {
     const std::int64_t eq = dofs.equation(d);
     if (eq < 0 || dofs.kind(d) != DofMap::Kind::Free) continue;
-    if (const std::int64_t pos = tangent.find(eq, eq); pos >= 0) {
-      k_sum += std::abs(tangent.values[pos]);
-      ++k_n;
-    }
+    k_sum += std::abs(diagonal[eq]);
     m_sum += mass[d];
-    ++m_n;
+    ++n;
   }
-  // A distributed run's ranks hold parts of the tangent (Assembler): their diagonals add up.
-  const RankWorld world = rank_world();
-  if (world.distributed()) world.sum(std::span(&k_sum, 1));
-  if (k_n == 0 || m_sum <= 0.0) return 0.0;
-  const double quotient = (k_sum / static_cast<double>(k_n)) / (m_sum / static_cast<double>(m_n));
-  return fraction * 0.5 * time_period * quotient;
+  if (n == 0 || m_sum <= 0.0) return 0.0;
+  return fraction * 0.5 * time_period * k_sum / m_sum;
 }
 
 StepStabilization::StepStabilization(const AnalysisModel& am, const model::Stabilization* spec, double time_period,

@@ -34,13 +34,14 @@ def cases(extra=()):
     return out
 
 
-def mpirun(ranks):
-    """The launcher's words for `ranks` processes on this machine (as root too, in CI)."""
+def mpirun(ranks, unbound=False):
+    """The launcher's words for `ranks` processes on this machine (as root too, in CI);
+    `unbound`: no rank bound to a core (a rank's element threads may use them all)."""
     if ranks <= 1:
         return []
     os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
     os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    return ["mpirun", "-np", str(ranks), "--oversubscribe"]
+    return ["mpirun", "-np", str(ranks), "--oversubscribe"] + (["--bind-to", "none"] if unbound else [])
 
 
 def run(inpact, deck, job, params, solver, out, reuse=False, ranks=1):

@@ -21,6 +21,8 @@ import h5py, numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import compare_solvers  # noqa: E402  (its mpirun launcher)
 
 
 def deck(n, work):
@@ -36,11 +38,7 @@ def one_run(inpact, path, solver, work, threads):
     job = f"{os.path.basename(path)[:-4]}_{solver}{ranks}"
     timings = os.path.join(work, job + ".timings")
     load = os.getloadavg()[0]
-    launcher = []
-    if ranks:
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-        launcher = ["mpirun", "-np", ranks, "--oversubscribe", "--bind-to", "none"]
+    launcher = compare_solvers.mpirun(int(ranks or 1), unbound=True)
     cmd = ["/usr/bin/time", "-v"] + launcher + [inpact, "run", path, "-j", job, "-o", work, "-q", "--solver", solver,
            "--threads", str(threads), "--timings", timings]
     p = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)

@@ -1,8 +1,8 @@
 /// The PETSc solver path (the module libinpact_petsc.so, loaded on use), on one process or on
-/// the ranks of `mpirun -np N` (PETSC_COMM_WORLD). Every rank holds the pattern of the whole
-/// inpact system and a partial sum of its values (the ranks share the elements: fill_values);
-/// each owns the rows of its elements' nodes (RowOwnership), and the solution comes back to
-/// every rank.
+/// the ranks of `mpirun -np N` (PETSC_COMM_WORLD). Every rank holds its part of the inpact
+/// system (the ranks share the elements, solver/assembler.hpp), whose entries may lie in any
+/// row; each owns the rows of its elements' nodes (RowOwnership), PETSc adds the parts up
+/// (preallocate_from_every_rank, fill_values), and the solution comes back to every rank.
 ///  - a symmetric system (upper_only): CG preconditioned by smoothed-aggregation algebraic
 ///    multigrid (GAMG) whose near null space is the mesh's rigid-body modes
 ///    (MatNullSpaceCreateRigidBody from the node coordinates);
@@ -119,14 +119,13 @@ struct RowOwnership {
 struct CsrMap {
   std::vector<PetscInt> row_ptr, col;
   std::vector<PetscInt> target, mirror_target;  ///< per inpact entry (mirror: its transpose, upper_only)
-  std::vector<PetscInt> fixed_target;           ///< per fixed slot: its diagonal entry
 
   /// Rows are filled by counting (the inpact matrix holds columns), then each row is sorted:
   /// a sort of all 2·nnz entries at once took 3 s of a 6 s set-up at 100k DOF.
   CsrMap(const SparseMatrix& a, const SlotLayout& layout, PetscInt n) {
     const auto nnz = static_cast<std::int64_t>(a.nnz());
     // Each PETSc entry comes from a source: inpact entry k (k), its mirror (nnz + k), or the
-    // identity of fixed slot f (2 nnz + f).
+    // identity of fixed slot f (2 nnz + f, set_fixed_diagonals).
     const auto for_each_entry = [&](auto&& visit) {
       for (std::int64_t c = 0; c < a.n; ++c)
         for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
@@ -159,19 +158,17 @@ struct CsrMap {
     }
     target.assign(a.nnz(), -1);
     mirror_target.assign(a.upper_only ? a.nnz() : 0, -1);
-    fixed_target.resize(layout.fixed_slots.size());
     for (std::size_t i = 0; i < source.size(); ++i) {
       const std::int64_t src = source[i];
-      auto& where = src < nnz ? target : src < 2 * nnz ? mirror_target : fixed_target;
-      where[static_cast<std::size_t>(src < nnz ? src : src < 2 * nnz ? src - nnz : src - 2 * nnz)] =
-          static_cast<PetscInt>(i);
+      if (src < nnz) target[static_cast<std::size_t>(src)] = static_cast<PetscInt>(i);
+      else if (src < 2 * nnz) mirror_target[static_cast<std::size_t>(src - nnz)] = static_cast<PetscInt>(i);
     }
   }
 };
 
 class PetscSolver final : public LinearSolver {
  public:
-  explicit PetscSolver(const EquationPoints& points) : points_(points) {}
+  explicit PetscSolver(const EquationPoints& points) : points_(points) { MPI_Comm_size(comm_, &ranks_); }
   ~PetscSolver() override { release(); }
   PetscSolver(const PetscSolver&) = delete;
   PetscSolver& operator=(const PetscSolver&) = delete;
@@ -186,6 +183,8 @@ class PetscSolver final : public LinearSolver {
 
  private:
   void build(const SparseMatrix& a);
+  void preallocate_from_every_rank(PetscInt m, PetscInt n);
+  void set_fixed_diagonals();
   void fill_values(const SparseMatrix& a);
   void configure_krylov(KSPType type);
   bool set_up_krylov(bool symmetric);
@@ -233,7 +232,6 @@ void PetscSolver::build(const SparseMatrix& a) {
   saddle_point_ = n_ > n_disp;
   PetscMPIInt rank = 0;
   MPI_Comm_rank(comm_, &rank);
-  MPI_Comm_size(comm_, &ranks_);
   layout_ = std::make_unique<SlotLayout>(points_, n_, ranks_);
   const PetscInt n = layout_->size(n_, n_disp);
   csr_ = std::make_unique<CsrMap>(a, *layout_, n);
@@ -244,13 +242,9 @@ void PetscSolver::build(const SparseMatrix& a) {
   check(MatSetSizes(a_, m, m, n, n), "MatSetSizes");
   if (!saddle_point_) check(MatSetBlockSize(a_, points_.dim), "MatSetBlockSize");
   check(MatSetType(a_, MATAIJ), "MatSetType");
-  // This rank's rows of the CSR pattern, their pointers counted from 0; the columns are global.
-  std::vector<PetscInt> local_ptr(static_cast<std::size_t>(m) + 1);
-  for (PetscInt r = 0; r <= m; ++r) local_ptr[r] = csr_->row_ptr[rows_->begin + r] - csr_->row_ptr[rows_->begin];
-  const PetscInt* local_col = csr_->col.data() + csr_->row_ptr[rows_->begin];
-  // One of the two applies: SEQAIJ on one rank, MPIAIJ on several.
-  check(MatSeqAIJSetPreallocationCSR(a_, local_ptr.data(), local_col, values_.data()), "preallocation");
-  check(MatMPIAIJSetPreallocationCSR(a_, local_ptr.data(), local_col, values_.data()), "preallocation");
+  if (ranks_ == 1) check(MatSeqAIJSetPreallocationCSR(a_, csr_->row_ptr.data(), csr_->col.data(), values_.data()),
+                         "preallocation");
+  else preallocate_from_every_rank(m, n);
   check(MatSetOption(a_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
   if (!saddle_point_) {
     Vec coords;
@@ -282,44 +276,84 @@ void PetscSolver::build(const SparseMatrix& a) {
   ++analyses_;
 }
 
-/// The inpact values into the PETSc matrix; the identity rows take the mean diagonal. On
-/// several ranks each holds a partial sum (its share of the elements; rank 0 the contact and
-/// other terms every rank computes alike, solver/assembler.hpp): every rank adds what it has,
-/// the rows of others included, and PETSc's assembly sends those to their owners.
+/// Several ranks: each holds the entries of its own elements, in rows other ranks may own
+/// (Assembler). PETSc's preallocator gathers each row's columns from every rank at its owner.
+void PetscSolver::preallocate_from_every_rank(PetscInt m, PetscInt n) {
+  Mat counter;
+  check(MatCreate(comm_, &counter), "MatCreate");
+  check(MatSetType(counter, MATPREALLOCATOR), "MatSetType");
+  check(MatSetSizes(counter, m, m, n, n), "MatSetSizes");
+  if (!saddle_point_) check(MatSetBlockSize(counter, points_.dim), "MatSetBlockSize");
+  check(MatSetUp(counter), "MatSetUp");
+  for (PetscInt r = 0; r < n; ++r)
+    if (const PetscInt at = csr_->row_ptr[r], count = csr_->row_ptr[r + 1] - at; count > 0)
+      check(MatSetValues(counter, 1, &r, count, csr_->col.data() + at, values_.data() + at, INSERT_VALUES),
+            "MatSetValues");
+  check(MatAssemblyBegin(counter, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(counter, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(MatPreallocatorPreallocate(counter, PETSC_TRUE, a_), "MatPreallocatorPreallocate");
+  MatDestroy(&counter);
+}
+
+/// The inpact values into the PETSc matrix. On several ranks each holds a partial sum (its share
+/// of the elements; rank 0 the contact and other terms every rank computes alike,
+/// solver/assembler.hpp): every rank adds what it has, the rows of others included, and PETSc's
+/// assembly sends those to their owners. Then the identity rows (set_fixed_diagonals).
 void PetscSolver::fill_values(const SparseMatrix& a) {
   std::fill(values_.begin(), values_.end(), 0.0);
-  double diagonal_sum = 0.0;
-  std::int64_t diagonals = 0;
   for (std::int64_t c = 0; c < a.n; ++c)
     for (std::int64_t k = a.col_ptr[c]; k < a.col_ptr[c + 1]; ++k) {
       values_[csr_->target[k]] += a.values[k];
       if (a.upper_only && a.row_idx[k] != c) values_[csr_->mirror_target[k]] += a.values[k];
-      if (a.row_idx[k] == c && c < static_cast<std::int64_t>(points_.node.size())) {
-        diagonal_sum += std::abs(a.values[k]);
-        ++diagonals;
-      }
     }
-  if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &diagonal_sum, 1, MPI_DOUBLE, MPI_SUM, comm_);
-  const double scale = diagonals > 0 && diagonal_sum > 0 ? diagonal_sum / static_cast<double>(diagonals) : 1.0;
-  for (std::size_t f = 0; f < csr_->fixed_target.size(); ++f)
-    if (const PetscInt slot = layout_->fixed_slots[f]; slot >= rows_->begin && slot < rows_->end)
-      values_[csr_->fixed_target[f]] = scale;
   if (ranks_ == 1) {  // the SEQAIJ arrays are csr_'s order: one copy
     PetscScalar* v = nullptr;
     check(MatSeqAIJGetArray(a_, &v), "MatSeqAIJGetArray");
     std::copy(values_.begin(), values_.end(), v);
     check(MatSeqAIJRestoreArray(a_, &v), "MatSeqAIJRestoreArray");
-    return;
+  } else {
+    check(MatZeroEntries(a_), "MatZeroEntries");
+    const PetscInt n = static_cast<PetscInt>(csr_->row_ptr.size()) - 1;
+    for (PetscInt r = 0; r < n; ++r) {
+      const PetscInt at = csr_->row_ptr[r], count = csr_->row_ptr[r + 1] - at;
+      const PetscScalar* row = values_.data() + at;
+      const bool owned = r >= rows_->begin && r < rows_->end;
+      if (!owned && std::all_of(row, row + count, [](PetscScalar v) { return v == 0.0; })) continue;
+      check(MatSetValues(a_, 1, &r, count, csr_->col.data() + at, row, ADD_VALUES), "MatSetValues");
+    }
+    check(MatAssemblyBegin(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   }
-  check(MatZeroEntries(a_), "MatZeroEntries");
-  const PetscInt n = static_cast<PetscInt>(csr_->row_ptr.size()) - 1;
-  for (PetscInt r = 0; r < n; ++r) {
-    const PetscInt at = csr_->row_ptr[r], count = csr_->row_ptr[r + 1] - at;
-    const PetscScalar* row = values_.data() + at;
-    const bool owned = r >= rows_->begin && r < rows_->end;
-    if (!owned && std::all_of(row, row + count, [](PetscScalar v) { return v == 0.0; })) continue;
-    check(MatSetValues(a_, 1, &r, count, csr_->col.data() + at, row, ADD_VALUES), "MatSetValues");
+  set_fixed_diagonals();
+}
+
+/// The identity rows take the mean |diagonal| of the displacement rows (so that they weigh
+/// like the others in GAMG's aggregation), from the assembled matrix: on several ranks no
+/// rank holds a whole diagonal before the assembly.
+void PetscSolver::set_fixed_diagonals() {
+  if (layout_->fixed_slots.empty()) return;
+  Vec diagonal;
+  check(MatCreateVecs(a_, nullptr, &diagonal), "MatCreateVecs");
+  check(MatGetDiagonal(a_, diagonal), "MatGetDiagonal");
+  const PetscScalar* d = nullptr;
+  check(VecGetArrayRead(diagonal, &d), "VecGetArrayRead");
+  const auto& fixed = layout_->fixed_slots;  // ascending
+  auto next_fixed = std::lower_bound(fixed.begin(), fixed.end(), rows_->begin);
+  double sums[2] = {0.0, 0.0};  // Σ |diagonal|, rows
+  for (PetscInt s = rows_->begin; s < std::min(rows_->end, layout_->n_displacement_slots); ++s) {
+    if (next_fixed != fixed.end() && *next_fixed == s) {
+      ++next_fixed;
+      continue;
+    }
+    sums[0] += std::abs(d[s - rows_->begin]);
+    sums[1] += 1.0;
   }
+  check(VecRestoreArrayRead(diagonal, &d), "VecRestoreArrayRead");
+  VecDestroy(&diagonal);
+  if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
+  const PetscScalar scale = sums[1] > 0 && sums[0] > 0 ? sums[0] / sums[1] : 1.0;
+  for (auto f = std::lower_bound(fixed.begin(), fixed.end(), rows_->begin); f != fixed.end() && *f < rows_->end; ++f)
+    check(MatSetValues(a_, 1, &*f, 1, &*f, &scale, INSERT_VALUES), "MatSetValues");
   check(MatAssemblyBegin(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(a_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
 }
@@ -363,7 +397,11 @@ FactorStatus PetscSolver::set_up_lu() {
 }
 
 FactorStatus PetscSolver::factorize(const SparseMatrix& a) {
-  if (!a_ || a.n != n_ || a.col_ptr != col_ptr_ || a.row_idx != row_idx_) {
+  // Each rank holds its own part of the pattern: a change in one (contact, on rank 0) is a new
+  // matrix on every rank.
+  int changed = !a_ || a.n != n_ || a.col_ptr != col_ptr_ || a.row_idx != row_idx_ ? 1 : 0;
+  if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, comm_);
+  if (changed) {
     build(a);
     col_ptr_ = a.col_ptr;
     row_idx_ = a.row_idx;

@@ -21,39 +21,51 @@ void SparseMatrix::multiply(std::span<const double> x, std::span<double> y) cons
     }
 }
 
+void PatternBuilder::add(std::int64_t row, std::int64_t col) {
+  std::vector<std::int64_t>& rows = columns_[col];
+  if (rows.size() == rows.capacity() && rows.size() >= 16) {
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    if (rows.size() > rows.capacity() / 2) rows.reserve(2 * rows.capacity());  // room for half as many again
+  }
+  rows.push_back(row);
+}
+
 void PatternBuilder::add_block(std::span<const std::int64_t> dofs) {
   for (std::int64_t c : dofs) {
     if (c < 0) continue;
-    auto& col = columns_[c];
     for (std::int64_t r : dofs)
-      if (r >= 0) col.push_back(r);
+      if (r >= 0 && r <= c) add(r, c);
   }
 }
 
 void PatternBuilder::add_pair(std::int64_t row, std::int64_t col) {
-  columns_[col].push_back(row);
-  columns_[row].push_back(col);
-  columns_[row].push_back(row);
-  columns_[col].push_back(col);
+  add(std::min(row, col), std::max(row, col));
 }
 
 SparseMatrix PatternBuilder::build(bool upper_only) const {
   SparseMatrix m;
   m.n = n_;
-  m.upper_only = upper_only;
+  m.upper_only = true;
   m.col_ptr.assign(n_ + 1, 0);
+  std::size_t nnz = 0;
+  for (std::int64_t c = 0; c < n_; ++c) nnz += columns_[c].size() + 1;
+  m.row_idx.reserve(nnz);  // an upper bound: duplicates are not counted out
   std::vector<std::int64_t> col;
   for (std::int64_t c = 0; c < n_; ++c) {
     col = columns_[c];
     col.push_back(c);  // the diagonal is always in the pattern (empty rows stay factorable)
     std::sort(col.begin(), col.end());
     col.erase(std::unique(col.begin(), col.end()), col.end());
-    for (std::int64_t r : col)
-      if (!upper_only || r <= c) m.row_idx.push_back(r);
+    m.row_idx.insert(m.row_idx.end(), col.begin(), col.end());
     m.col_ptr[c + 1] = static_cast<std::int64_t>(m.row_idx.size());
   }
+  m.row_idx.shrink_to_fit();
   m.values.assign(m.row_idx.size(), 0.0);
-  return m;
+  if (upper_only) return m;
+  SparseMatrix full;
+  mirror_upper(m, full);
+  return full;
 }
 
 void mirror_upper(const SparseMatrix& a, SparseMatrix& full) {

@@ -28,6 +28,9 @@ void mirror_upper(const SparseMatrix& upper, SparseMatrix& full);
 
 /// Collects the couplings of dense blocks (element DOF lists, constraint rows) and builds the
 /// compressed pattern once; the values are then assembled into it iteration after iteration.
+/// Couplings are symmetric: it keeps each column's rows above the diagonal, and compacts a
+/// column (sort, unique) when it fills its storage, since neighbouring element blocks repeat
+/// each coupling (a brick's node is in up to eight): memory stays near the pattern's own.
 class PatternBuilder {
  public:
   explicit PatternBuilder(std::int64_t n) : n_(n), columns_(n) {}
@@ -35,9 +38,11 @@ class PatternBuilder {
   void add_block(std::span<const std::int64_t> dofs);
   /// Couples row with col (and col with row).
   void add_pair(std::int64_t row, std::int64_t col);
+  /// The pattern, its upper triangle (upper_only) or both; every diagonal entry is in it.
   SparseMatrix build(bool upper_only) const;
 
  private:
+  void add(std::int64_t row, std::int64_t col);  ///< row <= col
   std::int64_t n_;
   std::vector<std::vector<std::int64_t>> columns_;
 };

@@ -43,6 +43,30 @@ TEST(SparseMatrix, PatternHoldsTheDiagonalAndUpperTriangleOnly) {
   EXPECT_DOUBLE_EQ(y[3], 0.0);
 }
 
+// A mesh's blocks repeat each coupling once per element that shares it; the builder compacts
+// its columns as they fill. The pattern must be the same as from each block once: a 1D chain of
+// 3-node blocks [i, i+1, i+2] added 40 times over, a column reaching 120 entries before it is
+// compacted; its full form mirrors the upper triangle.
+TEST(SparseMatrix, RepeatedBlocksGiveTheSamePatternAsEachOnce) {
+  const std::int64_t n = 30;
+  PatternBuilder once(n), repeated(n);
+  for (std::int64_t i = 0; i + 2 < n; ++i) {
+    const std::int64_t block[3] = {i + 2, i, i + 1};  // any order
+    once.add_block(block);
+    for (int r = 0; r < 40; ++r) repeated.add_block(block);
+  }
+  const SparseMatrix a = once.build(true), b = repeated.build(true);
+  EXPECT_EQ(a.col_ptr, b.col_ptr);
+  EXPECT_EQ(a.row_idx, b.row_idx);
+  EXPECT_EQ(a.nnz(), static_cast<std::size_t>(n + (n - 1) + (n - 2)));  // diagonal, first and second neighbours
+  const SparseMatrix full = repeated.build(false);
+  EXPECT_FALSE(full.upper_only);
+  EXPECT_EQ(full.nnz(), static_cast<std::size_t>(n + 2 * (n - 1) + 2 * (n - 2)));
+  EXPECT_GE(full.find(5, 3), 0);
+  EXPECT_GE(full.find(3, 5), 0);
+  EXPECT_EQ(full.find(3, 6), -1);
+}
+
 TEST(Cholmod, SolvesTheGroundedChainExactly) {
   // Grounded at node 0 with unit spring, unit load at the free end: u_i = i + 1 (hand solution:
   // the load passes through every spring, each stretching by 1).
