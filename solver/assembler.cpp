@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <thread>
-#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -221,8 +220,8 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   std::fill(f_int.begin(), f_int.end(), 0.0);
   if (request.tangent) tangent_.set_zero();
   const std::size_t n_el = am_.model->mesh.elements.size();
-  // A distributed run's rank evaluates its own elements (their points are gathered below).
-  const bool partitioned = world_.distributed();
+  // Points are kept for every element; otherwise a distributed run's rank evaluates its own.
+  const bool partitioned = world_.distributed() && !request.points;
   const std::size_t n_listed = partitioned ? own_elements_.size() : n_el;
   const auto element_at = [&](std::size_t i) { return partitioned ? own_elements_[i] : i; };
 
@@ -234,8 +233,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
   std::vector<std::int64_t> el_dofs;
   if (request.points) {
     have_points_ = false;  // until every element is in
-    points_.start.assign(n_el, 0);
-    points_.count.assign(n_el, 0);
+    points_.offset.assign(1, 0);
     points_.points.clear();
   }
   double force_sum = 0.0, moved_sum = 0.0;
@@ -260,9 +258,8 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
         result.min_jacobian_element = static_cast<std::int64_t>(e);
       }
       if (request.points) {
-        points_.start[e] = points_.points.size();
-        points_.count[e] = static_cast<std::uint32_t>(sys.points.size());
         points_.points.insert(points_.points.end(), sys.points.begin(), sys.points.end());
+        points_.offset.push_back(points_.points.size());
       }
       if (elements_ && !elements_->is_active(e)) continue;
       element_dofs(e, el_dofs);
@@ -277,7 +274,6 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
     }
   }
   if (partitioned) sum_over_ranks(request, f_int, force_sum, moved_sum, force_count, result);
-  if (partitioned && request.points) gather_points();
   result.average_force = force_count ? force_sum / static_cast<double>(force_count) : 0.0;
   result.n_force_entries = force_count;
   result.moved_average_force = force_count ? moved_sum / static_cast<double>(force_count) : 0.0;
@@ -312,52 +308,6 @@ void Assembler::sum_over_ranks(const AssemblyRequest& request, std::span<double>
     return;
   }
   result.min_jacobian_element = static_cast<std::int64_t>(element);
-}
-
-void Assembler::gather_points() {
-  static_assert(std::is_trivially_copyable_v<elements::PointResult> &&
-                sizeof(elements::PointResult) % sizeof(double) == 0);
-  constexpr int kDoublesPerPoint = sizeof(elements::PointResult) / sizeof(double);
-  const std::size_t n_el = rank_of_element_.size(), ranks = static_cast<std::size_t>(world_.size);
-  // Rank r's elements, ascending, are the r-th part of every gathered array.
-  std::vector<std::vector<std::size_t>> elements_of(ranks);
-  for (std::size_t e = 0; e < n_el; ++e) elements_of[static_cast<std::size_t>(rank_of_element_[e])].push_back(e);
-  std::vector<double> own_counts;
-  for (std::size_t e : own_elements_) own_counts.push_back(points_.count[e]);
-  std::vector<double> counts(n_el);
-  world_.gather(own_counts.data(), world_.counts(static_cast<long>(own_elements_.size())), counts.data(), 1);
-  ElementPoints all;
-  all.start.assign(n_el, 0);
-  all.count.assign(n_el, 0);
-  std::size_t at = 0, i = 0;
-  for (const auto& list : elements_of)
-    for (std::size_t e : list) {
-      all.start[e] = at;
-      all.count[e] = static_cast<std::uint32_t>(counts[i++]);
-      at += all.count[e];
-    }
-  all.points.resize(at);
-  world_.gather(points_.points.data(), world_.counts(static_cast<long>(points_.points.size())), all.points.data(),
-                kDoublesPerPoint);
-  points_ = std::move(all);
-  if (!states_ || states_->empty()) return;
-  // The trial states the owners' evaluations wrote, into every rank's copy.
-  std::vector<double> own_trial;
-  for (std::size_t e : own_elements_) {
-    const std::span<const double> t = states_->trial(e);
-    own_trial.insert(own_trial.end(), t.begin(), t.end());
-  }
-  std::vector<double> trial;
-  const std::vector<long> sizes = world_.counts(static_cast<long>(own_trial.size()));
-  for (long n : sizes) trial.resize(trial.size() + static_cast<std::size_t>(n));
-  world_.gather(own_trial.data(), sizes, trial.data(), 1);
-  std::size_t from = 0;
-  for (const auto& list : elements_of)
-    for (std::size_t e : list) {
-      const std::span<double> t = states_->assembly_history(e).trial;
-      std::copy_n(trial.begin() + static_cast<std::ptrdiff_t>(from), t.size(), t.begin());
-      from += t.size();
-    }
 }
 
 void Assembler::complete_states(std::span<const double> u, const AssemblyRequest& request) {

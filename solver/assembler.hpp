@@ -30,14 +30,12 @@ struct AssemblyRequest {
   std::span<double> product = {};
 };
 
-/// Integration-point results of every element (a distributed run gathers them from the ranks
-/// that computed them, each rank's elements together).
+/// Integration-point results of every element, in element order.
 struct ElementPoints {
-  std::vector<std::size_t> start;    ///< element e: points[start[e], start[e] + count[e])
-  std::vector<std::uint32_t> count;
+  std::vector<std::size_t> offset;  ///< element e: points[offset[e], offset[e + 1])
   std::vector<elements::PointResult> points;
   std::span<const elements::PointResult> of(std::size_t e) const {
-    return std::span(points).subspan(start[e], count[e]);
+    return std::span(points).subspan(offset[e], offset[e + 1] - offset[e]);
   }
 };
 
@@ -71,8 +69,7 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world);
 /// and values hold its elements' part (add_diagonal: the diagonal of its nodes' equations,
 /// node_ranks), which the PETSc solver adds up. The terms every rank computes alike (contact:
 /// add_local_matrix and the other add_ functions but add_diagonal) go into rank 0's tangent
-/// only. An assembly that keeps points gives every rank every element's points and trial
-/// material state, from the rank that evaluated it (gather_points).
+/// only. An assembly that keeps points evaluates every element on every rank (complete_states).
 class Assembler {
  public:
   /// `threads`: element computations run on this many threads (the sum stays in element order).
@@ -95,9 +92,9 @@ class Assembler {
 
   /// Whether the ranks share the elements (a distributed run).
   bool distributed() const { return world_.distributed(); }
-  /// A distributed run at a converged state: the points of every element at u (request's
-  /// NLGEOM and temperature) on every rank, and the trial material state of every element to
-  /// commit (each rank evaluates its own elements). Nothing on one rank.
+  /// A distributed run at a converged state: every element evaluated once at u on every rank,
+  /// its points kept (request's NLGEOM and temperature), so that each rank has the trial material
+  /// state of every element to commit and the output its points. Nothing on one rank.
   void complete_states(std::span<const double> u, const AssemblyRequest& request);
 
   /// Reduces a full vector to the equations: r_eq = Σ_d w_d r_d over the DOFs feeding each one.
@@ -165,9 +162,6 @@ class Assembler {
   void sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum, double& moved_sum,
                       std::size_t& force_count, AssemblyResult& result) const;
   void build_pattern(const ExtraCouplings* extra);
-  /// After a distributed assembly that kept its own elements' points: every element's points and
-  /// trial state from the rank that owns it.
-  void gather_points();
 
   /// Element e's system into `out` (its buffers are reused from element to element).
   void compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request,

@@ -24,7 +24,6 @@ struct Module {
   decltype(&inpact_mpi_world) world = nullptr;
   decltype(&inpact_mpi_allreduce) allreduce = nullptr;
   decltype(&inpact_mpi_abort) abort = nullptr;
-  decltype(&inpact_mpi_allgather) allgather = nullptr;
   decltype(&inpact_partition_elements) partition = nullptr;
   std::string error;  ///< why it could not be started
 };
@@ -75,9 +74,8 @@ Module& module() {
     m.world = reinterpret_cast<decltype(&inpact_mpi_world)>(dlsym(m.handle, "inpact_mpi_world"));
     m.allreduce = reinterpret_cast<decltype(&inpact_mpi_allreduce)>(dlsym(m.handle, "inpact_mpi_allreduce"));
     m.abort = reinterpret_cast<decltype(&inpact_mpi_abort)>(dlsym(m.handle, "inpact_mpi_abort"));
-    m.allgather = reinterpret_cast<decltype(&inpact_mpi_allgather)>(dlsym(m.handle, "inpact_mpi_allgather"));
     m.partition = reinterpret_cast<decltype(&inpact_partition_elements)>(dlsym(m.handle, "inpact_partition_elements"));
-    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.abort || !m.allgather || !m.partition) {
+    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.abort || !m.partition) {
       m.error = "the PETSc module lacks its entry points";
       m.create = nullptr;
       return;
@@ -131,19 +129,6 @@ void RankWorld::sum(std::span<double> values) const {
 
 void RankWorld::abort(int code) const {
   if (distributed()) module().abort(code);
-}
-
-std::vector<long> RankWorld::counts(long mine) const {
-  std::vector<double> each(static_cast<std::size_t>(size), 0.0);
-  each[static_cast<std::size_t>(rank)] = static_cast<double>(mine);
-  sum(each);
-  return std::vector<long>(each.begin(), each.end());
-}
-
-void RankWorld::gather(const void* mine, std::span<const long> units_of_rank, void* all, int doubles_per_unit) const {
-  if (!distributed()) throw std::logic_error("RankWorld::gather on one rank");
-  std::string error;
-  if (module().allgather(mine, units_of_rank.data(), all, doubles_per_unit, &error) != 0) throw std::runtime_error(error);
 }
 
 double RankWorld::min(double value) const {

@@ -16,10 +16,6 @@ void inpact_petsc_finish();
 void inpact_mpi_world(int* rank, int* size);
 /// values[0..n) combined over every rank, in place: op 0 sum, 1 min, 2 max.
 void inpact_mpi_allreduce(double* values, long n, int op);
-/// Every rank's `units_of_rank[rank]` units (each `doubles_per_unit` doubles) from `mine`, into
-/// `all` on every rank, rank after rank. Nonzero (the reason in `error`) on failure.
-int inpact_mpi_allgather(const void* mine, const long* units_of_rank, void* all, int doubles_per_unit,
-                         std::string* error);
 /// Ends every rank of the run (MPI_Abort) with exit code `code`.
 void inpact_mpi_abort(int code);
 /// PETSc's graph partitioner (petsc_partition.cpp) on the graph of n vertices whose neighbours
@@ -49,12 +45,6 @@ struct RankWorld {
   bool distributed() const { return size > 1; }
   /// values summed over the ranks, in place (nothing on one rank).
   void sum(std::span<double> values) const;
-  /// Each rank's `mine`, on every rank (rank r's at index r).
-  std::vector<long> counts(long mine) const;
-  /// Every rank's units (units_of_rank, from counts()) of doubles_per_unit doubles each, from
-  /// `mine` into `all` (their sum of units) on every rank, rank after rank: the values come
-  /// from the rank that computed them, bit for bit. Distributed runs only.
-  void gather(const void* mine, std::span<const long> units_of_rank, void* all, int doubles_per_unit) const;
   /// The smallest value over the ranks.
   double min(double value) const;
   /// A rank that cannot go on ends them all (on one rank: nothing; the caller exits).

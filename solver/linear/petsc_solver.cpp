@@ -17,7 +17,6 @@
 #include <petscksp.h>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -493,32 +492,6 @@ void inpact_petsc_finish() { PetscFinalize(); }
 void inpact_mpi_world(int* rank, int* size) {
   MPI_Comm_rank(PETSC_COMM_WORLD, rank);
   MPI_Comm_size(PETSC_COMM_WORLD, size);
-}
-
-int inpact_mpi_allgather(const void* mine, const long* units_of_rank, void* all, int doubles_per_unit,
-                         std::string* error) {
-  int ranks = 0, rank = 0;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), displacements(counts.size());
-  long at = 0;
-  for (int r = 0; r < ranks; ++r) {
-    if (units_of_rank[r] > INT_MAX || at > INT_MAX) {
-      *error = "an all-gather of more than 2^31 units per rank";
-      return 1;
-    }
-    counts[r] = static_cast<int>(units_of_rank[r]);
-    displacements[r] = static_cast<int>(at);
-    at += units_of_rank[r];
-  }
-  MPI_Datatype unit;
-  MPI_Type_contiguous(doubles_per_unit, MPI_DOUBLE, &unit);
-  MPI_Type_commit(&unit);
-  const int code = MPI_Allgatherv(mine, counts[rank], unit, all, counts.data(), displacements.data(), unit,
-                                  PETSC_COMM_WORLD);
-  MPI_Type_free(&unit);
-  if (code != MPI_SUCCESS) *error = "MPI_Allgatherv failed";
-  return code == MPI_SUCCESS ? 0 : 1;
 }
 
 void inpact_mpi_abort(int code) {
