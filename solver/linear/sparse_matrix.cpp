@@ -43,24 +43,25 @@ void PatternBuilder::add_pair(std::int64_t row, std::int64_t col) {
   add(std::min(row, col), std::max(row, col));
 }
 
-SparseMatrix PatternBuilder::build(bool upper_only) const {
+SparseMatrix PatternBuilder::build(bool upper_only) {
+  std::size_t nnz = 0;
+  for (std::int64_t c = 0; c < n_; ++c) {
+    std::vector<std::int64_t>& rows = columns_[c];
+    rows.push_back(c);  // the diagonal is always in the pattern (empty rows stay factorable)
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    nnz += rows.size();
+  }
   SparseMatrix m;
   m.n = n_;
   m.upper_only = true;
   m.col_ptr.assign(n_ + 1, 0);
-  std::size_t nnz = 0;
-  for (std::int64_t c = 0; c < n_; ++c) nnz += columns_[c].size() + 1;
-  m.row_idx.reserve(nnz);  // an upper bound: duplicates are not counted out
-  std::vector<std::int64_t> col;
+  m.row_idx.reserve(nnz);
   for (std::int64_t c = 0; c < n_; ++c) {
-    col = columns_[c];
-    col.push_back(c);  // the diagonal is always in the pattern (empty rows stay factorable)
-    std::sort(col.begin(), col.end());
-    col.erase(std::unique(col.begin(), col.end()), col.end());
-    m.row_idx.insert(m.row_idx.end(), col.begin(), col.end());
+    m.row_idx.insert(m.row_idx.end(), columns_[c].begin(), columns_[c].end());
     m.col_ptr[c + 1] = static_cast<std::int64_t>(m.row_idx.size());
+    std::vector<std::int64_t>().swap(columns_[c]);  // the builder's memory goes as the pattern's grows
   }
-  m.row_idx.shrink_to_fit();
   m.values.assign(m.row_idx.size(), 0.0);
   if (upper_only) return m;
   SparseMatrix full;

@@ -38,8 +38,9 @@ class PatternBuilder {
   void add_block(std::span<const std::int64_t> dofs);
   /// Couples row with col (and col with row).
   void add_pair(std::int64_t row, std::int64_t col);
-  /// The pattern, its upper triangle (upper_only) or both; every diagonal entry is in it.
-  SparseMatrix build(bool upper_only) const;
+  /// The pattern, its upper triangle (upper_only) or both; every diagonal entry is in it. Once:
+  /// the builder gives its memory up as it goes.
+  SparseMatrix build(bool upper_only);
 
  private:
   void add(std::int64_t row, std::int64_t col);  ///< row <= col

@@ -49,17 +49,20 @@ TEST(SparseMatrix, PatternHoldsTheDiagonalAndUpperTriangleOnly) {
 // compacted; its full form mirrors the upper triangle.
 TEST(SparseMatrix, RepeatedBlocksGiveTheSamePatternAsEachOnce) {
   const std::int64_t n = 30;
-  PatternBuilder once(n), repeated(n);
+  PatternBuilder once(n), repeated(n), repeated_full(n);
   for (std::int64_t i = 0; i + 2 < n; ++i) {
     const std::int64_t block[3] = {i + 2, i, i + 1};  // any order
     once.add_block(block);
-    for (int r = 0; r < 40; ++r) repeated.add_block(block);
+    for (int r = 0; r < 40; ++r) {
+      repeated.add_block(block);
+      repeated_full.add_block(block);
+    }
   }
   const SparseMatrix a = once.build(true), b = repeated.build(true);
   EXPECT_EQ(a.col_ptr, b.col_ptr);
   EXPECT_EQ(a.row_idx, b.row_idx);
   EXPECT_EQ(a.nnz(), static_cast<std::size_t>(n + (n - 1) + (n - 2)));  // diagonal, first and second neighbours
-  const SparseMatrix full = repeated.build(false);
+  const SparseMatrix full = repeated_full.build(false);
   EXPECT_FALSE(full.upper_only);
   EXPECT_EQ(full.nnz(), static_cast<std::size_t>(n + 2 * (n - 1) + 2 * (n - 2)));
   EXPECT_GE(full.find(5, 3), 0);
