@@ -45,8 +45,8 @@ TEST(SparseMatrix, PatternHoldsTheDiagonalAndUpperTriangleOnly) {
 
 // A mesh's blocks repeat each coupling once per element that shares it; the builder compacts
 // its columns as they fill. The pattern must be the same as from each block once: a 1D chain of
-// 3-node blocks [i, i+1, i+2] added 40 times over, a column reaching 120 entries before it is
-// compacted; its full form mirrors the upper triangle.
+// 3-node blocks [i, i+1, i+2] added 40 times over (a column receives up to 240 entries, compacted
+// several times on the way); its full form mirrors the upper triangle.
 TEST(SparseMatrix, RepeatedBlocksGiveTheSamePatternAsEachOnce) {
   const std::int64_t n = 30;
   PatternBuilder once(n), repeated(n), repeated_full(n);
