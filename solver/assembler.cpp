@@ -29,7 +29,7 @@ Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, M
     rank_of_element_ = element_partition(am, world_).rank_of_element;
     for (std::size_t e = 0; e < rank_of_element_.size(); ++e)
       if (rank_of_element_[e] == world_.rank) own_elements_.push_back(e);
-    rank_of_node_ = node_ranks(am, world_);
+    rank_of_node_ = element_partition(am, world_).rank_of_node;
   }
   build_pattern(nullptr);
 }

@@ -67,7 +67,7 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world);
 /// evaluates its share of the elements (element_partition.hpp): the internal forces are
 /// summed over the ranks (every rank has f_int whole), the tangent is not: each rank's pattern
 /// and values hold its elements' part (add_diagonal: the diagonal of its nodes' equations,
-/// node_ranks), which the PETSc solver adds up. The terms every rank computes alike (contact:
+/// ElementPartition::rank_of_node), which the PETSc solver adds up. The terms every rank computes alike (contact:
 /// add_local_matrix and the other add_ functions but add_diagonal) go into rank 0's tangent
 /// only. An assembly that keeps points evaluates every element on every rank (complete_states).
 class Assembler {
@@ -152,7 +152,7 @@ class Assembler {
   void element_dofs(std::size_t e, std::vector<std::int64_t>& dofs) const;
   /// Whether this rank evaluates element e for the tangent (every element on one rank).
   bool owns(std::size_t e) const { return !world_.distributed() || rank_of_element_[e] == world_.rank; }
-  /// Whether this rank adds the diagonal terms of node `node`'s equations (node_ranks).
+  /// Whether this rank adds the diagonal terms of node `node`'s equations (rank_of_node).
   bool owns_node(std::int64_t node) const {
     return !world_.distributed() || rank_of_node_[static_cast<std::size_t>(node)] == world_.rank;
   }
@@ -181,7 +181,7 @@ class Assembler {
   RankWorld world_;
   std::vector<int> rank_of_element_;        ///< a distributed run's partition (else empty)
   std::vector<std::size_t> own_elements_;   ///< the elements this rank evaluates, ascending
-  std::vector<int> rank_of_node_;           ///< a distributed run's node_ranks (else empty)
+  std::vector<int> rank_of_node_;           ///< a distributed run's rank_of_node (else empty)
   ElementPoints points_;
   std::vector<double> points_u_, points_delta_t_;  ///< the state points_ were computed at
   bool points_nlgeom_ = false, have_points_ = false;

@@ -39,6 +39,20 @@ void dual_graph(const model::Mesh& mesh, std::vector<long>& xadj, std::vector<lo
   }
 }
 
+/// The rank owning each node's rows (ElementPartition::rank_of_node).
+std::vector<int> node_ranks(const AnalysisModel& am, const std::vector<int>& rank_of_element, int ranks) {
+  std::vector<int> rank(am.model->mesh.nodes.size(), ranks - 1);
+  std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's or shell's rotation nodes too
+  for (std::size_t e = 0; e < rank_of_element.size(); ++e) {
+    const std::size_t n_rows = am.element_rows(e, rows);
+    for (std::size_t a = 0; a < n_rows; ++a) {
+      int& owner = rank[static_cast<std::size_t>(rows[a])];
+      owner = std::min(owner, rank_of_element[e]);
+    }
+  }
+  return rank;
+}
+
 }  // namespace
 
 const ElementPartition& element_partition(const AnalysisModel& am, RankWorld world) {
@@ -59,24 +73,10 @@ const ElementPartition& element_partition(const AnalysisModel& am, RankWorld wor
   }
   partition.counts.assign(static_cast<std::size_t>(world.size), 0);
   for (int r : partition.rank_of_element) ++partition.counts[static_cast<std::size_t>(r)];
+  partition.rank_of_node = node_ranks(am, partition.rank_of_element, world.size);
   model = am.model;
   ranks = world.size;
   return partition;
-}
-
-std::vector<int> node_ranks(const AnalysisModel& am, RankWorld world) {
-  const std::vector<int>& rank_of_element = element_partition(am, world).rank_of_element;
-  const auto& elements = am.model->mesh.elements;
-  std::vector<int> rank(am.model->mesh.nodes.size(), world.size - 1);
-  std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's or shell's rotation nodes too
-  for (std::size_t e = 0; e < elements.size(); ++e) {
-    const std::size_t n_rows = am.element_rows(e, rows);
-    for (std::size_t a = 0; a < n_rows; ++a) {
-      int& owner = rank[static_cast<std::size_t>(rows[a])];
-      owner = std::min(owner, rank_of_element[e]);
-    }
-  }
-  return rank;
 }
 
 }  // namespace inpact::solver

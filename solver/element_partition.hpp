@@ -14,16 +14,15 @@ namespace inpact::solver {
 struct ElementPartition {
   std::vector<int> rank_of_element;  ///< per element row
   std::vector<std::size_t> counts;   ///< elements per rank
+  /// Per node row, the rank that owns its rows of the system: the lowest rank among the
+  /// elements whose rows it is (AnalysisModel::element_rows: a shell's rotation node too; a node
+  /// of no element: the last rank).
+  std::vector<int> rank_of_node;
 };
 
 /// The partition of am's elements over the ranks of `world` (every element rank 0's on one
 /// rank). Collective on a distributed run: every rank calls it, in the same order. Computed
 /// once per model and kept (the steps' assemblers share it).
 const ElementPartition& element_partition(const AnalysisModel& am, RankWorld world);
-
-/// The rank that owns each node's rows of the system: the lowest rank among the elements whose
-/// rows it is (AnalysisModel::element_rows: a shell's rotation node too; a node of no element:
-/// the last rank). Collective, as element_partition.
-std::vector<int> node_ranks(const AnalysisModel& am, RankWorld world);
 
 }  // namespace inpact::solver

@@ -20,7 +20,7 @@ EquationPoints equation_points(const AnalysisModel& am, const DofMap& dofs) {
       p.component[eq] = static_cast<int>(d % am.dim);
     }
   for (const auto& x : am.model->mesh.nodes.coords) p.coordinates.insert(p.coordinates.end(), x.begin(), x.end());
-  if (const RankWorld world = rank_world(); world.distributed()) p.node_rank = node_ranks(am, world);
+  if (const RankWorld world = rank_world(); world.distributed()) p.node_rank = element_partition(am, world).rank_of_node;
   return p;
 }
 

@@ -5,18 +5,8 @@
 #include <algorithm>
 #include <string>
 
+#include "petsc_error.hpp"
 #include "petsc_module.hpp"
-
-namespace {
-
-/// The error text of a PETSc call that failed.
-std::string petsc_error(PetscErrorCode code, const char* what) {
-  const char* text = nullptr;
-  PetscErrorMessage(code, &text, nullptr);
-  return std::string("PETSc: ") + what + ": " + (text ? text : "error");
-}
-
-}  // namespace
 
 extern "C" int inpact_partition_elements(long n, const long* xadj, const long* adjacency, int* rank_of_element,
                                          std::string* error) {
@@ -49,7 +39,7 @@ extern "C" int inpact_partition_elements(long n, const long* xadj, const long* a
     std::copy(parts, parts + n, rank_of_element);
     ISRestoreIndices(all, &parts);
   } else {
-    *error = petsc_error(code, step);
+    *error = inpact::solver::petsc_error(code, step);
   }
   if (all) ISDestroy(&all);
   if (local) ISDestroy(&local);

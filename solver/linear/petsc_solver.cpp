@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "linear_solver.hpp"
+#include "petsc_error.hpp"
 #include "petsc_module.hpp"
 
 namespace inpact::solver {
@@ -36,10 +37,7 @@ namespace {
 constexpr PetscInt kMaxKrylovIterations = 2000;
 
 void check(PetscErrorCode code, const char* what) {
-  if (code == 0) return;
-  const char* text = nullptr;
-  PetscErrorMessage(code, &text, nullptr);
-  throw std::runtime_error(std::string("PETSc: ") + what + ": " + (text ? text : "error"));
+  if (code != 0) throw std::runtime_error(petsc_error(code, what));
 }
 
 /// The inpact equations placed in the PETSc system: displacement equations node by node
