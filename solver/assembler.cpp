@@ -253,10 +253,8 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
     for (std::size_t at = begin; at < end; ++at) {
       const std::size_t e = element_at(at);
       const elements::ElementSystem& sys = systems[at - begin];
-      if (result.min_jacobian_element < 0 || sys.min_jacobian < result.min_jacobian) {
-        result.min_jacobian = sys.min_jacobian;
-        result.min_jacobian_element = static_cast<std::int64_t>(e);
-      }
+      result.jacobian.offer(sys.min_jacobian, static_cast<std::int64_t>(e));
+      if (request.nlgeom) result.volume_ratio.offer(sys.min_volume_ratio, static_cast<std::int64_t>(e));
       if (request.points) {
         points_.points.insert(points_.points.end(), sys.points.begin(), sys.points.end());
         points_.offset.push_back(points_.points.size());
@@ -296,18 +294,19 @@ void Assembler::sum_over_ranks(const AssemblyRequest& request, std::span<double>
   force_sum = sums[0];
   moved_sum = sums[1];
   force_count = static_cast<std::size_t>(sums[2]);
-  // The smallest Jacobian and the lowest element row that has it (a rank without elements: none).
+  smallest_over_ranks(result.jacobian);
+  smallest_over_ranks(result.volume_ratio);
+}
+
+/// The smallest value over the ranks and the lowest element row that has it (a rank without
+/// elements offers none; none anywhere stays none).
+void Assembler::smallest_over_ranks(SmallestAtElement& smallest) const {
   constexpr double kNone = std::numeric_limits<double>::infinity();
-  const double local = result.min_jacobian_element < 0 ? kNone : result.min_jacobian;
-  result.min_jacobian = world_.min(local);
-  const double candidate = local == result.min_jacobian ? static_cast<double>(result.min_jacobian_element) : kNone;
+  const double local = smallest.element < 0 ? kNone : smallest.value;
+  const double value = world_.min(local);
+  const double candidate = local == value ? static_cast<double>(smallest.element) : kNone;
   const double element = world_.min(candidate);
-  if (result.min_jacobian == kNone) {  // no elements anywhere: as one rank reports it
-    result.min_jacobian = 0.0;
-    result.min_jacobian_element = -1;
-    return;
-  }
-  result.min_jacobian_element = static_cast<std::int64_t>(element);
+  smallest = value == kNone ? SmallestAtElement{} : SmallestAtElement{value, static_cast<std::int64_t>(element)};
 }
 
 void Assembler::complete_states(std::span<const double> u, const AssemblyRequest& request) {

@@ -47,6 +47,18 @@ struct ExtraCouplings {
   std::vector<std::vector<std::int64_t>> multiplier_dofs;  ///< multiplier m: equation n_eq + m
 };
 
+/// The smallest value of a per-element measure and the lowest element row that has it.
+struct SmallestAtElement {
+  double value = 0.0;
+  std::int64_t element = -1;  ///< none yet
+  void offer(double v, std::int64_t e) {
+    if (element < 0 || v < value) {
+      value = v;
+      element = e;
+    }
+  }
+};
+
 struct AssemblyResult {
   /// Spatial average of the magnitudes of the element nodal forces, Abaqus's q^α "typical
   /// flux" that residuals are measured against.
@@ -55,9 +67,10 @@ struct AssemblyResult {
   /// With AssemblyRequest::multiply: the same average for the element forces f_e + k_e·v (the
   /// linearised state moved by v), which the increment measures its residuals against.
   double moved_average_force = 0.0;
-  /// Smallest Jacobian determinant met at an integration point, and its element row.
-  double min_jacobian = 0.0;
-  std::int64_t min_jacobian_element = -1;
+  /// Smallest Jacobian determinant of the reference geometry at an integration point.
+  SmallestAtElement jacobian;
+  /// NLGEOM: smallest det F at an integration point (elements::ElementSystem::min_volume_ratio).
+  SmallestAtElement volume_ratio;
 };
 
 /// One line on how a distributed run shares its work (for the log and the .sta); "" on one rank.
@@ -159,6 +172,7 @@ class Assembler {
   /// Whether the terms every rank computes alike go into this rank's tangent (rank 0's).
   bool adds_shared_terms() const { return world_.rank == 0; }
   /// Sums a partitioned assembly's forces and force measures over the ranks.
+  void smallest_over_ranks(SmallestAtElement& smallest) const;
   void sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum, double& moved_sum,
                       std::size_t& force_count, AssemblyResult& result) const;
   void build_pattern(const ExtraCouplings* extra);

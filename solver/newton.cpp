@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -30,6 +31,7 @@ class NewtonIterations {
   Residual assemble_residual(int k);
   double largest_correction(int k) const;
   bool failed(const Residual& res, const ContactIteration& contact);
+  std::string turned_inside_out(const AssemblyResult& assembly) const;
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
   bool solve_correction(Residual& res);
   void apply_correction();
@@ -172,14 +174,13 @@ double NewtonIterations::largest_correction(int k) const {
 
 /// A state no iteration can recover from.
 bool NewtonIterations::failed(const Residual& res, const ContactIteration& contact) {
-  if (!std::isfinite(res.max)) {
-    out_.failure = "the residual is not a number (NaN or infinite)";
+  // An inverted point first: a hyperelastic law answers one with NaN.
+  if (const std::string inverted = turned_inside_out(res.assembly); !inverted.empty()) {
+    out_.failure = inverted;
     return true;
   }
-  if (res.assembly.min_jacobian <= 0.0) {
-    out_.failure = fmt::format("element {} is turned inside out (Jacobian {:.3g})",
-                               ctx_.am.model->mesh.elements.labels[res.assembly.min_jacobian_element],
-                               res.assembly.min_jacobian);
+  if (!std::isfinite(res.max)) {
+    out_.failure = "the residual is not a number (NaN or infinite)";
     return true;
   }
   if (!contact.failure.empty()) {
@@ -187,6 +188,20 @@ bool NewtonIterations::failed(const Residual& res, const ContactIteration& conta
     return true;
   }
   return false;
+}
+
+/// Why the assembled state is no body's (empty: it is one): an element whose reference geometry
+/// is inverted or degenerate, or, under NLGEOM, one turned inside out at an integration point
+/// (det F ≤ 0). Abaqus cuts the increment back on "excessively distorted" elements alike.
+std::string NewtonIterations::turned_inside_out(const AssemblyResult& assembly) const {
+  const auto label = [&](std::int64_t e) { return ctx_.am.model->mesh.elements.labels[static_cast<std::size_t>(e)]; };
+  if (assembly.jacobian.element >= 0 && assembly.jacobian.value <= 0.0)
+    return fmt::format("element {} is turned inside out (Jacobian {:.3g})", label(assembly.jacobian.element),
+                       assembly.jacobian.value);
+  if (assembly.volume_ratio.element >= 0 && assembly.volume_ratio.value <= 0.0)
+    return fmt::format("element {} is turned inside out at an integration point (det F = {:.3g})",
+                       label(assembly.volume_ratio.element), assembly.volume_ratio.value);
+  return {};
 }
 
 /// Too many iterations, or a residual that grows twice in a row.
@@ -232,11 +247,14 @@ bool NewtonIterations::solve_correction(Residual& res) {
 ///   K(u_n) Δu = f_ext(t) − f_int(u_n) − K(u_n)·Δu_p,  u = u_n + Δu_p + Δu,
 /// instead of moving the prescribed DOFs alone, which strains only the elements next to them
 /// (with plasticity into a localised plastic state whose tangent Newton does not recover from).
-/// K(u_n)·Δu_p comes from the same element stiffnesses as the tangent. Not with contact,
-/// rotating rigid bodies or stabilisation, whose states follow u; false when nothing moves or
-/// the start's tangent is singular (then the iterations start from the moved DOFs).
+/// K(u_n)·Δu_p comes from the same element stiffnesses as the tangent. A rigid body or kinematic
+/// coupling turned by a prescribed rotation has its nodes on the exact R(θ) already (in Δu_p):
+/// the body follows their chord (a quarter turn of a coupled face moved alone inverts the
+/// elements beside it). Not with contact or stabilisation, whose states follow u; false when
+/// nothing moves or the start's tangent is singular (then the iterations start from the moved
+/// DOFs).
 bool NewtonIterations::predict() {
-  if (ctx_.contact || ctx_.rotating_dofs || ctx_.stabilization) return false;
+  if (ctx_.contact || ctx_.stabilization) return false;
   std::vector<double> delta(n_), product(n_, 0.0);
   double largest = 0.0;
   for (std::size_t d = 0; d < n_; ++d) largest = std::max(largest, std::abs(delta[d] = state_.u[d] - u_start_[d]));
@@ -247,7 +265,7 @@ bool NewtonIterations::predict() {
   request.multiply = delta;
   request.product = product;
   AssemblyResult start = ctx_.assembler.assemble(u_start_, request, state_.f_int);
-  if (start.min_jacobian <= 0.0) return false;
+  if (!turned_inside_out(start).empty()) return false;
   // The increment's forces include those of the moved state, as they did when the first
   // iteration moved the boundary alone: a rigid motion then has a force scale to converge to.
   start.average_force = start.moved_average_force;

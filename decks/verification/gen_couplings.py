@@ -76,6 +76,30 @@ def kinematic_twist():
     return d
 
 
+def kinematic_hinge():
+    """CalculiX's hinge.inp in our own mesh: a free C3D20R bar swung by 1.57 rad about an axis
+    beside it, its side face kinematically coupled (DOFs 1-3) to the reference node, in one
+    NLGEOM step whose first try the solver must cut back."""
+    nx, ny, nz = 2, 2, 8
+    coords, conn = grid_hex(nx, ny, nz, (0, 0, 0), (1, 1, 8), True)[:2]
+    ref = max(coords) + 1
+    coords[ref] = (10.0, 0.0, 0.0)
+    d = Deck("A free bar swung by 1.57 rad about the z axis through (10, 0) by a kinematic coupling of its face x = 1",
+             ["Reference: a rigid rotation, u = (R - I)(X - X_R) at every node, no stress; CalculiX's",
+              "hinge.inp (the same set-up, its own mesh) prints u = (8.992435, -9.999599, 0) at (0.5, 0.5, 8)."])
+    d.nodes(coords, 3)
+    d.elements("C3D20R", "BAR", conn)
+    d.nset("REF", [ref])
+    d.nset("TIP", select(coords, lambda x: abs(x[0] - 0.5) < EPS and abs(x[1] - 0.5) < EPS and abs(x[2] - 8) < EPS))
+    d.elset("SIDE", [1 + (nx - 1) + nx * (j + ny * k) for k in range(nz) for j in range(ny)])
+    d.add("*SURFACE, NAME=FACE, TYPE=ELEMENT", "SIDE, S4")
+    d.add("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL", *MATERIAL)
+    d.add("*COUPLING, CONSTRAINT NAME=HINGE, REF NODE=REF, SURFACE=FACE", "*KINEMATIC", "1, 3")
+    d.add("*STEP, NLGEOM", "*STATIC", "*BOUNDARY", "REF, 1, 5", "REF, 6, 6, 1.57")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S", "*END STEP")
+    return d
+
+
 def distributing_column():
     d = column("A column loaded through a distributing coupling of its top face: F1 = 10, M2 = 100, M3 = 20",
                ["Reference: the base carries the whole load (sum RF and sum r x RF exact); the reference node",
@@ -141,6 +165,7 @@ DECKS = {
     "coupling_kinematic_column_c3d8.inp": kinematic_column,
     "coupling_kinematic_push_c3d8.inp": kinematic_push,
     "coupling_kinematic_twist_c3d8.inp": kinematic_twist,
+    "coupling_kinematic_hinge_c3d20r.inp": kinematic_hinge,
     "coupling_distributing_column_c3d8.inp": distributing_column,
     "coupling_distributing_held_c3d8.inp": distributing_held,
     "coupling_distributing_pull_c3d8.inp": distributing_pull,

@@ -191,6 +191,7 @@ void hex8_point(const Hex8Rule& rule, const Hex8Geometry& geo, int p, std::span<
   const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
   Vec6 strain;
   if (request.nlgeom) {
+    sys.min_volume_ratio = std::min(sys.min_volume_ratio, F.determinant());
     const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
     strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(0, 2), 2 * E(1, 2);
   } else {
@@ -236,6 +237,7 @@ void compute_hex8(const model::ElementTypeInfo& type, std::span<const Vec3> coor
   sys.n_dof = 24;
   sys.local_iterations = 0;
   sys.points.clear();
+  sys.min_volume_ratio = 1.0;
   Hex8Geometry geo;
   sys.min_jacobian = hex8_geometry(rule, coords, geo);
   if (sys.min_jacobian <= 0.0) {  // the caller reports the distorted element
@@ -316,6 +318,14 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
   return geo;
 }
 
+/// The smallest det F over the points (a hybrid element's states hold F̄, whose determinant is
+/// the interpolated volume ratio, not the point's own).
+double min_volume_ratio(ElementFamily family, int dim, const std::vector<PointData>& pts, const Eigen::VectorXd& u) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const PointData& pd : pts) smallest = std::min(smallest, point_kinematics(family, dim, true, pd, u).F.determinant());
+  return smallest;
+}
+
 /// Incompatible modes: solves f_α(u, α) = 0 for the internal modes (one step when linear,
 /// Newton with NLGEOM or a material with state, whose stress is nonlinear in the strain) and
 /// condenses them out of f and K.
@@ -384,6 +394,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
     f = as.f;
     if (request.stiffness) K = std::move(as.K);
   }
+  if (request.nlgeom) sys.min_volume_ratio = min_volume_ratio(type.family, dim, geo.pts, uf);
   if (hourglass) {
     const PointData& centre = geo.pts.front();  // the one-point rule integrates the whole element
     const Eigen::MatrixXd b = geo.centre.grad.leftCols(dim);

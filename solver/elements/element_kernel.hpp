@@ -107,6 +107,10 @@ struct ElementSystem {
   /// Smallest det J at an integration point. When ≤ 0 the element is inverted or degenerate and
   /// nothing else is filled; the caller reports it with the element's deck location.
   double min_jacobian = 0.0;
+  /// NLGEOM: the smallest det F (current over reference volume) at an integration point; at or
+  /// below zero the element is turned inside out, a state no material law may accept (a
+  /// St. Venant–Kirchhoff point mirrored through itself has no strain at all). 1 at small strain.
+  double min_volume_ratio = 1.0;
   int local_iterations = 0;   ///< nlgeom incompatible modes: Newton iterations on the internal modes
 
   double k(int i, int j) const { return stiffness[static_cast<std::size_t>(i) * n_dof + j]; }

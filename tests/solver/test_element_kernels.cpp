@@ -403,6 +403,28 @@ TEST(ElementKernel, InvertedElementReportsNonPositiveJacobian) {
   EXPECT_TRUE(s.stiffness.empty());
 }
 
+// Mirrored through x = 0 by its displacement (u1 = −2 x1, F = diag(−1, 1, 1)), an element has
+// Green strain ½(FᵀF − I) = 0: a St. Venant–Kirchhoff point feels nothing, so only det F = −1
+// tells that the state is no body's (CalculiX's hinge.inp converged to such a fold before the
+// solver checked it). The C3D8 kernel and the generic one (C3D20R) report it alike; a rigid
+// rotation keeps det F = 1.
+TEST(ElementKernel, NlgeomReportsAnElementTurnedInsideOutByItsDisplacement) {
+  for (const char* name : {"C3D8", "C3D20R", "CPE4"}) {
+    const auto& t = *model::find_element_type(name);
+    const auto x = reference_coords(t);
+    const auto mirrored = nodal_field(t, x, [](const Vec3& p) -> Vec3 { return {-2 * p[0], 0, 0}; });
+    const auto s = run(t, x, mirrored, true);
+    EXPECT_GT(s.min_jacobian, 0.0) << name;  // the reference geometry is fine
+    EXPECT_NEAR(s.min_volume_ratio, -1.0, 1e-12) << name;
+    EXPECT_LE(max_abs(s.internal_force), 1e-12) << name;  // no strain: no force either
+    const double c = std::cos(1.2), sn = std::sin(1.2);
+    const auto turned =
+        nodal_field(t, x, [&](const Vec3& p) -> Vec3 { return {c * p[0] - sn * p[1] - p[0], sn * p[0] + c * p[1] - p[1], 0}; });
+    EXPECT_NEAR(run(t, x, turned, true).min_volume_ratio, 1.0, 1e-12) << name;
+    EXPECT_EQ(run(t, x, mirrored, false).min_volume_ratio, 1.0) << name;  // small strain: not measured
+  }
+}
+
 TEST(ElementKernel, IncompatibleModesMakeTheQuadExactInPureBending) {
   // Pure bending of a rectangle a × b: u = κ x y, v = −κ x²/2 − ν' κ y²/2 is exact for CPS4I on
   // a rectangle (the modes 1 − ξ², 1 − η² capture it); CPS4 locks in shear. σ11 = E κ y.
