@@ -250,11 +250,15 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   for (std::size_t e = 0; e < el.size(); ++e) {
     const auto& t = model::element_type(el.type[e]);
     am.elements[e].type = &t;
+    am.elements[e].rigid = model::is_rigid(t);
     if (t.family == model::ElementFamily::Spring) continue;
     if (t.dim != am.dim || (!model::is_rigid(t) && model::is_axisymmetric(t) != am.axisymmetric))
       throw AnalysisError(fmt::format("{}: error: *ELEMENT: element {} ({}) cannot be combined with {} elements in one model",
                                       m.sources.describe(el.loc[e]), el.labels[e], t.name, first.name));
   }
+
+  for (const model::RigidBody& body : m.rigid_bodies)
+    for (std::int32_t e : body.elements) am.elements[static_cast<std::size_t>(e)].rigid = true;
 
   // Smoothing data the mesh contradicts (a surface node on the axis or at the centre) is a
   // deck error, reported before what this version does not analyse yet.

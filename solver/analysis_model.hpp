@@ -34,6 +34,10 @@ struct ElementSetup {
   /// The material axes of an oriented *SOLID SECTION (owned by AnalysisModel::orientations),
   /// into which its S, E and PE are reported; null: the global axes.
   const elements::MaterialOrientation* orientation = nullptr;
+  /// Its nodes follow a rigid body: a rigid element (R3D4, ...) or any element of a *RIGID BODY
+  /// ELSET. Not integrated (a rigid motion strains nothing) and without points; its body loads
+  /// still reach its nodes, and through them the body.
+  bool rigid = false;
 };
 
 struct AnalysisModel {

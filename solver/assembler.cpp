@@ -150,7 +150,7 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   er.internal_force = true;
   er.nlgeom = request.nlgeom;
   er.point_output = request.points;
-  if (model::is_rigid(*setup.type)) {  // no stiffness, no points: its nodes follow the body
+  if (setup.rigid) {  // no stiffness, no points: its nodes follow the body
     out = elements::ElementSystem{};
     out.min_jacobian = std::numeric_limits<double>::infinity();
     return;

@@ -402,7 +402,7 @@ class PointCache {
     const ElementSetup& setup = am_.elements[el];
     const auto kept = kept_ ? kept_->of(el) : std::span<const elements::PointResult>();
     if (!kept.empty() && !setup.orientation) return kept;
-    if (model::is_rigid(*setup.type)) return {};  // no points: a rigid element is not integrated
+    if (setup.rigid) return {};  // no points: an element following a rigid body is not integrated
     points_[el] = kept.empty() ? computed(el) : std::vector<elements::PointResult>(kept.begin(), kept.end());
     if (setup.orientation)
       for (elements::PointResult& p : points_[el]) elements::to_material_axes(setup.orientation->axes_at(p.coords), p);
@@ -794,7 +794,7 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
   std::map<std::uint8_t, std::size_t> table_of_type;
   auto add = [&](std::size_t el) {
     const std::uint8_t type = elements.type[el];
-    if (model::is_rigid(model::element_type(type))) return;  // rigid elements have no points
+    if (am.elements[el].rigid) return;  // an element following a rigid body has no points
     if (columns_for(model::element_type(type), a.variables).empty()) return;  // (beams asked for S only)
     auto [it, inserted] = table_of_type.emplace(type, tables.size());
     if (inserted) {

@@ -11,9 +11,9 @@
 //    RF3 = −1.017847E+04; the same punch as R3D4 rigid elements gives the same answer.
 #include "verification_fixture.hpp"
 
-#include <map>
-
 #include <cmath>
+#include <map>
+#include <set>
 
 namespace inpact::verification {
 namespace {
@@ -118,6 +118,29 @@ std::pair<double, double> punch_forces(const Run& r) {
   if (cpress && cnarea)
     for (std::size_t i = 0; i < cpress->values.size(); ++i) contact_force += cpress->values[i] * cnarea->values[i];
   return {nodal(f, "RF", only_node(r.model(), "REF"), r.dim() - 1), contact_force};
+}
+
+// The C3D8 elements of *RIGID BODY, ELSET=PUNCH are not integrated (a rigid motion strains
+// nothing, so they would add nothing but time): S asked for everywhere comes for the block's
+// 256 elements alone, 8 points each, and the reaction stays the contact force.
+TEST(RigidBody, ElementsOfARigidBodyAreNotIntegrated) {
+  const auto path = edited_deck("rigid_punch_c3d8.inp", "rigid-elset-s", [](const std::string& line) {
+    if (line == "*NODE OUTPUT") return std::vector<std::string>{"*ELEMENT OUTPUT", "S", line};
+    return std::vector<std::string>{line};
+  });
+  const auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& m = r->model();
+  const auto& block = m.mesh.elsets.at("BLOCK").rows;
+  const auto* s = field(r->capture.last(), "S");
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->elements.size(), 8 * block.size());
+  std::set<std::int64_t> block_labels;
+  for (std::int32_t e : block) block_labels.insert(m.mesh.elements.labels[static_cast<std::size_t>(e)]);
+  for (std::int64_t label : s->elements) EXPECT_TRUE(block_labels.count(label)) << label;
+  const auto [rf, contact] = punch_forces(*r);
+  EXPECT_LE(std::abs(rf + contact), 1e-9 * std::abs(rf));
 }
 
 // The punch as a sheet of R3D4 rigid elements (SNEG facing the block) is the C3D8 punch's bottom
