@@ -58,8 +58,8 @@ void AnalyticalPair::place(std::span<const Vec3> x) {
   }
 }
 
-ShapePoint AnalyticalPair::measure(const Vec3& xs, Vec3& r) const {
-  ShapePoint sp = shape_.closest(add(ref_X_, turn_back(Q_, sub(xs, x_R_))));
+ShapePoint AnalyticalPair::measure(const Vec3& xs, Vec3& r, double extension) const {
+  ShapePoint sp = shape_.closest(add(ref_X_, turn_back(Q_, sub(xs, x_R_))), extension);
   r = sub(sp.x, ref_X_);
   sp.x = add(x_R_, turn(Q_, r));
   sp.n = turn(Q_, sp.n);
@@ -117,7 +117,7 @@ void AnalyticalPair::update_nodes(std::span<const Vec3> x, std::vector<SlaveKine
     k.node = nodes[i];
     k.area = area_weight_ * areas[i];
     NodeCache& c = cache_[i];
-    c.point = measure(x[static_cast<std::size_t>(nodes[i])], c.r);
+    c.point = measure(x[static_cast<std::size_t>(nodes[i])], c.r, extension_zone_);
     k.found = c.point.distance <= radius_ && AnalyticalShape::faces(c.point);
     k.projection = projection_of(c.point, dim_);
   }

@@ -37,6 +37,10 @@ class AnalyticalPair final : public PairKinematics {
   AnalyticalPair(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
                  double out_of_plane_thickness, bool surface_to_surface);
 
+  /// Node to surface: EXTENSION ZONE, the fraction of an end piece's length by which the
+  /// profile goes on straight beyond its free ends (Profile::closest; default 0.1, Abaqus's).
+  void set_extension_zone(double zone) { extension_zone_ = zone; }
+
   void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
   void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
 
@@ -53,8 +57,8 @@ class AnalyticalPair final : public PairKinematics {
   /// The rigid body's placement on coordinates x: x_R, θ and Q(θ).
   void place(std::span<const Vec3> x);
   /// The shape's closest point to current point xs, turned into the current placement; `r` gets
-  /// its body-frame offset X_c − X_R.
-  ShapePoint measure(const Vec3& xs, Vec3& r) const;
+  /// its body-frame offset X_c − X_R. `extension`: the profile's beyond its free ends.
+  ShapePoint measure(const Vec3& xs, Vec3& r, double extension = 0.0) const;
   /// The gap gradient of one measured point over [x_s; u_R; θ] (3 dim entries).
   void point_gradient(const ShapePoint& sp, const Vec3& r, std::span<double> out) const;
   void update_nodes(std::span<const Vec3> x, std::vector<SlaveKinematics>& out);
@@ -64,6 +68,7 @@ class AnalyticalPair final : public PairKinematics {
   std::int32_t ref_ = -1, rot_ = -1;
   Vec3 ref_X_{}, rot_X_{};  ///< reference coordinates of the reference and rotation nodes
   bool surface_to_surface_ = false;
+  double extension_zone_ = 0.1;
   // The placement of the last update().
   Vec3 x_R_{}, theta_{};
   std::array<Vec3, 3> Q_{};  ///< columns Q e_k

@@ -141,6 +141,22 @@ Vec2 closest_on_piece(const ProfilePiece& p, const Vec2& q, int& end) {
 
 }  // namespace
 
+namespace {
+
+double piece_length(const ProfilePiece& p) { return p.arc ? p.radius * std::abs(p.sweep) : norm(sub(p.b, p.a)); }
+
+}  // namespace
+
+bool extended_beyond_end(const ProfilePiece& piece, int end, const Vec2& p, double extension, ProfilePoint& pp) {
+  const Vec2 outward = end > 0 ? pp.t : scale(-1.0, pp.t);
+  const double beyond = dot(sub(p, pp.x), outward);
+  if (extension <= 0.0 || beyond > extension * piece_length(piece)) return false;
+  pp.x = add(pp.x, scale(std::max(beyond, 0.0), outward));
+  pp.gap = dot(sub(p, pp.x), pp.n);
+  pp.distance = std::abs(pp.gap);
+  return true;
+}
+
 Vec2 piece_tangent(const ProfilePiece& p, const Vec2& x) {
   if (!p.arc) return unit(sub(p.b, p.a));
   const Vec2 radial = unit(sub(x, p.center));
@@ -198,7 +214,7 @@ Profile Profile::build(const Vec2& start, std::span<const model::ProfileSegment>
   return out;
 }
 
-ProfilePoint Profile::closest(const Vec2& p) const {
+ProfilePoint Profile::closest(const Vec2& p, double extension) const {
   ProfilePoint best;
   best.distance = std::numeric_limits<double>::infinity();
   int best_end = 0;
@@ -226,6 +242,7 @@ ProfilePoint Profile::closest(const Vec2& p) const {
     if (piece.arc && best_end == 0) best.kappa = piece.sweep > 0 ? -1.0 / piece.radius : 1.0 / piece.radius;
     return best;
   }
+  if (neighbour < 0 && extended_beyond_end(piece, best_end, p, extension, best)) return best;
   // A corner or a free end: the gap is the distance to the point, signed by the side of the
   // normals that meet there.
   Vec2 mean = best.n;

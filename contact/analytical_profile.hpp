@@ -56,13 +56,22 @@ class Profile {
   static Profile build(const Vec2& start, std::span<const model::ProfileSegment> segments, double fillet_radius);
 
   std::span<const ProfilePiece> pieces() const { return pieces_; }
-  ProfilePoint closest(const Vec2& p) const;
+  /// `extension`: Abaqus's EXTENSION ZONE (node to surface), a fraction of the end piece's
+  /// length. A point beyond a free end of the profile, within that distance along the end's
+  /// tangent, meets the end piece's tangent line extended (no corner): a node that bulges just
+  /// past the end of a punch keeps the punch's normal instead of a tilted one. 0: none.
+  ProfilePoint closest(const Vec2& p, double extension = 0.0) const;
 
  private:
   std::vector<ProfilePiece> pieces_;
   /// joint_smooth_[i]: pieces i and i+1 meet tangentially (a fillet or an already smooth joint).
   std::vector<char> joint_smooth_;
 };
+
+/// Profile::closest's extension zone at free end `end` (−1: a, +1: b) of `piece`: when p lies
+/// within `extension` × the piece's length beyond it along its tangent, pp (the end, with the
+/// piece's t and n) moves onto the extended tangent line, with that line's gap; true then.
+bool extended_beyond_end(const ProfilePiece& piece, int end, const Vec2& p, double extension, ProfilePoint& pp);
 
 /// The unit tangent (direction of travel) of a piece at its point x.
 Vec2 piece_tangent(const ProfilePiece& p, const Vec2& x);

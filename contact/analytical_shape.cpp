@@ -57,17 +57,17 @@ AnalyticalShape AnalyticalShape::build(const model::AnalyticalSurface& s, int di
   return shape;
 }
 
-ShapePoint AnalyticalShape::closest(const Vec3& p) const {
+ShapePoint AnalyticalShape::closest(const Vec3& p, double extension) const {
   switch (type_) {
-    case model::AnalyticalSurface::Type::Segments: return on_segments(p);
-    case model::AnalyticalSurface::Type::Cylinder: return on_cylinder(p);
-    case model::AnalyticalSurface::Type::Revolution: return on_revolution(p);
+    case model::AnalyticalSurface::Type::Segments: return on_segments(p, extension);
+    case model::AnalyticalSurface::Type::Cylinder: return on_cylinder(p, extension);
+    case model::AnalyticalSurface::Type::Revolution: return on_revolution(p, extension);
   }
   return {};
 }
 
-ShapePoint AnalyticalShape::on_segments(const Vec3& p) const {
-  const ProfilePoint pp = profile_.closest({p[0], p[1]});
+ShapePoint AnalyticalShape::on_segments(const Vec3& p, double extension) const {
+  const ProfilePoint pp = profile_.closest({p[0], p[1]}, extension);
   ShapePoint s;
   s.x = {pp.x[0], pp.x[1], p[2]};
   s.n = {pp.n[0], pp.n[1], 0.0};
@@ -79,9 +79,9 @@ ShapePoint AnalyticalShape::on_segments(const Vec3& p) const {
   return s;
 }
 
-ShapePoint AnalyticalShape::on_cylinder(const Vec3& p) const {
+ShapePoint AnalyticalShape::on_cylinder(const Vec3& p, double extension) const {
   const Vec3 v = sub(p, origin_);
-  const ProfilePoint pp = profile_.closest({dot(v, axes_[0]), dot(v, axes_[1])});
+  const ProfilePoint pp = profile_.closest({dot(v, axes_[0]), dot(v, axes_[1])}, extension);
   ShapePoint s;
   s.x = add(origin_, add(in_plane(pp.x, axes_[0], axes_[1]), scale(dot(v, axes_[2]), axes_[2])));
   s.n = in_plane(pp.n, axes_[0], axes_[1]);
@@ -93,7 +93,7 @@ ShapePoint AnalyticalShape::on_cylinder(const Vec3& p) const {
   return s;
 }
 
-ShapePoint AnalyticalShape::on_revolution(const Vec3& p) const {
+ShapePoint AnalyticalShape::on_revolution(const Vec3& p, double extension) const {
   const Vec3 v = sub(p, origin_);
   const Vec3& ez = axes_[2];
   const double z = dot(v, ez);
@@ -102,7 +102,7 @@ ShapePoint AnalyticalShape::on_revolution(const Vec3& p) const {
   const double scale_length = std::max(norm(v), 1.0);
   const bool on_axis = r <= 1e-12 * scale_length;
   const Vec3 er = on_axis ? axes_[0] : scale(1.0 / r, w);
-  const ProfilePoint pp = profile_.closest({r, z});
+  const ProfilePoint pp = profile_.closest({r, z}, extension);
   ShapePoint s;
   s.x = add(origin_, in_plane(pp.x, er, ez));
   s.n = in_plane(pp.n, er, ez);

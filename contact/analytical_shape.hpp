@@ -34,8 +34,9 @@ class AnalyticalShape {
   /// REVOLUTION: 3D).
   static AnalyticalShape build(const model::AnalyticalSurface& s, int dim);
 
-  /// The closest point of the surface to `p` (body frame).
-  ShapePoint closest(const Vec3& p) const;
+  /// The closest point of the surface to `p` (body frame); `extension`: the profile's extension
+  /// zone beyond its free ends (Profile::closest).
+  ShapePoint closest(const Vec3& p, double extension = 0.0) const;
   const Profile& profile() const { return profile_; }
 
   /// A point faces the surface across its gap: not a corner, or a corner seen within 45° of the
@@ -44,9 +45,9 @@ class AnalyticalShape {
   static bool faces(const ShapePoint& sp);
 
  private:
-  ShapePoint on_segments(const Vec3& p) const;
-  ShapePoint on_cylinder(const Vec3& p) const;
-  ShapePoint on_revolution(const Vec3& p) const;
+  ShapePoint on_segments(const Vec3& p, double extension) const;
+  ShapePoint on_cylinder(const Vec3& p, double extension) const;
+  ShapePoint on_revolution(const Vec3& p, double extension) const;
 
   model::AnalyticalSurface::Type type_ = model::AnalyticalSurface::Type::Segments;
   Vec3 origin_{};

@@ -252,8 +252,10 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
   const model::Model& m = *am.model;
   std::unique_ptr<contact::PairKinematics> geometry;
   if (entry.master->kind == model::Surface::Kind::Analytical) {
-    geometry = std::make_unique<contact::AnalyticalPair>(m, *entry.slave, *entry.master, am.dim, r.thickness,
-                                                         r.surface_to_surface);
+    auto analytical = std::make_unique<contact::AnalyticalPair>(m, *entry.slave, *entry.master, am.dim, r.thickness,
+                                                                r.surface_to_surface);
+    if (!entry.general) analytical->set_extension_zone(entry.pair.extension_zone);
+    geometry = std::move(analytical);
   } else if (r.surface_to_surface) {
     auto s2s = std::make_unique<contact::SurfaceToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
     if (r.smoothed) {

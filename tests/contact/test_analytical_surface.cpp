@@ -63,6 +63,26 @@ TEST(AnalyticalProfile, LineNormalIsItsDirectionTurnedCounterClockwise) {
   EXPECT_NEAR(beyond.n[0], -0.6, 1e-15);
 }
 
+// EXTENSION ZONE 0.1 of the 2-long line: up to 0.2 beyond its free end a point meets the line
+// extended (the gap across it, the line's normal), farther out the end point as before; a
+// point beside an interior corner is not affected (no free end there).
+TEST(AnalyticalProfile, ExtensionZoneContinuesTheLineBeyondAFreeEnd) {
+  const Profile p = Profile::build({2, 2}, std::vector{line_to(0, 2)}, 0.0);
+  const ProfilePoint near = p.closest({-0.15, 2.01}, 0.1);  // 0.01 inside the punch
+  EXPECT_FALSE(near.corner);
+  EXPECT_NEAR(near.gap, -0.01, 1e-15);
+  EXPECT_NEAR(near.distance, 0.01, 1e-15);
+  EXPECT_NEAR(near.n[1], -1.0, 1e-15);
+  EXPECT_NEAR(near.x[0], -0.15, 1e-15);
+  EXPECT_NEAR(near.x[1], 2.0, 1e-15);
+  EXPECT_TRUE(p.closest({-0.15, 2.01}).corner);  // no zone: the end point
+  const ProfilePoint far = p.closest({-0.3, 1.6}, 0.1);
+  EXPECT_TRUE(far.corner);
+  EXPECT_NEAR(far.gap, 0.5, 1e-15);
+  const Profile bent = Profile::build({0, 2}, std::vector{line_to(0, 0), line_to(2, 0)}, 0.0);
+  EXPECT_TRUE(bent.closest({-0.1, -0.1}, 0.1).corner);  // the corner at (0, 0) joins two lines
+}
+
 TEST(AnalyticalProfile, FilletRoundsARightAngleCornerWithItsCircle) {
   // Down the line x = 0 from y = 2, then along y = 0 to x = 2: a left turn; the fillet's centre
   // is (r, r), and the profile near the corner is that circle, concave seen from its normal.
