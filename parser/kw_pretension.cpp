@@ -49,17 +49,13 @@ std::int32_t section_element(KeywordContext& ctx) {
 }
 
 // *PRE-TENSION SECTION, SURFACE=name | ELEMENT=, NODE=node or one-node set [, FOLLOWER=NO];
-// optional data line n1, n2, n3 (SURFACE= only). A continuum is cut along the surface; a truss
-// (ELEMENT=) at its second node, its axis the normal. The normal stays fixed (FOLLOWER=NO,
-// Abaqus's default).
+// optional data line n1, n2, n3. A continuum is cut along the surface; a truss (ELEMENT=) at its
+// second node, its axis the normal (a data line must say the same: CalculiX's decks give it).
+// The normal stays fixed (FOLLOWER=NO, Abaqus's default).
 void pretension_section(KeywordContext& ctx) {
   if (ctx.has("ELEMENT") == ctx.has("SURFACE")) {
     ctx.error(ctx.keyword.loc, "give one of SURFACE= (the element-based surface that cuts a solid fastener) and "
                                "ELEMENT= (a truss element)");
-    return;
-  }
-  if (ctx.has("ELEMENT") && !ctx.data.empty()) {
-    ctx.error(ctx.data[0].loc, "a truss section's normal is its axis: ELEMENT= takes no data line");
     return;
   }
   if (ctx.has("FOLLOWER") && ctx.choice_value("FOLLOWER") != "NO") {

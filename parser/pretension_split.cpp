@@ -204,6 +204,23 @@ void split_truss_section(model::Model& m, model::PretensionSection& s, bool cut)
   s.n_rewired_elements = 1;
 }
 
+/// ELEMENT= with a data line: the normal given must be the element's axis from its first node
+/// to its second (which it is in any case), within 1e-6 of its direction.
+bool normal_is_the_axis(const model::Model& m, Diagnostics& diags, const model::PretensionSection& s) {
+  if (!s.given_normal) return true;
+  const auto nodes = m.mesh.elements.nodes_of(static_cast<std::size_t>(s.element));
+  const Vec axis = sub(m.mesh.nodes.coords[nodes[1]], m.mesh.nodes.coords[nodes[0]]);
+  const Vec& n = *s.given_normal;
+  const double cosine = dot(axis, n) / std::sqrt(dot(axis, axis) * dot(n, n));
+  if (cosine >= 1.0 - 1e-6) return true;
+  diags.error(s.normal_loc, kKeyword,
+              fmt::format("the normal ({:g}, {:g}, {:g}) is not the axis of element {} from its first node to its second "
+                          "({:g}, {:g}, {:g}), which is a truss or beam section's normal (or give no data line)",
+                          n[0], n[1], n[2], m.mesh.elements.labels[static_cast<std::size_t>(s.element)], axis[0], axis[1],
+                          axis[2]));
+  return false;
+}
+
 }  // namespace
 
 void split_pretension_sections(model::Model& m, Diagnostics& diags) {
@@ -227,6 +244,7 @@ void split_pretension_sections(model::Model& m, Diagnostics& diags) {
                                                       "other section)", m.mesh.nodes.labels[s.node]));
         continue;
       }
+      if (!normal_is_the_axis(m, diags, s)) continue;
       split_truss_section(m, s, !diags.has_errors());
       continue;
     }

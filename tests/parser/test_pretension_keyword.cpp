@@ -121,7 +121,24 @@ TEST(PretensionKeyword, BadSectionsAreReportedWithTheirPlace) {
   r = dir.read(two_cubes("*PRE-TENSION SECTION, ELEMENT=1, NODE=50\n"));
   EXPECT_NE(r.report().find("element 1 is a C3D8; ELEMENT= takes a two-node truss or beam (T2D2, T3D2, B31)"), std::string::npos)
       << r.report();
-  r = dir.read(two_cubes("*PRE-TENSION SECTION, ELEMENT=1, NODE=50\n0., 0., 1.\n"));
-  EXPECT_NE(r.report().find("a truss section's normal is its axis: ELEMENT= takes no data line"), std::string::npos)
-      << r.report();
+}
+
+// ELEMENT=: the normal is the truss's axis from its first node to its second; a data line (as
+// CalculiX's pret3 gives one) must say the same, or the deck stops at it.
+TEST(PretensionSectionKeyword, ATrussNormalGivenMustBeItsAxis) {
+  DeckDir dir;
+  const auto truss = [](const std::string& normal) {
+    return "*NODE\n1, 0., 0., 0.\n2, 0., 2., 0.\n3, 0., 0., 0.\n*ELEMENT, TYPE=T3D2, ELSET=BOLT\n1, 1, 2\n"
+           "*SOLID SECTION, ELSET=BOLT, MATERIAL=STEEL\n0.5\n*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n"
+           "*PRE-TENSION SECTION, ELEMENT=1, NODE=3\n" + normal;
+  };
+  auto r = dir.read(truss("0., 3., 0.\n"));
+  EXPECT_TRUE(r.ok()) << r.report();
+  EXPECT_NEAR(r.model.pretension_sections.at(0).normal[1], 1.0, 1e-15);
+  for (const char* wrong : {"0., -1., 0.\n", "1., 0., 0.\n"}) {
+    r = dir.read(truss(wrong));
+    EXPECT_TRUE(has_diagnostic(r, "deck.inp:13:1: error: *PRE-TENSION SECTION: the normal")) << r.report();
+    EXPECT_NE(r.report().find("is not the axis of element 1 from its first node to its second (0, 2, 0)"), std::string::npos)
+        << r.report();
+  }
 }
