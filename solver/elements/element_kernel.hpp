@@ -121,6 +121,7 @@ struct ElementSystem {
 inline void begin_element_system(ElementSystem& out, int n_dof, const ElementRequest& request) {
   out.n_dof = n_dof;
   out.local_iterations = 0;
+  out.min_volume_ratio = 1.0;  // not measured by these kernels (the systems are reused)
   out.internal_force.assign(request.internal_force ? static_cast<std::size_t>(n_dof) : 0, 0.0);
   out.stiffness.assign(request.stiffness ? static_cast<std::size_t>(n_dof) * n_dof : 0, 0.0);
   out.points.clear();
