@@ -39,6 +39,18 @@ struct Coupling {
   /// The coupling nodes: the surface's nodes within the influence radius, sorted, unique,
   /// without the reference node.
   std::vector<std::int32_t> nodes;
+  /// *DISTRIBUTING COUPLING (node-based, CalculiX's and Abaqus's older form): its data lines, a
+  /// node label or node set (upper case) and a weight, resolved on the complete deck into
+  /// `nodes` and `given_weights` (parallel to them).
+  struct WeightedLine {
+    std::string target;
+    double weight = 0;
+    SourceLoc loc;
+  };
+  std::vector<WeightedLine> weighted_lines;
+  /// Empty: the weights come from the surface.
+  std::vector<double> given_weights;
+  bool node_based() const { return !weighted_lines.empty(); }
   SourceLoc loc;      ///< the *COUPLING line
   SourceLoc ref_loc;  ///< REF NODE='s value
   SourceLoc surface_loc;

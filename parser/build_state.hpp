@@ -90,6 +90,15 @@ struct BuildState {
 
   model::Step* step = nullptr;  ///< open *STEP
 
+  /// *ELEMENT, TYPE=DCOUP3D | DCOUP2D by ELSET (upper case): each element's label, its one node's
+  /// label and line. Not mesh elements: *DISTRIBUTING COUPLING, ELSET= takes the node as a
+  /// distributing coupling's reference node.
+  struct CouplingElement {
+    std::int64_t label = 0, node_label = 0;
+    model::SourceLoc loc;
+  };
+  std::map<std::string, std::vector<CouplingElement>> coupling_elements;
+
   MeshBuild& mesh_build() { return part ? part->build : model_mesh; }
   model::Mesh& mesh() { return mesh_build().mesh; }
 };

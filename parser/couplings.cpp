@@ -1,6 +1,7 @@
 #include "couplings.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <set>
 
@@ -34,6 +35,34 @@ std::vector<std::int32_t> coupling_nodes(const model::Model& m, const model::Cou
   return nodes;
 }
 
+/// *DISTRIBUTING COUPLING's lines, on the complete deck: each a node label or a node set, every
+/// node once, with the line's weight.
+bool resolve_weighted_lines(const model::Model& m, model::Coupling& c, Diagnostics& diags) {
+  constexpr const char* keyword = "*DISTRIBUTING COUPLING";
+  for (const model::Coupling::WeightedLine& line : c.weighted_lines) {
+    std::vector<std::int32_t> rows;
+    std::int64_t label = 0;
+    const auto [end, ec] = std::from_chars(line.target.data(), line.target.data() + line.target.size(), label);
+    if (ec == std::errc() && end == line.target.data() + line.target.size()) {
+      if (const auto row = m.mesh.nodes.index.find(0, label)) rows.push_back(*row);
+      else diags.error(line.loc, keyword, fmt::format("node {} is not defined", label));
+    } else if (const auto it = m.mesh.nsets.find(line.target); it != m.mesh.nsets.end()) {
+      rows = it->second.rows;
+    } else {
+      diags.error(line.loc, keyword, fmt::format("node set '{}' is not defined", line.target));
+    }
+    for (std::int32_t row : rows) {
+      if (std::find(c.nodes.begin(), c.nodes.end(), row) != c.nodes.end()) {
+        diags.error(line.loc, keyword, fmt::format("node {} is listed twice", m.mesh.nodes.labels[static_cast<std::size_t>(row)]));
+        return false;
+      }
+      c.nodes.push_back(row);
+      c.given_weights.push_back(line.weight);
+    }
+  }
+  return !diags.has_errors();
+}
+
 /// A reference node serves one constraint: a second coupling or a rigid body on it would give
 /// its DOFs two rules.
 void check_reference_nodes_distinct(const model::Model& m, Diagnostics& diags) {
@@ -60,8 +89,12 @@ void finalize_couplings(model::Model& m, Diagnostics& diags) {
       continue;
     }
     // An unknown reference node or surface is reported already.
-    if (c.ref_node < 0 || !m.mesh.surfaces.count(c.surface)) continue;
-    c.nodes = coupling_nodes(m, c);
+    if (c.ref_node < 0 || (!c.node_based() && !m.mesh.surfaces.count(c.surface))) continue;
+    if (!c.node_based()) c.nodes = coupling_nodes(m, c);
+    else if (!resolve_weighted_lines(m, c, diags)) continue;
+    if (std::find(c.nodes.begin(), c.nodes.end(), c.ref_node) != c.nodes.end())
+      diags.error(c.ref_loc, kKeyword, fmt::format("coupling '{}': the reference node {} is one of its coupling nodes",
+                                                   c.name, m.mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
     if (c.nodes.empty())
       diags.error(c.surface_loc, kKeyword, fmt::format("coupling '{}' has no coupling node: surface '{}' has no node{}",
                                                        c.name, c.surface,

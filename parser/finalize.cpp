@@ -323,7 +323,7 @@ void finalize_model(BuildState& state, Diagnostics& diags) {
   split_pretension_sections(m, diags);
   finalize_rigid_bodies(m, diags);
   for (const model::Coupling& c : m.couplings) {
-    check_surface(m, diags, c.surface, c.surface_loc, "*COUPLING");
+    if (!c.node_based()) check_surface(m, diags, c.surface, c.surface_loc, "*COUPLING");
     if (!c.orientation.empty())
       check_defined(diags, m.orientations, c.orientation, c.orientation_loc, "*COUPLING", "orientation");
   }

@@ -106,6 +106,59 @@ void distributing(KeywordContext& ctx) {
   c->dofs[0] = c->dofs[1] = c->dofs[2] = true;
 }
 
+/// *DISTRIBUTING COUPLING's data lines "node or node set, weight", kept as written: a set may
+/// be defined further down (CalculiX reads it so); couplings.cpp resolves them.
+bool read_weighted_lines(KeywordContext& ctx, model::Coupling& c) {
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 2, 2, "node or node set, weight")) return false;
+    const auto weight = ctx.real(f[1], "weight");
+    if (!weight) return false;
+    if (*weight < 0) {
+      ctx.error(f[1].loc, fmt::format("the weight {} is negative", *weight));
+      return false;
+    }
+    c.weighted_lines.push_back({normalize_label(f[0].text), *weight, f[0].loc});
+  }
+  return true;
+}
+
+// *DISTRIBUTING COUPLING, ELSET=: the older, node-based form (Abaqus 6's, CalculiX's). The set's
+// one DCOUP3D/DCOUP2D element holds the reference node, whose translations are the nodes'
+// weighted mean, as a *COUPLING with *DISTRIBUTING of DOFs 1–3 over a node set. CalculiX couples
+// translations only; Abaqus's element carries moments too (not supported: a moment on the
+// reference node is a deck error, as on any uncoupled DOF).
+void distributing_coupling(KeywordContext& ctx) {
+  if (ctx.has("ORIENTATION")) {
+    ctx.error_param("ORIENTATION", "ORIENTATION on a *DISTRIBUTING COUPLING is not supported yet");
+    return;
+  }
+  const std::string elset = ctx.name_value("ELSET");
+  const auto it = ctx.state.coupling_elements.find(elset);
+  if (it == ctx.state.coupling_elements.end() || it->second.size() != 1) {
+    ctx.error_param("ELSET", fmt::format("element set '{}' holds {} distributing coupling elements (*ELEMENT, "
+                                         "TYPE=DCOUP3D); one, whose node is the reference node, was expected",
+                                         elset, it == ctx.state.coupling_elements.end() ? 0 : it->second.size()));
+    return;
+  }
+  const BuildState::CouplingElement& e = it->second.front();
+  const auto ref = ctx.mesh().nodes.index.find(0, e.node_label);
+  if (!ref) {
+    ctx.error(e.loc, fmt::format("node {} of distributing coupling element {} is not defined (define it before the "
+                                 "*DISTRIBUTING COUPLING)", e.node_label, e.label));
+    return;
+  }
+  model::Coupling c;
+  c.name = elset;
+  c.kind = model::Coupling::Kind::Distributing;
+  c.loc = ctx.keyword.loc;
+  c.ref_loc = e.loc;
+  c.ref_node = *ref;
+  c.dofs = {true, true, true, false, false, false};
+  if (read_weighted_lines(ctx, c)) ctx.model().couplings.push_back(std::move(c));
+}
+
 }  // namespace
 
 void add_coupling_keywords(std::vector<KeywordSpec>& t) {
@@ -124,6 +177,9 @@ void add_coupling_keywords(std::vector<KeywordSpec>& t) {
                {{"WEIGHTING METHOD", VK::Required, VT::Choice, {"UNIFORM", "LINEAR", "QUADRATIC", "CUBIC"}},
                 {"COUPLING", VK::Required, VT::Choice, {"CONTINUUM", "STRUCTURAL"}}},
                DataLines::Optional, distributing, parent});
+  t.push_back({"*DISTRIBUTING COUPLING", kModelDataScopes,
+               {{"ELSET", VK::Required, VT::Text, {}, true}, {"ORIENTATION", VK::Required, VT::Text}},
+               DataLines::Required, distributing_coupling});
 }
 
 }  // namespace inpact::parser

@@ -78,9 +78,37 @@ void node(KeywordContext& ctx) {
   if (nset) sort_unique(nset->rows);
 }
 
+// *ELEMENT, TYPE=DCOUP3D | DCOUP2D, ELSET=: "label, node", the reference node of the
+// *DISTRIBUTING COUPLING that names the set. The set exists (empty) so that a section may name it,
+// as CalculiX's decks do.
+void coupling_elements(KeywordContext& ctx) {
+  if (ctx.state.part) {
+    ctx.error_param("TYPE", "distributing coupling elements inside a *PART are not supported yet");
+    return;
+  }
+  if (!ctx.has("ELSET")) {
+    ctx.error(ctx.keyword.loc, "distributing coupling elements need ELSET=, the set *DISTRIBUTING COUPLING names");
+    return;
+  }
+  set_named(ctx.state.mesh_build().mesh.elsets, ctx, "ELSET");
+  auto& list = ctx.state.coupling_elements[ctx.name_value("ELSET")];
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 2, 2, "element label and its one node label")) continue;
+    const auto label = ctx.integer(f[0], "element label");
+    const auto node = ctx.integer(f[1], "node label");
+    if (label && node) list.push_back({*label, *node, f[1].loc});
+  }
+}
+
 // *ELEMENT, TYPE=, ELSET=: label, node labels; a line ending in a comma continues.
 void element(KeywordContext& ctx) {
   const std::string type_name = ctx.name_value("TYPE");
+  if (type_name == "DCOUP3D" || type_name == "DCOUP2D") {
+    coupling_elements(ctx);
+    return;
+  }
   const model::ElementTypeInfo* type = model::find_element_type(type_name);
   if (!type) {
     std::vector<std::string> names;

@@ -60,7 +60,7 @@ std::string where(const AnalysisModel& am, const model::Coupling& c) {
 
 std::vector<double> distributing_weights(const AnalysisModel& am, const model::Coupling& c) {
   const model::Model& m = *am.model;
-  std::vector<double> w = tributary_areas(am, c);
+  std::vector<double> w = c.given_weights.empty() ? tributary_areas(am, c) : c.given_weights;
   const Vector3d xr = position(m, c.ref_node);
   double r0 = c.influence_radius;
   if (r0 <= 0)
@@ -101,8 +101,10 @@ std::vector<CouplingRow> distributing_rows(const AnalysisModel& am, const model:
                                     where(am, c), dim));
   // u_R = ū + θ × d with the whole rotation θ = J⁻¹ Σ ŵ r × u: a force at a reference node off
   // the centroid is carried with its moment about it even where the rotations are released.
+  // *DISTRIBUTING COUPLING (node-based, CalculiX's meaning): u_R = ū, the force alone.
   Matrix3d all_rotations = Matrix3d::Identity();
   if (dim == 2) all_rotations(0, 0) = all_rotations(1, 1) = 0.0;
+  if (c.node_based()) all_rotations.setZero();
   const Matrix3d moment_arm = -skew(position(m, c.ref_node) - centroid) * all_rotations;  // −[d]×
   const Vector3d d = position(m, c.ref_node) - centroid;
   Matrix3d translations = Matrix3d::Identity();  // the force components there are (2D: in-plane)

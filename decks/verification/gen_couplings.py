@@ -127,6 +127,32 @@ def distributing_held():
     return d
 
 
+def distributing_coupling_held():
+    """CalculiX's node-based *DISTRIBUTING COUPLING (a DCOUP3D element holds the reference
+    node) over a held square face: each node carries its weight's share of the force."""
+    coords, conn = grid_hex(2, 2, 2, (0, 0, 0), (1, 1, 2), False)[:2]
+    ref = max(coords) + 1
+    coords[ref] = (0.5, 0.5, 2.5)
+    d = Deck("F = (10, 5, 0) spread by a *DISTRIBUTING COUPLING over a held square face by the weights given",
+             ["Reference (by hand): the 3 x 3 face nodes weigh 1 (corners), 2 (edges), 4 (centre), 16 in all;",
+              "node i carries w_i / 16 of F and no moment (CalculiX's meaning: the reference node moves with",
+              "the weighted mean, its offset 0.5 above the face adds nothing), so RF = -(w_i / 16) F."])
+    d.nodes(coords, 3)
+    d.elements("C3D8", "COLUMN", conn)
+    d.nset("BASE", select(coords, lambda x: abs(x[2]) < EPS))
+    top = select(coords, lambda x: abs(x[2] - 2) < EPS)
+    d.nset("TOP", top)
+    d.nset("REF", [ref])
+    d.add("*ELEMENT, TYPE=DCOUP3D, ELSET=DC", f"{len(conn) + 1}, {ref}")
+    weight = {n: (2 if abs(coords[n][0] - 0.5) < EPS else 1) * (2 if abs(coords[n][1] - 0.5) < EPS else 1) for n in top}
+    d.add("*DISTRIBUTING COUPLING, ELSET=DC", *[f"{n}, {weight[n]}." for n in sorted(top)])
+    d.add("*SOLID SECTION, ELSET=COLUMN, MATERIAL=STEEL", *MATERIAL)
+    d.add("*BOUNDARY", "BASE, ENCASTRE", "TOP, ENCASTRE")
+    d.add("*STEP", "*STATIC", "*CLOAD", "REF, 1, 10.", "REF, 2, 5.")
+    d.add("*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*END STEP")
+    return d
+
+
 def distributing_pull():
     """The reference node of a distributing coupling prescribed: a lift and a tilt."""
     d = column("A column whose top face is lifted by 0.001 and tilted by 0.0005 about x through a distributing coupling",
@@ -168,6 +194,7 @@ DECKS = {
     "coupling_kinematic_hinge_c3d20r.inp": kinematic_hinge,
     "coupling_distributing_column_c3d8.inp": distributing_column,
     "coupling_distributing_held_c3d8.inp": distributing_held,
+    "distributing_coupling_held_c3d8.inp": distributing_coupling_held,
     "coupling_distributing_pull_c3d8.inp": distributing_pull,
     "coupling_distributing_plate_cpe4.inp": distributing_plate,
 }

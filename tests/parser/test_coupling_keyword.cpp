@@ -118,3 +118,41 @@ TEST(CouplingKeyword, DeckErrorsNameTheLineAndWhatIsExpected) {
             std::string::npos)
       << r.report();
 }
+
+// *DISTRIBUTING COUPLING (CalculiX's node-based form): the DCOUP3D element's node is the
+// reference node, the lines give nodes or node sets (defined anywhere in the deck) and weights;
+// translations only, so no rotation node.
+TEST(CouplingKeyword, NodeBasedDistributingCouplingTakesItsReferenceNodeFromADcoupElement) {
+  DeckDir dir;
+  auto r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n5, 1.\n"
+                         "TOPN, 2.\n*NSET, NSET=TOPN\n6, 7\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  ASSERT_EQ(r.model.couplings.size(), 1u);
+  const model::Coupling& c = r.model.couplings[0];
+  const auto& labels = r.model.mesh.nodes.labels;
+  EXPECT_EQ(c.kind, model::Coupling::Kind::Distributing);
+  EXPECT_EQ(labels[static_cast<std::size_t>(c.ref_node)], 50);
+  ASSERT_EQ(c.nodes.size(), 3u);
+  EXPECT_EQ(labels[static_cast<std::size_t>(c.nodes[0])], 5);
+  EXPECT_EQ(labels[static_cast<std::size_t>(c.nodes[2])], 7);
+  EXPECT_EQ(c.given_weights, (std::vector<double>{1.0, 2.0, 2.0}));
+  EXPECT_EQ(c.rot_node, -1);
+  EXPECT_FALSE(c.dofs[3] || c.dofs[4] || c.dofs[5]);
+}
+
+TEST(CouplingKeyword, NodeBasedDistributingCouplingErrorsNameTheLine) {
+  DeckDir dir;
+  auto r = dir.read(cube("*DISTRIBUTING COUPLING, ELSET=NONE\n5, 1.\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:31: error: *DISTRIBUTING COUPLING: element set 'NONE' holds 0 distributing "
+                                "coupling elements"))
+      << r.report();
+  r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D\n9, 50\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:20:1: error: *ELEMENT: distributing coupling elements need ELSET="))
+      << r.report();
+  r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\nNOPE, 1.\n5, 1.\n5, 2.\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:1: error: *DISTRIBUTING COUPLING: node set 'NOPE' is not defined")) << r.report();
+  r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n5, 1.\n5, 2.\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:1: error: *DISTRIBUTING COUPLING: node 5 is listed twice")) << r.report();
+  r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n5, -1.\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:4: error: *DISTRIBUTING COUPLING: the weight -1 is negative")) << r.report();
+}

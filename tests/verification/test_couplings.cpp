@@ -186,6 +186,26 @@ TEST(Coupling, DistributingSpreadsTheLoadByAreaWeightsAboutTheCentroid) {
   EXPECT_LE(worst, 1e-12);
 }
 
+// CalculiX's node-based *DISTRIBUTING COUPLING (the reference node on a DCOUP3D element, weights
+// written per node): the held face's nodes carry w_i/16 of F = (10, 5, 0) and no moment, though
+// the reference node is 0.5 off the face (CalculiX's meaning; a *COUPLING's would add one).
+// CalculiX's own distcoup and distcoupspring agree to 1.3e-7 (RF) and 3.6e-8 (U).
+// Measured: 0 at worst.
+TEST(Coupling, NodeBasedDistributingCouplingSpreadsTheForceByTheWeightsGiven) {
+  const auto r = run_deck(deck_path("distributing_coupling_held_c3d8.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto& m = r->model();
+  const auto& f = r->capture.last();
+  double worst = 0.0;
+  for (std::int32_t n : nset(m, "TOP")) {
+    const double w = face_weight(coords(m, n));  // the deck's weights over their sum 16
+    const V3 expected{10 * w, 5 * w, 0};
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(nodal(f, "RF", n, c) + expected[c]));
+  }
+  report("*DISTRIBUTING COUPLING: max |RF + w F| over the held face", worst);
+  EXPECT_LE(worst, 1e-12);
+}
+
 // WEIGHTING METHOD=LINEAR: w = area (1 − r/r0), r0 the farthest coupling node's distance from the
 // reference node, so the face's four corners carry nothing; the resultant is still F and the
 // moment M (about the reference node), whatever the weights. Measured: corners 0, sums 6.6e-15.
