@@ -57,7 +57,8 @@ class AnalyticalPair final : public PairKinematics {
   /// The rigid body's placement on coordinates x: x_R, θ and Q(θ).
   void place(std::span<const Vec3> x);
   /// The shape's closest point to current point xs, turned into the current placement; `r` gets
-  /// its body-frame offset X_c − X_R. `extension`: the profile's beyond its free ends.
+  /// its body-frame offset X_c − X_R. `extension`: how far the profile goes on beyond its free
+  /// ends (Profile::closest).
   ShapePoint measure(const Vec3& xs, Vec3& r, double extension = 0.0) const;
   /// The gap gradient of one measured point over [x_s; u_R; θ] (3 dim entries).
   void point_gradient(const ShapePoint& sp, const Vec3& r, std::span<double> out) const;

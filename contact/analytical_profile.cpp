@@ -139,14 +139,11 @@ Vec2 closest_on_piece(const ProfilePiece& p, const Vec2& q, int& end) {
   return end < 0 ? p.a : p.b;
 }
 
-}  // namespace
-
-namespace {
-
 double piece_length(const ProfilePiece& p) { return p.arc ? p.radius * std::abs(p.sweep) : norm(sub(p.b, p.a)); }
 
-}  // namespace
-
+/// Profile::closest's extension zone at free end `end` (−1: a, +1: b) of `piece`: when p lies
+/// within `extension` × the piece's length beyond it along its tangent, pp (the end, with the
+/// piece's t and n) moves onto the extended tangent line, with that line's gap; true then.
 bool extended_beyond_end(const ProfilePiece& piece, int end, const Vec2& p, double extension, ProfilePoint& pp) {
   const Vec2 outward = end > 0 ? pp.t : scale(-1.0, pp.t);
   const double beyond = dot(sub(p, pp.x), outward);
@@ -156,6 +153,8 @@ bool extended_beyond_end(const ProfilePiece& piece, int end, const Vec2& p, doub
   pp.distance = std::abs(pp.gap);
   return true;
 }
+
+}  // namespace
 
 Vec2 piece_tangent(const ProfilePiece& p, const Vec2& x) {
   if (!p.arc) return unit(sub(p.b, p.a));

@@ -68,11 +68,6 @@ class Profile {
   std::vector<char> joint_smooth_;
 };
 
-/// Profile::closest's extension zone at free end `end` (−1: a, +1: b) of `piece`: when p lies
-/// within `extension` × the piece's length beyond it along its tangent, pp (the end, with the
-/// piece's t and n) moves onto the extended tangent line, with that line's gap; true then.
-bool extended_beyond_end(const ProfilePiece& piece, int end, const Vec2& p, double extension, ProfilePoint& pp);
-
 /// The unit tangent (direction of travel) of a piece at its point x.
 Vec2 piece_tangent(const ProfilePiece& p, const Vec2& x);
 

@@ -37,7 +37,7 @@ struct Coupling {
   std::array<bool, 6> dofs{true, true, true, true, true, true};
   Weighting weighting = Weighting::Uniform;
   /// The coupling nodes: the surface's nodes within the influence radius, sorted, unique,
-  /// without the reference node.
+  /// without the reference node (node-based form: in the order of its lines).
   std::vector<std::int32_t> nodes;
   /// *DISTRIBUTING COUPLING (node-based, CalculiX's and Abaqus's older form): its data lines, a
   /// node label or node set (upper case) and a weight, resolved on the complete deck into
@@ -51,7 +51,9 @@ struct Coupling {
   /// Empty: the weights come from the surface.
   std::vector<double> given_weights;
   bool node_based() const { return !weighted_lines.empty(); }
-  SourceLoc loc;      ///< the *COUPLING line
+  /// The keyword messages name: the node-based form's own, or *COUPLING.
+  const char* keyword() const { return node_based() ? "*DISTRIBUTING COUPLING" : "*COUPLING"; }
+  SourceLoc loc;      ///< the *COUPLING (or *DISTRIBUTING COUPLING) line
   SourceLoc ref_loc;  ///< REF NODE='s value
   SourceLoc surface_loc;
 

@@ -35,32 +35,45 @@ std::vector<std::int32_t> coupling_nodes(const model::Model& m, const model::Cou
   return nodes;
 }
 
-/// *DISTRIBUTING COUPLING's lines, on the complete deck: each a node label or a node set, every
-/// node once, with the line's weight.
+/// *DISTRIBUTING COUPLING's lines, on the complete deck: each a node label or a node set of the
+/// model (instance nodes, Part-1-1.12, are not read here yet), every node once, with the line's
+/// weight; some weight must be positive. False after an error of its own.
 bool resolve_weighted_lines(const model::Model& m, model::Coupling& c, Diagnostics& diags) {
-  constexpr const char* keyword = "*DISTRIBUTING COUPLING";
+  const char* keyword = c.keyword();
+  std::vector<std::uint8_t> seen(m.mesh.nodes.size(), 0);
+  bool ok = true;
   for (const model::Coupling::WeightedLine& line : c.weighted_lines) {
     std::vector<std::int32_t> rows;
     std::int64_t label = 0;
     const auto [end, ec] = std::from_chars(line.target.data(), line.target.data() + line.target.size(), label);
     if (ec == std::errc() && end == line.target.data() + line.target.size()) {
-      if (const auto row = m.mesh.nodes.index.find(0, label)) rows.push_back(*row);
-      else diags.error(line.loc, keyword, fmt::format("node {} is not defined", label));
+      if (const auto row = m.mesh.nodes.index.find(0, label)) {
+        rows.push_back(*row);
+      } else {
+        diags.error(line.loc, keyword, fmt::format("node {} is not defined", label));
+        ok = false;
+      }
     } else if (const auto it = m.mesh.nsets.find(line.target); it != m.mesh.nsets.end()) {
       rows = it->second.rows;
     } else {
       diags.error(line.loc, keyword, fmt::format("node set '{}' is not defined", line.target));
+      ok = false;
     }
     for (std::int32_t row : rows) {
-      if (std::find(c.nodes.begin(), c.nodes.end(), row) != c.nodes.end()) {
-        diags.error(line.loc, keyword, fmt::format("node {} is listed twice", m.mesh.nodes.labels[static_cast<std::size_t>(row)]));
+      if (seen[static_cast<std::size_t>(row)]++) {
+        diags.error(line.loc, keyword, fmt::format("node {} is listed twice; expected each node once",
+                                                   m.mesh.nodes.labels[static_cast<std::size_t>(row)]));
         return false;
       }
       c.nodes.push_back(row);
       c.given_weights.push_back(line.weight);
     }
   }
-  return !diags.has_errors();
+  if (ok && !c.nodes.empty() && std::all_of(c.given_weights.begin(), c.given_weights.end(), [](double w) { return w == 0; })) {
+    diags.error(c.weighted_lines.front().loc, keyword, "every weight is zero; expected at least one positive weight");
+    ok = false;
+  }
+  return ok;
 }
 
 /// A reference node serves one constraint: a second coupling or a rigid body on it would give
@@ -73,7 +86,7 @@ void check_reference_nodes_distinct(const model::Model& m, Diagnostics& diags) {
   }
   for (const model::Coupling& c : m.couplings)
     if (c.ref_node >= 0 && !taken.insert(c.ref_node).second)
-      diags.error(c.ref_loc, kKeyword, fmt::format("coupling '{}': the reference node {} is already a rigid body's node or "
+      diags.error(c.ref_loc, c.keyword(), fmt::format("coupling '{}': the reference node {} is already a rigid body's node or "
                                                    "another coupling's reference node; give each constraint its own",
                                                    c.name, m.mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
 }
@@ -93,13 +106,16 @@ void finalize_couplings(model::Model& m, Diagnostics& diags) {
     if (!c.node_based()) c.nodes = coupling_nodes(m, c);
     else if (!resolve_weighted_lines(m, c, diags)) continue;
     if (std::find(c.nodes.begin(), c.nodes.end(), c.ref_node) != c.nodes.end())
-      diags.error(c.ref_loc, kKeyword, fmt::format("coupling '{}': the reference node {} is one of its coupling nodes",
+      diags.error(c.ref_loc, c.keyword(), fmt::format("coupling '{}': the reference node {} is one of its coupling nodes",
                                                    c.name, m.mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
-    if (c.nodes.empty())
+    if (c.nodes.empty() && c.node_based())
+      diags.error(c.loc, c.keyword(), fmt::format("coupling '{}' has no coupling node: its lines name none (an empty node "
+                                                  "set); expected at least one node", c.name));
+    else if (c.nodes.empty())
       diags.error(c.surface_loc, kKeyword, fmt::format("coupling '{}' has no coupling node: surface '{}' has no node{}",
                                                        c.name, c.surface,
                                                        c.influence_radius > 0 ? " within the influence radius" : ""));
-    check_not_on_continuum(m, on_continuum, c.ref_node, c.ref_loc, kKeyword, "reference node", diags);
+    check_not_on_continuum(m, on_continuum, c.ref_node, c.ref_loc, c.keyword(), "reference node", diags);
   }
   check_reference_nodes_distinct(m, diags);
   if (diags.has_errors()) return;

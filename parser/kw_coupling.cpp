@@ -116,7 +116,7 @@ bool read_weighted_lines(KeywordContext& ctx, model::Coupling& c) {
     const auto weight = ctx.real(f[1], "weight");
     if (!weight) return false;
     if (*weight < 0) {
-      ctx.error(f[1].loc, fmt::format("the weight {} is negative", *weight));
+      ctx.error(f[1].loc, fmt::format("the weight {} is negative; expected a weight >= 0", *weight));
       return false;
     }
     c.weighted_lines.push_back({normalize_label(f[0].text), *weight, f[0].loc});
@@ -138,7 +138,8 @@ void distributing_coupling(KeywordContext& ctx) {
   const auto it = ctx.state.coupling_elements.find(elset);
   if (it == ctx.state.coupling_elements.end() || it->second.size() != 1) {
     ctx.error_param("ELSET", fmt::format("element set '{}' holds {} distributing coupling elements (*ELEMENT, "
-                                         "TYPE=DCOUP3D); one, whose node is the reference node, was expected",
+                                         "TYPE=DCOUP3D, defined before this keyword); one, whose node is the "
+                                         "reference node, was expected",
                                          elset, it == ctx.state.coupling_elements.end() ? 0 : it->second.size()));
     return;
   }

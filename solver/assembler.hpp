@@ -171,8 +171,9 @@ class Assembler {
   }
   /// Whether the terms every rank computes alike go into this rank's tangent (rank 0's).
   bool adds_shared_terms() const { return world_.rank == 0; }
-  /// Sums a partitioned assembly's forces and force measures over the ranks.
+  /// The smallest value over the ranks, and the lowest element row that has it.
   void smallest_over_ranks(SmallestAtElement& smallest) const;
+  /// Sums a partitioned assembly's forces and force measures over the ranks.
   void sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum, double& moved_sum,
                       std::size_t& force_count, AssemblyResult& result) const;
   void build_pattern(const ExtraCouplings* extra);

@@ -53,7 +53,7 @@ Matrix3d skew(const Vector3d& a) {
 }
 
 std::string where(const AnalysisModel& am, const model::Coupling& c) {
-  return fmt::format("{}: error: *COUPLING: coupling '{}'", am.model->sources.describe(c.loc), c.name);
+  return fmt::format("{}: error: {}: coupling '{}'", am.model->sources.describe(c.loc), c.keyword(), c.name);
 }
 
 }  // namespace

@@ -30,8 +30,8 @@ class NewtonIterations {
   ContactIteration update_contact(int k);
   Residual assemble_residual(int k);
   double largest_correction(int k) const;
-  bool failed(const Residual& res, const ContactIteration& contact);
-  std::string turned_inside_out(const AssemblyResult& assembly) const;
+  bool failed(int k, const Residual& res, const ContactIteration& contact);
+  std::string turned_inside_out(const AssemblyResult& assembly, bool solved) const;
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
   bool solve_correction(Residual& res);
   void apply_correction();
@@ -89,7 +89,7 @@ NewtonOutcome NewtonIterations::run() {
     const double max_correction = largest_correction(k);
     ctx_.observer.iteration({ctx_.at.step, ctx_.at.increment, ctx_.at.attempt, k, res.max,
                              res.q > 0 ? res.max / res.q : 0.0, std::abs(max_correction), res.worst});
-    if (failed(res, contact)) return out_;
+    if (failed(k, res, contact)) return out_;
     const ConvergenceCheck check = check_convergence(
         {.iteration = k, .max_residual = res.max, .q = res.q, .max_correction = std::abs(max_correction),
          .max_increment = largest_increment(state_.u, u_start_), .contact_status_changed = contact.blocks_convergence,
@@ -173,9 +173,9 @@ double NewtonIterations::largest_correction(int k) const {
 }
 
 /// A state no iteration can recover from.
-bool NewtonIterations::failed(const Residual& res, const ContactIteration& contact) {
+bool NewtonIterations::failed(int k, const Residual& res, const ContactIteration& contact) {
   // An inverted point first: a hyperelastic law answers one with NaN.
-  if (const std::string inverted = turned_inside_out(res.assembly); !inverted.empty()) {
+  if (const std::string inverted = turned_inside_out(res.assembly, k > 0); !inverted.empty()) {
     out_.failure = inverted;
     return true;
   }
@@ -192,13 +192,16 @@ bool NewtonIterations::failed(const Residual& res, const ContactIteration& conta
 
 /// Why the assembled state is no body's (empty: it is one): an element whose reference geometry
 /// is inverted or degenerate, or, under NLGEOM, one turned inside out at an integration point
-/// (det F ≤ 0). Abaqus cuts the increment back on "excessively distorted" elements alike.
-std::string NewtonIterations::turned_inside_out(const AssemblyResult& assembly) const {
+/// (det F ≤ 0) in an iterate a solve gave (`solved`): the start of an increment that moved its
+/// prescribed DOFs alone (no prediction: contact, stabilisation) may fold the elements beside
+/// them, which the first correction undoes. Abaqus cuts the increment back on "excessively
+/// distorted" elements alike.
+std::string NewtonIterations::turned_inside_out(const AssemblyResult& assembly, bool solved) const {
   const auto label = [&](std::int64_t e) { return ctx_.am.model->mesh.elements.labels[static_cast<std::size_t>(e)]; };
   if (assembly.jacobian.element >= 0 && assembly.jacobian.value <= 0.0)
     return fmt::format("element {} is turned inside out (Jacobian {:.3g})", label(assembly.jacobian.element),
                        assembly.jacobian.value);
-  if (assembly.volume_ratio.element >= 0 && assembly.volume_ratio.value <= 0.0)
+  if (solved && assembly.volume_ratio.element >= 0 && assembly.volume_ratio.value <= 0.0)
     return fmt::format("element {} is turned inside out at an integration point (det F = {:.3g})",
                        label(assembly.volume_ratio.element), assembly.volume_ratio.value);
   return {};
@@ -265,7 +268,7 @@ bool NewtonIterations::predict() {
   request.multiply = delta;
   request.product = product;
   AssemblyResult start = ctx_.assembler.assemble(u_start_, request, state_.f_int);
-  if (!turned_inside_out(start).empty()) return false;
+  if (!turned_inside_out(start, true).empty()) return false;
   // The increment's forces include those of the moved state, as they did when the first
   // iteration moved the boundary alone: a rigid motion then has a force scale to converge to.
   start.average_force = start.moved_average_force;

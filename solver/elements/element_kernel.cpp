@@ -318,11 +318,16 @@ ElementGeometry element_geometry(const model::ElementTypeInfo& type, std::span<c
   return geo;
 }
 
-/// The smallest det F over the points (a hybrid element's states hold F̄, whose determinant is
-/// the interpolated volume ratio, not the point's own).
-double min_volume_ratio(ElementFamily family, int dim, const std::vector<PointData>& pts, const Eigen::VectorXd& u) {
+/// The smallest det F over the points, from their states; a hybrid element's hold F̄, whose
+/// determinant is the interpolated volume ratio, not the point's own: its F is formed again.
+double min_volume_ratio(const model::ElementTypeInfo& type, const std::vector<PointData>& pts,
+                        const std::vector<PointState>& states, const Eigen::VectorXd& u) {
   double smallest = std::numeric_limits<double>::infinity();
-  for (const PointData& pd : pts) smallest = std::min(smallest, point_kinematics(family, dim, true, pd, u).F.determinant());
+  for (std::size_t p = 0; p < pts.size(); ++p) {
+    const double det = type.hybrid ? point_kinematics(type.family, type.dim, true, pts[p], u).F.determinant()
+                                   : states[p].F.determinant();
+    smallest = std::min(smallest, det);
+  }
   return smallest;
 }
 
@@ -394,7 +399,7 @@ ElementSystem compute_generic(const model::ElementTypeInfo& type, std::span<cons
     f = as.f;
     if (request.stiffness) K = std::move(as.K);
   }
-  if (request.nlgeom) sys.min_volume_ratio = min_volume_ratio(type.family, dim, geo.pts, uf);
+  if (request.nlgeom) sys.min_volume_ratio = min_volume_ratio(type, geo.pts, as.states, uf);
   if (hourglass) {
     const PointData& centre = geo.pts.front();  // the one-point rule integrates the whole element
     const Eigen::MatrixXd b = geo.centre.grad.leftCols(dim);

@@ -154,5 +154,13 @@ TEST(CouplingKeyword, NodeBasedDistributingCouplingErrorsNameTheLine) {
   r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n5, 1.\n5, 2.\n"));
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:1: error: *DISTRIBUTING COUPLING: node 5 is listed twice")) << r.report();
   r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n5, -1.\n"));
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:4: error: *DISTRIBUTING COUPLING: the weight -1 is negative")) << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:4: error: *DISTRIBUTING COUPLING: the weight -1 is negative; expected a "
+                                "weight >= 0"))
+      << r.report();
+  r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n5, 0.\n6, 0.\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:1: error: *DISTRIBUTING COUPLING: every weight is zero")) << r.report();
+  r = dir.read(cube("*ELEMENT, TYPE=DCOUP3D, ELSET=DC\n9, 50\n*DISTRIBUTING COUPLING, ELSET=DC\n50, 1.\n5, 1.\n"));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:21:4: error: *DISTRIBUTING COUPLING: coupling 'DC': the reference node 50 is "
+                                "one of its coupling nodes"))
+      << r.report();
 }
