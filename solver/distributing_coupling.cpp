@@ -148,7 +148,9 @@ void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Ki
     for (CouplingRow& row : distributing_rows(am, c)) {
       const auto d = static_cast<std::size_t>(row.ref_dof);
       if (dependent.count(row.ref_dof))
-        throw AnalysisError(fmt::format("{}: the reference node's DOF is already eliminated by another constraint",
+        throw AnalysisError(fmt::format("{}: the reference node's DOF is already eliminated by another constraint (an "
+                                        "*EQUATION, tie or coupling makes it dependent); expected the reference node "
+                                        "free of other constraints",
                                         where(am, c)));
       if (kind[d] == DofMap::Kind::Prescribed) {
         prescribed_rows.push_back(std::move(row));
