@@ -200,18 +200,16 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
                             history, out);
 }
 
-double Assembler::multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
-                           const AssemblyRequest& request) const {
+void Assembler::multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
+                         const AssemblyRequest& request, PerField& moved) const {
   const std::size_t n = el_dofs.size();
   const std::span<const double> k = sys.stiffness;
-  double moved = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     double sum = 0.0;
     for (std::size_t b = 0; b < n; ++b) sum += k[a * n + b] * request.multiply[static_cast<std::size_t>(el_dofs[b])];
     request.product[static_cast<std::size_t>(el_dofs[a])] += sum;
-    moved += std::abs(sys.internal_force[a] + sum);
+    moved[dofs_.field(el_dofs[a])] += std::abs(sys.internal_force[a] + sum);
   }
-  return moved;
 }
 
 AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequest& request, std::span<double> f_int) {
@@ -236,8 +234,7 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
     points_.offset.assign(1, 0);
     points_.points.clear();
   }
-  double force_sum = 0.0, moved_sum = 0.0;
-  std::size_t force_count = 0;
+  FieldSums sums;
   for (std::size_t begin = 0; begin < n_listed; begin += chunk) {
     const std::size_t end = std::min(begin + chunk, n_listed);
     auto work = [&](std::size_t t) {
@@ -264,17 +261,21 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
       if (sys.internal_force.size() != el_dofs.size()) continue;  // inverted: reported by min_jacobian
       for (std::size_t i = 0; i < el_dofs.size(); ++i) {
         f_int[el_dofs[i]] += sys.internal_force[i];
-        force_sum += std::abs(sys.internal_force[i]);
+        const Field field = dofs_.field(el_dofs[i]);
+        sums.force[field] += std::abs(sys.internal_force[i]);
+        sums.count[field] += 1.0;
       }
-      force_count += el_dofs.size();
       if (request.tangent && owns(e)) scatter(el_dofs, sys.stiffness);
-      if (request.tangent && !request.multiply.empty()) moved_sum += multiply(el_dofs, sys, request);
+      if (request.tangent && !request.multiply.empty()) multiply(el_dofs, sys, request, sums.moved);
     }
   }
-  if (partitioned) sum_over_ranks(request, f_int, force_sum, moved_sum, force_count, result);
-  result.average_force = force_count ? force_sum / static_cast<double>(force_count) : 0.0;
-  result.n_force_entries = force_count;
-  result.moved_average_force = force_count ? moved_sum / static_cast<double>(force_count) : 0.0;
+  if (partitioned) sum_over_ranks(request, f_int, sums, result);
+  for (std::size_t field = 0; field < kFields; ++field) {
+    const double count = sums.count[field];
+    result.average_force[field] = count > 0 ? sums.force[field] / count : 0.0;
+    result.n_force_entries[field] = static_cast<std::size_t>(count);
+    result.moved_average_force[field] = count > 0 ? sums.moved[field] / count : 0.0;
+  }
   if (request.points) {
     points_u_.assign(u.begin(), u.end());
     points_delta_t_.assign(request.delta_t.begin(), request.delta_t.end());
@@ -285,15 +286,13 @@ AssemblyResult Assembler::assemble(std::span<const double> u, const AssemblyRequ
 }
 
 /// The product K·v (request.product, zero before the assembly) is summed with the forces.
-void Assembler::sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum,
-                               double& moved_sum, std::size_t& force_count, AssemblyResult& result) const {
+void Assembler::sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, FieldSums& sums,
+                               AssemblyResult& result) const {
   world_.sum(f_int);
   if (request.tangent && !request.multiply.empty()) world_.sum(request.product);
-  std::array<double, 3> sums = {force_sum, moved_sum, static_cast<double>(force_count)};
-  world_.sum(sums);
-  force_sum = sums[0];
-  moved_sum = sums[1];
-  force_count = static_cast<std::size_t>(sums[2]);
+  world_.sum(sums.force);
+  world_.sum(sums.moved);
+  world_.sum(sums.count);
   smallest_over_ranks(result.jacobian);
   smallest_over_ranks(result.volume_ratio);
 }

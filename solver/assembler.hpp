@@ -1,6 +1,7 @@
 #pragma once
 /// Assembly of the element contributions: the reduced tangent K_r = Tᵀ K T into a pattern built
 /// once per DOF map, and the full internal force vector f_int(u) (reactions are read from it).
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -60,13 +61,14 @@ struct SmallestAtElement {
 };
 
 struct AssemblyResult {
-  /// Spatial average of the magnitudes of the element nodal forces, Abaqus's q^α "typical
-  /// flux" that residuals are measured against.
-  double average_force = 0.0;
-  std::size_t n_force_entries = 0;  ///< how many element nodal forces the average is over
-  /// With AssemblyRequest::multiply: the same average for the element forces f_e + k_e·v (the
+  /// Per field (fields.hpp), the spatial average of the magnitudes of the element nodal forces
+  /// (moments in the rotation field), Abaqus's q^α "typical flux" that residuals are measured
+  /// against.
+  PerField average_force{};
+  std::array<std::size_t, kFields> n_force_entries{};  ///< how many element nodal forces each average is over
+  /// With AssemblyRequest::multiply: the same averages for the element forces f_e + k_e·v (the
   /// linearised state moved by v), which the increment measures its residuals against.
-  double moved_average_force = 0.0;
+  PerField moved_average_force{};
   /// Smallest Jacobian determinant of the reference geometry at an integration point.
   SmallestAtElement jacobian;
   /// NLGEOM: smallest det F at an integration point (elements::ElementSystem::min_volume_ratio).
@@ -174,8 +176,12 @@ class Assembler {
   /// The smallest value over the ranks, and the lowest element row that has it.
   void smallest_over_ranks(SmallestAtElement& smallest) const;
   /// Sums a partitioned assembly's forces and force measures over the ranks.
-  void sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, double& force_sum, double& moved_sum,
-                      std::size_t& force_count, AssemblyResult& result) const;
+  /// Per field: Σ|f_e|, Σ|f_e + k_e·v| and how many entries (AssemblyResult's averages).
+  struct FieldSums {
+    PerField force{}, moved{}, count{};
+  };
+  void sum_over_ranks(const AssemblyRequest& request, std::span<double> f_int, FieldSums& sums,
+                      AssemblyResult& result) const;
   void build_pattern(const ExtraCouplings* extra);
 
   /// Element e's system into `out` (its buffers are reused from element to element).
@@ -183,10 +189,10 @@ class Assembler {
                elements::ElementSystem& out) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
-  /// request.product += k · request.multiply on the element's DOFs; returns Σ |f + k · v| over
-  /// them (f the element's forces).
-  double multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
-                  const AssemblyRequest& request) const;
+  /// request.product += k · request.multiply on the element's DOFs; adds Σ |f + k · v| over
+  /// them (f the element's forces) to `moved`, per field.
+  void multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
+                const AssemblyRequest& request, PerField& moved) const;
 
   const AnalysisModel& am_;
   const DofMap& dofs_;

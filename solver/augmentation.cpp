@@ -21,7 +21,8 @@ NewtonOutcome solve_with_augmentations(NewtonContext& ctx, double t, IncrementSt
     NewtonOutcome outcome = solve_increment(ctx, t, state);
     outcome.iterations += total.iterations;
     outcome.severe_iterations += total.severe_iterations;
-    outcome.average_force = std::max(outcome.average_force, total.average_force);
+    for (std::size_t f = 0; f < kFields; ++f)
+      outcome.average_force[f] = std::max(outcome.average_force[f], total.average_force[f]);
     total = outcome;
     if (!total.converged || !ctx.contact || !ctx.contact->has_augmented_lagrange()) return total;
     const AugmentationCheck check = ctx.contact->check_augmentation(state.contact);

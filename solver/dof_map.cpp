@@ -1,5 +1,6 @@
 #include "dof_map.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include <fmt/format.h>
@@ -351,6 +352,23 @@ void DofMap::lay_out(const Dependents& dependent) {
   }
 }
 
+namespace {
+
+/// Per DOF, whether it is in the rotation field (DofMap::field); empty without beams and shells.
+std::vector<std::uint8_t> rotation_field(const AnalysisModel& am) {
+  const bool structural = std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) {
+    return model::is_beam(*s.type) || model::is_shell(*s.type);
+  });
+  if (!structural) return {};
+  std::vector<std::uint8_t> rotation(am.n_dof(), 0);
+  for (std::int32_t rot : am.rotation_node_of)
+    if (rot >= 0)
+      for (int c = 0; c < am.dim; ++c) rotation[static_cast<std::size_t>(rot) * am.dim + c] = 1;
+  return rotation;
+}
+
+}  // namespace
+
 DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed, bool finite_rotations,
                      std::span<const std::uint8_t> active) {
   const model::Model& m = *am.model;
@@ -359,6 +377,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
   map.dim_ = am.dim;
   map.finite_rotations_ = finite_rotations;
   map.rigid_ = rigid_nodes(am);
+  map.rotation_ = rotation_field(am);
   map.kind_.assign(n, Kind::Unused);
   // A DOF is used when an element connects its node.
   std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;

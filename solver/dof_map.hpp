@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "analysis_model.hpp"
+#include "fields.hpp"
 
 namespace inpact::solver {
 
@@ -55,6 +56,11 @@ class DofMap {
   /// weights); nothing to do otherwise.
   void relinearize(const AnalysisModel& am, const std::vector<double>& u);
   bool has_finite_rotations() const { return finite_rotations_ && !rigid_.empty(); }
+  /// The convergence field of DOF d (fields.hpp): in a model with beams or shells their nodes'
+  /// rotations (and those of rigid bodies and couplings) are the rotation field; every other
+  /// DOF is the displacement field, the rotations of a model without beams and shells too (they
+  /// carry no moment of their own to be measured against).
+  Field field(std::int64_t d) const { return rotation_.empty() || !rotation_[d] ? kDisplacementField : kRotationField; }
 
   /// One node of a rigid body or kinematic coupling: its offset r from the reference node and
   /// which of its translations follow the body (a coupling's DOF subset; a body: all).
@@ -72,6 +78,7 @@ class DofMap {
   void lay_out(const Dependents& dependent);
 
   std::vector<RigidNode> rigid_;
+  std::vector<std::uint8_t> rotation_;  ///< per DOF: in the rotation field (empty: none is)
   bool finite_rotations_ = false;
   int dim_ = 3;
   std::vector<Kind> kind_;

@@ -7,6 +7,7 @@
 
 #include "analysis_error.hpp"
 #include "elastic_law.hpp"
+#include "finite_rotation_setup.hpp"
 #include "elements/beam_elements.hpp"
 #include "elements/beam_section.hpp"
 #include "elements/line_elements.hpp"
@@ -69,13 +70,9 @@ std::shared_ptr<const elements::SpringBehavior> spring_behavior(const model::Mod
 }
 
 /// The section's properties: E and ν from its material's isotropic *ELASTIC (a general section
-/// gives E and G itself); what beams do not take yet (NLGEOM, other materials) stops here.
+/// gives E and G itself); what beams do not take yet (other materials) stops here.
 elements::BeamProperties beam_section_properties(const model::Model& m, const model::BeamSection& sec) {
   const auto where = [&] { return m.sources.describe(sec.loc); };
-  for (const model::Step& step : m.steps)
-    if (step.nlgeom)
-      throw AnalysisError(fmt::format("{}: error: *BEAM SECTION: beam elements under NLGEOM (step '{}') are not "
-                                      "supported yet (small rotations only)", where(), step.name));
   if (sec.material.empty()) return elements::beam_properties(sec, 0.0, 0.0);
   const model::Material& mat = m.materials.at(sec.material);
   refuse_temperature_tables(m, mat, "beam elements");
@@ -93,6 +90,7 @@ void setup_beams(const model::Model& m, AnalysisModel& am) {
         am.beams.emplace_back(std::make_shared<elements::BeamProperties>(beam_section_properties(m, sec))).get();
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[static_cast<std::size_t>(row)];
+      refuse_finite_rotations(m, *s.type, "*BEAM SECTION", sec.loc, m.mesh.elements.labels[static_cast<std::size_t>(row)]);
       s.section.beam = p;
       s.density = sec.material.empty() ? 0.0 : m.materials.at(sec.material).density.value_or(0.0);
       std::array<elements::Vec3, 3> axes;

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "elements/corotation.hpp"
+
 namespace inpact::solver {
 
 namespace {
@@ -15,9 +17,23 @@ namespace {
 struct Residual {
   AssemblyRequest request;  ///< how the elements were assembled (the solve may add the tangent)
   AssemblyResult assembly;
-  double max = 0.0;         ///< largest |r| at a free DOF
+  FieldMaxima largest;      ///< per field, the largest |r| at a free DOF and its DOF
+  PerField q{};             ///< q̃ per field
+  double max = 0.0;         ///< the largest |r| of the field furthest from its tolerance (below)
   std::int64_t worst = -1;  ///< its DOF
-  double q = 0.0;           ///< q̃
+  double ratio = 0.0;       ///< its r_max / q̃ (0 without force)
+
+  /// max, worst and ratio from `largest` and `q`: the field with the larger r_max / q̃.
+  void pick_worst_field() {
+    for (std::size_t f = 0; f < kFields; ++f) {
+      const double field_ratio = q[f] > 0 ? largest.value[f] / q[f] : 0.0;
+      if (f == 0 || field_ratio > ratio || !std::isfinite(largest.value[f])) {
+        ratio = field_ratio;
+        max = largest.value[f];
+        worst = largest.dof[f];
+      }
+    }
+  }
 };
 
 /// The iterations of one attempt and the state they share.
@@ -29,7 +45,7 @@ class NewtonIterations {
  private:
   ContactIteration update_contact(int k);
   Residual assemble_residual(int k);
-  double largest_correction(int k) const;
+  PerField largest_correction(int k) const;
   bool failed(int k, const Residual& res, const ContactIteration& contact);
   std::string turned_inside_out(const AssemblyResult& assembly, bool solved) const;
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
@@ -47,6 +63,7 @@ class NewtonIterations {
   const std::vector<double> u_start_;
   const std::vector<double> delta_t_;
   std::vector<double> r_full_, r_, du_;
+  std::vector<Field> equation_field_;  ///< per equation of the DOF map, the field of its free DOF
   std::vector<double> f_int_elements_;  ///< f_int before the contact forces are added (for q)
   std::vector<double> history_;         ///< largest residual per iteration without a status change
   CorrectionSolver solver_;
@@ -68,7 +85,10 @@ NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState&
       r_full_(n_),
       r_(n_eq_),
       du_(n_eq_),
+      equation_field_(n_eq_, kDisplacementField),
       solver_(ctx.solvers) {
+  for (std::int64_t d = 0; d < dofs_.n_dof(); ++d)
+    if (dofs_.kind(d) == DofMap::Kind::Free) equation_field_[static_cast<std::size_t>(dofs_.equation(d))] = dofs_.field(d);
   // Impose the boundary conditions of time t, then iterate on the free DOFs.
   solver_.set_residual_tolerance(ctx.controls.residual_tolerance);
   ctx.conditions.apply_prescribed(t, u_start_, state.u);
@@ -86,14 +106,14 @@ NewtonOutcome NewtonIterations::run() {
     ContactIteration contact = update_contact(k);
     Residual res = assemble_residual(k);
     limit_overshoot(k, contact, res);
-    const double max_correction = largest_correction(k);
-    ctx_.observer.iteration({ctx_.at.step, ctx_.at.increment, ctx_.at.attempt, k, res.max,
-                             res.q > 0 ? res.max / res.q : 0.0, std::abs(max_correction), res.worst});
+    const PerField max_correction = largest_correction(k);
+    ctx_.observer.iteration({ctx_.at.step, ctx_.at.increment, ctx_.at.attempt, k, res.max, res.ratio,
+                             *std::max_element(max_correction.begin(), max_correction.end()), res.worst});
     if (failed(k, res, contact)) return out_;
     const ConvergenceCheck check = check_convergence(
-        {.iteration = k, .max_residual = res.max, .q = res.q, .max_correction = std::abs(max_correction),
-         .max_increment = largest_increment(state_.u, u_start_), .contact_status_changed = contact.blocks_convergence,
-         .max_gap_error = contact.max_gap_error},
+        {.iteration = k, .max_residual = res.largest.value, .q = res.q, .max_correction = max_correction,
+         .max_increment = largest_increment(dofs_, state_.u, u_start_),
+         .contact_status_changed = contact.blocks_convergence, .max_gap_error = contact.max_gap_error},
         ctx_.controls);
     if (check.converged) {
       ctx_.assembler.complete_states(state_.u, res.request);
@@ -154,22 +174,26 @@ Residual NewtonIterations::assemble_residual(int k) {
   ctx_.assembler.reduce(r_full_, std::span(r_).first(n_eq_));
   if (ctx_.contact) ctx_.contact->constraint_residual(state_.contact, std::span(r_).subspan(n_eq_));
 
-  std::tie(res.max, res.worst) = largest_residual(dofs_, r_);
-  const double q_now = average_force(res.assembly, state_.f_ext, contact_force_sum, contact_force_count);
+  res.largest = largest_residual(dofs_, r_);
+  const PerField q_now = average_force(res.assembly, dofs_, state_.f_ext, contact_force_sum, contact_force_count);
+  out_.iterations = k;
+  const PerField q_without_contact =
+      ctx_.contact ? average_force(res.assembly, dofs_, state_.f_ext, 0.0, 0) : q_now;
+  out_.average_force = increment_force_.update(q_without_contact, q_now);
+  res.q = coupled_fields(ctx_.force_history.with(out_.average_force), ctx_.am.size);
+  res.pick_worst_field();
   out_.max_residual = res.max;
   out_.worst_dof = res.worst;
-  out_.iterations = k;
-  const double q_without_contact = ctx_.contact ? average_force(res.assembly, state_.f_ext, 0.0, 0) : q_now;
-  out_.average_force = increment_force_.update(q_without_contact, q_now);
-  res.q = ctx_.force_history.with(out_.average_force);
   return res;
 }
 
-/// The signed displacement correction of largest magnitude of the last solve (0 before one).
-double NewtonIterations::largest_correction(int k) const {
-  if (k == 0 || n_eq_ == 0) return 0.0;
-  return *std::max_element(du_.begin(), du_.begin() + static_cast<std::ptrdiff_t>(n_eq_),
-                           [](double a, double b) { return std::abs(a) < std::abs(b); });
+/// Per field, the largest |correction| of the last solve (0 before one).
+PerField NewtonIterations::largest_correction(int k) const {
+  PerField largest{};
+  if (k == 0) return largest;
+  for (std::size_t eq = 0; eq < n_eq_; ++eq)
+    largest[equation_field_[eq]] = std::max(largest[equation_field_[eq]], std::abs(du_[eq]));
+  return largest;
 }
 
 /// A state no iteration can recover from.
@@ -201,10 +225,13 @@ std::string NewtonIterations::turned_inside_out(const AssemblyResult& assembly, 
   if (assembly.jacobian.element >= 0 && assembly.jacobian.value <= 0.0)
     return fmt::format("element {} is turned inside out (Jacobian {:.3g})", label(assembly.jacobian.element),
                        assembly.jacobian.value);
-  if (solved && assembly.volume_ratio.element >= 0 && assembly.volume_ratio.value <= 0.0)
-    return fmt::format("element {} is turned inside out at an integration point (det F = {:.3g})",
-                       label(assembly.volume_ratio.element), assembly.volume_ratio.value);
-  return {};
+  if (!solved || assembly.volume_ratio.element < 0 || assembly.volume_ratio.value > 0.0) return {};
+  const auto e = static_cast<std::size_t>(assembly.volume_ratio.element);
+  if (elements::takes_finite_rotations(*ctx_.am.elements[e].type))  // corotation.hpp: no frame or log
+    return fmt::format("element {} is distorted beyond its corotated frame (a node turned half round against it)",
+                       label(assembly.volume_ratio.element));
+  return fmt::format("element {} is turned inside out at an integration point (det F = {:.3g})",
+                     label(assembly.volume_ratio.element), assembly.volume_ratio.value);
 }
 
 /// Too many iterations, or a residual that grows twice in a row.
@@ -238,7 +265,7 @@ bool NewtonIterations::solve_correction(Residual& res) {
   if (ctx_.contact && ctx_.contact->unsymmetric()) tangent = &ctx_.contact->unsymmetric_tangent(*tangent);
   const std::size_t n_sys = static_cast<std::size_t>(ctx_.assembler.n_equations());
   CorrectionOutcome solved =
-      solver_.solve(*tangent, n_sys > n_eq_, r_, du_, n_eq_, ctx_.am.size, res.q > 0 ? res.max / res.q : 0.0);
+      solver_.solve(*tangent, n_sys > n_eq_, r_, du_, n_eq_, ctx_.am.size, res.ratio);
   if (solved.solved) return true;
   out_.failure = std::move(solved.failure);
   out_.singular = solved.singular;
@@ -272,7 +299,7 @@ bool NewtonIterations::predict() {
   // The increment's forces include those of the moved state, as they did when the first
   // iteration moved the boundary alone: a rigid motion then has a force scale to converge to.
   start.average_force = start.moved_average_force;
-  const double q_moved = average_force(start, state_.f_ext, 0.0, 0);
+  const PerField q_moved = average_force(start, dofs_, state_.f_ext, 0.0, 0);
   increment_force_.update(q_moved, q_moved);
   for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d] - product[d];
   r_.assign(n_eq_, 0.0);

@@ -41,7 +41,7 @@ struct NewtonOutcome {
   bool converged = false;
   int iterations = 0;          ///< all iterations, severe discontinuity ones included
   int severe_iterations = 0;   ///< iterations in which a contact status changed
-  double average_force = 0.0;  ///< q of the increment (largest over its iterations), for the time average
+  PerField average_force{};    ///< q of the increment per field (IncrementForce), for the time average
   double max_residual = 0.0;
   std::int64_t worst_dof = -1;
   std::string failure;  ///< why it did not converge

@@ -7,6 +7,7 @@
 #include "analysis_error.hpp"
 #include "model/mesh_queries.hpp"
 #include "elastic_law.hpp"
+#include "finite_rotation_setup.hpp"
 #include "elements/shell_section.hpp"
 
 namespace inpact::solver {
@@ -21,10 +22,6 @@ const char* keyword_of(const model::ShellSection& sec) {
 /// small rotations), or a deck error naming what is missing.
 elements::ShellProperties shell_section_properties(const model::Model& m, const model::ShellSection& sec) {
   const auto where = [&] { return m.sources.describe(sec.loc); };
-  for (const model::Step& step : m.steps)
-    if (step.nlgeom)
-      throw AnalysisError(fmt::format("{}: error: {}: shell elements under NLGEOM (step '{}') are not supported yet "
-                                      "(small rotations only)", where(), keyword_of(sec), step.name));
   const model::Material& mat = m.materials.at(sec.material);
   refuse_temperature_tables(m, mat, "shell elements");
   if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.plastic || mat.hyperelastic)
@@ -43,6 +40,7 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];
+      refuse_finite_rotations(m, *s.type, keyword_of(sec), sec.loc, m.mesh.elements.labels[e]);
       s.section.shell = p;
       s.section.thickness = model::shell_thickness(m.mesh, sec, e);
       s.density = m.materials.at(sec.material).density.value_or(0.0);

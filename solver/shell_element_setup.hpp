@@ -1,8 +1,8 @@
 #pragma once
 /// Shells resolved for the analysis: each section's properties (shell_section.hpp) from its
 /// material, each element's thickness (the section's, or the mean of its nodes' *NODAL
-/// THICKNESS), and the deck errors the model shows only now: NLGEOM and materials shells do
-/// not take yet, a degenerate shell element.
+/// THICKNESS), and the deck errors the model shows only now: types without finite rotations
+/// under NLGEOM, materials shells do not take yet, a degenerate shell element.
 #include "analysis_model.hpp"
 
 namespace inpact::solver {

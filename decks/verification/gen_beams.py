@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Writes the beam cantilever decks (beam_cantilever_*.inp) of tests/verification/test_beams.cpp.
+"""Writes the beam decks of tests/verification/test_beams.cpp: the cantilevers (beam_cantilever_*.inp),
+the roll-up (beam_rollup_*.inp) and the 45-degree bend (beam_bend45_b31_8.inp) under NLGEOM.
 
 A cantilever along x, L = 10, built in at x = 0 (ENCASTRE), RECT 0.3 (along n1 = y) x 0.2 (along
 n2 = z), E = 2e5, nu = 0.3; at the tip P2 = 1 along y, P3 = 2 along z and a torque T = 5 about x,
 each in its own step so that each answer stands alone; then gravity alone (GRAV 9810 along y,
 rho = 7.8e-9: q = rho g A per length). Run: python3 gen_beams.py (in this folder).
 """
+import math
 
 HEAD = """*HEADING
 Cantilever of {n} {etype} beams, L = 10, RECT 0.3 x 0.2, n1 = y: tip loads along y and z, a torque, gravity, one step each.
@@ -38,6 +40,49 @@ def deck(etype, n):
     return "\n".join(lines) + "\n"
 
 
+def rollup(etype, n):
+    """The cantilever above, bent by an end moment M = 2 pi EI22 / L about z under NLGEOM: it rolls
+    up into a full circle of radius L / (2 pi). U3, UR1 and UR2 are held at every node (a planar
+    problem: a total rotation vector of 2 pi about z is singular for tilts about x and y)."""
+    moment = 2 * math.pi * 2.0e5 * (0.3 ** 3 * 0.2 / 12) / 10.0
+    lines = [f"*HEADING\nRoll-up of a cantilever of {n} {etype} beams, L = 10, RECT 0.3 x 0.2, n1 = y: an end moment "
+             f"2 pi EI/L about z\n** bends it into a full circle of radius L/(2 pi) (tests/verification/test_beams.cpp).",
+             "*NODE, NSET=ALL"]
+    lines += [f"{i + 1}, {10.0 * i / n:.15g}, 0., 0." for i in range(n + 1)]
+    lines.append(f"*ELEMENT, TYPE={etype}, ELSET=BEAM")
+    lines += [f"{e + 1}, {e + 1}, {e + 2}" for e in range(n)]
+    lines += [f"*NSET, NSET=TIP\n{n + 1}", "*NSET, NSET=ROOT\n1", "*MATERIAL, NAME=STEEL", "*ELASTIC", "200000., 0.3",
+              "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT", "0.3, 0.2", "0., 1., 0.",
+              "*BOUNDARY", "ROOT, ENCASTRE", "ALL, 3, 5", "*STEP, NLGEOM, INC=100", "*STATIC", "0.1, 1.",
+              "*CLOAD", f"TIP, 6, {moment:.15g}", "*NODE PRINT, NSET=TIP", "U, UR", "*NODE PRINT, NSET=ROOT", "RF, RM",
+              "*OUTPUT, FIELD", "*NODE OUTPUT", "U, UR, RF, RM", "*ELEMENT OUTPUT", "SF, SM", "*END STEP"]
+    return "\n".join(lines) + "\n"
+
+
+def bend45(n):
+    """Bathe and Bolourchi's 45-degree bend (1979): an arc of radius 100 in the x-y plane, square
+    1 x 1 section, E = 1e7, nu = 0, built in at one end, a force of 600 along z at the other.
+    Simo and Vu-Quoc (1986, 8 elements) give the tip at (47.23, 15.79, 53.37)."""
+    lines = [f"*HEADING\n45-degree bend of {n} B31 beams, R = 100, 1 x 1, E = 1e7: tip force 600 along z under NLGEOM\n"
+             "** Simo and Vu-Quoc (1986): tip at (47.23, 15.79, 53.37) (tests/verification/test_beams.cpp).",
+             "*NODE, NSET=ALL"]
+    for i in range(n + 1):
+        phi = math.pi / 4 * i / n
+        lines.append(f"{i + 1}, {100 * math.sin(phi):.15g}, {100 * (1 - math.cos(phi)):.15g}, 0.")
+    lines.append("*ELEMENT, TYPE=B31, ELSET=BEAM")
+    lines += [f"{e + 1}, {e + 1}, {e + 2}" for e in range(n)]
+    lines += [f"*NSET, NSET=TIP\n{n + 1}", "*NSET, NSET=ROOT\n1", "*MATERIAL, NAME=M", "*ELASTIC", "1e7, 0.",
+              "*BEAM SECTION, ELSET=BEAM, MATERIAL=M, SECTION=RECT", "1., 1.", "0., 0., 1.",
+              "*BOUNDARY", "ROOT, ENCASTRE", "*STEP, NLGEOM, INC=100", "*STATIC", "0.1, 1.", "*CLOAD", "TIP, 3, 600.",
+              "*NODE PRINT, NSET=TIP", "U", "*NODE PRINT, NSET=ROOT", "RF, RM", "*END STEP"]
+    return "\n".join(lines) + "\n"
+
+
 for etype, n in (("B31", 10), ("B31", 40), ("B32", 5), ("B33", 2)):
     with open(f"beam_cantilever_{etype.lower()}_{n}.inp", "w") as f:
         f.write(deck(etype, n))
+for etype in ("B31", "B33"):
+    with open(f"beam_rollup_{etype.lower()}_50.inp", "w") as f:
+        f.write(rollup(etype, 50))
+with open("beam_bend45_b31_8.inp", "w") as f:
+    f.write(bend45(8))

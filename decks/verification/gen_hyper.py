@@ -185,8 +185,9 @@ def cantilever(out, name, etype, n, quadratic, header_extra=()):
     lines += nset("CLAMP", mesh.nodes_where(lambda x: abs(x[0]) < eps))
     lines += nset("TIP", mesh.nodes_where(lambda x: abs(x[0] - BEND_L) < eps))
     lines += material(BEND_C10, BEND_D1)
-    # R_n = 1e-7: the forces of K0 = 1e4 mu0 have round-off far above 1e-12 of these small loads.
-    lines += step(True, ["CLAMP, 1, 2"], tip_loads(mesh, quadratic), increment=1.0, residual=1e-7)
+    # R_n = 1e-6: the forces of K0 = 1e4 mu0 have round-off far above 1e-12 of these small loads
+    # (measured: 4e-7 of the converged state's average force).
+    lines += step(True, ["CLAMP, 1, 2"], tip_loads(mesh, quadratic), increment=1.0, residual=1e-6)
     write(out, name, [f"Near-incompressible neo-Hooke cantilever ({etype}, {n[0]} x {n[1]}), plane strain",
                       f"C10 = {BEND_C10}, D1 = {BEND_D1:g} (K0/mu0 = 1e4); L = {BEND_L}, h = {BEND_H}, tip shear "
                       f"P = {BEND_P:g} as a uniform traction; linear response (deflection 1e-3 L).",

@@ -18,6 +18,9 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
                  along z, as the elements' consistent nodal loads.
   torsion        The same strip twisted by T = 1 about x (nodal moments on the tip), its width
                  graded towards the free edges.
+  rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
+                 t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
+                 full circle (U2, UR1, UR3 held: a planar problem).
 
 Usage: gen_shells.py --out DIR NAME ETYPE N [thin]   (writes DIR/NAME_ETYPE_N[_thin].inp)
 ETYPE is S4, S4R, S8R or S3 (each quad of the S4 grid cut into two triangles).
@@ -190,15 +193,29 @@ def torsion(etype, n):
         "2.e5, 0.", sets, tail
 
 
+def rollup(etype, n):
+    """n elements along the strip, one across: the end moment as nodal moments on the tip."""
+    nodes, elements = grid(etype, n, 1, lambda s, w: (12.0 * s, w, 0.0))
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip, "ALL": lambda s, w: True}
+    tail = section(0.1) + ["*BOUNDARY", "ROOT, ENCASTRE", "ALL, 2, 2", "ALL, 4, 4", "ALL, 6, 6",
+                           "*STEP, NLGEOM, INC=100", "*STATIC", "0.1, 1.", "*CLOAD"] + \
+        tip_loads(nodes, on_tip, lambda s, w: w, -50 * math.pi / 3, 5) + \
+        ["*NODE PRINT, NSET=TIP", "U, UR", "*NODE PRINT, NSET=ROOT", "RF, RM", "*END STEP"]
+    return "Strip L = 12, b = 1, t = 0.1, nu = 0 rolled up by an end moment 50 pi / 3 (a full circle)", nodes, \
+        elements, "1.2e6, 0.", sets, tail
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
-    ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion"])
+    ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup"])
     ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
     ap.add_argument("n", type=int)
     ap.add_argument("thin", nargs="?", default="")
     a = ap.parse_args()
     make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
+            "rollup": rollup,
             "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
     heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
     suffix = "_thin" if a.thin == "thin" else ""

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "corotation.hpp"
 #include "line_elements.hpp"
 
 namespace inpact::solver::elements {
@@ -112,8 +113,11 @@ bool beam_axes(const Vec3& tangent, const Vec3& approximate_n1, std::array<Vec3,
   return true;
 }
 
-void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                  const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
+namespace {
+
+/// The small-strain beam (beam_elements.hpp).
+void compute_beam_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                        const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
   const int n = type.n_nodes;
   const int n_dof = 6 * n;
   if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n_dof)
@@ -184,6 +188,29 @@ void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     r.strain = {strain[0], strain[2], strain[1], strain[4], strain[5], strain[3]};
     out.points.push_back(r);
   }
+}
+
+}  // namespace
+
+void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                  const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
+  if (!request.nlgeom) {
+    compute_beam_small(type, coords, u, section, request, out);
+    return;
+  }
+  if (type.n_nodes != 2 || coords.size() != 2)
+    throw std::invalid_argument("compute_beam: finite rotations take two-node beams (B31, B33)");
+  std::array<Vec3, 3> axes;
+  const Vec3 chord{coords[1][0] - coords[0][0], coords[1][1] - coords[0][1], coords[1][2] - coords[0][2]};
+  if (!beam_axes(chord, section.n1, axes)) {
+    begin_element_system(out, 12, request);
+    out.min_jacobian = 0.0;
+    return;
+  }
+  const auto linear = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
+    compute_beam_small(type, coords, d, section, r, o);
+  };
+  compute_corotational(CorotationalFrame::Beam, coords, u, axes[1], linear, request, out);
 }
 
 }  // namespace inpact::solver::elements

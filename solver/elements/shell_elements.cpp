@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "corotation.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
 
@@ -229,9 +230,12 @@ bool shell_axes(const Vec3& g1, const Vec3& g2, std::array<Vec3, 3>& axes) {
   return true;
 }
 
-void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                   const ShellProperties& section, double thickness, const ElementRequest& request,
-                   std::span<const double> delta_t, ElementSystem& out) {
+namespace {
+
+/// The small-strain shell (shell_elements.hpp).
+void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                         const ShellProperties& section, double thickness, const ElementRequest& request,
+                         std::span<const double> delta_t, ElementSystem& out) {
   Geometry geo{element_shape(type), type.n_nodes, coords, {}, thickness, section.offset};
   const int nd = geo.n_dof();
   if (static_cast<int>(coords.size()) != geo.n || static_cast<int>(u.size()) != nd)
@@ -307,6 +311,21 @@ void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coo
   const double nu = section.poissons_ratio;
   const double bending = section.youngs_modulus * thickness * thickness * thickness / (12 * (1 - nu * nu));
   add_drilling(geo, 1e-4 * bending, u, out);
+}
+
+}  // namespace
+
+void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                   const ShellProperties& section, double thickness, const ElementRequest& request,
+                   std::span<const double> delta_t, ElementSystem& out) {
+  if (!request.nlgeom) {
+    compute_shell_small(type, coords, u, section, thickness, request, delta_t, out);
+    return;
+  }
+  const auto linear = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
+    compute_shell_small(type, coords, d, section, thickness, r, delta_t, o);
+  };
+  compute_corotational(CorotationalFrame::Shell, coords, u, Vec3{}, linear, request, out);
 }
 
 }  // namespace inpact::solver::elements

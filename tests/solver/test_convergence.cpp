@@ -1,5 +1,5 @@
 // Convergence criteria as records (value, tolerance, pass) at hand-picked measures around each
-// tolerance, and the time-averaged force q̃ they are measured against.
+// tolerance, per field, and the time-averaged force q̃ they are measured against.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,10 +16,10 @@ namespace {
 IterationMeasures converging() {
   IterationMeasures m;
   m.iteration = 2;
-  m.max_residual = 0.004;
-  m.q = 1.0;
-  m.max_correction = 0.009;
-  m.max_increment = 1.0;
+  m.max_residual = {0.004, 0.0};
+  m.q = {1.0, 0.0};
+  m.max_correction = {0.009, 0.0};
+  m.max_increment = {1.0, 0.0};
   return m;
 }
 
@@ -46,10 +46,10 @@ TEST(Convergence, ResidualAndCorrectionUnderTheirTolerancesConverge) {
 
 TEST(Convergence, EachFailingCriterionStopsConvergence) {
   IterationMeasures m = converging();
-  m.max_residual = 0.006;
+  m.max_residual[kDisplacementField] = 0.006;
   EXPECT_FALSE(check_convergence(m, {}).converged);
   m = converging();
-  m.max_correction = 0.011;
+  m.max_correction[kDisplacementField] = 0.011;
   const ConvergenceCheck c = check_convergence(m, {});
   EXPECT_FALSE(c.converged);
   EXPECT_FALSE(named(c, "correction").pass);
@@ -67,8 +67,8 @@ TEST(Convergence, TheFirstPassNeedsTheLinearResidual) {
   IterationMeasures m = converging();
   m.iteration = 0;  // no correction yet: the residual and correction tests cannot pass
   EXPECT_FALSE(check_convergence(m, {}).converged);
-  m.max_residual = 0.9e-8;  // ≤ R_l q̃ = 1e-8: accepted without the correction test
-  m.max_correction = 1e3;
+  m.max_residual[kDisplacementField] = 0.9e-8;  // ≤ R_l q̃ = 1e-8: accepted without the correction test
+  m.max_correction[kDisplacementField] = 1e3;
   const ConvergenceCheck c = check_convergence(m, {});
   EXPECT_TRUE(c.converged);
   EXPECT_TRUE(named(c, "linear residual").pass);
@@ -77,38 +77,61 @@ TEST(Convergence, TheFirstPassNeedsTheLinearResidual) {
 
 TEST(Convergence, NoForceAtAllIsEquilibrium) {
   IterationMeasures m;
-  m.max_residual = 0.0;
-  m.q = 0.0;
   EXPECT_TRUE(check_convergence(m, {}).converged);
   m.contact_status_changed = true;  // but not while contact is still changing
   EXPECT_FALSE(check_convergence(m, {}).converged);
 }
 
+// Moments are measured against moments: a moment residual of 0.004 passes against q̃ = 1 of the
+// rotation field and stops convergence against q̃ = 0.5, whatever the forces are; a rotation
+// correction of 0.02 against a turn of 1 stops it too.
+TEST(Convergence, TheRotationFieldIsMeasuredApart) {
+  IterationMeasures m = converging();
+  m.q = {1e6, 1.0};
+  m.max_residual = {0.004, 0.004};
+  m.max_increment = {1.0, 1.0};
+  m.max_correction = {0.009, 0.009};
+  EXPECT_TRUE(check_convergence(m, {}).converged);
+  m.q[kRotationField] = 0.5;
+  ConvergenceCheck c = check_convergence(m, {});
+  EXPECT_FALSE(c.converged);
+  EXPECT_FALSE(named(c, "moment residual").pass);
+  EXPECT_DOUBLE_EQ(named(c, "moment residual").tolerance, 0.0025);
+  EXPECT_TRUE(named(c, "residual").pass);
+  m.q[kRotationField] = 1.0;
+  m.max_correction[kRotationField] = 0.02;
+  c = check_convergence(m, {});
+  EXPECT_FALSE(c.converged);
+  EXPECT_FALSE(named(c, "rotation correction").pass);
+}
+
 TEST(Convergence, TimeAveragedForceCountsTheCurrentIncrementOnce) {
   TimeAveragedForce q;
-  EXPECT_DOUBLE_EQ(q.with(4.0), 4.0);
-  q.add(4.0);
-  q.add(2.0);
-  EXPECT_DOUBLE_EQ(q.with(6.0), (4.0 + 2.0 + 6.0) / 3);
+  EXPECT_DOUBLE_EQ(q.with({4.0, 1.0})[0], 4.0);
+  q.add({4.0, 1.0});
+  q.add({2.0, 3.0});
+  EXPECT_DOUBLE_EQ(q.with({6.0, 5.0})[kDisplacementField], (4.0 + 2.0 + 6.0) / 3);
+  EXPECT_DOUBLE_EQ(q.with({6.0, 5.0})[kRotationField], (1.0 + 3.0 + 5.0) / 3);
 }
 
 TEST(Convergence, IncrementForceKeepsTheLargestElementForceButContactOnlyWhenPresent) {
   IncrementForce f;
-  EXPECT_DOUBLE_EQ(f.update(10.0, 1000.0), 1000.0);  // a first-iteration contact spike counts now
-  EXPECT_DOUBLE_EQ(f.update(1.0, 1.0), 10.0);        // later the largest element-and-load q
-  EXPECT_DOUBLE_EQ(f.update(12.0, 12.5), 12.5);
+  EXPECT_DOUBLE_EQ(f.update({10.0, 0}, {1000.0, 0})[0], 1000.0);  // a first-iteration contact spike counts now
+  EXPECT_DOUBLE_EQ(f.update({1.0, 0}, {1.0, 0})[0], 10.0);        // later the largest element-and-load q
+  EXPECT_DOUBLE_EQ(f.update({12.0, 0}, {12.5, 0})[0], 12.5);
 }
 
 TEST(Convergence, AverageForceOverElementLoadAndContactEntries) {
   AssemblyResult a;
-  a.average_force = 2.0;
-  a.n_force_entries = 3;  // Σ = 6
+  a.average_force = {2.0, 0.0};
+  a.n_force_entries = {3, 0};  // Σ = 6
   const std::vector<double> f_ext{0.0, -4.0, 0.0};  // one load entry, |f| = 4
-  EXPECT_DOUBLE_EQ(average_force(a, f_ext, 5.0, 1), (6.0 + 5.0 + 4.0) / 5);
-  EXPECT_DOUBLE_EQ(average_force(AssemblyResult{}, std::vector<double>(2, 0.0), 0.0, 0), 0.0);
+  const DofMap displacements_only;
+  EXPECT_DOUBLE_EQ(average_force(a, displacements_only, f_ext, 5.0, 1)[0], (6.0 + 5.0 + 4.0) / 5);
+  EXPECT_DOUBLE_EQ(average_force(AssemblyResult{}, displacements_only, std::vector<double>(2, 0.0), 0.0, 0)[0], 0.0);
 }
 
 TEST(Convergence, LargestIncrementIsTheLargestMagnitude) {
   const std::vector<double> u{1.0, -3.0, 2.0}, u0{0.5, 0.0, 2.0};
-  EXPECT_DOUBLE_EQ(largest_increment(u, u0), 3.0);
+  EXPECT_DOUBLE_EQ(largest_increment(DofMap{}, u, u0)[kDisplacementField], 3.0);
 }

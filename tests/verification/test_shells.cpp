@@ -89,6 +89,42 @@ TEST(Shells, StripTorsionMatchesTheMindlinPlateTorsionConstant) {
   }
 }
 
+// NLGEOM: Sze, Liu and Lo's strip (2004) rolled up by an end moment M = 2π EI/L (48 elements, one
+// across; U2, UR1, UR3 held, a planar problem). Each corotated element carries pure bending, so
+// the nodes lie on the regular polygon of chords L/48 that closes after a full turn: the tip
+// is back at the root turned by 2π, every node on one circle of radius r = h/(2 sin(α/2)),
+// α = 2π/48, which exceeds the exact circle's L/(2π) by α²/24 = 7.1e-4. The root holds M.
+// Measured (Newton's tolerance sets the last digits): the tip off the root by 2.6e-7 L (S4) and
+// 1.2e-5 L (S3), the nodes off their circle by 5.9e-7 r and 2.7e-5 r, the root moment M to 1.4e-5.
+TEST(Shells, AnEndMomentRollsTheStripIntoACircle) {
+  const double L = 12.0, moment = 50 * M_PI / 3, alpha = 2 * M_PI / 48;
+  const double polygon = (L / 48) / (2 * std::sin(alpha / 2));
+  for (const char* etype : {"S4", "S3"}) {
+    const auto r = run_deck(shell_deck("rollup", etype, 48));
+    ASSERT_TRUE(r->outcome.completed) << etype << ": " << r->outcome.message;
+    const solver::Frame& f = r->capture.last();
+    double off_polygon = 0.0, tip_gap = 0.0;
+    for (std::int32_t n : nset(r->model(), "ALL")) {
+      const auto row = static_cast<std::size_t>(n);
+      const double x = coords(r->model(), n)[0] + nodal(f, "U", row, 0), z = nodal(f, "U", row, 2);
+      off_polygon = std::max(off_polygon, std::abs(std::hypot(x, z - polygon) - polygon));
+    }
+    for (std::int32_t n : nset(r->model(), "TIP")) {
+      const auto row = static_cast<std::size_t>(n);
+      tip_gap = std::max({tip_gap, std::abs(nodal(f, "U", row, 0) + L), std::abs(nodal(f, "U", row, 2))});
+      EXPECT_NEAR(nodal(f, "UR", row, 1), -2 * M_PI, 1e-4) << etype;
+    }
+    EXPECT_LT(tip_gap, 1e-4 * L) << etype;
+    EXPECT_LT(off_polygon, 1e-4 * polygon) << etype;
+    EXPECT_LT(polygon / (L / (2 * M_PI)) - 1, 1e-3);
+    double root = 0.0;
+    for (std::int32_t n : nset(r->model(), "ROOT")) root += nodal(f, "RM", static_cast<std::size_t>(n), 1);
+    EXPECT_NEAR(root, moment, 1e-4 * moment) << etype;
+    report(std::string("shell roll-up ") + etype + ": tip off the root / L", tip_gap / L);
+    report(std::string("shell roll-up ") + etype + ": nodes off their circle / r", off_polygon / polygon);
+  }
+}
+
 struct Benchmark {
   const char* name;
   const char* point;  ///< the node set of the measured node

@@ -1,0 +1,325 @@
+#include "corotation.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+namespace inpact::solver::elements {
+
+namespace {
+
+template <class S>
+using V3 = std::array<S, 3>;
+template <class S>
+using M3 = std::array<V3<S>, 3>;  // rows
+
+template <class S>
+double value_of(const S& s) {
+  if constexpr (std::is_arithmetic_v<S>)
+    return s;
+  else
+    return value_of(s.value());
+}
+
+template <class S>
+S dot(const V3<S>& a, const V3<S>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+template <class S>
+V3<S> cross(const V3<S>& a, const V3<S>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class S>
+V3<S> normalized(const V3<S>& a) {
+  using std::sqrt;
+  const S length = sqrt(dot(a, a));
+  return {a[0] / length, a[1] / length, a[2] / length};
+}
+template <class S>
+V3<S> times(const M3<S>& m, const V3<S>& v) {
+  return {dot(m[0], v), dot(m[1], v), dot(m[2], v)};
+}
+template <class S>
+M3<S> times(const M3<S>& a, const M3<S>& b) {
+  M3<S> c;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) c[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+  return c;
+}
+
+/// Rodrigues: R = I + a K + b K², K = [ψ]×, a = sin φ/φ, b = (1 − cos φ)/φ², φ = |ψ|; by their
+/// series near φ = 0, where the derivatives of φ itself do not exist.
+template <class S>
+M3<S> exp_rotation(const V3<S>& psi) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const S phi2 = dot(psi, psi);
+  S a, b;
+  if (value_of(phi2) < 1e-6) {
+    a = 1.0 - phi2 / 6.0 + phi2 * phi2 / 120.0;
+    b = 0.5 - phi2 / 24.0 + phi2 * phi2 / 720.0;
+  } else {
+    const S phi = sqrt(phi2);
+    a = sin(phi) / phi;
+    b = (1.0 - cos(phi)) / phi2;
+  }
+  const M3<S> k{V3<S>{0.0 * psi[0], -psi[2], psi[1]}, V3<S>{psi[2], 0.0 * psi[0], -psi[0]},
+                V3<S>{-psi[1], psi[0], 0.0 * psi[0]}};
+  const M3<S> k2 = times(k, k);
+  M3<S> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r[i][j] = a * k[i][j] + b * k2[i][j] + (i == j ? 1.0 : 0.0);
+  return r;
+}
+
+/// The rotation vector of R through its quaternion (w, v): θ = 2 atan2(|v|, w) v/|v|, by the
+/// series of atan(t)/t in t² = |v|²/w² near the identity. False when R turns by π or nearly so.
+template <class S>
+bool log_rotation(const M3<S>& r, V3<S>& theta) {
+  using std::atan2;
+  using std::sqrt;
+  const S trace = r[0][0] + r[1][1] + r[2][2];
+  if (value_of(trace) <= -1.0 + 1e-6) return false;
+  const S w = 0.5 * sqrt(1.0 + trace);
+  const V3<S> v{(r[2][1] - r[1][2]) / (4.0 * w), (r[0][2] - r[2][0]) / (4.0 * w), (r[1][0] - r[0][1]) / (4.0 * w)};
+  const S s2 = dot(v, v);
+  const S t2 = s2 / (w * w);
+  S scale;  // θ = scale · v
+  if (value_of(t2) < 1e-4) {
+    scale = 2.0 / w * (1.0 - t2 / 3.0 + t2 * t2 / 5.0 - t2 * t2 * t2 / 7.0 + t2 * t2 * t2 * t2 / 9.0);
+  } else {
+    const S s = sqrt(s2);
+    scale = 2.0 * atan2(s, w) / s;
+  }
+  theta = {scale * v[0], scale * v[1], scale * v[2]};
+  return true;
+}
+
+/// The element's frame as its columns e1, e2, e3 (header); false when the element has no frame
+/// (a collapsed shell, a beam whose nodes' n1 have turned against each other by π).
+template <class S>
+bool element_frame(CorotationalFrame kind, const std::vector<V3<S>>& x, const std::vector<M3<S>>& rot, const Vec3& n1,
+                   std::array<V3<S>, 3>& frame) {
+  V3<S> e1, normal;
+  if (kind == CorotationalFrame::Beam) {
+    e1 = normalized(V3<S>{x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]});
+    V3<S> q;  // (R_1 + R_2) n1⁰
+    for (int i = 0; i < 3; ++i)
+      q[i] = (rot[0][i][0] + rot[1][i][0]) * n1[0] + (rot[0][i][1] + rot[1][i][1]) * n1[1] +
+             (rot[0][i][2] + rot[1][i][2]) * n1[2];
+    normal = cross(e1, q);
+  } else {
+    V3<S> g1, g2;
+    if (x.size() == 3) {
+      for (int i = 0; i < 3; ++i) g1[i] = x[1][i] - x[0][i], g2[i] = x[2][i] - x[0][i];
+    } else {
+      for (int i = 0; i < 3; ++i)
+        g1[i] = x[1][i] + x[2][i] - x[0][i] - x[3][i], g2[i] = x[2][i] + x[3][i] - x[0][i] - x[1][i];
+    }
+    normal = cross(g1, g2);
+    e1 = g1;
+  }
+  if (!(value_of(dot(normal, normal)) > 1e-12 * value_of(dot(e1, e1)))) return false;
+  const V3<S> e3 = normalized(normal);
+  const S along = dot(e1, e3);
+  e1 = normalized(V3<S>{e1[0] - along * e3[0], e1[1] - along * e3[1], e1[2] - along * e3[2]});
+  frame = {e1, cross(e3, e1), e3};
+  return true;
+}
+
+/// The element's reference configuration: its frame E0 (columns) and centroid C, in doubles.
+struct Reference {
+  std::array<Vec3, 3> frame{};
+  Vec3 centroid{};
+};
+
+bool reference_of(CorotationalFrame kind, std::span<const Vec3> coords, const Vec3& beam_n1, Reference& ref) {
+  const std::size_t n = coords.size();
+  const std::vector<Vec3> x(coords.begin(), coords.end());
+  const std::vector<M3<double>> identity(n, M3<double>{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}});
+  if (!element_frame(kind, x, identity, beam_n1, ref.frame)) return false;
+  ref.centroid = {};
+  for (const Vec3& p : coords)
+    for (int i = 0; i < 3; ++i) ref.centroid[i] += p[i] / static_cast<double>(n);
+  return true;
+}
+
+/// The deformation d(q) the small-strain kernel sees (header), N = 6 × nodes values; false when
+/// the element has no frame or a node has turned by π or more against it.
+template <class S>
+bool deformation(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, const std::vector<S>& q,
+                 const Vec3& beam_n1, std::vector<S>& d) {
+  const std::size_t n = coords.size();
+  std::vector<V3<S>> x(n);
+  std::vector<M3<S>> rot(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    rot[a] = exp_rotation(V3<S>{q[3 * (n + a)], q[3 * (n + a) + 1], q[3 * (n + a) + 2]});
+    for (int i = 0; i < 3; ++i) x[a][i] = q[3 * a + i] + coords[a][i];
+  }
+  std::array<V3<S>, 3> now;
+  if (!element_frame(kind, x, rot, beam_n1, now)) return false;
+  const std::array<Vec3, 3>& then = ref.frame;
+  M3<S> back;  // A = E0 R_rᵀ
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) back[i][j] = then[0][i] * now[0][j] + then[1][i] * now[1][j] + then[2][i] * now[2][j];
+  V3<S> c = x[0];
+  for (std::size_t a = 1; a < n; ++a)
+    for (int i = 0; i < 3; ++i) c[i] += x[a][i];
+  for (int i = 0; i < 3; ++i) c[i] /= static_cast<double>(n);
+  d.resize(6 * n);
+  for (std::size_t a = 0; a < n; ++a) {
+    const V3<S> turned = times(back, V3<S>{x[a][0] - c[0], x[a][1] - c[1], x[a][2] - c[2]});
+    for (int i = 0; i < 3; ++i) d[3 * a + i] = turned[i] - (coords[a][i] - ref.centroid[i]);
+    V3<S> theta;
+    if (!log_rotation(times(back, rot[a]), theta)) return false;
+    for (int i = 0; i < 3; ++i) d[3 * (n + a) + i] = theta[i];
+  }
+  return true;
+}
+
+/// d(q) and J = ∂d/∂q (row-major, N × N) by forward differentiation; with `hessian`, also
+/// ∇²(g·d) for the g it is handed (second-order forward), else that is left untouched.
+template <int N>
+class DeformationDerivatives {
+ public:
+  using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+  using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, N, 1>>;
+
+  /// First order: d and J at q.
+  bool first(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, std::span<const double> q,
+             const Vec3& beam_n1) {
+    std::vector<Inner> qs(N), d;
+    for (int j = 0; j < N; ++j) qs[j] = Inner(q[j], N, j);
+    if (!deformation(kind, coords, ref, qs, beam_n1, d)) return false;
+    for (int r = 0; r < N; ++r) {
+      value[r] = d[r].value();
+      for (int j = 0; j < N; ++j) jacobian[r * N + j] = d[r].derivatives()(j);
+    }
+    return true;
+  }
+
+  /// Second order: d, J and the Hessian of g·d with g = g_of(d) (called once d is known).
+  template <class G>
+  bool second(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, std::span<const double> q,
+              const Vec3& beam_n1, const G& g_of, std::vector<double>& hessian) {
+    std::vector<Outer> qs(N), d;
+    for (int j = 0; j < N; ++j) {
+      qs[j].value() = Inner(q[j], N, j);
+      qs[j].derivatives() = Eigen::Matrix<Inner, N, 1>::Constant(Inner(0.0, Eigen::Matrix<double, N, 1>::Zero()));
+      qs[j].derivatives()(j) = Inner(1.0, Eigen::Matrix<double, N, 1>::Zero());
+    }
+    if (!deformation(kind, coords, ref, qs, beam_n1, d)) return false;
+    for (int r = 0; r < N; ++r) {
+      value[r] = value_of(d[r]);
+      for (int j = 0; j < N; ++j) jacobian[r * N + j] = d[r].value().derivatives()(j);
+    }
+    const std::vector<double> g = g_of(value);
+    Outer work = g[0] * d[0];
+    for (int r = 1; r < N; ++r) work += g[r] * d[r];
+    hessian.resize(N * N);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) hessian[i * N + j] = work.derivatives()(i).derivatives()(j);
+    return true;
+  }
+
+  std::vector<double> value = std::vector<double>(N), jacobian = std::vector<double>(N * N);
+};
+
+/// Internal force Jᵀg and tangent JᵀK J + ∇²(g·d) with g = K d + f⁰ held fixed, J = ∂d/∂q:
+/// the gradient and Hessian of the energy (header). The force alone needs only J.
+template <int N>
+bool corotated_system(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref,
+                      std::span<const double> q, const Vec3& beam_n1, const std::vector<double>& k,
+                      const std::vector<double>& f0, const ElementRequest& request, std::vector<double>& d_value,
+                      ElementSystem& out) {
+  const auto force_of = [&](const std::vector<double>& d) {
+    std::vector<double> g(f0);
+    for (int r = 0; r < N; ++r)
+      for (int j = 0; j < N; ++j) g[r] += k[r * N + j] * d[j];
+    return g;
+  };
+  DeformationDerivatives<N> dd;
+  std::vector<double> hessian;
+  if (request.stiffness ? !dd.second(kind, coords, ref, q, beam_n1, force_of, hessian)
+                        : !dd.first(kind, coords, ref, q, beam_n1))
+    return false;
+  d_value = dd.value;
+  const std::vector<double>& jac = dd.jacobian;
+  const std::vector<double> g = force_of(d_value);
+  if (request.internal_force)
+    for (int i = 0; i < N; ++i)
+      for (int r = 0; r < N; ++r) out.internal_force[i] += jac[r * N + i] * g[r];
+  if (!request.stiffness) return true;
+  std::vector<double> kj(N * N, 0.0);  // K J
+  for (int r = 0; r < N; ++r)
+    for (int s = 0; s < N; ++s)
+      if (k[r * N + s] != 0.0)
+        for (int j = 0; j < N; ++j) kj[r * N + j] += k[r * N + s] * jac[s * N + j];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      double kij = hessian[i * N + j];
+      for (int r = 0; r < N; ++r) kij += jac[r * N + i] * kj[r * N + j];
+      out.stiffness[static_cast<std::size_t>(i * N + j)] = kij;
+    }
+  return true;
+}
+
+}  // namespace
+
+bool takes_finite_rotations(const model::ElementTypeInfo& type) {
+  if (model::is_beam(type)) return type.n_nodes == 2;
+  return model::is_shell(type) && (type.n_nodes == 3 || type.n_nodes == 4);
+}
+
+std::array<Vec3, 3> rotation_exp(const Vec3& psi) { return exp_rotation(psi); }
+
+Vec3 rotation_log(const std::array<Vec3, 3>& rotation) {
+  Vec3 theta{};
+  if (!log_rotation(rotation, theta)) throw std::domain_error("rotation_log: a rotation by π has no unique vector");
+  return theta;
+}
+
+void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords, std::span<const double> q,
+                          const Vec3& beam_n1, const LinearKernel& linear, const ElementRequest& request,
+                          ElementSystem& out) {
+  const int n_dof = static_cast<int>(q.size());
+  if (n_dof != 6 * static_cast<int>(coords.size())) throw std::invalid_argument("compute_corotational: size mismatch");
+  if (n_dof != 12 && n_dof != 18 && n_dof != 24)
+    throw std::invalid_argument("compute_corotational: two-node beams and three- or four-node shells only");
+  ElementRequest base{.stiffness = true, .internal_force = true, .point_output = false, .nlgeom = false,
+                      .temperature = request.temperature};
+  ElementSystem reference;
+  const std::vector<double> zero(static_cast<std::size_t>(n_dof), 0.0);
+  linear(zero, base, reference);  // K and f⁰ = f(0)
+  begin_element_system(out, n_dof, request);
+  out.min_jacobian = reference.min_jacobian;
+  if (out.min_jacobian <= 0.0) return;
+  std::vector<double> d;
+  Reference ref;
+  bool turned = reference_of(frame, coords, beam_n1, ref);
+  const std::vector<double>& k = reference.stiffness;
+  const std::vector<double>& f0 = reference.internal_force;
+  if (turned) switch (n_dof) {
+      case 12: turned = corotated_system<12>(frame, coords, ref, q, beam_n1, k, f0, request, d, out); break;
+      case 18: turned = corotated_system<18>(frame, coords, ref, q, beam_n1, k, f0, request, d, out); break;
+      case 24: turned = corotated_system<24>(frame, coords, ref, q, beam_n1, k, f0, request, d, out); break;
+      default: break;  // checked above
+    }
+  if (!turned) {
+    out.min_volume_ratio = 0.0;
+    return;
+  }
+  if (!request.point_output) return;
+  ElementSystem at_d;
+  linear(d, ElementRequest{.stiffness = false, .internal_force = false, .point_output = true, .nlgeom = false,
+                           .temperature = request.temperature},
+         at_d);
+  out.points = std::move(at_d.points);
+}
+
+}  // namespace inpact::solver::elements

@@ -1,0 +1,58 @@
+#pragma once
+/// Finite rotations for beams and shells under NLGEOM: the element-independent corotational
+/// formulation (Rankin and Nour-Omid 1988; Felippa and Haugen 2005). The element's small-strain
+/// kernel stays as it is; a rigid frame follows the element and only the motion relative to that
+/// frame reaches the kernel, so the strains stay small while the element turns without limit.
+///
+/// Unknowns: the kernel's own (beam_elements.hpp, shell_elements.hpp): the translations u_a of
+/// the nodes, then their total rotation vectors ψ_a, R_a = exp([ψ_a]×) (Rodrigues), the same
+/// convention as a rigid body's rotation node (model/rigid_motion.hpp). ψ is updated additively,
+/// so the forces are conjugate to ψ and the tangent is their exact derivative; a node's ψ is
+/// singular only where |ψ| reaches 2π about an axis that is free to tilt.
+///
+/// The frame R_r = [e1 e2 e3] of the current configuration (E0 of the reference one):
+///  - beams (two nodes): e1 along the chord, e3 = e1 × q / |e1 × q| with q = ½(R_1 + R_2) n1⁰, the
+///    section's reference n1 turned by the mean nodal rotation (Crisfield), e2 = e3 × e1;
+///  - shells: e3 along g1 × g2 with g1, g2 the corner nodes' mean edge vectors (the diagonals'
+///    cross product for a quadrilateral), e1 the projection of g1, e2 = e3 × e1.
+/// With A = E0 R_rᵀ (the rotation that takes the frame back to its reference orientation) the
+/// deformation the kernel sees, in global components of the reference configuration, is
+///   ū_a = A (x_a − c) − (X_a − C),   θ̄_a = log(A R_a)
+/// (c, C the centroids): zero for any rigid motion. The kernel is linear, f(d) = K d + f⁰, so
+/// the element's energy is Π(q) = ½ dᵀK d + f⁰ᵀd; its gradient and Hessian in the element's
+/// unknowns q (forward-over-forward automatic differentiation) are the internal force and the
+/// consistent, symmetric tangent. Point output is the kernel's at d: stresses and section forces
+/// in the reference axes turned with the element (Abaqus's corotational shell and beam axes).
+#include <functional>
+#include <span>
+
+#include "element_kernel.hpp"
+
+namespace inpact::solver::elements {
+
+/// How the element's rigid frame follows it.
+enum class CorotationalFrame { Beam, Shell };
+
+/// The small-strain kernel of the element: writes K, f(d) and the points of a deformation d as
+/// `request` asks (request.nlgeom is false).
+using LinearKernel = std::function<void(std::span<const double> d, const ElementRequest& request, ElementSystem& out)>;
+
+/// Stiffness, internal force and point output of a beam (2 nodes) or a shell (3, 4 or 8 nodes)
+/// with finite rotations. `q` holds the element's unknowns as above; `beam_n1` is a beam's
+/// reference n1 axis (unused for shells). An element without a frame (collapsed, or a beam whose
+/// end sections are twisted half round against each other) or with a node turned by π or more
+/// against its frame (no unique log) reports min_volume_ratio = 0, as an element turned inside
+/// out does: the increment is cut back.
+void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords, std::span<const double> q,
+                          const Vec3& beam_n1, const LinearKernel& linear, const ElementRequest& request,
+                          ElementSystem& out);
+
+/// Whether the element type turns with finite rotations here: the two-node beams (B31, B33) and
+/// the three- and four-node shells (S3, S3R, S4, S4R). The one rule the set-up and the kernels use.
+bool takes_finite_rotations(const model::ElementTypeInfo& type);
+
+/// exp([ψ]×) and its inverse on rotations by less than π, exposed for tests.
+std::array<Vec3, 3> rotation_exp(const Vec3& psi);
+Vec3 rotation_log(const std::array<Vec3, 3>& rotation);
+
+}  // namespace inpact::solver::elements
