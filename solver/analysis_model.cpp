@@ -167,7 +167,7 @@ void check_initial_plastic_strains(const model::Model& m, const AnalysisModel& a
       if (probe.empty() || !s.material->set_plastic_strain(probe, elements::Vec6::Zero()))
         throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: TYPE=PLASTIC STRAIN on element {}, whose "
                                         "material has no *PLASTIC", where(), m.mesh.elements.labels[e]));
-      const std::size_t points = elements::element_rule(*s.type).size();
+      const std::size_t points = elements::material_points(*s.type, s.section);
       if (static_cast<std::size_t>(ic.point) > points)
         throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: element {} ({}) has {} integration points, "
                                         "not {}", where(), m.mesh.elements.labels[e], s.type->name, points, ic.point));

@@ -18,7 +18,7 @@ MaterialStates::MaterialStates(const AnalysisModel& am) {
     const ElementSetup& s = am.elements[e];
     const std::size_t size = s.material ? s.material->state_size() : 0;
     per_point_[e] = static_cast<std::uint32_t>(size);
-    offset_[e + 1] = offset_[e] + (size ? size * elements::element_rule(*s.type).size() : 0);
+    offset_[e + 1] = offset_[e] + (size ? size * elements::material_points(*s.type, s.section) : 0);
   }
   committed_.assign(offset_.back(), 0.0);
   for (std::size_t e = 0; e < n_el; ++e)

@@ -1,5 +1,6 @@
 #include "shell_element_setup.hpp"
 
+#include <algorithm>
 #include <memory>
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "model/mesh_queries.hpp"
 #include "elastic_law.hpp"
 #include "finite_rotation_setup.hpp"
+#include "elements/mises_plasticity.hpp"
 #include "elements/shell_section.hpp"
 
 namespace inpact::solver {
@@ -18,17 +20,50 @@ const char* keyword_of(const model::ShellSection& sec) {
   return sec.general ? "*SHELL GENERAL SECTION" : "*SHELL SECTION";
 }
 
-/// E, ν and α of the section's material: isotropic linear elastic only so far (small strain,
-/// small rotations), or a deck error naming what is missing.
+/// E, ν and α of the section's material: isotropic elastic (with *PLASTIC or not), or a deck
+/// error naming what is missing.
 elements::ShellProperties shell_section_properties(const model::Model& m, const model::ShellSection& sec) {
   const auto where = [&] { return m.sources.describe(sec.loc); };
   const model::Material& mat = m.materials.at(sec.material);
   refuse_temperature_tables(m, mat, "shell elements");
-  if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.plastic || mat.hyperelastic)
-    throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not isotropic linear elastic; shells take "
-                                    "*ELASTIC, TYPE=ISOTROPIC only so far", where(), keyword_of(sec), mat.name));
+  if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.hyperelastic)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not isotropic elastic; shells take *ELASTIC, "
+                                    "TYPE=ISOTROPIC (with or without *PLASTIC) only so far", where(), keyword_of(sec),
+                                    mat.name));
   return elements::shell_properties(sec, mat.elastic->youngs_modulus, mat.elastic->poissons_ratio,
                                     mat.expansion ? mat.expansion->alpha : 0.0);
+}
+
+/// The law at the section points of a shell whose material has *PLASTIC: Mises in plane stress
+/// (σ33 = 0 at each point), isotropic or linear kinematic hardening at one temperature, small
+/// strain and small rotation; the transverse shear stays elastic, as in Abaqus's shells. Null
+/// without *PLASTIC. Not under NLGEOM yet: the corotated kernel's tangent is consistent
+/// (tests/solver/test_corotation.cpp), but each increment's first correction stretches a turning
+/// strip by its linearised turn, its points yield in that transient state, and a strip bent into
+/// the plastic range cuts back until it stops.
+std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& m, const model::ShellSection& sec) {
+  const model::Material& mat = m.materials.at(sec.material);
+  if (!mat.plastic) return nullptr;
+  const model::Plastic& p = *mat.plastic;
+  const bool one_temperature = std::all_of(p.table.begin(), p.table.end(), [&](const model::Plastic::Point& row) {
+    return row.temperature == p.table.front().temperature;
+  });
+  if (p.hardening == model::Plastic::Hardening::Combined || mat.cyclic_hardening || !one_temperature)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC with combined hardening or several "
+                                    "temperatures; shells take isotropic or kinematic hardening at one temperature so "
+                                    "far", m.sources.describe(sec.loc), keyword_of(sec), mat.name));
+  for (const model::Step& step : m.steps)
+    if (step.nlgeom)
+      throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; plastic shells under NLGEOM (step "
+                                      "'{}') are not supported yet (without NLGEOM they are)",
+                                      m.sources.describe(sec.loc), keyword_of(sec), mat.name, step.name));
+  elements::ElasticConstants c;
+  c.youngs_modulus = mat.elastic->youngs_modulus;
+  c.poissons_ratio = mat.elastic->poissons_ratio;
+  c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
+  elements::MisesHardening h = elements::isotropic_hardening(p.table);
+  h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
+  return std::make_shared<elements::MisesPlasticity>(c, std::move(h), model::ElementFamily::PlaneStress);
 }
 
 }  // namespace
@@ -37,11 +72,14 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
   for (const model::ShellSection& sec : m.mesh.shell_sections) {
     const elements::ShellProperties* p =
         am.shells.emplace_back(std::make_shared<elements::ShellProperties>(shell_section_properties(m, sec))).get();
+    const std::shared_ptr<const elements::Material> plastic = shell_plastic_law(m, sec);
+    if (plastic) am.materials.push_back(plastic);
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];
       refuse_finite_rotations(m, *s.type, keyword_of(sec), sec.loc, m.mesh.elements.labels[e]);
       s.section.shell = p;
+      if (plastic) s.material = plastic.get();
       s.section.thickness = model::shell_thickness(m.mesh, sec, e);
       s.density = m.materials.at(sec.material).density.value_or(0.0);
     }

@@ -18,6 +18,9 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
                  along z, as the elements' consistent nodal loads.
   torsion        The same strip twisted by T = 1 about x (nodal moments on the tip), its width
                  graded towards the free edges.
+  plastic        The strip (L = 10, b = 1, t = 0.1, E = 2e5, nu = 0) of an elastic-perfectly plastic
+                 metal (yield 200) bent by a prescribed tip rotation: 0.3 (curvature 1.5 times the
+                 first yield's), then 1.0 (5 times).
   rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
                  t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
                  full circle (U2, UR1, UR3 held: a planar problem).
@@ -206,16 +209,37 @@ def rollup(etype, n):
         elements, "1.2e6, 0.", sets, tail
 
 
+def plastic(etype, n):
+    """n elements along the strip, one across: the tip's rotation about y prescribed (its
+    translations free, so the moment is uniform). The root holds U1, U3 and UR2 (U2 at one
+    node): its width is free, so the plastic flow's ε22 = -ε11/2 meets no constraint there."""
+    nodes, elements = grid(etype, n, 1, lambda s, w: (10.0 * s, w - 0.5, 0.0))
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip, "CORNER": lambda s, w: near(s, 0) and near(w, 0)}
+    steps = [0.3, 1.0]
+    tail = ["*SHELL SECTION, ELSET=SHELL, MATERIAL=M", "0.1, 5", "*BOUNDARY", "ROOT, 1, 1", "ROOT, 3, 3", "ROOT, 5, 5",
+            "CORNER, 2, 2"]
+    for k, turn in enumerate(steps):
+        tail += [f"*STEP, NAME=BEND{k + 1}, INC=100", "*STATIC", "0.1, 1.",
+                 "*BOUNDARY", f"TIP, 5, 5, {-turn:g}", "*NODE PRINT, NSET=ROOT", "RM", "*EL PRINT, ELSET=SHELL",
+                 "S, PEEQ", "*OUTPUT, FIELD", "*NODE OUTPUT", "U, UR, RF, RM", "*ELEMENT OUTPUT", "S, PEEQ, SF, SM",
+                 "*END STEP"]
+    material = "2.e5, 0.\n*PLASTIC\n200., 0."
+    return "Elastic-perfectly plastic strip L = 10, b = 1, t = 0.1 bent by its tip's rotation", nodes, elements, \
+        material, sets, tail
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
-    ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup"])
+    ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup",
+                                     "plastic"])
     ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
     ap.add_argument("n", type=int)
     ap.add_argument("thin", nargs="?", default="")
     a = ap.parse_args()
     make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
-            "rollup": rollup,
+            "rollup": rollup, "plastic": plastic,
             "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
     heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
     suffix = "_thin" if a.thin == "thin" else ""

@@ -207,10 +207,10 @@ void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     out.min_jacobian = 0.0;
     return;
   }
-  const auto linear = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
+  const auto small_strain = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
     compute_beam_small(type, coords, d, section, r, o);
   };
-  compute_corotational(CorotationalFrame::Beam, coords, u, axes[1], linear, request, out);
+  compute_corotational(CorotationalFrame::Beam, coords, u, axes[1], small_strain, request, out);
 }
 
 }  // namespace inpact::solver::elements

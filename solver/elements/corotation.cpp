@@ -182,15 +182,14 @@ bool deformation(CorotationalFrame kind, std::span<const Vec3> coords, const Ref
   return true;
 }
 
-/// d(q) and J = ∂d/∂q (row-major, N × N) by forward differentiation; with `hessian`, also
-/// ∇²(g·d) for the g it is handed (second-order forward), else that is left untouched.
+/// d(q), J = ∂d/∂q (row-major, N × N) and, for a g handed in, ∇²(g·d): first-order forward
+/// differentiation for d and J, second-order (forward over forward) for the Hessian.
 template <int N>
-class DeformationDerivatives {
- public:
+struct DeformationDerivatives {
   using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
   using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, N, 1>>;
 
-  /// First order: d and J at q.
+  /// d and J at q.
   bool first(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, std::span<const double> q,
              const Vec3& beam_n1) {
     std::vector<Inner> qs(N), d;
@@ -203,58 +202,53 @@ class DeformationDerivatives {
     return true;
   }
 
-  /// Second order: d, J and the Hessian of g·d with g = g_of(d) (called once d is known).
-  template <class G>
-  bool second(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, std::span<const double> q,
-              const Vec3& beam_n1, const G& g_of, std::vector<double>& hessian) {
+  /// ∇²(g·d) at q into `hessian` (N × N).
+  void second(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, std::span<const double> q,
+              const Vec3& beam_n1, std::span<const double> g, std::vector<double>& hessian) const {
     std::vector<Outer> qs(N), d;
     for (int j = 0; j < N; ++j) {
       qs[j].value() = Inner(q[j], N, j);
       qs[j].derivatives() = Eigen::Matrix<Inner, N, 1>::Constant(Inner(0.0, Eigen::Matrix<double, N, 1>::Zero()));
       qs[j].derivatives()(j) = Inner(1.0, Eigen::Matrix<double, N, 1>::Zero());
     }
-    if (!deformation(kind, coords, ref, qs, beam_n1, d)) return false;
-    for (int r = 0; r < N; ++r) {
-      value[r] = value_of(d[r]);
-      for (int j = 0; j < N; ++j) jacobian[r * N + j] = d[r].value().derivatives()(j);
-    }
-    const std::vector<double> g = g_of(value);
+    deformation(kind, coords, ref, qs, beam_n1, d);  // succeeded in first()
     Outer work = g[0] * d[0];
     for (int r = 1; r < N; ++r) work += g[r] * d[r];
     hessian.resize(N * N);
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) hessian[i * N + j] = work.derivatives()(i).derivatives()(j);
-    return true;
   }
 
   std::vector<double> value = std::vector<double>(N), jacobian = std::vector<double>(N * N);
 };
 
-/// Internal force Jᵀg and tangent JᵀK J + ∇²(g·d) with g = K d + f⁰ held fixed, J = ∂d/∂q:
-/// the gradient and Hessian of the energy (header). The force alone needs only J.
+/// Internal force Jᵀg and tangent Jᵀ K J + ∇²(g·d), J = ∂d/∂q, with g and K the small-strain
+/// kernel's force and tangent at d (for an elastic kernel, the gradient and Hessian of its
+/// energy; for a path-dependent one the same expressions with its consistent tangent). The
+/// force alone needs only J. False when the element has no frame or log (header).
 template <int N>
 bool corotated_system(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref,
-                      std::span<const double> q, const Vec3& beam_n1, const std::vector<double>& k,
-                      const std::vector<double>& f0, const ElementRequest& request, std::vector<double>& d_value,
-                      ElementSystem& out) {
-  const auto force_of = [&](const std::vector<double>& d) {
-    std::vector<double> g(f0);
-    for (int r = 0; r < N; ++r)
-      for (int j = 0; j < N; ++j) g[r] += k[r * N + j] * d[j];
-    return g;
-  };
+                      std::span<const double> q, const Vec3& beam_n1, const SmallStrainKernel& kernel,
+                      const ElementRequest& request, ElementSystem& out) {
   DeformationDerivatives<N> dd;
-  std::vector<double> hessian;
-  if (request.stiffness ? !dd.second(kind, coords, ref, q, beam_n1, force_of, hessian)
-                        : !dd.first(kind, coords, ref, q, beam_n1))
-    return false;
-  d_value = dd.value;
+  if (!dd.first(kind, coords, ref, q, beam_n1)) return false;
+  ElementSystem local;
+  ElementRequest at_d = request;
+  at_d.nlgeom = false;
+  at_d.internal_force = true;
+  kernel(dd.value, at_d, local);
+  out.min_jacobian = local.min_jacobian;
+  out.points = std::move(local.points);
+  if (local.min_jacobian <= 0.0) return true;  // the caller reports the degenerate element
   const std::vector<double>& jac = dd.jacobian;
-  const std::vector<double> g = force_of(d_value);
+  const std::vector<double>& g = local.internal_force;
   if (request.internal_force)
     for (int i = 0; i < N; ++i)
       for (int r = 0; r < N; ++r) out.internal_force[i] += jac[r * N + i] * g[r];
   if (!request.stiffness) return true;
+  std::vector<double> hessian;
+  dd.second(kind, coords, ref, q, beam_n1, g, hessian);
+  const std::vector<double>& k = local.stiffness;
   std::vector<double> kj(N * N, 0.0);  // K J
   for (int r = 0; r < N; ++r)
     for (int s = 0; s < N; ++s)
@@ -285,41 +279,27 @@ Vec3 rotation_log(const std::array<Vec3, 3>& rotation) {
 }
 
 void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords, std::span<const double> q,
-                          const Vec3& beam_n1, const LinearKernel& linear, const ElementRequest& request,
+                          const Vec3& beam_n1, const SmallStrainKernel& kernel, const ElementRequest& request,
                           ElementSystem& out) {
   const int n_dof = static_cast<int>(q.size());
   if (n_dof != 6 * static_cast<int>(coords.size())) throw std::invalid_argument("compute_corotational: size mismatch");
   if (n_dof != 12 && n_dof != 18 && n_dof != 24)
     throw std::invalid_argument("compute_corotational: two-node beams and three- or four-node shells only");
-  ElementRequest base{.stiffness = true, .internal_force = true, .point_output = false, .nlgeom = false,
-                      .temperature = request.temperature};
-  ElementSystem reference;
-  const std::vector<double> zero(static_cast<std::size_t>(n_dof), 0.0);
-  linear(zero, base, reference);  // K and f⁰ = f(0)
   begin_element_system(out, n_dof, request);
-  out.min_jacobian = reference.min_jacobian;
-  if (out.min_jacobian <= 0.0) return;
-  std::vector<double> d;
+  out.min_jacobian = 0.0;
   Reference ref;
-  bool turned = reference_of(frame, coords, beam_n1, ref);
-  const std::vector<double>& k = reference.stiffness;
-  const std::vector<double>& f0 = reference.internal_force;
-  if (turned) switch (n_dof) {
-      case 12: turned = corotated_system<12>(frame, coords, ref, q, beam_n1, k, f0, request, d, out); break;
-      case 18: turned = corotated_system<18>(frame, coords, ref, q, beam_n1, k, f0, request, d, out); break;
-      case 24: turned = corotated_system<24>(frame, coords, ref, q, beam_n1, k, f0, request, d, out); break;
-      default: break;  // checked above
-    }
-  if (!turned) {
-    out.min_volume_ratio = 0.0;
-    return;
+  if (!reference_of(frame, coords, beam_n1, ref)) return;  // degenerate: min_jacobian 0, reported by the caller
+  bool framed = false;
+  switch (n_dof) {
+    case 12: framed = corotated_system<12>(frame, coords, ref, q, beam_n1, kernel, request, out); break;
+    case 18: framed = corotated_system<18>(frame, coords, ref, q, beam_n1, kernel, request, out); break;
+    case 24: framed = corotated_system<24>(frame, coords, ref, q, beam_n1, kernel, request, out); break;
+    default: break;  // checked above
   }
-  if (!request.point_output) return;
-  ElementSystem at_d;
-  linear(d, ElementRequest{.stiffness = false, .internal_force = false, .point_output = true, .nlgeom = false,
-                           .temperature = request.temperature},
-         at_d);
-  out.points = std::move(at_d.points);
+  if (!framed) {
+    out.min_jacobian = 1.0;  // the reference is sound; the motion is not
+    out.min_volume_ratio = 0.0;
+  }
 }
 
 }  // namespace inpact::solver::elements

@@ -18,11 +18,13 @@
 /// With A = E0 R_rᵀ (the rotation that takes the frame back to its reference orientation) the
 /// deformation the kernel sees, in global components of the reference configuration, is
 ///   ū_a = A (x_a − c) − (X_a − C),   θ̄_a = log(A R_a)
-/// (c, C the centroids): zero for any rigid motion. The kernel is linear, f(d) = K d + f⁰, so
-/// the element's energy is Π(q) = ½ dᵀK d + f⁰ᵀd; its gradient and Hessian in the element's
-/// unknowns q (forward-over-forward automatic differentiation) are the internal force and the
-/// consistent, symmetric tangent. Point output is the kernel's at d: stresses and section forces
-/// in the reference axes turned with the element (Abaqus's corotational shell and beam axes).
+/// (c, C the centroids): zero for any rigid motion. With the kernel's force g and tangent K at d,
+/// the element's internal force is Jᵀg and its tangent Jᵀ K J + ∇²(g·d), J = ∂d/∂q, by forward
+/// automatic differentiation (second order for the Hessian). For an elastic kernel these are the
+/// gradient and Hessian of its energy Π(q) = ½ dᵀK d + f⁰ᵀd: the exact, symmetric tangent; a
+/// plastic kernel brings its consistent tangent and its history (the points' trial state is the
+/// kernel's at d). Point output is the kernel's at d: stresses and section forces in the
+/// reference axes turned with the element (Abaqus's corotational shell and beam axes).
 #include <functional>
 #include <span>
 
@@ -33,9 +35,10 @@ namespace inpact::solver::elements {
 /// How the element's rigid frame follows it.
 enum class CorotationalFrame { Beam, Shell };
 
-/// The small-strain kernel of the element: writes K, f(d) and the points of a deformation d as
-/// `request` asks (request.nlgeom is false).
-using LinearKernel = std::function<void(std::span<const double> d, const ElementRequest& request, ElementSystem& out)>;
+/// The small-strain kernel of the element: writes its tangent, force f(d) and points at a
+/// deformation d as `request` asks (request.nlgeom is false).
+using SmallStrainKernel =
+    std::function<void(std::span<const double> d, const ElementRequest& request, ElementSystem& out)>;
 
 /// Stiffness, internal force and point output of a beam (2 nodes) or a shell (3, 4 or 8 nodes)
 /// with finite rotations. `q` holds the element's unknowns as above; `beam_n1` is a beam's
@@ -44,7 +47,7 @@ using LinearKernel = std::function<void(std::span<const double> d, const Element
 /// against its frame (no unique log) reports min_volume_ratio = 0, as an element turned inside
 /// out does: the increment is cut back.
 void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords, std::span<const double> q,
-                          const Vec3& beam_n1, const LinearKernel& linear, const ElementRequest& request,
+                          const Vec3& beam_n1, const SmallStrainKernel& kernel, const ElementRequest& request,
                           ElementSystem& out);
 
 /// Whether the element type turns with finite rotations here: the two-node beams (B31, B33) and

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -442,7 +443,10 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
                   std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
   if (model::is_shell(type)) {
     if (!section.shell) throw std::invalid_argument("compute_element: a shell without its section");
-    compute_shell(type, coords, u, *section.shell, section.thickness, request, delta_t, out);
+    ShellMaterial material;
+    if constexpr (std::is_same_v<Law, Material>)
+      if (law.state_size() > 0) material = {&law, history};
+    compute_shell(type, coords, u, *section.shell, section.thickness, request, delta_t, material, out);
     return;
   }
   if (!model::is_continuum(type)) {
@@ -461,6 +465,11 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
 
 }  // namespace
 
+std::size_t material_points(const model::ElementTypeInfo& type, const SectionData& section) {
+  if (model::is_shell(type) && section.shell) return shell_material_points(type, *section.shell);
+  return element_rule(type).size();
+}
+
 void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                      const Material& material, const SectionData& section, const ElementRequest& request,
                      std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
@@ -474,7 +483,7 @@ void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> c
     return;
   }
   // No history given for a material with state: its initial state, the trial state discarded.
-  const std::size_t n = element_rule(type).size() * per_point;
+  const std::size_t n = material_points(type, section) * per_point;
   std::vector<double> committed(n), trial(n);
   for (std::size_t p = 0; p < n; p += per_point) material.initial_state(std::span(committed).subspan(p, per_point));
   compute_with(type, coords, u, material, section, request, delta_t, ElementHistory{committed, trial, per_point}, out);

@@ -146,6 +146,10 @@ void compute_element(const model::ElementTypeInfo& type, std::span<const Vec3> c
                      const ElasticConstants& material, const SectionData& section, const ElementRequest& request,
                      std::span<const double> delta_t, ElementSystem& out);
 
+/// The points of an element that carry material state: its integration points; a shell's at each
+/// of its section points (shell_elements.hpp).
+std::size_t material_points(const model::ElementTypeInfo& type, const SectionData& section);
+
 /// The same with any material: each point evaluates `material` from `history`'s committed state
 /// and writes its trial state there. An empty history for a material with state: the
 /// material's initial state, the trial state discarded.

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "corotation.hpp"
+#include "material.hpp"
 #include "quadrature.hpp"
 #include "shape_functions.hpp"
 
@@ -148,12 +149,53 @@ std::array<double, 5> lamina_stress(const ShellProperties& p, const std::array<d
           p.shear_modulus() * e[2], shear[0] * e[3], shear[1] * e[4]};
 }
 
-/// D B: lamina_stress (linear) applied to each column of the strain rows.
-void lamina_tangent_rows(const ShellProperties& p, const std::array<Row, 5>& b, const std::array<double, 2>& shear,
-                         int n_dof, std::array<Row, 5>& db) {
+/// The lamina at one section point: its stress (σ11, σ22, τ12, τ13, τ23) and tangent, the
+/// in-plane 3 × 3 block and the transverse shear moduli (elastic: Abaqus's shells too).
+struct LaminaPoint {
+  std::array<double, 5> stress{};
+  double in_plane[3][3]{};
+  std::array<double, 2> shear{};
+};
+
+/// The elastic lamina: plane stress with the thermal strain α ΔT taken off e11 and e22.
+LaminaPoint elastic_lamina(const ShellProperties& p, std::array<double, 5> e, double thermal,
+                           const std::array<double, 2>& shear) {
+  LaminaPoint l;
+  e[0] -= thermal, e[1] -= thermal;
+  l.stress = lamina_stress(p, e, shear);
+  const double c = p.youngs_modulus / (1 - p.poissons_ratio * p.poissons_ratio);
+  l.in_plane[0][0] = l.in_plane[1][1] = c;
+  l.in_plane[0][1] = l.in_plane[1][0] = c * p.poissons_ratio;
+  l.in_plane[2][2] = p.shear_modulus();
+  l.shear = shear;
+  return l;
+}
+
+/// A lamina of a material with state (a Mises law for plane stress, shell_element_setup.cpp):
+/// the law at the in-plane strains (ε11, ε22, γ12; it finds ε33 for σ33 = 0), from the point's
+/// committed state into its trial state; the transverse shear elastic.
+LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e, double thermal, const Vec3& position,
+                            const std::array<double, 2>& shear, const PointHistory& history) {
+  static const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  const Vec6 strain = (Vec6() << e[0], e[1], 0.0, e[2], 0.0, 0.0).finished();
+  Vec6 stress;
+  Mat6 scratch;
+  const Mat6& d = law.update({identity, strain, thermal, &position, false, 0.0}, history, stress, scratch);
+  constexpr int in_plane[3] = {0, 1, 3};
+  LaminaPoint l;
+  l.stress = {stress[0], stress[1], stress[3], shear[0] * e[3], shear[1] * e[4]};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) l.in_plane[a][b] = d(in_plane[a], in_plane[b]);
+  l.shear = shear;
+  return l;
+}
+
+/// D B: the lamina's tangent applied to each column of the strain rows.
+void lamina_tangent_rows(const LaminaPoint& l, const std::array<Row, 5>& b, int n_dof, std::array<Row, 5>& db) {
   for (int j = 0; j < n_dof; ++j) {
-    const std::array<double, 5> s = lamina_stress(p, {b[0][j], b[1][j], b[2][j], b[3][j], b[4][j]}, shear);
-    for (int c = 0; c < 5; ++c) db[c][j] = s[c];
+    for (int a = 0; a < 3; ++a) db[a][j] = l.in_plane[a][0] * b[0][j] + l.in_plane[a][1] * b[1][j] + l.in_plane[a][2] * b[2][j];
+    db[3][j] = l.shear[0] * b[3][j];
+    db[4][j] = l.shear[1] * b[4][j];
   }
 }
 
@@ -235,7 +277,7 @@ namespace {
 /// The small-strain shell (shell_elements.hpp).
 void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                          const ShellProperties& section, double thickness, const ElementRequest& request,
-                         std::span<const double> delta_t, ElementSystem& out) {
+                         std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out) {
   Geometry geo{element_shape(type), type.n_nodes, coords, {}, thickness, section.offset};
   const int nd = geo.n_dof();
   if (static_cast<int>(coords.size()) != geo.n || static_cast<int>(u.size()) != nd)
@@ -250,7 +292,9 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
                                                                   (*section.transverse_shear)[1] / thickness}
                                           : std::array<double, 2>{5.0 / 6 * G, 5.0 / 6 * G};
   std::array<Row, 5> db{};
-  for (const QuadraturePoint& q : element_rule(type)) {
+  const std::vector<QuadraturePoint>& rule = element_rule(type);
+  for (std::size_t iq = 0; iq < rule.size(); ++iq) {
+    const QuadraturePoint& q = rule[iq];
     const double xi = q.xi[0], eta = q.xi[1];
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
     std::array<PointResult, 2> surfaces{};  // SNEG, SPOS
@@ -272,14 +316,17 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       std::array<double, 5> strain{};
       for (int c = 0; c < 5; ++c)
         for (int j = 0; j < nd; ++j) strain[c] += b[c][j] * u[j];
-      std::array<double, 5> mechanical = strain;
-      mechanical[0] -= section.expansion * temperature, mechanical[1] -= section.expansion * temperature;
-      const std::array<double, 5> stress = lamina_stress(section, mechanical, shear);
+      const std::size_t point = iq * section.zeta.size() + k;
+      const LaminaPoint lamina =
+          material.law ? material_lamina(*material.law, strain, section.expansion * temperature, p.x, shear,
+                                         material.history.at(point))
+                       : elastic_lamina(section, strain, section.expansion * temperature, shear);
+      const std::array<double, 5>& stress = lamina.stress;
       const double dv = q.weight * section.weight[k] * p.det;
       for (int i = 0; i < nd && !out.internal_force.empty(); ++i)
         for (int c = 0; c < 5; ++c) out.internal_force[i] += dv * b[c][i] * stress[c];
       if (!out.stiffness.empty()) {
-        lamina_tangent_rows(section, b, shear, nd, db);
+        lamina_tangent_rows(lamina, b, nd, db);
         for (int i = 0; i < nd; ++i)
           for (int c = 0; c < 5; ++c) {
             const double bic = dv * b[c][i];
@@ -297,6 +344,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
         r.coords = p.x;
         r.stress = {stress[0], stress[1], 0.0, stress[2], 0.0, 0.0};
         r.strain = {strain[0], strain[1], 0.0, strain[2], 0.0, 0.0};
+        if (material.law) material.law->plastic_output(material.history.at(point).trial, r);
       }
     }
     if (!request.point_output) continue;
@@ -315,17 +363,23 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
 
 }  // namespace
 
+std::size_t shell_material_points(const model::ElementTypeInfo& type, const ShellProperties& section) {
+  return element_rule(type).size() * section.zeta.size();
+}
+
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                    const ShellProperties& section, double thickness, const ElementRequest& request,
-                   std::span<const double> delta_t, ElementSystem& out) {
+                   std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out) {
+  if (material.law && material.history.per_point != material.law->state_size())
+    throw std::invalid_argument("compute_shell: a material with state needs its points' history");
   if (!request.nlgeom) {
-    compute_shell_small(type, coords, u, section, thickness, request, delta_t, out);
+    compute_shell_small(type, coords, u, section, thickness, request, delta_t, material, out);
     return;
   }
-  const auto linear = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
-    compute_shell_small(type, coords, d, section, thickness, r, delta_t, o);
+  const auto small_strain = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
+    compute_shell_small(type, coords, d, section, thickness, r, delta_t, material, o);
   };
-  compute_corotational(CorotationalFrame::Shell, coords, u, Vec3{}, linear, request, out);
+  compute_corotational(CorotationalFrame::Shell, coords, u, Vec3{}, small_strain, request, out);
 }
 
 }  // namespace inpact::solver::elements

@@ -1,6 +1,7 @@
 #pragma once
-/// The conventional shells S4, S4R, S3, S3R, S8R and S8: small strain and small rotations,
-/// linear elastic sections (shell_section.hpp).
+/// The conventional shells S4, S4R, S3, S3R, S8R and S8: small strain (finite rotations through
+/// corotation.hpp under NLGEOM), linear elastic sections (shell_section.hpp) or a plastic law at
+/// every section point (ShellMaterial below).
 ///
 /// Unknowns: at each node its displacement u and its rotation vector θ (global components).
 /// The element's DOFs are the translations of its nodes, then the rotations of the same nodes
@@ -36,12 +37,25 @@
 
 namespace inpact::solver::elements {
 
-/// Stiffness, internal force (K u: the element is linear) and point output of a shell. `u`
-/// holds 6 values per node in the order above; coords the reference nodes; thickness the
-/// element's; delta_t the nodes' temperature change (empty: none).
+class Material;
+
+/// A shell's material beyond its section's elasticity: a law with state (plasticity) evaluated at
+/// every section point, and the points' history; none (null): the section's linear elastic lamina.
+struct ShellMaterial {
+  const Material* law = nullptr;
+  ElementHistory history;  ///< per_point = law's state size; point = in-plane point × section points + k
+};
+
+/// The points that carry a shell's material state: each in-plane point at each section point.
+std::size_t shell_material_points(const model::ElementTypeInfo& type, const ShellProperties& section);
+
+/// Stiffness, internal force and point output of a shell. `u` holds 6 values per node in the
+/// order above; coords the reference nodes; thickness the element's; delta_t the nodes'
+/// temperature change (empty: none). Linear with the section's elastic lamina; with a law of
+/// `material`, its plane stress state at each section point (PE, PEEQ in the points' output).
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                    const ShellProperties& section, double thickness, const ElementRequest& request,
-                   std::span<const double> delta_t, ElementSystem& out);
+                   std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out);
 
 /// The local shell axes {e1, e2, e3} at a point with surface tangents g1, g2 (Abaqus's default
 /// projection, above); false when g1 × g2 vanishes.

@@ -32,7 +32,7 @@ ElementSystem run(std::string_view name, const std::vector<Vec3>& x, const std::
   ElementRequest req;
   req.point_output = true;
   ElementSystem sys;
-  compute_shell(*model::find_element_type(name), x, u, p, kT, req, {}, sys);
+  compute_shell(*model::find_element_type(name), x, u, p, kT, req, {}, {}, sys);
   return sys;
 }
 
