@@ -15,11 +15,12 @@ namespace inpact::model {
 struct BeamSection {
   /// SECTION=: the library shapes inpact integrates, and GENERAL (*BEAM GENERAL SECTION's
   /// A, I11, I12, I22, J given directly).
-  enum class Shape : std::uint8_t { Rect, Circ, Pipe, General };
+  enum class Shape : std::uint8_t { Rect, Circ, Pipe, Box, General };
   std::string elset;     ///< upper-case set name
   std::string material;  ///< upper-case material name; empty for a general section (E, G given)
   Shape shape = Shape::Rect;
-  /// The first data line: RECT a, b (widths along n1 and n2); CIRC r; PIPE r (outer), t;
+  /// The first data line: RECT a, b (widths along n1 and n2); CIRC r; PIPE r (outer), t; BOX
+  /// a, b (outer widths along n1 and n2), t1..t4 (the walls at +n1, +n2, −n1, −n2);
   /// GENERAL A, I11, I12, I22, J.
   std::vector<double> dims;
   SourceLoc dims_loc;

@@ -1,9 +1,10 @@
 /// *BEAM SECTION, *BEAM GENERAL SECTION and their *TRANSVERSE SHEAR STIFFNESS [Abaqus Keywords].
 ///
-/// *BEAM SECTION, ELSET=, MATERIAL=, SECTION=RECT | CIRC | PIPE: first data line the shape's
-/// dimensions (RECT a, b; CIRC r; PIPE r, t), second the approximate n1 direction (default
-/// (0, 0, −1)). *BEAM GENERAL SECTION, SECTION=GENERAL: A, I11, I12, I22, J; n1; E, G. The other
-/// library shapes (BOX, I, L, HEX, TRAPEZOID, ARBITRARY, ...), the other general forms (MESHED,
+/// *BEAM SECTION, ELSET=, MATERIAL=, SECTION=RECT | CIRC | PIPE | BOX: first data line the
+/// shape's dimensions (RECT a, b; CIRC r; PIPE r, t; BOX a, b, t1..t4 with t1 = t3, t2 = t4),
+/// second the approximate n1 direction (default (0, 0, −1)). *BEAM GENERAL SECTION,
+/// SECTION=GENERAL: A, I11, I12, I22, J; n1; E, G. The other library shapes (I, L, HEX,
+/// TRAPEZOID, ARBITRARY, ...), the other general forms (MESHED,
 /// NONLINEAR GENERAL) and CalculiX's OFFSET1/OFFSET2 stop here with what is missing.
 #include <fmt/format.h>
 
@@ -26,7 +27,10 @@ struct ShapeSpec {
 constexpr ShapeSpec kShapes[] = {{"RECT", Shape::Rect, 2, "a (width along n1), b (along n2)"},
                                  {"CIRC", Shape::Circ, 1, "radius"},
                                  {"PIPE", Shape::Pipe, 2, "outer radius, wall thickness"},
+                                 {"BOX", Shape::Box, 6, "a, b (outer widths along n1, n2), t1, t2, t3, t4 (walls)"},
                                  {"GENERAL", Shape::General, 5, "A, I11, I12, I22, J"}};
+
+bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<Field>& f, const std::vector<double>& d);
 
 /// The dimensions line: each a positive number (I12 of a general section may be any number).
 bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, model::BeamSection& sec) {
@@ -51,6 +55,24 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
   }
   if (spec.shape == Shape::Pipe && sec.dims[1] > sec.dims[0]) {
     ctx.error(f[1].loc, fmt::format("the wall thickness {:g} exceeds the outer radius {:g}", sec.dims[1], sec.dims[0]));
+    return false;
+  }
+  return spec.shape != Shape::Box || box_walls_fit(ctx, line, f, sec.dims);
+}
+
+/// A BOX's walls fit inside it, and opposite walls are alike: otherwise the centroid leaves the
+/// beam's axis, which would couple stretching and bending (not supported yet).
+bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<Field>& f, const std::vector<double>& d) {
+  if (d[2] + d[4] >= d[0] || d[3] + d[5] >= d[1]) {
+    ctx.error(line.loc, fmt::format("the walls t1 + t3 = {:g} and t2 + t4 = {:g} must be thinner than a = {:g} and "
+                                    "b = {:g}", d[2] + d[4], d[3] + d[5], d[0], d[1]));
+    return false;
+  }
+  if (d[2] != d[4] || d[3] != d[5]) {
+    ctx.error(f[d[2] != d[4] ? 4 : 5].loc,
+              fmt::format("a BOX whose opposite walls differ (t1 = {:g}, t3 = {:g}; t2 = {:g}, t4 = {:g}) has its "
+                          "centroid off the beam's axis, which is not supported yet (give t1 = t3 and t2 = t4)",
+                          d[2], d[4], d[3], d[5]));
     return false;
   }
   return true;
@@ -114,7 +136,7 @@ void read_section(KeywordContext& ctx, bool general) {
   const ShapeSpec* spec = find_shape(name);
   if (!spec || (spec->shape == Shape::General) != general) {
     ctx.error_param("SECTION", fmt::format("SECTION={} is not supported yet (expected {})", name,
-                                           general ? "GENERAL" : "RECT, CIRC or PIPE"));
+                                           general ? "GENERAL" : "RECT, CIRC, PIPE or BOX"));
     return;
   }
   model::BeamSection sec;

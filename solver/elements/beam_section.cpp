@@ -28,6 +28,7 @@ double shear_factor(model::BeamSection::Shape shape) {
     case Shape::Rect: return 0.85;
     case Shape::Circ: return 0.89;
     case Shape::Pipe: return 0.53;
+    case Shape::Box: return 0.44;
     case Shape::General: return 1.0;
   }
   return 1.0;
@@ -56,6 +57,17 @@ BeamProperties beam_properties(const model::BeamSection& section, double youngs_
       const double inner = d[0] - d[1];
       p.i11 = p.i22 = pi * (std::pow(d[0], 4) - std::pow(inner, 4)) / 4.0;
       p.torsion = 2.0 * p.i11;
+      break;
+    }
+    case Shape::Box: {
+      // Opposite walls alike (the parser's rule): the centroid is the box's centre.
+      const double a = d[0], b = d[1], side = d[2], top = d[3];  // t1 = t3, t2 = t4
+      const double ai = a - 2 * side, bi = b - 2 * top;
+      p.i11 = (a * b * b * b - ai * bi * bi * bi) / 12.0;
+      p.i22 = (b * a * a * a - bi * ai * ai * ai) / 12.0;
+      // Bredt: J = 4 A_m² / ∮ ds/t over the walls' midline.
+      const double am = (a - side) * (b - top);
+      p.torsion = 4.0 * am * am / (2.0 * (a - side) / top + 2.0 * (b - top) / side);
       break;
     }
     case Shape::General:

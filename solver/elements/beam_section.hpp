@@ -18,7 +18,8 @@ struct BeamProperties {
   double torsion = 0.0;         ///< St. Venant torsion constant J
   double youngs_modulus = 0.0, shear_modulus = 0.0;
   /// Transverse shear stiffness before the slenderness compensation: k·G·A with Abaqus's shear
-  /// factor k of the shape (RECT 0.85, CIRC 0.89, PIPE 0.53, GENERAL 1), or the deck's K13, K23.
+  /// factor k of the shape (RECT 0.85, CIRC 0.89, PIPE 0.53, BOX 0.44, GENERAL 1), or the deck's
+  /// K13, K23.
   double k13 = 0.0;  ///< shear along n1
   double k23 = 0.0;  ///< shear along n2
   /// Abaqus's slenderness compensation factor (SCF, 0.25 unless given): the shear stiffness
@@ -34,7 +35,8 @@ double shear_factor(model::BeamSection::Shape shape);
 
 /// A, I11, I22 and J of the shape's dimensions (model::BeamSection::dims); E and G from the
 /// material (library shapes) or the section's own line (GENERAL). RECT's J is St. Venant's
-/// series solution, CIRC's and PIPE's the exact polar moment of the (hollow) disc.
+/// series solution, CIRC's and PIPE's the exact polar moment of the (hollow) disc, BOX's Bredt's
+/// thin-walled one on the walls' midline (A and I are the exact hollow rectangle's).
 BeamProperties beam_properties(const model::BeamSection& section, double youngs_modulus, double poissons_ratio);
 
 }  // namespace inpact::solver::elements

@@ -89,6 +89,21 @@ TEST(BeamElements, SectionPropertiesMatchHandValues) {
   EXPECT_NEAR(beam_properties(c, 1.0, 0.0).i11, pi * std::pow(0.5, 4) / 4, 1e-15);
 }
 
+// BOX 0.3 × 0.2 with side walls (t1 = t3, at ±n1) 0.02 and top and bottom walls 0.03: the
+// hollow rectangle's A and I by hand, Bredt's J on the midline (A_m = 0.28 × 0.17), k = 0.44.
+TEST(BeamElements, BoxSectionPropertiesMatchHandValues) {
+  model::BeamSection b;
+  b.shape = model::BeamSection::Shape::Box;
+  b.dims = {0.3, 0.2, 0.02, 0.03, 0.02, 0.03};
+  const BeamProperties p = beam_properties(b, 2.0e5, 0.3);
+  EXPECT_NEAR(p.area, 0.06 - 0.26 * 0.14, 1e-15);
+  EXPECT_NEAR(p.i11, (0.3 * 0.008 - 0.26 * std::pow(0.14, 3)) / 12, 1e-15);
+  EXPECT_NEAR(p.i22, (0.2 * 0.027 - 0.14 * std::pow(0.26, 3)) / 12, 1e-15);
+  const double am = 0.28 * 0.17;
+  EXPECT_NEAR(p.torsion, 4 * am * am / (2 * 0.28 / 0.03 + 2 * 0.17 / 0.02), 1e-15);
+  EXPECT_NEAR(p.k13, 0.44 * p.shear_modulus * p.area, 1e-9);
+}
+
 // n1 along the beam leaves no plane to bend in; across it, the axes are right-handed.
 TEST(BeamElements, LocalAxesAreRightHandedAndRefuseAnN1AlongTheBeam) {
   std::array<Vec3, 3> axes;

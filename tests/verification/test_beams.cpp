@@ -196,6 +196,29 @@ TEST(Beams, ABeamNodeTiedToARigidBodyOrCouplingTurnsWithIt) {
   }
 }
 
+// The B33 cantilever with a BOX section (0.3 × 0.2, side walls 0.02, top and bottom 0.03):
+// Euler–Bernoulli's tip deflections PL³/(3EI) about both axes and the twist TL/(GJ) with Bredt's
+// J, exact for B33 (1e-9), and the root's reactions balance the loads.
+TEST(Beams, ABoxSectionCantileverMatchesTheClosedForms) {
+  const auto path = edited_deck("beam_cantilever_b33_2.inp", "beam-box", [](const std::string& line) {
+    if (line == "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT")
+      return std::vector<std::string>{"*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=BOX"};
+    if (line == "0.3, 0.2") return std::vector<std::string>{"0.3, 0.2, 0.02, 0.03, 0.02, 0.03"};
+    return std::vector<std::string>{line};
+  });
+  const auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const double i11 = (0.3 * 0.008 - 0.26 * std::pow(0.14, 3)) / 12, i22 = (0.2 * 0.027 - 0.14 * std::pow(0.26, 3)) / 12;
+  const double am = 0.28 * 0.17, J = 4 * am * am / (2 * 0.28 / 0.03 + 2 * 0.17 / 0.02);
+  const std::size_t tip = row_of(*r, 3);
+  const double dy = kL * kL * kL / (3 * kE * i22), dz = 2 * kL * kL * kL / (3 * kE * i11), twist = 5 * kL / (kG * J);
+  EXPECT_NEAR(nodal(*r->capture.of_step(1).back(), "U", tip, 1), dy, 1e-9 * dy);
+  EXPECT_NEAR(nodal(*r->capture.of_step(2).back(), "U", tip, 2), dz, 1e-9 * dz);
+  EXPECT_NEAR(nodal(*r->capture.of_step(3).back(), "UR", tip, 0), twist, 1e-9 * twist);
+  EXPECT_NEAR(nodal(*r->capture.of_step(1).back(), "RF", row_of(*r, 1), 1), -1.0, 1e-9);
+}
+
 // NLGEOM: the cantilever rolled up by an end moment M = 2π EI22/L (beam_rollup_*_50.inp). Each
 // corotated element carries the moment as pure bending, so the nodes lie on the regular polygon
 // of chords L/50 that closes after a full turn: the tip is back at the root turned by 2π, every
