@@ -18,6 +18,19 @@ bool yes_flag(const KeywordContext& ctx, std::string_view name) {
   return p && (!p->value || normalize_name(*p->value) != "NO");
 }
 
+/// NLGEOM once on stays on in every later step (Abaqus; CalculiX too, "it remains active in all
+/// subsequent static calculations"). CalculiX's NLGEOM=NO after it turns it off; Abaqus keeps it
+/// on, and so does inpact, with a warning that names the difference.
+bool step_nlgeom(KeywordContext& ctx, const std::vector<model::Step>& earlier) {
+  const bool on_before = !earlier.empty() && earlier.back().nlgeom;
+  if (!ctx.has("NLGEOM")) return on_before;
+  const bool on = yes_flag(ctx, "NLGEOM");
+  if (on_before && !on)
+    ctx.warning(ctx.param("NLGEOM")->loc, "NLGEOM=NO after a step with NLGEOM: geometric nonlinearity stays on once "
+                                          "switched on (Abaqus); CalculiX would turn it off here");
+  return on || on_before;
+}
+
 // *STEP, NAME=, NLGEOM, INC=, UNSYMM, AMPLITUDE=, EXTRAPOLATION=, CONVERT SDI=.
 void step(KeywordContext& ctx) {
   auto& steps = ctx.model().steps;
@@ -30,7 +43,7 @@ void step(KeywordContext& ctx) {
       ctx.error_param("NAME", fmt::format("step '{}' is defined twice (first at line {})", s.name, other.loc.line));
       break;
     }
-  s.nlgeom = yes_flag(ctx, "NLGEOM");
+  s.nlgeom = step_nlgeom(ctx, steps);
   s.unsymm = yes_flag(ctx, "UNSYMM");
   if (auto inc = ctx.int_value("INC")) {
     if (*inc < 1) ctx.error_param("INC", fmt::format("INC must be at least 1, found {}", *inc));

@@ -13,7 +13,7 @@ void refuse_finite_rotations(const model::Model& m, const model::ElementTypeInfo
   for (const model::Step& step : m.steps)
     if (step.nlgeom)
       throw AnalysisError(fmt::format("{}: error: {}: {} element {} under NLGEOM (step '{}') is not supported yet; "
-                                      "finite rotations take B31, B33, S3, S3R, S4 and S4R",
+                                      "finite rotations take B31, B32, B32R, B33, S3, S3R, S4 and S4R",
                                       m.sources.describe(section_loc), keyword, type.name, label, step.name));
 }
 

@@ -48,10 +48,11 @@ def rollup(etype, n):
     lines = [f"*HEADING\nRoll-up of a cantilever of {n} {etype} beams, L = 10, RECT 0.3 x 0.2, n1 = y: an end moment "
              f"2 pi EI/L about z\n** bends it into a full circle of radius L/(2 pi) (tests/verification/test_beams.cpp).",
              "*NODE, NSET=ALL"]
-    lines += [f"{i + 1}, {10.0 * i / n:.15g}, 0., 0." for i in range(n + 1)]
+    per = 2 if etype == "B32" else 1  # node steps per element
+    lines += [f"{i + 1}, {10.0 * i / (n * per):.15g}, 0., 0." for i in range(n * per + 1)]
     lines.append(f"*ELEMENT, TYPE={etype}, ELSET=BEAM")
-    lines += [f"{e + 1}, {e + 1}, {e + 2}" for e in range(n)]
-    lines += [f"*NSET, NSET=TIP\n{n + 1}", "*NSET, NSET=ROOT\n1", "*MATERIAL, NAME=STEEL", "*ELASTIC", "200000., 0.3",
+    lines += [", ".join(str(k) for k in [e + 1] + list(range(per * e + 1, per * e + per + 2))) for e in range(n)]
+    lines += [f"*NSET, NSET=TIP\n{n * per + 1}", "*NSET, NSET=ROOT\n1", "*MATERIAL, NAME=STEEL", "*ELASTIC", "200000., 0.3",
               "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT", "0.3, 0.2", "0., 1., 0.",
               "*BOUNDARY", "ROOT, ENCASTRE", "ALL, 3, 5", "*STEP, NLGEOM, INC=100", "*STATIC", "0.1, 1.",
               "*CLOAD", f"TIP, 6, {moment:.15g}", "*NODE PRINT, NSET=TIP", "U, UR", "*NODE PRINT, NSET=ROOT", "RF, RM",
@@ -81,8 +82,8 @@ def bend45(n):
 for etype, n in (("B31", 10), ("B31", 40), ("B32", 5), ("B33", 2)):
     with open(f"beam_cantilever_{etype.lower()}_{n}.inp", "w") as f:
         f.write(deck(etype, n))
-for etype in ("B31", "B33"):
-    with open(f"beam_rollup_{etype.lower()}_50.inp", "w") as f:
-        f.write(rollup(etype, 50))
+for etype, n in (("B31", 50), ("B33", 50), ("B32", 50)):
+    with open(f"beam_rollup_{etype.lower()}_{n}.inp", "w") as f:
+        f.write(rollup(etype, n))
 with open("beam_bend45_b31_8.inp", "w") as f:
     f.write(bend45(8))

@@ -198,12 +198,11 @@ void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     compute_beam_small(type, coords, u, section, request, out);
     return;
   }
-  if (type.n_nodes != 2 || coords.size() != 2)
-    throw std::invalid_argument("compute_beam: finite rotations take two-node beams (B31, B33)");
   std::array<Vec3, 3> axes;
-  const Vec3 chord{coords[1][0] - coords[0][0], coords[1][1] - coords[0][1], coords[1][2] - coords[0][2]};
+  const Vec3& last = coords.back();
+  const Vec3 chord{last[0] - coords[0][0], last[1] - coords[0][1], last[2] - coords[0][2]};
   if (!beam_axes(chord, section.n1, axes)) {
-    begin_element_system(out, 12, request);
+    begin_element_system(out, 6 * type.n_nodes, request);
     out.min_jacobian = 0.0;
     return;
   }

@@ -107,11 +107,12 @@ bool element_frame(CorotationalFrame kind, const std::vector<V3<S>>& x, const st
                    std::array<V3<S>, 3>& frame) {
   V3<S> e1, normal;
   if (kind == CorotationalFrame::Beam) {
-    e1 = normalized(V3<S>{x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]});
-    V3<S> q;  // (R_1 + R_2) n1⁰
+    const std::size_t end = x.size() - 1;  // the end nodes: first and last (B32: end, middle, end)
+    e1 = normalized(V3<S>{x[end][0] - x[0][0], x[end][1] - x[0][1], x[end][2] - x[0][2]});
+    V3<S> q;  // (R_1 + R_2) n1⁰ of the end nodes
     for (int i = 0; i < 3; ++i)
-      q[i] = (rot[0][i][0] + rot[1][i][0]) * n1[0] + (rot[0][i][1] + rot[1][i][1]) * n1[1] +
-             (rot[0][i][2] + rot[1][i][2]) * n1[2];
+      q[i] = (rot[0][i][0] + rot[end][i][0]) * n1[0] + (rot[0][i][1] + rot[end][i][1]) * n1[1] +
+             (rot[0][i][2] + rot[end][i][2]) * n1[2];
     normal = cross(e1, q);
   } else {
     V3<S> g1, g2;
@@ -266,7 +267,7 @@ bool corotated_system(CorotationalFrame kind, std::span<const Vec3> coords, cons
 }  // namespace
 
 bool takes_finite_rotations(const model::ElementTypeInfo& type) {
-  if (model::is_beam(type)) return type.n_nodes == 2;
+  if (model::is_beam(type)) return type.n_nodes == 2 || type.n_nodes == 3;
   return model::is_shell(type) && (type.n_nodes == 3 || type.n_nodes == 4);
 }
 
@@ -284,7 +285,7 @@ void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords,
   const int n_dof = static_cast<int>(q.size());
   if (n_dof != 6 * static_cast<int>(coords.size())) throw std::invalid_argument("compute_corotational: size mismatch");
   if (n_dof != 12 && n_dof != 18 && n_dof != 24)
-    throw std::invalid_argument("compute_corotational: two-node beams and three- or four-node shells only");
+    throw std::invalid_argument("compute_corotational: beams and three- or four-node shells only");
   begin_element_system(out, n_dof, request);
   out.min_jacobian = 0.0;
   Reference ref;

@@ -11,8 +11,9 @@
 /// singular only where |ψ| reaches 2π about an axis that is free to tilt.
 ///
 /// The frame R_r = [e1 e2 e3] of the current configuration (E0 of the reference one):
-///  - beams (two nodes): e1 along the chord, e3 = e1 × q / |e1 × q| with q = ½(R_1 + R_2) n1⁰, the
-///    section's reference n1 turned by the mean nodal rotation (Crisfield), e2 = e3 × e1;
+///  - beams: e1 along the chord of the end nodes, e3 = e1 × q / |e1 × q| with q = ½(R_1 + R_2) n1⁰,
+///    the section's reference n1 turned by the end nodes' mean rotation (Crisfield), e2 = e3 × e1
+///    (a B32's middle node moves and turns against this frame like any other);
 ///  - shells: e3 along g1 × g2 with g1, g2 the corner nodes' mean edge vectors (the diagonals'
 ///    cross product for a quadrilateral), e1 the projection of g1, e2 = e3 × e1.
 /// With A = E0 R_rᵀ (the rotation that takes the frame back to its reference orientation) the
@@ -40,7 +41,7 @@ enum class CorotationalFrame { Beam, Shell };
 using SmallStrainKernel =
     std::function<void(std::span<const double> d, const ElementRequest& request, ElementSystem& out)>;
 
-/// Stiffness, internal force and point output of a beam (2 nodes) or a shell (3, 4 or 8 nodes)
+/// Stiffness, internal force and point output of a beam (2 or 3 nodes) or a shell (3 or 4 nodes)
 /// with finite rotations. `q` holds the element's unknowns as above; `beam_n1` is a beam's
 /// reference n1 axis (unused for shells). An element without a frame (collapsed, or a beam whose
 /// end sections are twisted half round against each other) or with a node turned by π or more
@@ -50,7 +51,7 @@ void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords,
                           const Vec3& beam_n1, const SmallStrainKernel& kernel, const ElementRequest& request,
                           ElementSystem& out);
 
-/// Whether the element type turns with finite rotations here: the two-node beams (B31, B33) and
+/// Whether the element type turns with finite rotations here: the beams (B31, B32, B32R, B33) and
 /// the three- and four-node shells (S3, S3R, S4, S4R). The one rule the set-up and the kernels use.
 bool takes_finite_rotations(const model::ElementTypeInfo& type);
 

@@ -102,7 +102,7 @@ TEST(ResultsWriter, StepsHoldFramesAndExactFieldValues) {
   EXPECT_EQ(f.attr_string("/steps/Load", "procedure"), "STATIC");
   EXPECT_EQ(f.attr_int("/steps/Load", "nlgeom"), 1);
   EXPECT_EQ(f.attr_double("/steps/Load", "time_period"), 1.0);
-  EXPECT_EQ(f.attr_int("/steps/Unload", "nlgeom"), 0);
+  EXPECT_EQ(f.attr_int("/steps/Unload", "nlgeom"), 1);  // carried on from Load (Abaqus)
   EXPECT_EQ(f.attr_double("/steps/Unload", "time_period"), 2.0);
   EXPECT_EQ(f.attr_int("/steps/Unload", "number"), 2);
 

@@ -50,10 +50,23 @@ TEST(Step, ParametersTitleAndStaticDataLine) {
   EXPECT_DOUBLE_EQ(*a.static_procedure->max_increment, 2.0);
   const auto& b = r.model.steps[1];
   EXPECT_EQ(b.name, "Step-2");  // Abaqus numbers unnamed steps by position
-  EXPECT_FALSE(b.nlgeom);
+  EXPECT_TRUE(b.nlgeom);        // once on, NLGEOM stays on (Abaqus); NLGEOM=NO is a warning
+  EXPECT_TRUE(has_diagnostic(r, "NLGEOM=NO after a step with NLGEOM"));
   EXPECT_EQ(b.extrapolation, model::Step::Extrapolation::None);
   EXPECT_TRUE(b.static_procedure->direct);
   EXPECT_DOUBLE_EQ(b.static_procedure->initial_increment, 0.25);
+}
+
+// NLGEOM carries into the steps after the one that switches it on (Abaqus and CalculiX alike).
+TEST(Step, NlgeomStaysOnInLaterSteps) {
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck("*STEP\n*STATIC\n*END STEP\n*STEP, NLGEOM\n*STATIC\n*END STEP\n"
+                                  "*STEP\n*STATIC\n*END STEP\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  ASSERT_EQ(r.model.steps.size(), 3u);
+  EXPECT_FALSE(r.model.steps[0].nlgeom);
+  EXPECT_TRUE(r.model.steps[1].nlgeom);
+  EXPECT_TRUE(r.model.steps[2].nlgeom);
 }
 
 TEST(Step, StaticWithMinimumLargerThanInitialIsAnError) {

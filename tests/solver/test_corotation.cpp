@@ -52,6 +52,7 @@ const std::vector<Element>& elements() {
   static const std::vector<Element> all{
       {"B31", {{0, 0, 0}, {1.0, 0.2, -0.1}}},
       {"B33", {{0, 0, 0}, {1.0, 0.2, -0.1}}},
+      {"B32", {{0, 0, 0}, {0.52, 0.08, -0.04}, {1.0, 0.2, -0.1}}},
       {"S3", {{0, 0, 0}, {2, 0, 0.1}, {0.3, 1.5, 0}}},
       {"S4", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0}}},
       {"S4R", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0}}},
@@ -154,7 +155,7 @@ TEST(Corotation, TheTangentIsTheDerivativeOfTheInternalForce) {
 // tangent is the derivative of the internal force (its consistent tangent through the frame),
 // 1e-5 of the largest term (the yield surface's kink is farther than the step).
 TEST(Corotation, APlasticShellsTangentIsTheDerivativeOfItsForce) {
-  const Element& el = elements()[3];  // S4
+  const Element& el = elements()[4];  // S4
   ElasticConstants c;
   c.youngs_modulus = 2e5;
   c.poissons_ratio = 0.3;
@@ -212,7 +213,7 @@ TEST(Corotation, SmallRotationsGiveTheLinearElement) {
 // A node turned half round against its element has no unique relative rotation: the element
 // says so as an element turned inside out does, and the increment is cut back. Nothing is NaN.
 TEST(Corotation, ANodeTurnedHalfRoundAgainstItsElementIsReported) {
-  const Element& el = elements()[3];  // S4
+  const Element& el = elements()[4];  // S4
   std::vector<double> q(24, 0.0);
   q[12] = M_PI;  // node 1 turned by π about x
   EXPECT_EQ(evaluate(el, q, true).min_volume_ratio, 0.0);
@@ -226,11 +227,11 @@ TEST(Corotation, ANodeTurnedHalfRoundAgainstItsElementIsReported) {
   EXPECT_EQ(evaluate(b31, twist, true).min_volume_ratio, 0.0);
 }
 
-// Only two-node beams and three- or four-node shells turn with finite rotations.
+// Beams and three- or four-node shells turn with finite rotations.
 TEST(Corotation, TheTypesThatTakeFiniteRotations) {
-  for (const char* yes : {"B31", "B33", "S3", "S3R", "S4", "S4R"})
+  for (const char* yes : {"B31", "B32", "B32R", "B33", "S3", "S3R", "S4", "S4R"})
     EXPECT_TRUE(takes_finite_rotations(*model::find_element_type(yes))) << yes;
-  for (const char* no : {"B32", "B32R", "S8R", "S8", "C3D8", "T3D2"})
+  for (const char* no : {"S8R", "S8", "C3D8", "T3D2"})
     EXPECT_FALSE(takes_finite_rotations(*model::find_element_type(no))) << no;
 }
 

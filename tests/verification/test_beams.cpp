@@ -255,6 +255,28 @@ TEST(Beams, AnEndMomentRollsTheCantileverIntoACircle) {
   }
 }
 
+// The same roll-up with 50 B32 (beam_rollup_b32_50.inp): small strain in the corotated frame
+// keeps each element's end-to-end chord at L/50, so its end nodes lie on the polygon's circle of
+// the two-node beams, and its middle node bows off the chord by the sagitta onto the same circle
+// (to the order of α³). Measured: the 101 nodes within 4.6e-6 r of it; tip back at the root.
+TEST(Beams, AnEndMomentRollsAQuadraticBeamIntoTheCircle) {
+  const auto r = run_deck(deck_path("beam_rollup_b32_50.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const solver::Frame& f = r->capture.last();
+  const double alpha = 2 * M_PI / 50, polygon = (kL / 50) / (2 * std::sin(alpha / 2));
+  double off_circle = 0.0;
+  for (std::int64_t label = 1; label <= 101; ++label) {
+    const std::size_t row = row_of(*r, label);
+    const double x = coords(r->model(), static_cast<std::int32_t>(row))[0] + nodal(f, "U", row, 0);
+    off_circle = std::max(off_circle, std::abs(std::hypot(x, nodal(f, "U", row, 1) - polygon) - polygon));
+  }
+  EXPECT_LT(off_circle, 1e-4 * polygon);
+  const std::size_t tip = row_of(*r, 101);
+  EXPECT_NEAR(nodal(f, "U", tip, 0), -kL, 1e-5 * kL);
+  EXPECT_NEAR(nodal(f, "UR", tip, 2), 2 * M_PI, 1e-5);
+  report("beam_rollup_b32_50.inp: nodes off their circle / r", off_circle / polygon);
+}
+
 // Bathe and Bolourchi's 45° bend under a tip force of 600 out of its plane (beam_bend45_b31_8.inp),
 // eight B31 in three dimensions, no constraint but the built-in end. Simo and Vu-Quoc (1986,
 // eight elements) give the tip at (47.23, 15.79, 53.37); published answers differ by up to 0.35 in
