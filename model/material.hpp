@@ -109,6 +109,12 @@ struct Plastic {
   std::vector<Point> table;  ///< every row, in blocks of equal temperature
   std::vector<Backstress> backstresses;
   SourceLoc loc;
+  /// Whether the rows hold several temperatures.
+  bool several_temperatures() const {
+    for (const Point& row : table)
+      if (row.temperature != table.front().temperature) return true;
+    return false;
+  }
 };
 
 /// *CYCLIC HARDENING: the size σ⁰(ε̄ᵖ) of the yield surface of combined hardening, as a table

@@ -171,4 +171,12 @@ struct Step {
   SourceLoc loc;
 };
 
+/// The first step with NLGEOM (it stays on in every later one), or null: the one test of
+/// whether an analysis is geometrically nonlinear anywhere.
+inline const Step* first_nlgeom_step(const std::vector<Step>& steps) {
+  for (const Step& s : steps)
+    if (s.nlgeom) return &s;
+  return nullptr;
+}
+
 }  // namespace inpact::model

@@ -64,12 +64,6 @@ std::shared_ptr<elements::Material> combined_law(const model::Model& m, const mo
   return std::make_shared<elements::CombinedPlasticity>(c, std::move(data.sets), std::move(data.temperatures));
 }
 
-/// Whether *PLASTIC's rows hold several temperatures.
-bool several_temperatures(const model::Plastic& p) {
-  return std::any_of(p.table.begin(), p.table.end(),
-                     [&](const model::Plastic::Point& row) { return row.temperature != p.table.front().temperature; });
-}
-
 /// The Mises material of *PLASTIC. Small strain: MisesPlasticity (isotropic or linear
 /// kinematic, with its own plane stress iteration) or CombinedPlasticity. When a step has
 /// NLGEOM: isotropic hardening in the exponential-map law (finite_strain_mises.hpp); kinematic
@@ -84,13 +78,13 @@ std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const mod
     throw AnalysisError(fmt::format("{}: error: *CYCLIC HARDENING: it needs *PLASTIC, HARDENING=COMBINED (material '{}')",
                                     m.sources.describe(mat.cyclic_hardening->loc), mat.name));
   const bool combined = p.hardening == model::Plastic::Hardening::Combined ||
-                        (p.hardening == model::Plastic::Hardening::Kinematic && several_temperatures(p));
+                        (p.hardening == model::Plastic::Hardening::Kinematic && p.several_temperatures());
   elements::MisesHardening h;
   if (!combined) {
     h = elements::isotropic_hardening(p.table);
     h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
   }
-  const bool nlgeom = std::any_of(m.steps.begin(), m.steps.end(), [](const model::Step& s) { return s.nlgeom; });
+  const bool nlgeom = model::first_nlgeom_step(m.steps) != nullptr;
   std::shared_ptr<elements::Material> law;
   if (!nlgeom && !combined) return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
   if (!nlgeom) law = combined_law(m, mat, c, warnings);
@@ -167,6 +161,10 @@ void check_initial_plastic_strains(const model::Model& m, const AnalysisModel& a
       if (probe.empty() || !s.material->set_plastic_strain(probe, elements::Vec6::Zero()))
         throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: TYPE=PLASTIC STRAIN on element {}, whose "
                                         "material has no *PLASTIC", where(), m.mesh.elements.labels[e]));
+      if (model::is_shell(*s.type))
+        throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: TYPE=PLASTIC STRAIN on shell element {} is "
+                                        "not supported yet (its section points are not read)", where(),
+                                        m.mesh.elements.labels[e]));
       const std::size_t points = elements::material_points(*s.type, s.section);
       if (static_cast<std::size_t>(ic.point) > points)
         throw AnalysisError(fmt::format("{}: error: *INITIAL CONDITIONS: element {} ({}) has {} integration points, "

@@ -27,8 +27,12 @@ PerField average_force(const AssemblyResult& assembly, const DofMap& dofs, std::
 
 PerField coupled_fields(const PerField& q, double length) {
   if (!(length > 0.0)) return q;
-  return {std::max(q[kDisplacementField], q[kRotationField] / length),
-          std::max(q[kRotationField], q[kDisplacementField] * length)};
+  constexpr double kZeroFlux = 1e-5;
+  const double as_force = q[kRotationField] / length, as_moment = q[kDisplacementField] * length;
+  PerField coupled = q;
+  if (q[kDisplacementField] < kZeroFlux * as_force) coupled[kDisplacementField] = as_force;
+  if (q[kRotationField] < kZeroFlux * as_moment) coupled[kRotationField] = as_moment;
+  return coupled;
 }
 
 FieldMaxima largest_residual(const DofMap& dofs, std::span<const double> r) {

@@ -12,6 +12,7 @@
 ///                compatibility tolerance).
 /// The residual and correction tests need a correction, so they pass only from iteration 1 on.
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -65,9 +66,12 @@ class IncrementForce {
  public:
   /// The increment's q after an iteration with these q's (without and with contact forces).
   PerField update(const PerField& q_without_contact, const PerField& q_with_contact) {
-    if (!first_) first_ = q_without_contact;
+    // A NaN q (a point that gave up) is caught with the residual; it must not stick in first_.
+    const auto finite = [](const PerField& v) { return std::isfinite(v[0]) && std::isfinite(v[1]); };
+    if (!first_ && finite(q_without_contact)) first_ = q_without_contact;
+    const PerField first = first_.value_or(PerField{});
     PerField q;
-    for (std::size_t f = 0; f < kFields; ++f) q[f] = std::max({(*first_)[f], q_without_contact[f], q_with_contact[f]});
+    for (std::size_t f = 0; f < kFields; ++f) q[f] = std::max({first[f], q_without_contact[f], q_with_contact[f]});
     return q;
   }
 
@@ -84,11 +88,12 @@ class IncrementForce {
 PerField average_force(const AssemblyResult& assembly, const DofMap& dofs, std::span<const double> f_ext,
                        double contact_sum, std::size_t contact_count);
 
-/// q̃ per field, each at least the other's converted by the model's length scale L (the diagonal
-/// of its nodes' bounding box): a moment M on a body of size L is held by forces of the order
-/// M/L. A field whose own flux vanishes (the translations of a strip rolled up by end moments
-/// alone, the rotations of a beam pulled along its axis) is then measured against the other's
-/// flux rather than against its own round-off. Without rotations q̃ is the forces' alone.
+/// q̃ per field; a field whose own flux vanishes against the other's converted by the model's
+/// length scale L (the diagonal of its nodes' bounding box; a moment M on a body of size L is
+/// held by forces of the order M/L), below 1e-5 of it as Abaqus's zero-flux ratio ε^α, takes that
+/// converted flux instead: the translations of a strip rolled up by end moments alone, the
+/// rotations of a beam pulled along its axis, are then measured against the other field's flux
+/// rather than against their own round-off. Without rotations q̃ is the forces' alone.
 PerField coupled_fields(const PerField& q, double length);
 
 /// Per field, the largest magnitude over the free DOFs' equations, and the DOF it sits on.

@@ -356,9 +356,8 @@ namespace {
 
 /// Per DOF, whether it is in the rotation field (DofMap::field); empty without beams and shells.
 std::vector<std::uint8_t> rotation_field(const AnalysisModel& am) {
-  const bool structural = std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) {
-    return model::is_beam(*s.type) || model::is_shell(*s.type);
-  });
+  const bool structural = std::any_of(am.elements.begin(), am.elements.end(),
+                                      [](const ElementSetup& s) { return model::has_rotations(*s.type); });
   if (!structural) return {};
   std::vector<std::uint8_t> rotation(am.n_dof(), 0);
   for (std::int32_t rot : am.rotation_node_of)

@@ -90,7 +90,8 @@ void setup_beams(const model::Model& m, AnalysisModel& am) {
         am.beams.emplace_back(std::make_shared<elements::BeamProperties>(beam_section_properties(m, sec))).get();
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[static_cast<std::size_t>(row)];
-      refuse_finite_rotations(m, *s.type, "*BEAM SECTION", sec.loc, m.mesh.elements.labels[static_cast<std::size_t>(row)]);
+      if (!s.rigid)
+        refuse_finite_rotations(m, *s.type, "*BEAM SECTION", sec.loc, m.mesh.elements.labels[static_cast<std::size_t>(row)]);
       s.section.beam = p;
       s.density = sec.material.empty() ? 0.0 : m.materials.at(sec.material).density.value_or(0.0);
       std::array<elements::Vec3, 3> axes;

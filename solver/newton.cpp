@@ -65,7 +65,7 @@ class NewtonIterations {
   std::vector<double> r_full_, r_, du_;
   std::vector<Field> equation_field_;  ///< per equation of the DOF map, the field of its free DOF
   std::vector<double> f_int_elements_;  ///< f_int before the contact forces are added (for q)
-  std::vector<double> history_;         ///< largest residual per iteration without a status change
+  std::vector<PerField> history_;       ///< per field, the largest residual of each iteration without a status change
   CorrectionSolver solver_;
   IncrementForce increment_force_;
   bool status_changed_at_start_ = false;
@@ -203,7 +203,9 @@ bool NewtonIterations::failed(int k, const Residual& res, const ContactIteration
     out_.failure = inverted;
     return true;
   }
-  if (!std::isfinite(res.max)) {
+  const auto finite = [](double v) { return std::isfinite(v); };
+  if (!std::all_of(res.largest.value.begin(), res.largest.value.end(), finite) ||
+      !std::all_of(res.q.begin(), res.q.end(), finite)) {
     out_.failure = "the residual is not a number (NaN or infinite)";
     return true;
   }
@@ -234,19 +236,23 @@ std::string NewtonIterations::turned_inside_out(const AssemblyResult& assembly, 
                      label(assembly.volume_ratio.element), assembly.volume_ratio.value);
 }
 
-/// Too many iterations, or a residual that grows twice in a row.
+/// Too many iterations, or a residual that grows twice in a row (in either field: a force and a
+/// moment are not compared).
 bool NewtonIterations::gives_up(int k, const Residual& res, const ContactIteration& contact) {
   // Severe discontinuity iterations count apart (Abaqus: I_S = 50 of them, I_C equilibrium
   // ones) and stay out of the divergence check.
-  if (contact.status_changes == 0) history_.push_back(res.max);
+  if (contact.status_changes == 0) history_.push_back(res.largest.value);
   if (k - out_.severe_iterations >= ctx_.controls.max_iterations || out_.severe_iterations > kMaxSevereIterations) {
     out_.failure = fmt::format("no convergence in {} iterations ({} with contact status changes)", k,
                                out_.severe_iterations);
     return true;
   }
   const std::size_t h = history_.size();
-  if (k >= ctx_.controls.divergence_check_after && h >= 3 && history_[h - 1] > history_[h - 2] &&
-      history_[h - 2] > history_[h - 3]) {
+  const auto grows_twice = [&](std::size_t f) {
+    return history_[h - 1][f] > history_[h - 2][f] && history_[h - 2][f] > history_[h - 3][f];
+  };
+  if (k >= ctx_.controls.divergence_check_after && h >= 3 &&
+      (grows_twice(kDisplacementField) || grows_twice(kRotationField))) {
     out_.failure = "the residual grows in two consecutive iterations (diverging)";
     return true;
   }

@@ -45,18 +45,18 @@ std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& 
   const model::Material& mat = m.materials.at(sec.material);
   if (!mat.plastic) return nullptr;
   const model::Plastic& p = *mat.plastic;
-  const bool one_temperature = std::all_of(p.table.begin(), p.table.end(), [&](const model::Plastic::Point& row) {
-    return row.temperature == p.table.front().temperature;
-  });
-  if (p.hardening == model::Plastic::Hardening::Combined || mat.cyclic_hardening || !one_temperature)
+  if (sec.general)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a general shell section is "
+                                    "integrated once, elastically (use *SHELL SECTION for a plastic shell)",
+                                    m.sources.describe(sec.loc), keyword_of(sec), mat.name));
+  if (p.hardening == model::Plastic::Hardening::Combined || mat.cyclic_hardening || p.several_temperatures())
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC with combined hardening or several "
                                     "temperatures; shells take isotropic or kinematic hardening at one temperature so "
                                     "far", m.sources.describe(sec.loc), keyword_of(sec), mat.name));
-  for (const model::Step& step : m.steps)
-    if (step.nlgeom)
-      throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; plastic shells under NLGEOM (step "
-                                      "'{}') are not supported yet (without NLGEOM they are)",
-                                      m.sources.describe(sec.loc), keyword_of(sec), mat.name, step.name));
+  if (const model::Step* step = model::first_nlgeom_step(m.steps))
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; plastic shells under NLGEOM (step "
+                                    "'{}') are not supported yet (without NLGEOM they are)",
+                                    m.sources.describe(sec.loc), keyword_of(sec), mat.name, step->name));
   elements::ElasticConstants c;
   c.youngs_modulus = mat.elastic->youngs_modulus;
   c.poissons_ratio = mat.elastic->poissons_ratio;
@@ -77,7 +77,7 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];
-      refuse_finite_rotations(m, *s.type, keyword_of(sec), sec.loc, m.mesh.elements.labels[e]);
+      if (!s.rigid) refuse_finite_rotations(m, *s.type, keyword_of(sec), sec.loc, m.mesh.elements.labels[e]);
       s.section.shell = p;
       if (plastic) s.material = plastic.get();
       s.section.thickness = model::shell_thickness(m.mesh, sec, e);

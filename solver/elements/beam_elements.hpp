@@ -1,7 +1,8 @@
 #pragma once
 /// The kernels of the beams in space, shear-flexible B31 and B32 (B32R) and Euler–Bernoulli B33
-/// (beam_elements.cpp, compute_euler_bernoulli): small strain and small rotations, linear elastic
-/// sections (beam_section.hpp). What follows is the shear-flexible kinematics.
+/// (beam_elements.cpp, compute_euler_bernoulli): small strain, linear elastic sections
+/// (beam_section.hpp); small rotations, or finite ones under NLGEOM through corotation.hpp. What
+/// follows is the shear-flexible kinematics.
 ///
 /// Unknowns: at each node its displacement u and its rotation vector θ. The element's DOFs are
 /// the translations of its nodes (end, [middle,] end), then the rotations of the same nodes in
@@ -31,7 +32,8 @@ namespace inpact::solver::elements {
 /// approximate n1: {t, n1, n2}; false when ñ1 is (nearly) parallel to t (no plane to bend in).
 bool beam_axes(const Vec3& tangent, const Vec3& approximate_n1, std::array<Vec3, 3>& axes);
 
-/// Stiffness, internal force (K u: the element is linear) and point output of a B31, B32 or B33.
+/// Stiffness, internal force (K u at small rotations; corotated under request.nlgeom) and point
+/// output of a B31, B32 or B33.
 /// `u` holds 6 values per node in the order above; coords the reference nodes.
 void compute_beam(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                   const BeamProperties& section, const ElementRequest& request, ElementSystem& out);

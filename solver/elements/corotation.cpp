@@ -55,7 +55,6 @@ M3<S> times(const M3<S>& a, const M3<S>& b) {
 /// series near φ = 0, where the derivatives of φ itself do not exist.
 template <class S>
 M3<S> exp_rotation(const V3<S>& psi) {
-  using std::cos;
   using std::sin;
   using std::sqrt;
   const S phi2 = dot(psi, psi);
@@ -64,9 +63,10 @@ M3<S> exp_rotation(const V3<S>& psi) {
     a = 1.0 - phi2 / 6.0 + phi2 * phi2 / 120.0;
     b = 0.5 - phi2 / 24.0 + phi2 * phi2 / 720.0;
   } else {
-    const S phi = sqrt(phi2);
+    const S phi = sqrt(phi2), half = 0.5 * phi;
+    const S sinc_half = sin(half) / half;  // (1 − cos φ)/φ² = ½ (sin(φ/2)/(φ/2))², free of cancellation
     a = sin(phi) / phi;
-    b = (1.0 - cos(phi)) / phi2;
+    b = 0.5 * sinc_half * sinc_half;
   }
   const M3<S> k{V3<S>{0.0 * psi[0], -psi[2], psi[1]}, V3<S>{psi[2], 0.0 * psi[0], -psi[0]},
                 V3<S>{-psi[1], psi[0], 0.0 * psi[0]}};
@@ -114,6 +114,7 @@ bool element_frame(CorotationalFrame kind, const std::vector<V3<S>>& x, const st
       q[i] = (rot[0][i][0] + rot[end][i][0]) * n1[0] + (rot[0][i][1] + rot[end][i][1]) * n1[1] +
              (rot[0][i][2] + rot[end][i][2]) * n1[2];
     normal = cross(e1, q);
+    if (!(value_of(dot(normal, normal)) > 1e-12)) return false;  // e1 unit, |q| ≤ 2
   } else {
     V3<S> g1, g2;
     if (x.size() == 3) {
@@ -124,8 +125,9 @@ bool element_frame(CorotationalFrame kind, const std::vector<V3<S>>& x, const st
     }
     normal = cross(g1, g2);
     e1 = g1;
+    if (!(value_of(dot(normal, normal)) > 1e-12 * value_of(dot(g1, g1)) * value_of(dot(g2, g2)))) return false;
   }
-  if (!(value_of(dot(normal, normal)) > 1e-12 * value_of(dot(e1, e1)))) return false;
+  if (!(value_of(dot(normal, normal)) > 0.0)) return false;
   const V3<S> e3 = normalized(normal);
   const S along = dot(e1, e3);
   e1 = normalized(V3<S>{e1[0] - along * e3[0], e1[1] - along * e3[1], e1[2] - along * e3[2]});

@@ -114,11 +114,15 @@ TEST(Convergence, TimeAveragedForceCountsTheCurrentIncrementOnce) {
   EXPECT_DOUBLE_EQ(q.with({6.0, 5.0})[kRotationField], (1.0 + 3.0 + 5.0) / 3);
 }
 
-TEST(Convergence, IncrementForceKeepsTheLargestElementForceButContactOnlyWhenPresent) {
+TEST(Convergence, IncrementForceKeepsTheFirstIterationsForceAndContactOnlyWhenPresent) {
   IncrementForce f;
   EXPECT_DOUBLE_EQ(f.update({10.0, 0}, {1000.0, 0})[0], 1000.0);  // a first-iteration contact spike counts now
-  EXPECT_DOUBLE_EQ(f.update({1.0, 0}, {1.0, 0})[0], 10.0);        // later the largest element-and-load q
-  EXPECT_DOUBLE_EQ(f.update({12.0, 0}, {12.5, 0})[0], 12.5);
+  EXPECT_DOUBLE_EQ(f.update({1.0, 0}, {1.0, 0})[0], 10.0);        // later the first iteration's q at least
+  EXPECT_DOUBLE_EQ(f.update({400.0, 0}, {400.0, 0})[0], 400.0);   // a spike counts while it lasts ...
+  EXPECT_DOUBLE_EQ(f.update({12.0, 0}, {12.5, 0})[0], 12.5);      // ... and not after it
+  IncrementForce nan_first;
+  EXPECT_DOUBLE_EQ(nan_first.update({NAN, 0}, {NAN, 0})[1], 0.0);  // a NaN start is not kept
+  EXPECT_DOUBLE_EQ(nan_first.update({3.0, 1.0}, {3.0, 1.0})[0], 3.0);
 }
 
 TEST(Convergence, AverageForceOverElementLoadAndContactEntries) {
