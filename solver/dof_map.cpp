@@ -292,6 +292,18 @@ void add_transform_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>
   }
 }
 
+/// Per DOF, whether it is in the rotation field (DofMap::field); empty without beams and shells.
+std::vector<std::uint8_t> rotation_field(const AnalysisModel& am) {
+  const bool structural = std::any_of(am.elements.begin(), am.elements.end(),
+                                      [](const ElementSetup& s) { return model::has_rotations(*s.type); });
+  if (!structural) return {};
+  std::vector<std::uint8_t> rotation(am.n_dof(), 0);
+  for (std::int32_t rot : am.rotation_node_of)
+    if (rot >= 0)
+      for (int c = 0; c < am.dim; ++c) rotation[static_cast<std::size_t>(rot) * am.dim + c] = 1;
+  return rotation;
+}
+
 }  // namespace
 
 DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector<double>* u) {
@@ -351,22 +363,6 @@ void DofMap::lay_out(const Dependents& dependent) {
     master_ptr_[d + 1] = static_cast<std::int64_t>(master_.size());
   }
 }
-
-namespace {
-
-/// Per DOF, whether it is in the rotation field (DofMap::field); empty without beams and shells.
-std::vector<std::uint8_t> rotation_field(const AnalysisModel& am) {
-  const bool structural = std::any_of(am.elements.begin(), am.elements.end(),
-                                      [](const ElementSetup& s) { return model::has_rotations(*s.type); });
-  if (!structural) return {};
-  std::vector<std::uint8_t> rotation(am.n_dof(), 0);
-  for (std::int32_t rot : am.rotation_node_of)
-    if (rot >= 0)
-      for (int c = 0; c < am.dim; ++c) rotation[static_cast<std::size_t>(rot) * am.dim + c] = 1;
-  return rotation;
-}
-
-}  // namespace
 
 DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed, bool finite_rotations,
                      std::span<const std::uint8_t> active) {

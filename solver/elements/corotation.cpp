@@ -127,7 +127,6 @@ bool element_frame(CorotationalFrame kind, const std::vector<V3<S>>& x, const st
     e1 = g1;
     if (!(value_of(dot(normal, normal)) > 1e-12 * value_of(dot(g1, g1)) * value_of(dot(g2, g2)))) return false;
   }
-  if (!(value_of(dot(normal, normal)) > 0.0)) return false;
   const V3<S> e3 = normalized(normal);
   const S along = dot(e1, e3);
   e1 = normalized(V3<S>{e1[0] - along * e3[0], e1[1] - along * e3[1], e1[2] - along * e3[2]});
