@@ -211,7 +211,7 @@ std::optional<std::uint8_t> pressure_face(KeywordContext& ctx, const Field& labe
   for (std::int32_t e : elements) {
     const auto& info = model::element_type(el.type[e]);
     if (model::is_shell(info)) {
-      ctx.error(label.loc, fmt::format("element {} ({}) is a shell: its pressure label is P (acting against the "
+      ctx.error(label.loc, fmt::format("element {} ({}) is a shell: its pressure label is P (acting along the "
                                        "positive normal)", el.labels[e], info.name));
       return std::nullopt;
     }
@@ -326,7 +326,9 @@ void dload(KeywordContext& ctx) {
     e.loc = line.loc;
     const bool face_label = label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '9';
     if (label == "P") {
-      // A shell's pressure pushes against its positive normal: on face SPOS (S2).
+      // A shell's positive pressure acts along its positive normal (Abaqus: "the force vector points
+      // along the element SPOS normal"; CalculiX alike): a pressure on face SNEG (S1). A *DSLOAD on
+      // an SPOS surface pushes the other way, against that surface's normal.
       const auto not_shell = std::find_if(elements->begin(), elements->end(), [&](std::int32_t r) {
         return !model::is_shell(model::element_type(ctx.mesh().elements.type[static_cast<std::size_t>(r)]));
       });
@@ -337,7 +339,7 @@ void dload(KeywordContext& ctx) {
         continue;
       }
       e.kind = model::DloadEntry::Kind::Pressure;
-      e.faces.assign(elements->size(), 1);
+      e.faces.assign(elements->size(), 0);
     } else if (face_label) {
       auto face = pressure_face(ctx, f[1], label[1] - '0', *elements);
       if (!face) continue;

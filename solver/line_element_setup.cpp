@@ -7,7 +7,6 @@
 
 #include "analysis_error.hpp"
 #include "elastic_law.hpp"
-#include "finite_rotation_setup.hpp"
 #include "elements/beam_elements.hpp"
 #include "elements/beam_section.hpp"
 #include "elements/line_elements.hpp"
@@ -90,8 +89,6 @@ void setup_beams(const model::Model& m, AnalysisModel& am) {
         am.beams.emplace_back(std::make_shared<elements::BeamProperties>(beam_section_properties(m, sec))).get();
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       ElementSetup& s = am.elements[static_cast<std::size_t>(row)];
-      if (!s.rigid)
-        refuse_finite_rotations(m, *s.type, "*BEAM SECTION", sec.loc, m.mesh.elements.labels[static_cast<std::size_t>(row)]);
       s.section.beam = p;
       s.density = sec.material.empty() ? 0.0 : m.materials.at(sec.material).density.value_or(0.0);
       std::array<elements::Vec3, 3> axes;

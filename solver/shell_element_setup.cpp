@@ -8,7 +8,6 @@
 #include "analysis_error.hpp"
 #include "model/mesh_queries.hpp"
 #include "elastic_law.hpp"
-#include "finite_rotation_setup.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/shell_section.hpp"
 
@@ -77,7 +76,6 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];
-      if (!s.rigid) refuse_finite_rotations(m, *s.type, keyword_of(sec), sec.loc, m.mesh.elements.labels[e]);
       s.section.shell = p;
       if (plastic) s.material = plastic.get();
       s.section.thickness = model::shell_thickness(m.mesh, sec, e);

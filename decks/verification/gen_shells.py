@@ -21,6 +21,8 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
   plastic        The strip (L = 10, b = 1, t = 0.1, E = 2e5, nu = 0) of an elastic-perfectly plastic
                  metal (yield 200) bent by a prescribed tip rotation: 0.3 (curvature 1.5 times the
                  first yield's), then 1.0 (5 times).
+  pressure       the cantilever strip (S8R: nodally exact) under a uniform pressure 1: *DLOAD P
+                 lifts it along the shell normal (+z), *DSLOAD on the SPOS surface pushes it down.
   rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
                  t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
                  full circle (U2, UR1, UR3 held: a planar problem).
@@ -183,6 +185,21 @@ def strip(etype, n):
         "2.e5, 0.", sets, tail
 
 
+def pressure(etype, n):
+    """The cantilever strip under a uniform pressure 1: *DLOAD P (along the shell's normal, +z
+    here), then *DSLOAD on the SPOS surface (against that surface's normal, -z)."""
+    place = lambda s, w: (10.0 * s, w - 0.5, 0.0)
+    nodes, elements = grid(etype, n, max(1, n // 10), place)
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip}
+    tail = section(0.1) + ["*SURFACE, NAME=TOP, TYPE=ELEMENT", "SHELL, SPOS", "*BOUNDARY", "ROOT, ENCASTRE",
+                           "*STEP, NAME=DLOAD", "*STATIC", "*DLOAD", "SHELL, P, 1.", "*NODE PRINT, NSET=TIP", "U",
+                           "*END STEP", "*STEP, NAME=DSLOAD", "*STATIC", "*DLOAD, OP=NEW", "*DSLOAD", "TOP, P, 1.",
+                           "*NODE PRINT, NSET=TIP", "U", "*END STEP"]
+    return "Cantilever strip L = 10, b = 1, t = 0.1, nu = 0 under a uniform pressure 1 (P, then SPOS)", nodes, \
+        elements, "2.e5, 0.", sets, tail
+
+
 def torsion(etype, n):
     """n elements along the strip, n/2 across, graded towards the free edges (their transverse
     shear boundary layer is t/sqrt(10) wide): a torque T = 1 as nodal moments on the tip."""
@@ -203,7 +220,7 @@ def rollup(etype, n):
     sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip, "ALL": lambda s, w: True}
     tail = section(0.1) + ["*BOUNDARY", "ROOT, ENCASTRE", "ALL, 2, 2", "ALL, 4, 4", "ALL, 6, 6",
                            "*STEP, NLGEOM, INC=100", "*STATIC", "0.1, 1.", "*CLOAD"] + \
-        tip_loads(nodes, on_tip, lambda s, w: w, -50 * math.pi / 3, 5) + \
+        consistent_tip_loads(etype, nodes, on_tip, lambda s, w: w, -50 * math.pi / 3, 5) + \
         ["*NODE PRINT, NSET=TIP", "U, UR", "*NODE PRINT, NSET=ROOT", "RF, RM", "*END STEP"]
     return "Strip L = 12, b = 1, t = 0.1, nu = 0 rolled up by an end moment 50 pi / 3 (a full circle)", nodes, \
         elements, "1.2e6, 0.", sets, tail
@@ -233,13 +250,13 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
     ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup",
-                                     "plastic"])
+                                     "plastic", "pressure"])
     ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
     ap.add_argument("n", type=int)
     ap.add_argument("thin", nargs="?", default="")
     a = ap.parse_args()
     make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
-            "rollup": rollup, "plastic": plastic,
+            "rollup": rollup, "plastic": plastic, "pressure": pressure,
             "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
     heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
     suffix = "_thin" if a.thin == "thin" else ""

@@ -12,15 +12,18 @@
 /// reported RM are conjugate to ψ too: the physical moment where the axis of turn stays fixed
 /// (planar turns, every verification deck), Tᵀ(ψ) of it where the axis itself turns.
 ///
-/// The second-order numbers are (N+1)² doubles each (5 KB for an S4): one element's evaluation
-/// keeps some hundred of them on its thread's stack, well inside Linux's 8 MB thread stacks.
+/// The derivatives are taken node by node (corotation.cpp): a node's deformation depends on the
+/// unknowns that turn the frame, its own, and the centroid's, 21 variables for every element size.
+/// The second-order numbers are 22² doubles each (4 KB): one node's evaluation keeps some hundred
+/// of them on its thread's stack, well inside Linux's 8 MB thread stacks.
 ///
 /// The frame R_r = [e1 e2 e3] of the current configuration (E0 of the reference one):
 ///  - beams: e1 along the chord of the end nodes, e3 = e1 × q / |e1 × q| with q = ½(R_1 + R_2) n1⁰,
 ///    the section's reference n1 turned by the end nodes' mean rotation (Crisfield), e2 = e3 × e1
 ///    (a B32's middle node moves and turns against this frame like any other);
 ///  - shells: e3 along g1 × g2 with g1, g2 the corner nodes' mean edge vectors (the diagonals'
-///    cross product for a quadrilateral), e1 the projection of g1, e2 = e3 × e1.
+///    cross product for a quadrilateral), e1 the projection of g1, e2 = e3 × e1 (an S8's midside
+///    nodes move and turn against this frame).
 /// With A = E0 R_rᵀ (the rotation that takes the frame back to its reference orientation) the
 /// deformation the kernel sees, in global components of the reference configuration, is
 ///   ū_a = A (x_a − c) − (X_a − C),   θ̄_a = log(A R_a)
@@ -46,7 +49,7 @@ enum class CorotationalFrame { Beam, Shell };
 using SmallStrainKernel =
     std::function<void(std::span<const double> d, const ElementRequest& request, ElementSystem& out)>;
 
-/// Stiffness, internal force and point output of a beam (2 or 3 nodes) or a shell (3 or 4 nodes)
+/// Stiffness, internal force and point output of a beam (2 or 3 nodes) or a shell (3, 4 or 8 nodes)
 /// with finite rotations. `q` holds the element's unknowns as above; `beam_n1` is a beam's
 /// reference n1 axis (unused for shells). An element without a frame (collapsed, or a beam whose
 /// end sections are twisted half round against each other) or with a node turned by π or more
@@ -57,7 +60,7 @@ void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords,
                           ElementSystem& out);
 
 /// Whether the element type turns with finite rotations here: the beams (B31, B32, B32R, B33) and
-/// the three- and four-node shells (S3, S3R, S4, S4R). The one rule the set-up and the kernels use.
+/// the shells (S3, S3R, S4, S4R, S8, S8R). The one rule the set-up and the kernels use.
 bool takes_finite_rotations(const model::ElementTypeInfo& type);
 
 /// exp([ψ]×) and its inverse on rotations by less than π, exposed for tests.

@@ -56,6 +56,10 @@ const std::vector<Element>& elements() {
       {"S3", {{0, 0, 0}, {2, 0, 0.1}, {0.3, 1.5, 0}}},
       {"S4", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0}}},
       {"S4R", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0}}},
+      {"S8R", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0},
+               {1, 0, 0}, {2.1, 0.75, 0.05}, {1.1, 1.45, 0.05}, {0, 0.7, 0}}},
+      {"S8", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0},
+              {1, 0, 0}, {2.1, 0.75, 0.05}, {1.1, 1.45, 0.05}, {0, 0.7, 0}}},
   };
   return all;
 }
@@ -227,11 +231,11 @@ TEST(Corotation, ANodeTurnedHalfRoundAgainstItsElementIsReported) {
   EXPECT_EQ(evaluate(b31, twist, true).min_volume_ratio, 0.0);
 }
 
-// Beams and three- or four-node shells turn with finite rotations.
+// Beams and shells turn with finite rotations; solids and trusses need none.
 TEST(Corotation, TheTypesThatTakeFiniteRotations) {
-  for (const char* yes : {"B31", "B32", "B32R", "B33", "S3", "S3R", "S4", "S4R"})
+  for (const char* yes : {"B31", "B32", "B32R", "B33", "S3", "S3R", "S4", "S4R", "S8R", "S8"})
     EXPECT_TRUE(takes_finite_rotations(*model::find_element_type(yes))) << yes;
-  for (const char* no : {"S8R", "S8", "C3D8", "T3D2"})
+  for (const char* no : {"C3D8", "T3D2"})
     EXPECT_FALSE(takes_finite_rotations(*model::find_element_type(no))) << no;
 }
 

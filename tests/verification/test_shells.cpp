@@ -125,6 +125,58 @@ TEST(Shells, AnEndMomentRollsTheStripIntoACircle) {
   }
 }
 
+// The sign of a shell pressure. Abaqus: for an element-based P on conventional shells "the force
+// vector points along the element SPOS normal", while a pressure on a surface (*DSLOAD on SPOS)
+// pushes against that surface's normal; CalculiX does the same. The S8R strip (normal +z) under
+// a uniform pressure q = 1 per unit area (q b = 1 per length): δ = qbL⁴/(8EI) + qbL²/(2κGA),
+// up with P and down with the SPOS surface's pressure, to 1e-6.
+TEST(Shells, APressureActsAlongTheNormalAndASurfacePressureAgainstIt) {
+  const double L = 10.0, E = 2e5, G = 1e5, I = 0.1 * 0.1 * 0.1 / 12, A = 0.1;
+  const double exact = L * L * L * L / (8 * E * I) + L * L / (2 * 5.0 / 6 * G * A);
+  const auto r = run_deck(shell_deck("pressure", "S8R", 5));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  for (int step : {1, 2}) {
+    const solver::Frame& f = *r->capture.of_step(step).back();
+    for (std::int32_t tip : nset(r->model(), "TIP"))
+      EXPECT_NEAR(nodal(f, "U", static_cast<std::size_t>(tip), 2), step == 1 ? exact : -exact, 1e-6 * exact) << step;
+  }
+}
+
+// The same roll-up with S8R (quadratic, the tip moment as its consistent 1/6, 2/3, 1/6 edge
+// loads): the midside nodes turn against the corner-node frame like any other node. The tip
+// comes back to the root turned by 2π. The nodes approach the exact circle r = L/2π at the rate
+// h²: the small-strain kernel sees each element's arc from its chord, and that arc's shear
+// strain tan φ − φ is third order in the element's half-angle φ (a flat S4 has none). Measured:
+// 5.2e-2 r with 8 elements (45° each), 1.3e-2 with 16, 5.7e-3 with 24.
+TEST(Shells, AnEndMomentRollsAnS8RStripTowardTheExactCircle) {
+  const double L = 12.0, moment = 50 * M_PI / 3, r = L / (2 * M_PI);
+  std::vector<double> off;
+  for (int n : {8, 16}) {
+    const auto run = run_deck(shell_deck("rollup", "S8R", n));
+    ASSERT_TRUE(run->outcome.completed) << run->outcome.message;
+    const solver::Frame& f = run->capture.last();
+    double off_circle = 0.0, tip_gap = 0.0;
+    for (std::int32_t node : nset(run->model(), "ALL")) {
+      const auto row = static_cast<std::size_t>(node);
+      const double x = coords(run->model(), node)[0] + nodal(f, "U", row, 0), z = nodal(f, "U", row, 2);
+      off_circle = std::max(off_circle, std::abs(std::hypot(x, z - r) - r));
+    }
+    for (std::int32_t node : nset(run->model(), "TIP")) {
+      const auto row = static_cast<std::size_t>(node);
+      tip_gap = std::max({tip_gap, std::abs(nodal(f, "U", row, 0) + L), std::abs(nodal(f, "U", row, 2))});
+      EXPECT_NEAR(nodal(f, "UR", row, 1), -2 * M_PI, 1e-4) << n;
+    }
+    EXPECT_LT(tip_gap, 1e-4 * L) << n;
+    double root = 0.0;
+    for (std::int32_t node : nset(run->model(), "ROOT")) root += nodal(f, "RM", static_cast<std::size_t>(node), 1);
+    EXPECT_NEAR(root, moment, 1e-4 * moment) << n;
+    off.push_back(off_circle / r);
+    report("shell roll-up S8R " + std::to_string(n) + ": nodes off the exact circle / r", off_circle / r);
+  }
+  EXPECT_LT(off[1], 1.5e-2);
+  EXPECT_NEAR(off[0] / off[1], 4.0, 0.5);  // h²
+}
+
 /// Σ RM2 over node set `set` in frame f.
 double moment_about_y(const Run& r, const solver::Frame& f, const std::string& set) {
   double sum = 0.0;
