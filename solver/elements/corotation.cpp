@@ -175,139 +175,107 @@ bool reference_of(CorotationalFrame kind, std::span<const Vec3> coords, const Ve
   return true;
 }
 
-/// One node's deformation d_a = (ū_a, θ̄_a) depends on few of the element's unknowns: those that
-/// turn the frame (12 at most: a beam's end translations and rotations, a shell's corner
-/// translations), the node's own translation and rotation, and the mean translation (the
-/// centroid). Differentiating d_a in these 21 local variables v and mapping them back through the
-/// linear map v = P q costs far less than differentiating the whole element's d in its 6n
-/// unknowns, and the second-order numbers stay small (22² doubles) for every element size.
-constexpr int kFrameVars = 12, kOwnTranslation = 12, kOwnRotation = 15, kMeanTranslation = 18, kLocal = 21;
+/// The derivatives by the chain rule through the frame. d depends on q through
+///  - A = E0 R_rᵀ, a function of the 12 frame variables f (the frame nodes' translations; a beam's
+///    end rotations too), differentiated once per element;
+///  - ū_a = A y_a − Y_a with y_a = x_a − c linear in q (bilinear in A and y: by hand);
+///  - θ̄_a = log(A exp([ψ_a]×)), a function of A's 9 entries and ψ_a, differentiated per node.
+/// Every AutoDiff number is 12 wide (13 doubles; 13² nested), whatever the element's size.
+constexpr int kVars = 12;
+using First = Eigen::AutoDiffScalar<Eigen::Matrix<double, kVars, 1>>;
+using Second = Eigen::AutoDiffScalar<Eigen::Matrix<First, kVars, 1>>;
 
-/// P: the local variable `local` takes `weight` × the element's unknown `global`.
-struct LocalTerm {
-  int local;
-  int global;
-  double weight;
+/// A value with its gradient and (for Second) Hessian in the 12 variables.
+struct Expansion {
+  double value = 0.0;
+  std::array<double, kVars> gradient{};
+  std::array<double, kVars * kVars> hessian{};
 };
 
-std::vector<LocalTerm> local_map(CorotationalFrame kind, int n, int a) {
-  std::vector<LocalTerm> p;
-  const std::vector<int> framing = frame_nodes(kind, n);
-  for (std::size_t k = 0; k < framing.size(); ++k)
-    for (int i = 0; i < 3; ++i) p.push_back({static_cast<int>(3 * k) + i, 3 * framing[k] + i, 1.0});
-  if (kind == CorotationalFrame::Beam)  // slots 6..11: the end nodes' rotations
-    for (std::size_t k = 0; k < framing.size(); ++k)
-      for (int i = 0; i < 3; ++i) p.push_back({6 + static_cast<int>(3 * k) + i, 3 * (n + framing[k]) + i, 1.0});
-  for (int i = 0; i < 3; ++i) {
-    p.push_back({kOwnTranslation + i, 3 * a + i, 1.0});
-    p.push_back({kOwnRotation + i, 3 * (n + a) + i, 1.0});
-    for (int b = 0; b < n; ++b) p.push_back({kMeanTranslation + i, 3 * b + i, 1.0 / n});
+template <class S>
+std::array<S, kVars> seeded(const std::array<double, kVars>& v) {
+  std::array<S, kVars> x;
+  for (int l = 0; l < kVars; ++l) {
+    if constexpr (std::is_same_v<S, First>) {
+      x[l] = First(v[l], kVars, l);
+    } else {
+      x[l].value() = First(v[l], kVars, l);
+      x[l].derivatives() = Eigen::Matrix<First, kVars, 1>::Constant(First(0.0, Eigen::Matrix<double, kVars, 1>::Zero()));
+      x[l].derivatives()(l) = First(1.0, Eigen::Matrix<double, kVars, 1>::Zero());
+    }
   }
-  return p;
+  return x;
 }
 
-/// d_a (6 values) from the local variables v (local_map); false when the element has no frame or
-/// the node has turned by π or more against it.
 template <class S>
-bool node_deformation(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, int a,
-                      const Vec3& beam_n1, const std::array<S, kLocal>& v, std::array<S, 6>& d) {
-  const int n = static_cast<int>(coords.size());
-  const std::vector<int> framing = frame_nodes(kind, n);
+Expansion expand(const S& s) {
+  Expansion e;
+  if constexpr (std::is_same_v<S, First>) {
+    e.value = s.value();
+    for (int k = 0; k < kVars; ++k) e.gradient[k] = s.derivatives()(k);
+  } else {
+    e.value = s.value().value();
+    for (int k = 0; k < kVars; ++k) {
+      e.gradient[k] = s.value().derivatives()(k);
+      for (int l = 0; l < kVars; ++l) e.hessian[k * kVars + l] = s.derivatives()(k).derivatives()(l);
+    }
+  }
+  return e;
+}
+
+/// A = E0 R_rᵀ (row-major) from the frame variables f: the frame nodes' translations (3 per
+/// node), then a beam's end rotations; false when the element has no frame.
+template <class S>
+bool frame_back(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref, const Vec3& beam_n1,
+                const std::array<S, kVars>& f, std::array<S, 9>& back) {
+  const std::vector<int> framing = frame_nodes(kind, static_cast<int>(coords.size()));
   std::vector<V3<S>> x(framing.size());
   std::vector<M3<S>> rot;
   for (std::size_t k = 0; k < framing.size(); ++k)
-    for (int i = 0; i < 3; ++i) x[k][i] = v[3 * k + i] + coords[framing[k]][i];
+    for (int i = 0; i < 3; ++i) x[k][i] = f[3 * k + i] + coords[framing[k]][i];
   if (kind == CorotationalFrame::Beam)
     for (std::size_t k = 0; k < framing.size(); ++k)
-      rot.push_back(exp_rotation(V3<S>{v[6 + 3 * k], v[7 + 3 * k], v[8 + 3 * k]}));
+      rot.push_back(exp_rotation(V3<S>{f[6 + 3 * k], f[7 + 3 * k], f[8 + 3 * k]}));
   std::array<V3<S>, 3> now;
   if (!element_frame(kind, x, rot, beam_n1, now)) return false;
   const std::array<Vec3, 3>& then = ref.frame;
-  M3<S> back;  // A = E0 R_rᵀ
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) back[i][j] = then[0][i] * now[0][j] + then[1][i] * now[1][j] + then[2][i] * now[2][j];
-  V3<S> relative;  // x_a − c
-  for (int i = 0; i < 3; ++i)
-    relative[i] = v[kOwnTranslation + i] + coords[a][i] - v[kMeanTranslation + i] - ref.centroid[i];
-  const V3<S> turned = times(back, relative);
-  for (int i = 0; i < 3; ++i) d[i] = turned[i] - (coords[a][i] - ref.centroid[i]);
-  const M3<S> own = exp_rotation(V3<S>{v[kOwnRotation], v[kOwnRotation + 1], v[kOwnRotation + 2]});
-  V3<S> theta;
-  if (!log_rotation(times(back, own), theta)) return false;
-  for (int i = 0; i < 3; ++i) d[3 + i] = theta[i];
+    for (int j = 0; j < 3; ++j)
+      back[3 * i + j] = then[0][i] * now[0][j] + then[1][i] * now[1][j] + then[2][i] * now[2][j];
   return true;
 }
 
-/// The rows of d and J = ∂d/∂q that belong to node a's ū and θ̄.
-std::array<int, 6> node_rows(int n, int a) { return {3 * a, 3 * a + 1, 3 * a + 2, 3 * (n + a), 3 * (n + a) + 1, 3 * (n + a) + 2}; }
+/// θ̄ = log(A exp([ψ]×)) from z = (A row-major, ψ); false when the node has turned by π or more
+/// against its element.
+template <class S>
+bool relative_rotation(const std::array<S, kVars>& z, V3<S>& theta) {
+  const M3<S> back{V3<S>{z[0], z[1], z[2]}, V3<S>{z[3], z[4], z[5]}, V3<S>{z[6], z[7], z[8]}};
+  return log_rotation(times(back, exp_rotation(V3<S>{z[9], z[10], z[11]})), theta);
+}
 
-/// d(q), J = ∂d/∂q (row-major, N × N) and, for a g handed in, ∇²(g·d) (N × N): node by node,
-/// first-order forward differentiation in the node's local variables for d and J, second-order
-/// (forward over forward) for the Hessian.
+/// d(q), J = ∂d/∂q (row-major, N × N) and ∇²(g·d) (N × N) by the chain rule above.
 class DeformationDerivatives {
  public:
-  using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, kLocal, 1>>;
-  using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, kLocal, 1>>;
-
   DeformationDerivatives(CorotationalFrame kind, std::span<const Vec3> coords, const Reference& ref,
                          std::span<const double> q, const Vec3& beam_n1)
-      : kind_(kind), coords_(coords), ref_(ref), q_(q), n1_(beam_n1), n_(static_cast<int>(coords.size())) {}
+      : kind_(kind), coords_(coords), ref_(ref), q_(q), n1_(beam_n1), n_(static_cast<int>(coords.size())),
+        size_(q.size()) {}
 
-  /// d and J at q; false when the element has no frame or a node no log.
-  bool first() {
-    const std::size_t size = q_.size();
-    value.assign(size, 0.0);
-    jacobian.assign(size * size, 0.0);
-    for (int a = 0; a < n_; ++a) {
-      const std::vector<LocalTerm> p = local_map(kind_, n_, a);
-      const std::array<double, kLocal> v0 = local_values(p);
-      std::array<Inner, kLocal> v;
-      for (int l = 0; l < kLocal; ++l) v[l] = Inner(v0[l], kLocal, l);
-      std::array<Inner, 6> d;
-      if (!node_deformation(kind_, coords_, ref_, a, n1_, v, d)) return false;
-      const std::array<int, 6> rows = node_rows(n_, a);
-      for (int r = 0; r < 6; ++r) {
-        value[rows[r]] = d[r].value();
-        for (const LocalTerm& t : p) jacobian[rows[r] * size + t.global] += t.weight * d[r].derivatives()(t.local);
-      }
-    }
-    return true;
-  }
+  /// d and J at q, and with `second` what hessian() needs; false when the element has no frame
+  /// or a node no log.
+  bool compute(bool second) { return second ? expand_all<Second>() : expand_all<First>(); }
 
-  /// ∇²(g·d) at q (after first() succeeded): Σ_a Pᵀ ∇²_v(g_a·d_a) P.
-  void second(std::span<const double> g, std::vector<double>& hessian) const {
-    const std::size_t size = q_.size();
-    hessian.assign(size * size, 0.0);
-    for (int a = 0; a < n_; ++a) {
-      const std::vector<LocalTerm> p = local_map(kind_, n_, a);
-      const std::array<double, kLocal> v0 = local_values(p);
-      std::array<Outer, kLocal> v;
-      for (int l = 0; l < kLocal; ++l) {
-        v[l].value() = Inner(v0[l], kLocal, l);
-        v[l].derivatives() =
-            Eigen::Matrix<Inner, kLocal, 1>::Constant(Inner(0.0, Eigen::Matrix<double, kLocal, 1>::Zero()));
-        v[l].derivatives()(l) = Inner(1.0, Eigen::Matrix<double, kLocal, 1>::Zero());
-      }
-      std::array<Outer, 6> d;
-      node_deformation(kind_, coords_, ref_, a, n1_, v, d);  // succeeded in first()
-      const std::array<int, 6> rows = node_rows(n_, a);
-      Outer work = g[rows[0]] * d[0];
-      for (int r = 1; r < 6; ++r) work += g[rows[r]] * d[r];
-      for (const LocalTerm& s : p)
-        for (const LocalTerm& t : p)
-          hessian[s.global * size + t.global] +=
-              s.weight * t.weight * work.derivatives()(s.local).derivatives()(t.local);
-    }
-  }
+  /// ∇²(g·d) at q, after compute(true).
+  std::vector<double> hessian(std::span<const double> g) const;
 
   std::vector<double> value, jacobian;
 
  private:
-  std::array<double, kLocal> local_values(const std::vector<LocalTerm>& p) const {
-    std::array<double, kLocal> v{};
-    for (const LocalTerm& t : p) v[t.local] += t.weight * q_[t.global];
-    return v;
-  }
+  template <class S>
+  bool expand_all();
+  void assemble_jacobian();
+  int frame_slot(int k) const { return frame_q_[static_cast<std::size_t>(k)]; }
+  void add(std::vector<double>& h, int i, int j, double v) const { h[static_cast<std::size_t>(i) * size_ + j] += v; }
 
   CorotationalFrame kind_;
   std::span<const Vec3> coords_;
@@ -315,7 +283,128 @@ class DeformationDerivatives {
   std::span<const double> q_;
   Vec3 n1_;
   int n_;
+  std::size_t size_;
+  std::array<int, kVars> frame_q_{};              // the unknown each frame variable is (−1: none)
+  std::array<Expansion, 9> back_;                 // A and its derivatives in f
+  std::vector<Vec3> y_;                           // y_a = x_a − c
+  std::vector<std::array<Expansion, 3>> theta_;  // θ̄_a and its derivatives in (A, ψ_a)
 };
+
+template <class S>
+bool DeformationDerivatives::expand_all() {
+  frame_q_.fill(-1);
+  const std::vector<int> framing = frame_nodes(kind_, n_);
+  for (std::size_t k = 0; k < framing.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      frame_q_[3 * k + i] = 3 * framing[k] + i;
+      if (kind_ == CorotationalFrame::Beam) frame_q_[6 + 3 * k + i] = 3 * (n_ + framing[k]) + i;
+    }
+  std::array<double, kVars> f{};
+  for (int k = 0; k < kVars; ++k) f[k] = frame_slot(k) < 0 ? 0.0 : q_[frame_slot(k)];
+  std::array<S, 9> back;
+  if (!frame_back(kind_, coords_, ref_, n1_, seeded<S>(f), back)) return false;
+  for (int p = 0; p < 9; ++p) back_[p] = expand(back[p]);
+  Vec3 mean{};
+  for (int b = 0; b < n_; ++b)
+    for (int i = 0; i < 3; ++i) mean[i] += q_[3 * b + i] / n_;
+  value.assign(size_, 0.0);
+  y_.assign(n_, Vec3{});
+  theta_.assign(n_, {});
+  for (int a = 0; a < n_; ++a) {
+    for (int i = 0; i < 3; ++i) y_[a][i] = coords_[a][i] + q_[3 * a + i] - ref_.centroid[i] - mean[i];
+    for (int i = 0; i < 3; ++i) {
+      double turned = 0.0;
+      for (int j = 0; j < 3; ++j) turned += back_[3 * i + j].value * y_[a][j];
+      value[3 * a + i] = turned - (coords_[a][i] - ref_.centroid[i]);
+    }
+    std::array<double, kVars> z{};
+    for (int p = 0; p < 9; ++p) z[p] = back_[p].value;
+    for (int j = 0; j < 3; ++j) z[9 + j] = q_[3 * (n_ + a) + j];
+    V3<S> theta;
+    if (!relative_rotation(seeded<S>(z), theta)) return false;
+    for (int i = 0; i < 3; ++i) {
+      theta_[a][i] = expand(theta[i]);
+      value[3 * (n_ + a) + i] = theta_[a][i].value;
+    }
+  }
+  assemble_jacobian();
+  return true;
+}
+
+void DeformationDerivatives::assemble_jacobian() {
+  jacobian.assign(size_ * size_, 0.0);
+  for (int a = 0; a < n_; ++a)
+    for (int i = 0; i < 3; ++i) {
+      const int u_row = 3 * a + i, t_row = 3 * (n_ + a) + i;
+      for (int k = 0; k < kVars; ++k) {
+        if (frame_slot(k) < 0) continue;
+        double du = 0.0, dt = 0.0;
+        for (int j = 0; j < 3; ++j) du += back_[3 * i + j].gradient[k] * y_[a][j];
+        for (int p = 0; p < 9; ++p) dt += theta_[a][i].gradient[p] * back_[p].gradient[k];
+        add(jacobian, u_row, frame_slot(k), du);
+        add(jacobian, t_row, frame_slot(k), dt);
+      }
+      for (int b = 0; b < n_; ++b)
+        for (int j = 0; j < 3; ++j)
+          add(jacobian, u_row, 3 * b + j, back_[3 * i + j].value * ((a == b ? 1.0 : 0.0) - 1.0 / n_));
+      for (int j = 0; j < 3; ++j) add(jacobian, t_row, 3 * (n_ + a) + j, theta_[a][i].gradient[9 + j]);
+    }
+}
+
+std::vector<double> DeformationDerivatives::hessian(std::span<const double> g) const {
+  std::vector<double> h(size_ * size_, 0.0);
+  // ∂W/∂A_p, the weight of A's own Hessian in f: from the translations Σ_a g_a,i y_a,j and the
+  // rotations Σ_a g_θa · ∂θ̄_a/∂A_p.
+  std::array<double, 9> weight{};
+  Vec3 mean_g{};
+  for (int a = 0; a < n_; ++a)
+    for (int i = 0; i < 3; ++i) mean_g[i] += g[3 * a + i] / n_;
+  std::array<double, kVars * kVars> frame_frame{};  // ∂²W/∂f∂f
+  for (int a = 0; a < n_; ++a) {
+    std::array<double, kVars * kVars> k_a{};  // ∇²_z(g_θa · θ̄_a)
+    for (int i = 0; i < 3; ++i) {
+      const double gu = g[3 * a + i], gt = g[3 * (n_ + a) + i];
+      for (int j = 0; j < 3; ++j) weight[3 * i + j] += gu * y_[a][j];
+      for (int p = 0; p < 9; ++p) weight[p] += gt * theta_[a][i].gradient[p];
+      for (int m = 0; m < kVars * kVars; ++m) k_a[m] += gt * theta_[a][i].hessian[m];
+    }
+    // Through A twice: Gᵀ K_AA G; A and ψ_a: Gᵀ K_Aψ; ψ_a twice: K_ψψ.
+    for (int k = 0; k < kVars; ++k)
+      for (int p = 0; p < 9; ++p) {
+        const double gpk = back_[p].gradient[k];
+        if (gpk == 0.0) continue;
+        for (int r = 0; r < 9; ++r)
+          for (int l = 0; l < kVars; ++l) frame_frame[k * kVars + l] += gpk * k_a[p * kVars + r] * back_[r].gradient[l];
+      }
+    for (int k = 0; k < kVars; ++k) {
+      if (frame_slot(k) < 0) continue;
+      for (int j = 0; j < 3; ++j) {
+        double v = 0.0;
+        for (int p = 0; p < 9; ++p) v += back_[p].gradient[k] * k_a[p * kVars + 9 + j];
+        add(h, frame_slot(k), 3 * (n_ + a) + j, v);
+        add(h, 3 * (n_ + a) + j, frame_slot(k), v);
+      }
+    }
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) add(h, 3 * (n_ + a) + i, 3 * (n_ + a) + j, k_a[(9 + i) * kVars + 9 + j]);
+    // A and the translations: ∂²(g_a · A y_a)/∂f_k ∂u_b,j = Σ_i ∂A_ij/∂f_k (g_b,i − ḡ_i).
+    for (int k = 0; k < kVars; ++k) {
+      if (frame_slot(k) < 0) continue;
+      for (int j = 0; j < 3; ++j) {
+        double v = 0.0;
+        for (int i = 0; i < 3; ++i) v += back_[3 * i + j].gradient[k] * (g[3 * a + i] - mean_g[i]);
+        add(h, frame_slot(k), 3 * a + j, v);
+        add(h, 3 * a + j, frame_slot(k), v);
+      }
+    }
+  }
+  for (int p = 0; p < 9; ++p)
+    for (int m = 0; m < kVars * kVars; ++m) frame_frame[m] += weight[p] * back_[p].hessian[m];
+  for (int k = 0; k < kVars; ++k)
+    for (int l = 0; l < kVars; ++l)
+      if (frame_slot(k) >= 0 && frame_slot(l) >= 0) add(h, frame_slot(k), frame_slot(l), frame_frame[k * kVars + l]);
+  return h;
+}
 
 /// Internal force Jᵀg and tangent Jᵀ K J + ∇²(g·d), J = ∂d/∂q, with g and K the small-strain
 /// kernel's force and tangent at d (for an elastic kernel, the gradient and Hessian of its
@@ -326,7 +415,7 @@ bool corotated_system(CorotationalFrame kind, std::span<const Vec3> coords, cons
                       const ElementRequest& request, ElementSystem& out) {
   const int size = static_cast<int>(q.size());
   DeformationDerivatives dd(kind, coords, ref, q, beam_n1);
-  if (!dd.first()) return false;
+  if (!dd.compute(request.stiffness)) return false;
   ElementSystem local;
   ElementRequest at_d = request;
   at_d.nlgeom = false;
@@ -341,8 +430,7 @@ bool corotated_system(CorotationalFrame kind, std::span<const Vec3> coords, cons
     for (int i = 0; i < size; ++i)
       for (int r = 0; r < size; ++r) out.internal_force[i] += jac[r * size + i] * g[r];
   if (!request.stiffness) return true;
-  std::vector<double> hessian;
-  dd.second(g, hessian);
+  const std::vector<double> hessian = dd.hessian(g);
   const std::vector<double>& k = local.stiffness;
   std::vector<double> kj(static_cast<std::size_t>(size * size), 0.0);  // K J
   for (int r = 0; r < size; ++r)

@@ -12,11 +12,6 @@
 /// reported RM are conjugate to ψ too: the physical moment where the axis of turn stays fixed
 /// (planar turns, every verification deck), Tᵀ(ψ) of it where the axis itself turns.
 ///
-/// The derivatives are taken node by node (corotation.cpp): a node's deformation depends on the
-/// unknowns that turn the frame, its own, and the centroid's, 21 variables for every element size.
-/// The second-order numbers are 22² doubles each (4 KB): one node's evaluation keeps some hundred
-/// of them on its thread's stack, well inside Linux's 8 MB thread stacks.
-///
 /// The frame R_r = [e1 e2 e3] of the current configuration (E0 of the reference one):
 ///  - beams: e1 along the chord of the end nodes, e3 = e1 × q / |e1 × q| with q = ½(R_1 + R_2) n1⁰,
 ///    the section's reference n1 turned by the end nodes' mean rotation (Crisfield), e2 = e3 × e1
@@ -34,6 +29,11 @@
 /// plastic kernel brings its consistent tangent and its history (the points' trial state is the
 /// kernel's at d). Point output is the kernel's at d: stresses and section forces in the
 /// reference axes turned with the element (Abaqus's corotational shell and beam axes).
+///
+/// The derivatives go by the chain rule through A (corotation.cpp): A is differentiated once per
+/// element in the 12 unknowns that turn the frame, each node's log(A R_a) in A's 9 entries and its
+/// ψ_a; ū_a is bilinear in A and the positions. Every AutoDiff number is 12 wide (13² doubles
+/// nested, 1.4 KB) whatever the element's size.
 #include <functional>
 #include <span>
 
