@@ -1,11 +1,14 @@
 /// *BEAM SECTION, *BEAM GENERAL SECTION and their *TRANSVERSE SHEAR STIFFNESS [Abaqus Keywords].
 ///
-/// *BEAM SECTION, ELSET=, MATERIAL=, SECTION=RECT | CIRC | PIPE | BOX: first data line the
-/// shape's dimensions (RECT a, b; CIRC r; PIPE r, t; BOX a, b, t1..t4 with t1 = t3, t2 = t4),
-/// second the approximate n1 direction (default (0, 0, −1)). *BEAM GENERAL SECTION,
-/// SECTION=GENERAL: A, I11, I12, I22, J; n1; E, G. The other library shapes (I, L, HEX,
-/// TRAPEZOID, ARBITRARY, ...), the other general forms (MESHED,
-/// NONLINEAR GENERAL) and CalculiX's OFFSET1/OFFSET2 stop here with what is missing.
+/// *BEAM SECTION, ELSET=, MATERIAL=, SECTION=RECT | CIRC | PIPE | BOX | I: first data line the
+/// shape's dimensions (RECT a, b; CIRC r; PIPE r, t; BOX a, b, t1..t4; I l, h, b1, b2, t1, t2,
+/// t3), second the approximate n1 direction (default (0, 0, −1)); CalculiX's OFFSET1/OFFSET2 put
+/// the node line off the section's centre. *BEAM GENERAL SECTION, SECTION=GENERAL: A, I11, I12,
+/// I22, J; n1; E, G. The other library shapes (L, HEX, TRAPEZOID, ARBITRARY, ...) and the other
+/// general forms (MESHED, NONLINEAR GENERAL) stop here with what is missing.
+///
+/// CalculiX reads CIRC's number as the diameter (its "thickness"; a second number makes an
+/// ellipse); inpact reads it as Abaqus does, the radius.
 #include <fmt/format.h>
 
 #include "handlers.hpp"
@@ -28,9 +31,11 @@ constexpr ShapeSpec kShapes[] = {{"RECT", Shape::Rect, 2, "a (width along n1), b
                                  {"CIRC", Shape::Circ, 1, "radius"},
                                  {"PIPE", Shape::Pipe, 2, "outer radius, wall thickness"},
                                  {"BOX", Shape::Box, 6, "a, b (outer widths along n1, n2), t1, t2, t3, t4 (walls)"},
+                                 {"I", Shape::I, 7, "l, h, b1, b2, t1, t2, t3"},
                                  {"GENERAL", Shape::General, 5, "A, I11, I12, I22, J"}};
 
-bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<Field>& f, const std::vector<double>& d);
+bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d);
+bool i_parts_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d);
 
 /// The dimensions line: each a positive number (I12 of a general section may be any number).
 bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, model::BeamSection& sec) {
@@ -42,7 +47,8 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
     auto v = ctx.real(f[i], "section dimension");
     if (!v) return false;
     const bool signed_value = spec.shape == Shape::General && i == 2;  // I12
-    if (!signed_value && *v <= 0) {
+    const bool origin = spec.shape == Shape::I && i == 0;             // l: anywhere along the web's line
+    if (!signed_value && !origin && *v <= 0) {
       ctx.error(f[i].loc, fmt::format("the section dimensions must be positive ({}), found {:g}", spec.layout, *v));
       return false;
     }
@@ -57,22 +63,30 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
     ctx.error(f[1].loc, fmt::format("the wall thickness {:g} exceeds the outer radius {:g}", sec.dims[1], sec.dims[0]));
     return false;
   }
-  return spec.shape != Shape::Box || box_walls_fit(ctx, line, f, sec.dims);
+  if (spec.shape == Shape::Box) return box_walls_fit(ctx, line, sec.dims);
+  return spec.shape != Shape::I || i_parts_fit(ctx, line, sec.dims);
 }
 
-/// A BOX's walls fit inside it, and opposite walls are alike: otherwise the centroid leaves the
-/// beam's axis, which would couple stretching and bending (not supported yet).
-bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<Field>& f, const std::vector<double>& d) {
+/// A BOX's walls fit inside it.
+bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d) {
   if (d[2] + d[4] >= d[0] || d[3] + d[5] >= d[1]) {
     ctx.error(line.loc, fmt::format("the walls t1 + t3 = {:g} and t2 + t4 = {:g} must be thinner than a = {:g} and "
                                     "b = {:g}", d[2] + d[4], d[3] + d[5], d[0], d[1]));
     return false;
   }
-  if (d[2] != d[4] || d[3] != d[5]) {
-    ctx.error(f[d[2] != d[4] ? 4 : 5].loc,
-              fmt::format("a BOX whose opposite walls differ (t1 = {:g}, t3 = {:g}; t2 = {:g}, t4 = {:g}) has its "
-                          "centroid off the beam's axis, which is not supported yet (give t1 = t3 and t2 = t4)",
-                          d[2], d[4], d[3], d[5]));
+  return true;
+}
+
+/// An I's flanges fit in its height and its web in its flanges.
+bool i_parts_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d) {
+  if (d[4] + d[5] >= d[1]) {
+    ctx.error(line.loc, fmt::format("the flanges t1 + t2 = {:g} must be thinner than the height h = {:g}", d[4] + d[5],
+                                    d[1]));
+    return false;
+  }
+  if (d[6] > d[2] || d[6] > d[3]) {
+    ctx.error(line.loc, fmt::format("the web t3 = {:g} must be no wider than the flanges b1 = {:g}, b2 = {:g}", d[6],
+                                    d[2], d[3]));
     return false;
   }
   return true;
@@ -126,17 +140,12 @@ const ShapeSpec* find_shape(std::string_view name) {
 }
 
 void read_section(KeywordContext& ctx, bool general) {
-  if (ctx.has("OFFSET1") || ctx.has("OFFSET2")) {
-    ctx.error_param(ctx.has("OFFSET1") ? "OFFSET1" : "OFFSET2",
-                    "beam offsets (CalculiX's OFFSET1/OFFSET2) are not supported yet");
-    return;
-  }
   const std::string name = general ? (ctx.has("SECTION") ? ctx.name_value("SECTION") : "GENERAL")
                                    : ctx.name_value("SECTION");
   const ShapeSpec* spec = find_shape(name);
   if (!spec || (spec->shape == Shape::General) != general) {
     ctx.error_param("SECTION", fmt::format("SECTION={} is not supported yet (expected {})", name,
-                                           general ? "GENERAL" : "RECT, CIRC, PIPE or BOX"));
+                                           general ? "GENERAL" : "RECT, CIRC, PIPE, BOX or I"));
     return;
   }
   model::BeamSection sec;
@@ -145,6 +154,7 @@ void read_section(KeywordContext& ctx, bool general) {
   sec.shape = spec->shape;
   sec.loc = ctx.keyword.loc;
   sec.n1_loc = ctx.keyword.loc;
+  if (!general) sec.offset = {ctx.real_value("OFFSET1").value_or(0.0), ctx.real_value("OFFSET2").value_or(0.0)};
   const std::size_t n_lines = general ? 3 : 2;
   if (ctx.data.size() > n_lines) {
     ctx.error(ctx.data[n_lines].loc, fmt::format("expected at most {} data lines", n_lines));

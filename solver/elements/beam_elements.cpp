@@ -115,8 +115,8 @@ bool beam_axes(const Vec3& tangent, const Vec3& approximate_n1, std::array<Vec3,
 
 namespace {
 
-/// The small-strain beam (beam_elements.hpp).
-void compute_beam_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+/// The small-strain beam on its centroid's line (beam_elements.hpp).
+void compute_beam_centred(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                         const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
   const int n = type.n_nodes;
   const int n_dof = 6 * n;
@@ -188,6 +188,69 @@ void compute_beam_small(const model::ElementTypeInfo& type, std::span<const Vec3
     r.strain = {strain[0], strain[2], strain[1], strain[4], strain[5], strain[3]};
     out.points.push_back(r);
   }
+}
+
+/// The small-strain beam whose centroid lies off its nodes (BeamProperties::centroid): the
+/// centroid's line r = c1 n1 + c2 n2 from the nodes (the chord's axes) is tied to them rigidly,
+/// u_c = u + θ × r, so the centred kernel's force f_c and tangent K_c return as Tᵀ f_c and
+/// Tᵀ K_c T: a centroid's axial force bends the node line, as Abaqus's offset sections do.
+void compute_beam_offset(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                         const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
+  const int n = type.n_nodes, n_dof = 6 * n;
+  std::array<Vec3, 3> axes;
+  const Vec3 chord{coords.back()[0] - coords[0][0], coords.back()[1] - coords[0][1], coords.back()[2] - coords[0][2]};
+  if (!beam_axes(chord, section.n1, axes)) {
+    begin_element_system(out, n_dof, request);
+    out.min_jacobian = 0.0;
+    return;
+  }
+  Vec3 r;
+  for (int i = 0; i < 3; ++i) r[i] = section.centroid[0] * axes[1][i] + section.centroid[1] * axes[2][i];
+  std::vector<Vec3> centred(coords.begin(), coords.end());
+  std::vector<double> t(static_cast<std::size_t>(n_dof * n_dof), 0.0);  // T, row-major
+  for (int j = 0; j < n_dof; ++j) t[static_cast<std::size_t>(j * n_dof + j)] = 1.0;
+  for (int a = 0; a < n; ++a) {
+    for (int i = 0; i < 3; ++i) centred[a][i] += r[i];
+    // θ × r = −[r]× θ in the translation rows, the rotation columns.
+    const double minus_rx[3][3] = {{0, r[2], -r[1]}, {-r[2], 0, r[0]}, {r[1], -r[0], 0}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) t[static_cast<std::size_t>((3 * a + i) * n_dof + 3 * (n + a) + j)] = minus_rx[i][j];
+  }
+  std::vector<double> uc(static_cast<std::size_t>(n_dof), 0.0);
+  for (int i = 0; i < n_dof; ++i)
+    for (int j = 0; j < n_dof; ++j) uc[i] += t[static_cast<std::size_t>(i * n_dof + j)] * u[j];
+  ElementSystem c;
+  compute_beam_centred(type, centred, uc, section, request, c);
+  begin_element_system(out, n_dof, request);
+  out.min_jacobian = c.min_jacobian;
+  out.points = std::move(c.points);
+  for (int i = 0; i < n_dof && !out.internal_force.empty(); ++i)
+    for (int r_row = 0; r_row < n_dof; ++r_row)
+      out.internal_force[i] += t[static_cast<std::size_t>(r_row * n_dof + i)] * c.internal_force[r_row];
+  if (out.stiffness.empty()) return;
+  std::vector<double> kt(static_cast<std::size_t>(n_dof * n_dof), 0.0);  // K_c T
+  for (int i = 0; i < n_dof; ++i)
+    for (int k = 0; k < n_dof; ++k) {
+      const double kik = c.stiffness[static_cast<std::size_t>(i * n_dof + k)];
+      if (kik == 0.0) continue;
+      for (int j = 0; j < n_dof; ++j) kt[static_cast<std::size_t>(i * n_dof + j)] += kik * t[static_cast<std::size_t>(k * n_dof + j)];
+    }
+  for (int k = 0; k < n_dof; ++k)
+    for (int i = 0; i < n_dof; ++i) {
+      const double tki = t[static_cast<std::size_t>(k * n_dof + i)];
+      if (tki == 0.0) continue;
+      for (int j = 0; j < n_dof; ++j)
+        out.stiffness[static_cast<std::size_t>(i * n_dof + j)] += tki * kt[static_cast<std::size_t>(k * n_dof + j)];
+    }
+}
+
+/// The small-strain beam (beam_elements.hpp), centred or offset.
+void compute_beam_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
+                        const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
+  if (section.centroid[0] == 0.0 && section.centroid[1] == 0.0)
+    compute_beam_centred(type, coords, u, section, request, out);
+  else
+    compute_beam_offset(type, coords, u, section, request, out);
 }
 
 }  // namespace

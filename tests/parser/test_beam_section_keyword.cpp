@@ -64,8 +64,9 @@ TEST(BeamSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError)
   for (const Case& c : std::vector<Case>{
            {kBeams + kMaterial + sec + "RECT\n0.3\n", "deck.inp:12:1: error: *BEAM SECTION: data line has 1 field, expected 2"},
            {kBeams + kMaterial + sec + "RECT\n0.3, -0.2\n", "the section dimensions must be positive"},
-           {kBeams + kMaterial + sec + "I\n1., 1., .1, .1, .1, .1, .1\n", "SECTION=I is not supported yet"},
-           {kBeams + kMaterial + sec + "BOX\n1., 1., .1, .2, .1, .1\n", "a BOX whose opposite walls differ"},
+           {kBeams + kMaterial + sec + "L\n1., 1., .1, .1\n", "SECTION=L is not supported yet"},
+           {kBeams + kMaterial + sec + "I\n.5, 1., .4, .4, .5, .5, .1\n", "the flanges t1 + t2 = 1 must be thinner"},
+           {kBeams + kMaterial + sec + "I\n.5, 1., .4, .4, .1, .1, .5\n", "the web t3 = 0.5 must be no wider"},
            {kBeams + kMaterial + sec + "BOX\n1., 1., .5, .1, .5, .1\n", "must be thinner than"},
            {kBeams + kMaterial + sec + "PIPE\n0.1, 0.2\n", "the wall thickness 0.2 exceeds the outer radius 0.1"},
            {kBeams + kMaterial + sec + "CIRC\n0.1\n0., 0., 0.\n", "the n1 direction is the zero vector"},

@@ -104,6 +104,38 @@ TEST(BeamElements, BoxSectionPropertiesMatchHandValues) {
   EXPECT_NEAR(p.k13, 0.44 * p.shear_modulus * p.area, 1e-9);
 }
 
+// A BOX 0.3 × 0.2 whose walls all differ (t1 = 0.02 at +n1, t2 = 0.03 at +n2, t3 = 0.04 at
+// −n1, t4 = 0.01 at −n2) against the sum of its four walls as rectangles: the centroid off the
+// box's centre, A and I about it; CalculiX's OFFSET1 = 0.5 moves the centroid a further half
+// width (0.15) to −n1.
+TEST(BeamElements, AnUnevenBoxHasItsCentroidOffTheCentre) {
+  model::BeamSection b;
+  b.shape = model::BeamSection::Shape::Box;
+  b.dims = {0.3, 0.2, 0.02, 0.03, 0.04, 0.01};
+  struct Part {
+    double w1, w2, c1, c2;  // widths along n1, n2 and centre
+  };
+  const double inner2 = 0.2 - 0.03 - 0.01, mid2 = (0.01 - 0.03) / 2;  // the side walls span the inside
+  const Part parts[] = {{0.02, inner2, 0.15 - 0.01, mid2}, {0.04, inner2, -0.15 + 0.02, mid2},
+                        {0.3, 0.03, 0.0, 0.1 - 0.015}, {0.3, 0.01, 0.0, -0.1 + 0.005}};
+  double area = 0, s1 = 0, s2 = 0;
+  for (const Part& q : parts) area += q.w1 * q.w2, s1 += q.w1 * q.w2 * q.c1, s2 += q.w1 * q.w2 * q.c2;
+  const double x1 = s1 / area, x2 = s2 / area;
+  double i11 = 0, i22 = 0;
+  for (const Part& q : parts) {
+    i11 += q.w1 * std::pow(q.w2, 3) / 12 + q.w1 * q.w2 * std::pow(q.c2 - x2, 2);
+    i22 += q.w2 * std::pow(q.w1, 3) / 12 + q.w1 * q.w2 * std::pow(q.c1 - x1, 2);
+  }
+  const BeamProperties p = beam_properties(b, 2.0e5, 0.3);
+  EXPECT_NEAR(p.area, area, 1e-15);
+  EXPECT_NEAR(p.centroid[0], x1, 1e-15);
+  EXPECT_NEAR(p.centroid[1], x2, 1e-15);
+  EXPECT_NEAR(p.i11, i11, 1e-15);
+  EXPECT_NEAR(p.i22, i22, 1e-15);
+  b.offset = {0.5, 0.0};
+  EXPECT_NEAR(beam_properties(b, 2.0e5, 0.3).centroid[0], x1 - 0.15, 1e-15);
+}
+
 // n1 along the beam leaves no plane to bend in; across it, the axes are right-handed.
 TEST(BeamElements, LocalAxesAreRightHandedAndRefuseAnN1AlongTheBeam) {
   std::array<Vec3, 3> axes;

@@ -219,6 +219,78 @@ TEST(Beams, ABoxSectionCantileverMatchesTheClosedForms) {
   EXPECT_NEAR(nodal(*r->capture.of_step(1).back(), "RF", row_of(*r, 1), 1), -1.0, 1e-9);
 }
 
+/// The 2-B33 cantilever (L = 10, n1 = y, n2 = z) with `section` (the *BEAM SECTION's keyword,
+/// dimensions and n1 lines), then an AXIAL step: a tip force 1 along x at the node line.
+std::filesystem::path section_deck(const std::string& tag, const std::vector<std::string>& section) {
+  return edited_deck("beam_cantilever_b33_2.inp", tag, [&](const std::string& line) {
+    if (line == "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT") return section;
+    if (line == "0.3, 0.2" || line == "0., 1., 0.") return std::vector<std::string>{};
+    if (line == "*STEP, NAME=GRAVITY")
+      return std::vector<std::string>{"*STEP, NAME=AXIAL", "*STATIC", "*CLOAD, OP=NEW", "TIP, 1, 1.0", "*END STEP",
+                                      line};
+    return std::vector<std::string>{line};
+  });
+}
+
+/// A tip force P = 1 along the node line of a cantilever whose centroid lies e along n2 = z
+/// from it: the rigid link hands the centroid the moment −eP about y, so the tip rises
+/// w = eP L²/(2EI11) and moves u = PL/(EA) + e²PL/(EI11) along x (B33: exact).
+void expect_eccentric_tension(const Run& r, double area, double i11, double e) {
+  const solver::Frame& f = *r.capture.of_step(4).back();
+  const std::size_t tip = row_of(r, 3);
+  const double w = e * kL * kL / (2 * kE * i11), u = kL / (kE * area) + e * e * kL / (kE * i11);
+  EXPECT_NEAR(nodal(f, "U", tip, 2), w, 1e-9 * std::max(std::abs(w), u));
+  EXPECT_NEAR(nodal(f, "U", tip, 0), u, 1e-9 * u);
+  EXPECT_NEAR(nodal(f, "RF", row_of(r, 1), 0), -1.0, 1e-9);
+}
+
+// An I (Abaqus's l, h, b1, b2, t1, t2, t3) on the B33 cantilever. Doubly symmetric (0.15, 0.3,
+// 0.2, 0.2, 0.02, 0.02, 0.01; the origin at mid-height): PL³/(3EI) about both axes and the twist
+// TL/(GJ) with the open section's J = Σ b t³/3, exact (1e-9). With unequal flanges and the
+// origin on the bottom edge (0, 0.3, 0.2, 0.1, 0.02, 0.01, 0.01) the centroid lies e above the
+// nodes, and a tension along the node line bends the beam (expect_eccentric_tension).
+TEST(Beams, AnISectionCantileverMatchesTheClosedForms) {
+  const auto sym = run_deck(section_deck("beam-i", {"*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=I",
+                                                     "0.15, 0.3, 0.2, 0.2, 0.02, 0.02, 0.01", "0., 1., 0."})
+                                .string());
+  ASSERT_TRUE(sym->outcome.completed) << sym->outcome.message;
+  const double web = 0.26, i11 = 2 * (0.2 * std::pow(0.02, 3) / 12 + 0.004 * 0.14 * 0.14) + 0.01 * std::pow(web, 3) / 12;
+  const double i22 = 2 * 0.02 * std::pow(0.2, 3) / 12 + web * std::pow(0.01, 3) / 12;
+  const double J = (2 * 0.2 * std::pow(0.02, 3) + web * std::pow(0.01, 3)) / 3;
+  const std::size_t tip = row_of(*sym, 3);
+  const double dy = kL * kL * kL / (3 * kE * i22), dz = 2 * kL * kL * kL / (3 * kE * i11), twist = 5 * kL / (kG * J);
+  EXPECT_NEAR(nodal(*sym->capture.of_step(1).back(), "U", tip, 1), dy, 1e-9 * dy);
+  EXPECT_NEAR(nodal(*sym->capture.of_step(2).back(), "U", tip, 2), dz, 1e-9 * dz);
+  EXPECT_NEAR(nodal(*sym->capture.of_step(3).back(), "UR", tip, 0), twist, 1e-9 * twist);
+  expect_eccentric_tension(*sym, 0.004 * 2 + web * 0.01, i11, 0.0);
+
+  const auto tee = run_deck(section_deck("beam-i-offset", {"*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=I",
+                                                           "0., 0.3, 0.2, 0.1, 0.02, 0.01, 0.01", "0., 1., 0."})
+                                .string());
+  ASSERT_TRUE(tee->outcome.completed) << tee->outcome.message;
+  const double a1 = 0.004, a2 = 0.001, aw = 0.27 * 0.01, area = a1 + a2 + aw;
+  const double e = (a1 * 0.01 + a2 * 0.295 + aw * 0.155) / area;
+  const double t11 = 0.2 * std::pow(0.02, 3) / 12 + a1 * std::pow(0.01 - e, 2) + 0.1 * std::pow(0.01, 3) / 12 +
+                     a2 * std::pow(0.295 - e, 2) + 0.01 * std::pow(0.27, 3) / 12 + aw * std::pow(0.155 - e, 2);
+  expect_eccentric_tension(*tee, area, t11, e);
+}
+
+// CalculiX's OFFSET2 = 0.5 on the RECT 0.3 × 0.2: the node line on the section's +n2 surface,
+// the centroid 0.1 below it (the unit is the section's extent along n2). A tension along the node
+// line bends the beam down (expect_eccentric_tension with e = −0.1). A tip force along y at the
+// node line also twists the centroid's line by the torque 0.1 P, which moves the node further
+// along y by e²PL/(GJ): PL³/(3EI22) + e²PL/(GJ), exact for B33.
+TEST(Beams, CalculixOffsetsPutTheNodeLineOffTheCentroid) {
+  const auto r = run_deck(section_deck("beam-offset", {"*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT, "
+                                                       "OFFSET2=0.5",
+                                                       "0.3, 0.2", "0., 1., 0."})
+                              .string());
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const double dy = kL * kL * kL / (3 * kE * kI22) + 0.01 * kL / (kG * torsion_constant());
+  EXPECT_NEAR(nodal(*r->capture.of_step(1).back(), "U", row_of(*r, 3), 1), dy, 1e-9 * dy);
+  expect_eccentric_tension(*r, kA, kI11, -0.1);
+}
+
 // NLGEOM: the cantilever rolled up by an end moment M = 2π EI22/L (beam_rollup_*_50.inp). Each
 // corotated element carries the moment as pure bending, so the nodes lie on the regular polygon
 // of chords L/50 that closes after a full turn: the tip is back at the root turned by 2π, every
