@@ -2,6 +2,7 @@
 /// What the analysis needs per element, resolved once from the model database: its type,
 /// material law and section data, and the model's number of DOFs per node.
 #include <array>
+#include <deque>
 #include <memory>
 #include <span>
 #include <string>
@@ -49,6 +50,9 @@ struct AnalysisModel {
   std::vector<std::shared_ptr<const elements::SpringBehavior>> springs;  ///< what SectionData::spring points to
   std::vector<std::shared_ptr<const elements::BeamProperties>> beams;     ///< what SectionData::beam points to
   std::vector<std::shared_ptr<const elements::ShellProperties>> shells;   ///< what SectionData::shell points to
+  /// What SectionData::nodal_thickness views, one array per shell with *NODAL THICKNESS (a deque:
+  /// growing it keeps the earlier arrays in place).
+  std::deque<std::array<double, 8>> shell_nodal_thickness;
   std::vector<std::shared_ptr<const elements::MaterialOrientation>> orientations;  ///< ElementSetup::orientation's
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).

@@ -79,6 +79,12 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
       s.section.shell = p;
       if (plastic) s.material = plastic.get();
       s.section.thickness = model::shell_thickness(m.mesh, sec, e);
+      if (sec.nodal_thickness) {
+        const auto nodes = m.mesh.elements.nodes_of(e);
+        std::array<double, 8>& at_nodes = am.shell_nodal_thickness.emplace_back();
+        for (std::size_t a = 0; a < nodes.size(); ++a) at_nodes[a] = m.mesh.nodal_thickness.at(nodes[a]);
+        s.section.nodal_thickness = std::span<const double>(at_nodes.data(), nodes.size());
+      }
       s.density = m.materials.at(sec.material).density.value_or(0.0);
     }
   }

@@ -23,6 +23,9 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
                  first yield's), then 1.0 (5 times).
   pressure       the cantilever strip (S8R: nodally exact) under a uniform pressure 1: *DLOAD P
                  lifts it along the shell normal (+z), *DSLOAD on the SPOS surface pushes it down.
+  tapered        the strip with *NODAL THICKNESS 0.1 (1 + x/L) under the tip line load 1: the
+                 nodes' thicknesses interpolated to the points (Euler-Bernoulli 11.5888 plus
+                 shear 8.3e-4).
   rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
                  t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
                  full circle (U2, UR1, UR3 held: a planar problem).
@@ -200,6 +203,21 @@ def pressure(etype, n):
         elements, "2.e5, 0.", sets, tail
 
 
+def tapered(etype, n):
+    """The strip of `strip` with *NODAL THICKNESS t = 0.1 (1 + x/L), 0.1 at the root and 0.2 at
+    the tip, under the tip line load 1 along z."""
+    place = lambda s, w: (10.0 * s, w - 0.5, 0.0)
+    nodes, elements = grid(etype, n, max(1, n // 10), place)
+    on_tip = lambda s, w: near(s, 1)
+    sets = {"ROOT": lambda s, w: near(s, 0), "TIP": on_tip}
+    thickness = [f"{m}, {0.1 * (1 + s):.15g}" for m, (s, _, _) in sorted(nodes.items())]
+    tail = ["*SHELL SECTION, ELSET=SHELL, MATERIAL=M, NODAL THICKNESS", "0.1, 5", "*NODAL THICKNESS"] + thickness + \
+        ["*BOUNDARY", "ROOT, ENCASTRE", "*STEP", "*STATIC", "*CLOAD"] + \
+        consistent_tip_loads(etype, nodes, on_tip, lambda s, w: w, 1.0, 3) + ["*NODE PRINT, NSET=TIP", "U", "*END STEP"]
+    return "Tapered cantilever strip L = 10, b = 1, t = 0.1 (1 + x/L), nu = 0: a tip line load 1 along z", nodes, \
+        elements, "2.e5, 0.", sets, tail
+
+
 def torsion(etype, n):
     """n elements along the strip, n/2 across, graded towards the free edges (their transverse
     shear boundary layer is t/sqrt(10) wide): a torque T = 1 as nodal moments on the tip."""
@@ -250,13 +268,13 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
     ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup",
-                                     "plastic", "pressure"])
+                                     "plastic", "pressure", "tapered"])
     ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
     ap.add_argument("n", type=int)
     ap.add_argument("thin", nargs="?", default="")
     a = ap.parse_args()
     make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
-            "rollup": rollup, "plastic": plastic, "pressure": pressure,
+            "rollup": rollup, "plastic": plastic, "pressure": pressure, "tapered": tapered,
             "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
     heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
     suffix = "_thin" if a.thin == "thin" else ""

@@ -446,7 +446,8 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     ShellMaterial material;
     if constexpr (std::is_same_v<Law, Material>)
       if (law.state_size() > 0) material = {&law, history};
-    compute_shell(type, coords, u, *section.shell, section.thickness, request, delta_t, material, out);
+    compute_shell(type, coords, u, *section.shell, ShellThickness(section.thickness, section.nodal_thickness), request,
+                  delta_t, material, out);
     return;
   }
   if (!model::is_continuum(type)) {

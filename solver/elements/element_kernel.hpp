@@ -48,6 +48,9 @@ struct SectionData {
   const SpringBehavior* spring = nullptr;  ///< springs: their *SPRING (owned by the AnalysisModel)
   const BeamProperties* beam = nullptr;    ///< beams: their section (owned by the AnalysisModel)
   const ShellProperties* shell = nullptr;  ///< shells: their section (owned by the AnalysisModel)
+  /// Shells with *NODAL THICKNESS: their nodes' thicknesses (owned by the AnalysisModel), which
+  /// the kernel interpolates; empty: `thickness` throughout.
+  std::span<const double> nodal_thickness{};
 };
 
 struct ElementRequest {

@@ -23,15 +23,21 @@ double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 
-/// The element's geometry: node coordinates and directors, thickness, offset.
+/// The element's geometry: node coordinates, directors and thicknesses, offset.
 struct Geometry {
   Shape shape;
   int n = 0;
   std::span<const Vec3> x;
   std::array<Vec3, 8> director{};
-  double thickness = 0.0, offset = 0.0;
+  std::array<double, 8> thickness{};  ///< at each node: the section's, or *NODAL THICKNESS's
+  double offset = 0.0;
   int n_dof() const { return 6 * n; }
   int rot(int a) const { return 3 * (n + a); }  // first rotation DOF of node a
+  double mean_thickness() const {
+    double sum = 0.0;
+    for (int a = 0; a < n; ++a) sum += thickness[a];
+    return sum / n;
+  }
 };
 
 /// The covariant strains at a point (ξ, η, ζ) as rows over the element's DOFs: 2e_ij = g_i·u,j +
@@ -47,9 +53,9 @@ struct CovariantPoint {
 CovariantPoint covariant_point(const Geometry& geo, double xi, double eta, double zeta) {
   CovariantPoint p;
   const ShapeValues sv = evaluate_shape(geo.shape, {xi, eta, 0.0});
-  const double z = geo.thickness * (zeta / 2 - geo.offset), half = geo.thickness / 2;
   for (int a = 0; a < geo.n; ++a) {
     p.N[a] = sv.N[a];
+    const double z = geo.thickness[a] * (zeta / 2 - geo.offset), half = geo.thickness[a] / 2;
     for (int i = 0; i < 3; ++i) {
       const double xa = geo.x[a][i] + z * geo.director[a][i];
       p.g[0][i] += sv.dN[a][0] * xa;
@@ -63,6 +69,7 @@ CovariantPoint covariant_point(const Geometry& geo, double xi, double eta, doubl
   auto& [e11, e22, e12, e13, e23] = p.rows;
   for (int a = 0; a < geo.n; ++a) {
     const double d1 = sv.dN[a][0], d2 = sv.dN[a][1], na = sv.N[a];
+    const double z = geo.thickness[a] * (zeta / 2 - geo.offset), half = geo.thickness[a] / 2;
     // d(θ × V)/dθ_k = e_k × V, so g · d(θ × V)/dθ_k = (V × g)_k.
     const Vec3 c1 = cross(geo.director[a], p.g[0]), c2 = cross(geo.director[a], p.g[1]),
                c3 = cross(geo.director[a], p.g[2]);
@@ -275,27 +282,51 @@ bool shell_axes(const Vec3& g1, const Vec3& g2, std::array<Vec3, 3>& axes) {
 namespace {
 
 /// The small-strain shell (shell_elements.hpp).
+/// The thickness at the in-plane point (ξ, η), interpolated from the nodes'.
+double point_thickness(const Geometry& geo, double xi, double eta) {
+  const ShapeValues sv = evaluate_shape(geo.shape, {xi, eta, 0.0});
+  double t = 0.0;
+  for (int a = 0; a < geo.n; ++a) t += sv.N[a] * geo.thickness[a];
+  return t;
+}
+
+/// The geometry of the element with its nodes' thicknesses; false for a thickness not positive.
+bool shell_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const ShellThickness& thickness,
+                    double offset, Geometry& geo) {
+  geo = Geometry{element_shape(type), type.n_nodes, coords, {}, {}, offset};
+  if (!thickness.nodal.empty() && static_cast<int>(thickness.nodal.size()) != geo.n)
+    throw std::invalid_argument("compute_shell: one nodal thickness per node");
+  for (int a = 0; a < geo.n; ++a) {
+    geo.thickness[a] = thickness.nodal.empty() ? thickness.uniform : thickness.nodal[a];
+    if (!(geo.thickness[a] > 0.0)) return false;
+  }
+  return true;
+}
+
 void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                         const ShellProperties& section, double thickness, const ElementRequest& request,
-                         std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out) {
-  Geometry geo{element_shape(type), type.n_nodes, coords, {}, thickness, section.offset};
+                         const ShellProperties& section, const ShellThickness& thickness,
+                         const ElementRequest& request, std::span<const double> delta_t,
+                         const ShellMaterial& material, ElementSystem& out) {
+  Geometry geo;
+  const bool thick = shell_geometry(type, coords, thickness, section.offset, geo);
   const int nd = geo.n_dof();
   if (static_cast<int>(coords.size()) != geo.n || static_cast<int>(u.size()) != nd)
     throw std::invalid_argument("compute_shell: coordinate or displacement count mismatch");
   begin_element_system(out, nd, request);
   out.min_jacobian = 0.0;
-  if (!nodal_directors(geo) || !(thickness > 0.0)) return;  // degenerate: the caller reports it
+  if (!nodal_directors(geo) || !thick) return;  // degenerate: the caller reports it
   out.min_jacobian = 1e300;
   const double G = section.shear_modulus();
-  const std::array<double, 2> shear = section.transverse_shear
-                                          ? std::array<double, 2>{(*section.transverse_shear)[0] / thickness,
-                                                                  (*section.transverse_shear)[1] / thickness}
-                                          : std::array<double, 2>{5.0 / 6 * G, 5.0 / 6 * G};
   std::array<Row, 5> db{};
   const std::vector<QuadraturePoint>& rule = element_rule(type);
   for (std::size_t iq = 0; iq < rule.size(); ++iq) {
     const QuadraturePoint& q = rule[iq];
     const double xi = q.xi[0], eta = q.xi[1];
+    const double t_here = point_thickness(geo, xi, eta);
+    const std::array<double, 2> shear = section.transverse_shear
+                                            ? std::array<double, 2>{(*section.transverse_shear)[0] / t_here,
+                                                                    (*section.transverse_shear)[1] / t_here}
+                                            : std::array<double, 2>{5.0 / 6 * G, 5.0 / 6 * G};
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
     std::array<PointResult, 2> surfaces{};  // SNEG, SPOS
     double temperature = 0.0;
@@ -336,7 +367,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
           }
       }
       // Section forces per unit length: ∫ σ dz with dz = (t/2) dζ, moments about the midsurface.
-      const double dz = section.weight[k] * thickness / 2, zm = zeta * thickness / 2;
+      const double dz = section.weight[k] * t_here / 2, zm = zeta * t_here / 2;
       const double in_plane[3] = {stress[0], stress[1], stress[2]};
       for (int c = 0; c < 3; ++c) section_force[c] += in_plane[c] * dz, section_force[3 + c] += in_plane[c] * zm * dz;
       if (request.point_output && (k == 0 || k + 1 == section.zeta.size())) {
@@ -351,13 +382,14 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     const CovariantPoint mid = covariant_point(geo, xi, eta, 0.0);
     const double da = q.weight * norm(cross(mid.g[0], mid.g[1]));
     for (PointResult& r : surfaces) {
-      r.volume = da * thickness / 2;
+      r.volume = da * t_here / 2;
       r.section = section_force;
       out.points.push_back(r);
     }
   }
   const double nu = section.poissons_ratio;
-  const double bending = section.youngs_modulus * thickness * thickness * thickness / (12 * (1 - nu * nu));
+  const double t = geo.mean_thickness();
+  const double bending = section.youngs_modulus * t * t * t / (12 * (1 - nu * nu));
   add_drilling(geo, 1e-4 * bending, u, out);
 }
 
@@ -368,7 +400,7 @@ std::size_t shell_material_points(const model::ElementTypeInfo& type, const Shel
 }
 
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                   const ShellProperties& section, double thickness, const ElementRequest& request,
+                   const ShellProperties& section, const ShellThickness& thickness, const ElementRequest& request,
                    std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out) {
   if (material.law && material.history.per_point != material.law->state_size())
     throw std::invalid_argument("compute_shell: a material with state needs its points' history");

@@ -46,15 +46,24 @@ struct ShellMaterial {
   ElementHistory history;  ///< per_point = law's state size; point = in-plane point × section points + k
 };
 
+/// A shell element's thickness: the section's, or *NODAL THICKNESS's one per node, interpolated
+/// to the points as Abaqus does.
+struct ShellThickness {
+  double uniform = 0.0;
+  std::span<const double> nodal;  ///< empty: `uniform` throughout
+  ShellThickness(double t) : uniform(t) {}  // NOLINT(google-explicit-constructor): a plain thickness
+  ShellThickness(double t, std::span<const double> at_nodes) : uniform(t), nodal(at_nodes) {}
+};
+
 /// The points that carry a shell's material state: each in-plane point at each section point.
 std::size_t shell_material_points(const model::ElementTypeInfo& type, const ShellProperties& section);
 
 /// Stiffness, internal force and point output of a shell. `u` holds 6 values per node in the
-/// order above; coords the reference nodes; thickness the element's; delta_t the nodes'
-/// temperature change (empty: none). Linear with the section's elastic lamina; with a law of
+/// order above; coords the reference nodes; thickness the element's (or its nodes'); delta_t the
+/// nodes' temperature change (empty: none). Linear with the section's elastic lamina; with a law of
 /// `material`, its plane stress state at each section point (PE, PEEQ in the points' output).
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                   const ShellProperties& section, double thickness, const ElementRequest& request,
+                   const ShellProperties& section, const ShellThickness& thickness, const ElementRequest& request,
                    std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out);
 
 /// The local shell axes {e1, e2, e3} at a point with surface tangents g1, g2 (Abaqus's default
