@@ -35,11 +35,9 @@ elements::ShellProperties shell_section_properties(const model::Model& m, const 
 
 /// The law at the section points of a shell whose material has *PLASTIC: Mises in plane stress
 /// (σ33 = 0 at each point), isotropic or linear kinematic hardening at one temperature, small
-/// strain and small rotation; the transverse shear stays elastic, as in Abaqus's shells. Null
-/// without *PLASTIC. Not under NLGEOM yet: the corotated kernel's tangent is consistent
-/// (tests/solver/test_corotation.cpp), but each increment's first correction stretches a turning
-/// strip by its linearised turn, its points yield in that transient state, and a strip bent into
-/// the plastic range cuts back until it stops.
+/// strain; the transverse shear stays elastic, as in Abaqus's shells. Under NLGEOM the law sees
+/// the corotated strains (corotation.hpp), so the strains stay small while the shell turns. Null
+/// without *PLASTIC.
 std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& m, const model::ShellSection& sec) {
   const model::Material& mat = m.materials.at(sec.material);
   if (!mat.plastic) return nullptr;
@@ -52,10 +50,6 @@ std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& 
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC with combined hardening or several "
                                     "temperatures; shells take isotropic or kinematic hardening at one temperature so "
                                     "far", m.sources.describe(sec.loc), keyword_of(sec), mat.name));
-  if (const model::Step* step = model::first_nlgeom_step(m.steps))
-    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; plastic shells under NLGEOM (step "
-                                    "'{}') are not supported yet (without NLGEOM they are)",
-                                    m.sources.describe(sec.loc), keyword_of(sec), mat.name, step->name));
   elements::ElasticConstants c;
   c.youngs_modulus = mat.elastic->youngs_modulus;
   c.poissons_ratio = mat.elastic->poissons_ratio;

@@ -26,6 +26,9 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
   tapered        the strip with *NODAL THICKNESS 0.1 (1 + x/L) under the tip line load 1: the
                  nodes' thicknesses interpolated to the points (Euler-Bernoulli 11.5888 plus
                  shear 8.3e-4).
+  plastic_nlgeom the plastic strip under NLGEOM (the tip turned by 0.3, then 1 rad).
+  plastic_plate  a clamped square plate 1 x 1, t = 0.01, of a hardening metal under a pressure 5,
+                 NLGEOM: about 13 thicknesses of deflection, yielded through its thickness.
   rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
                  t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
                  full circle (U2, UR1, UR3 held: a planar problem).
@@ -244,6 +247,27 @@ def rollup(etype, n):
         elements, "1.2e6, 0.", sets, tail
 
 
+def plastic_nlgeom(etype, n):
+    """The plastic strip of `plastic` bent under NLGEOM: the tip turned by 0.3, then 1 rad."""
+    heading, nodes, elements, material, sets, tail = plastic(etype, n)
+    tail = [line.replace(", INC=100", ", INC=100, NLGEOM") for line in tail]
+    return heading + ", NLGEOM", nodes, elements, material, sets, tail
+
+
+def plastic_plate(etype, n):
+    """A clamped square plate 1 x 1, t = 0.01, of a hardening metal (E = 210000, nu = 0.3, yield
+    250 rising to 400 at a plastic strain of 0.2) under a pressure of 5 along its normal, NLGEOM:
+    it deflects about 13 thicknesses, stretched and yielded through its thickness."""
+    nodes, elements = grid(etype, n, n, lambda s, t: (s, t, 0.0))
+    sets = {"EDGE": lambda s, t: near(s, 0) or near(s, 1) or near(t, 0) or near(t, 1),
+            "CENTER": lambda s, t: near(s, 0.5) and near(t, 0.5)}
+    tail = ["*PLASTIC", "250., 0.", "400., 0.2", "*SHELL SECTION, ELSET=SHELL, MATERIAL=M", "0.01, 5",
+            "*BOUNDARY", "EDGE, ENCASTRE", "*STEP, NLGEOM, INC=200", "*STATIC", "0.05, 1.", "*DLOAD", "SHELL, P, 5.",
+            "*NODE PRINT, NSET=CENTER", "U", "*OUTPUT, FIELD", "*NODE OUTPUT", "U, RF", "*ELEMENT OUTPUT", "S, PEEQ",
+            "*END STEP"]
+    return "Clamped plastic plate under a pressure 5, NLGEOM", nodes, elements, "210000., 0.3", sets, tail
+
+
 def plastic(etype, n):
     """n elements along the strip, one across: the tip's rotation about y prescribed (its
     translations free, so the moment is uniform). The root holds U1, U3 and UR2 (U2 at one
@@ -268,13 +292,14 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
     ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup",
-                                     "plastic", "pressure", "tapered"])
+                                     "plastic", "pressure", "tapered", "plastic_nlgeom", "plastic_plate"])
     ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
     ap.add_argument("n", type=int)
     ap.add_argument("thin", nargs="?", default="")
     a = ap.parse_args()
     make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
             "rollup": rollup, "plastic": plastic, "pressure": pressure, "tapered": tapered,
+            "plastic_nlgeom": plastic_nlgeom, "plastic_plate": plastic_plate,
             "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
     heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
     suffix = "_thin" if a.thin == "thin" else ""
