@@ -74,12 +74,12 @@ void write_materials(std::ostream& out, const model::Model& m) {
   for (const auto& s : m.mesh.sections)
     print(out, "  solid: elset {} -> material {}{}\n", s.elset, s.material,
           s.thickness != 1.0 ? fmt::format(", thickness {:g}", s.thickness) : "");
-  static constexpr const char* kShapes[] = {"RECT", "CIRC", "PIPE", "GENERAL"};
   for (const auto& s : m.mesh.beam_sections)
-    print(out, "  beam: elset {} -> {} {} {}, n1 ({:g}, {:g}, {:g})\n", s.elset,
+    print(out, "  beam: elset {} -> {} {} {}, n1 ({:g}, {:g}, {:g}){}\n", s.elset,
           s.material.empty() ? fmt::format("E = {:g}, G = {:g},", s.youngs_modulus, s.shear_modulus)
                              : fmt::format("material {},", s.material),
-          kShapes[static_cast<int>(s.shape)], fmt::format("{}", fmt::join(s.dims, " x ")), s.n1[0], s.n1[1], s.n1[2]);
+          model::shape_name(s.shape), fmt::format("{}", fmt::join(s.dims, " x ")), s.n1[0], s.n1[1], s.n1[2],
+          s.offset != std::array<double, 2>{} ? fmt::format(", offsets {:g}, {:g}", s.offset[0], s.offset[1]) : "");
   for (const auto& s : m.mesh.shell_sections)
     print(out, "  shell: elset {} -> material {}, {}, {}{}\n", s.elset, s.material,
           s.nodal_thickness ? std::string("nodal thickness") : fmt::format("thickness {:g}", s.thickness),

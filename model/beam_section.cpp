@@ -17,4 +17,16 @@ double section_area(const BeamSection& s) {
   return 0.0;
 }
 
+const char* shape_name(BeamSection::Shape shape) {
+  switch (shape) {
+    case BeamSection::Shape::Rect: return "RECT";
+    case BeamSection::Shape::Circ: return "CIRC";
+    case BeamSection::Shape::Pipe: return "PIPE";
+    case BeamSection::Shape::Box: return "BOX";
+    case BeamSection::Shape::I: return "I";
+    case BeamSection::Shape::General: return "GENERAL";
+  }
+  return "?";
+}
+
 }  // namespace inpact::model

@@ -39,4 +39,7 @@ struct BeamSection {
   SourceLoc loc;
 };
 
+/// The shape's SECTION= name.
+const char* shape_name(BeamSection::Shape shape);
+
 }  // namespace inpact::model

@@ -20,7 +20,8 @@ std::vector<std::int32_t> face_nodes(const Elements& elements, Face face);
 std::vector<Face> exterior_faces(const Elements& elements, std::span<const std::int32_t> subset);
 
 /// A shell element's thickness: its section's, or with NODAL THICKNESS the mean of its nodes'
-/// *NODAL THICKNESS (the analysis and the default contact stiffness both take this one).
+/// *NODAL THICKNESS (the contact offsets and the drilling spring take this one; the kernel
+/// interpolates the nodes' own).
 double shell_thickness(const Mesh& mesh, const ShellSection& section, std::size_t element);
 
 }  // namespace inpact::model

@@ -23,7 +23,7 @@ struct ShellSection {
   double offset = 0.0;
   /// *SHELL GENERAL SECTION: the section is integrated exactly (no section points).
   bool general = false;
-  /// NODAL THICKNESS: each element's thickness is the mean of its nodes' *NODAL THICKNESS.
+  /// NODAL THICKNESS: the nodes' *NODAL THICKNESS, interpolated to the points by the kernel.
   bool nodal_thickness = false;
   /// *TRANSVERSE SHEAR STIFFNESS K11, K22, K12 (force per length); unset: 5/6 G t.
   std::optional<std::array<double, 3>> transverse_shear;

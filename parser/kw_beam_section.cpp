@@ -34,8 +34,8 @@ constexpr ShapeSpec kShapes[] = {{"RECT", Shape::Rect, 2, "a (width along n1), b
                                  {"I", Shape::I, 7, "l, h, b1, b2, t1, t2, t3"},
                                  {"GENERAL", Shape::General, 5, "A, I11, I12, I22, J"}};
 
-bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d);
-bool i_parts_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d);
+bool box_walls_fit(KeywordContext& ctx, const std::vector<Field>& f, const std::vector<double>& d);
+bool i_parts_fit(KeywordContext& ctx, const std::vector<Field>& f, const std::vector<double>& d);
 
 /// The dimensions line: each a positive number (I12 of a general section may be any number).
 bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, model::BeamSection& sec) {
@@ -63,14 +63,14 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
     ctx.error(f[1].loc, fmt::format("the wall thickness {:g} exceeds the outer radius {:g}", sec.dims[1], sec.dims[0]));
     return false;
   }
-  if (spec.shape == Shape::Box) return box_walls_fit(ctx, line, sec.dims);
-  return spec.shape != Shape::I || i_parts_fit(ctx, line, sec.dims);
+  if (spec.shape == Shape::Box) return box_walls_fit(ctx, f, sec.dims);
+  return spec.shape != Shape::I || i_parts_fit(ctx, f, sec.dims);
 }
 
 /// A BOX's walls fit inside it.
-bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d) {
+bool box_walls_fit(KeywordContext& ctx, const std::vector<Field>& f, const std::vector<double>& d) {
   if (d[2] + d[4] >= d[0] || d[3] + d[5] >= d[1]) {
-    ctx.error(line.loc, fmt::format("the walls t1 + t3 = {:g} and t2 + t4 = {:g} must be thinner than a = {:g} and "
+    ctx.error(f[d[2] + d[4] >= d[0] ? 2 : 3].loc, fmt::format("the walls t1 + t3 = {:g} and t2 + t4 = {:g} must be thinner than a = {:g} and "
                                     "b = {:g}", d[2] + d[4], d[3] + d[5], d[0], d[1]));
     return false;
   }
@@ -78,14 +78,14 @@ bool box_walls_fit(KeywordContext& ctx, const Line& line, const std::vector<doub
 }
 
 /// An I's flanges fit in its height and its web in its flanges.
-bool i_parts_fit(KeywordContext& ctx, const Line& line, const std::vector<double>& d) {
+bool i_parts_fit(KeywordContext& ctx, const std::vector<Field>& f, const std::vector<double>& d) {
   if (d[4] + d[5] >= d[1]) {
-    ctx.error(line.loc, fmt::format("the flanges t1 + t2 = {:g} must be thinner than the height h = {:g}", d[4] + d[5],
+    ctx.error(f[4].loc, fmt::format("the flanges t1 + t2 = {:g} must be thinner than the height h = {:g}", d[4] + d[5],
                                     d[1]));
     return false;
   }
   if (d[6] > d[2] || d[6] > d[3]) {
-    ctx.error(line.loc, fmt::format("the web t3 = {:g} must be no wider than the flanges b1 = {:g}, b2 = {:g}", d[6],
+    ctx.error(f[6].loc, fmt::format("the web t3 = {:g} must be no wider than the flanges b1 = {:g}, b2 = {:g}", d[6],
                                     d[2], d[3]));
     return false;
   }
@@ -155,6 +155,12 @@ void read_section(KeywordContext& ctx, bool general) {
   sec.loc = ctx.keyword.loc;
   sec.n1_loc = ctx.keyword.loc;
   if (!general) sec.offset = {ctx.real_value("OFFSET1").value_or(0.0), ctx.real_value("OFFSET2").value_or(0.0)};
+  if (spec->shape == Shape::I && (ctx.has("OFFSET1") || ctx.has("OFFSET2"))) {
+    ctx.error_param(ctx.has("OFFSET1") ? "OFFSET1" : "OFFSET2",
+                    "an I section places its nodes by its own l (its first dimension); CalculiX's offsets are for "
+                    "RECT, CIRC, PIPE and BOX");
+    return;
+  }
   const std::size_t n_lines = general ? 3 : 2;
   if (ctx.data.size() > n_lines) {
     ctx.error(ctx.data[n_lines].loc, fmt::format("expected at most {} data lines", n_lines));

@@ -42,6 +42,12 @@ struct ElementSetup {
 };
 
 struct AnalysisModel {
+  // Not copyable: SectionData's spans view shell_nodal_thickness, which a copy would not move.
+  AnalysisModel() = default;
+  AnalysisModel(const AnalysisModel&) = delete;
+  AnalysisModel& operator=(const AnalysisModel&) = delete;
+  AnalysisModel(AnalysisModel&&) = default;
+  AnalysisModel& operator=(AnalysisModel&&) = default;
   const model::Model* model = nullptr;
   int dim = 3;  ///< DOFs per node: 3 for solids and T3D*, 2 for plane, axisymmetric and T2D2 models (springs take it)
   bool axisymmetric = false;

@@ -1,8 +1,8 @@
 #pragma once
 /// Shells resolved for the analysis: each section's properties (shell_section.hpp) from its
-/// material, each element's thickness (the section's, or the mean of its nodes' *NODAL
-/// THICKNESS), and the deck errors the model shows only now: types without finite rotations
-/// under NLGEOM, materials shells do not take yet, a degenerate shell element.
+/// material, each element's thickness (the section's, or with *NODAL THICKNESS its nodes' and
+/// their mean), and the deck errors the model shows only now: materials shells do not take yet,
+/// a degenerate shell element.
 #include "analysis_model.hpp"
 
 namespace inpact::solver {

@@ -191,7 +191,8 @@ void compute_beam_centred(const model::ElementTypeInfo& type, std::span<const Ve
 }
 
 /// The small-strain beam whose centroid lies off its nodes (BeamProperties::centroid): the
-/// centroid's line r = c1 n1 + c2 n2 from the nodes (the chord's axes) is tied to them rigidly,
+/// centroid's line r = c1 n1 + c2 n2 from the nodes (the chord's axes: one r for the element,
+/// which a curved B32's points share approximately) is tied to them rigidly,
 /// u_c = u + θ × r, so the centred kernel's force f_c and tangent K_c return as Tᵀ f_c and
 /// Tᵀ K_c T: a centroid's axial force bends the node line, as Abaqus's offset sections do.
 void compute_beam_offset(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,

@@ -121,7 +121,7 @@ BeamProperties beam_properties(const model::BeamSection& section, double youngs_
   double k13 = kga, k23 = kga;
   if (section.shape == Shape::I) {
     k13 = 5.0 / 6 * p.shear_modulus * (d[2] * d[4] + d[3] * d[5]);
-    k23 = p.shear_modulus * d[6] * (d[1] - (d[4] + d[5]) / 2);
+    k23 = p.shear_modulus * d[6] * (d[1] - (d[4] + d[5]) / 2);  // the web between the flanges' midlines
   }
   p.k13 = section.k13.value_or(k13);
   p.k23 = section.k23.value_or(k23);

@@ -114,7 +114,7 @@ bool log_rotation(const M3<S>& r, V3<S>& theta) {
   return true;
 }
 
-/// The element's frame as its columns e1, e2, e3 (header) from its frame nodes (`FrameNodes`):
+/// The element's frame as its columns e1, e2, e3 (header) from its frame nodes (frame_nodes):
 /// a beam's end nodes' positions and rotations, a shell's corner positions. False when the
 /// element has no frame (a collapsed shell, a beam whose ends' n1 have turned against each other
 /// by π).

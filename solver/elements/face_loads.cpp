@@ -109,7 +109,12 @@ void integrate_volume(const model::ElementTypeInfo& type, std::span<const Vec3> 
         for (int i = 0; i < 3; ++i)
           x[i] += sv.N[a] * coords[a][i], g1[i] += sv.dN[a][0] * coords[a][i], g2[i] += sv.dN[a][1] * coords[a][i];
       const Vec3 g{g1[1] * g2[2] - g1[2] * g2[1], g1[2] * g2[0] - g1[0] * g2[2], g1[0] * g2[1] - g1[1] * g2[0]};
-      fn(sv, x, q.weight * std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * section.thickness);
+      double t = section.thickness;  // *NODAL THICKNESS: interpolated, as the shell kernel does
+      if (!section.nodal_thickness.empty()) {
+        t = 0.0;
+        for (int a = 0; a < n; ++a) t += sv.N[a] * section.nodal_thickness[a];
+      }
+      fn(sv, x, q.weight * std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * t);
     }
     return;
   }

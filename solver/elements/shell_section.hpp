@@ -1,8 +1,8 @@
 #pragma once
 /// A shell section as the shell kernel uses it (shell_elements.hpp): the lamina's elasticity,
 /// where the reference surface lies, the section points through the thickness and the
-/// transverse shear stiffness. The thickness itself is per element (SectionData::thickness):
-/// *NODAL THICKNESS makes it vary.
+/// transverse shear stiffness. The thickness itself is per element (SectionData::thickness), or
+/// per node with *NODAL THICKNESS (SectionData::nodal_thickness, interpolated to the points).
 #include <array>
 #include <optional>
 #include <vector>

@@ -67,6 +67,8 @@ TEST(BeamSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError)
            {kBeams + kMaterial + sec + "L\n1., 1., .1, .1\n", "SECTION=L is not supported yet"},
            {kBeams + kMaterial + sec + "I\n.5, 1., .4, .4, .5, .5, .1\n", "the flanges t1 + t2 = 1 must be thinner"},
            {kBeams + kMaterial + sec + "I\n.5, 1., .4, .4, .1, .1, .5\n", "the web t3 = 0.5 must be no wider"},
+           {kBeams + kMaterial + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=I, OFFSET2=0.5\n.5, 1., .4, .4, .1, .1, .1\n",
+            "deck.inp:11:56: error: *BEAM SECTION: an I section places its nodes by its own l"},
            {kBeams + kMaterial + sec + "BOX\n1., 1., .5, .1, .5, .1\n", "must be thinner than"},
            {kBeams + kMaterial + sec + "PIPE\n0.1, 0.2\n", "the wall thickness 0.2 exceeds the outer radius 0.1"},
            {kBeams + kMaterial + sec + "CIRC\n0.1\n0., 0., 0.\n", "the n1 direction is the zero vector"},
