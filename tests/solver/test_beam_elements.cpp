@@ -136,6 +136,29 @@ TEST(BeamElements, AnUnevenBoxHasItsCentroidOffTheCentre) {
   EXPECT_NEAR(beam_properties(b, 2.0e5, 0.3).centroid[0], x1 - 0.15, 1e-15);
 }
 
+// Abaqus's I with unequal flanges and its origin on the bottom edge (l = 0, h = 0.3, b1 = 0.2,
+// b2 = 0.1, t1 = 0.02, t2 = 0.01, t3 = 0.01), by hand from its three rectangles: A, the
+// centroid's height, I about it, J = Σ b t³/3; the web shears along n2 over the height between
+// the flanges' midlines, the flanges along n1 with 5/6 of their area.
+TEST(BeamElements, AnISectionsPropertiesMatchHandValues) {
+  model::BeamSection b;
+  b.shape = model::BeamSection::Shape::I;
+  b.dims = {0.0, 0.3, 0.2, 0.1, 0.02, 0.01, 0.01};
+  const BeamProperties p = beam_properties(b, 2.0e5, 0.3);
+  const double a1 = 0.2 * 0.02, a2 = 0.1 * 0.01, aw = 0.27 * 0.01, area = a1 + a2 + aw;
+  const double e = (a1 * 0.01 + a2 * 0.295 + aw * 0.155) / area;
+  EXPECT_NEAR(p.area, area, 1e-15);
+  EXPECT_NEAR(p.centroid[0], 0.0, 1e-15);
+  EXPECT_NEAR(p.centroid[1], e, 1e-15);
+  EXPECT_NEAR(p.i11, 0.2 * 8e-6 / 12 + a1 * (0.01 - e) * (0.01 - e) + 0.1 * 1e-6 / 12 + a2 * (0.295 - e) * (0.295 - e) +
+                         0.01 * std::pow(0.27, 3) / 12 + aw * (0.155 - e) * (0.155 - e),
+              1e-15);
+  EXPECT_NEAR(p.i22, (0.02 * 0.008 + 0.01 * 0.001 + 0.27 * 1e-6) / 12, 1e-15);
+  EXPECT_NEAR(p.torsion, (0.2 * 8e-6 + 0.1 * 1e-6 + 0.27 * 1e-6) / 3, 1e-15);
+  EXPECT_NEAR(p.k23, p.shear_modulus * 0.01 * (0.3 - 0.015), 1e-9);
+  EXPECT_NEAR(p.k13, 5.0 / 6 * p.shear_modulus * (a1 + a2), 1e-9);
+}
+
 // n1 along the beam leaves no plane to bend in; across it, the axes are right-handed.
 TEST(BeamElements, LocalAxesAreRightHandedAndRefuseAnN1AlongTheBeam) {
   std::array<Vec3, 3> axes;

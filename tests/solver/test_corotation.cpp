@@ -46,6 +46,7 @@ TEST(Corotation, TheRotationVectorOfExpIsTheVectorItCameFrom) {
 struct Element {
   std::string_view type;
   std::vector<Vec3> coords;
+  bool offset = false;  ///< a beam whose section's centroid lies off its nodes
 };
 
 const std::vector<Element>& elements() {
@@ -60,6 +61,8 @@ const std::vector<Element>& elements() {
                {1, 0, 0}, {2.1, 0.75, 0.05}, {1.1, 1.45, 0.05}, {0, 0.7, 0}}},
       {"S8", {{0, 0, 0}, {2, 0, 0}, {2.2, 1.5, 0.1}, {0, 1.4, 0},
               {1, 0, 0}, {2.1, 0.75, 0.05}, {1.1, 1.45, 0.05}, {0, 0.7, 0}}},
+      {"B31", {{0, 0, 0}, {1.0, 0.2, -0.1}}, true},  // its centroid off the node line
+      {"B32", {{0, 0, 0}, {0.52, 0.08, -0.04}, {1.0, 0.2, -0.1}}, true},
   };
   return all;
 }
@@ -79,8 +82,15 @@ ShellProperties shell() {
   return shell_properties(s, 2e5, 0.3, 0.0);
 }
 
+BeamProperties offset_beam() {
+  BeamProperties p = beam();
+  p.centroid = {0.04, -0.07};
+  return p;
+}
+
 ElementSystem evaluate(const Element& el, const std::vector<double>& q, bool nlgeom) {
-  static const BeamProperties b = beam();
+  static const BeamProperties plain = beam(), offset = offset_beam();
+  const BeamProperties& b = el.offset ? offset : plain;
   static const ShellProperties s = shell();
   const auto& type = *model::find_element_type(el.type);
   ElementRequest req{.stiffness = true, .internal_force = true, .point_output = true, .nlgeom = nlgeom};
