@@ -8,7 +8,7 @@
 /// general forms (MESHED, NONLINEAR GENERAL) stop here with what is missing.
 ///
 /// CalculiX reads CIRC's number as the diameter (its "thickness"; a second number makes an
-/// ellipse); inpact reads it as Abaqus does, the radius.
+/// ellipse); inpact reads it as Abaqus does, the radius. A RECT of one width is CalculiX's square.
 #include <fmt/format.h>
 
 #include "handlers.hpp"
@@ -41,6 +41,11 @@ bool i_parts_fit(KeywordContext& ctx, const std::vector<Field>& f, const std::ve
 bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, model::BeamSection& sec) {
   std::vector<Field> f;
   split_fields(line, f);
+  if (spec.shape == Shape::Rect && f.size() == 1) {  // CalculiX: a RECT of one width is a square
+    ctx.warning(f[0].loc, fmt::format("RECT with one width {} is read as CalculiX's square (Abaqus needs a, b)",
+                                      f[0].text));
+    f.push_back(f[0]);
+  }
   if (!ctx.check_count(f, line, spec.n_dims, spec.shape == Shape::General ? 7 : spec.n_dims, spec.layout)) return false;
   sec.dims_loc = line.loc;
   for (std::size_t i = 0; i < spec.n_dims; ++i) {
