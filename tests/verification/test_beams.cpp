@@ -291,6 +291,21 @@ TEST(Beams, CalculixOffsetsPutTheNodeLineOffTheCentroid) {
   expect_eccentric_tension(*r, kA, kI11, -0.1);
 }
 
+// An L-frame (beam_lframe_b33.inp): two unit B33 legs at a right angle, the first clamped, a load
+// P = 0.001 out of the frame's plane at the far tip. Each leg bends as a cantilever and the
+// joint hands the second leg's root moment PL to the first as a torque: δ = 2PL³/(3EI) +
+// PL³/(GJ), exact for B33 (1e-9), so the joint is rigid in all three rotations. CalculiX 2.20 on
+// the frame in B32 gives 1.604e-2 against 2.0187e-2: its bricks are stiffer in torsion.
+TEST(Beams, AnLFrameBendsAndTwistsThroughItsRigidJoint) {
+  const auto r = run_deck(deck_path("beam_lframe_b33.inp"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  model::BeamSection square;
+  square.dims = {0.05, 0.05};
+  const auto p = solver::elements::beam_properties(square, 210000.0, 0.3);
+  const double P = 0.001, delta = 2 * P / (3 * 210000.0 * p.i11) + P / (p.shear_modulus * p.torsion);
+  EXPECT_NEAR(nodal(r->capture.last(), "U", row_of(*r, 3), 2), delta, 1e-9 * delta);
+}
+
 // NLGEOM: the cantilever rolled up by an end moment M = 2π EI22/L (beam_rollup_*_50.inp). Each
 // corotated element carries the moment as pure bending, so the nodes lie on the regular polygon
 // of chords L/50 that closes after a full turn: the tip is back at the root turned by 2π, every
