@@ -117,7 +117,7 @@ namespace {
 
 /// The small-strain beam on its centroid's line (beam_elements.hpp).
 void compute_beam_centred(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                        const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
+                          const BeamProperties& section, const ElementRequest& request, ElementSystem& out) {
   const int n = type.n_nodes;
   const int n_dof = 6 * n;
   if (static_cast<int>(coords.size()) != n || static_cast<int>(u.size()) != n_dof)
@@ -234,7 +234,8 @@ void compute_beam_offset(const model::ElementTypeInfo& type, std::span<const Vec
     for (int k = 0; k < n_dof; ++k) {
       const double kik = c.stiffness[static_cast<std::size_t>(i * n_dof + k)];
       if (kik == 0.0) continue;
-      for (int j = 0; j < n_dof; ++j) kt[static_cast<std::size_t>(i * n_dof + j)] += kik * t[static_cast<std::size_t>(k * n_dof + j)];
+      for (int j = 0; j < n_dof; ++j)
+        kt[static_cast<std::size_t>(i * n_dof + j)] += kik * t[static_cast<std::size_t>(k * n_dof + j)];
     }
   for (int k = 0; k < n_dof; ++k)
     for (int i = 0; i < n_dof; ++i) {
