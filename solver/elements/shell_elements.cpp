@@ -281,7 +281,6 @@ bool shell_axes(const Vec3& g1, const Vec3& g2, std::array<Vec3, 3>& axes) {
 
 namespace {
 
-/// The small-strain shell (shell_elements.hpp).
 /// The thickness at the in-plane point (ξ, η), interpolated from the nodes'.
 double point_thickness(const Geometry& geo, double xi, double eta) {
   const ShapeValues sv = evaluate_shape(geo.shape, {xi, eta, 0.0});
@@ -303,6 +302,7 @@ bool shell_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> co
   return true;
 }
 
+/// The small-strain shell (shell_elements.hpp).
 void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                          const ShellProperties& section, const ShellThickness& thickness,
                          const ElementRequest& request, std::span<const double> delta_t,
