@@ -75,8 +75,9 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
 /// A BOX's walls fit inside it.
 bool box_walls_fit(KeywordContext& ctx, const std::vector<Field>& f, const std::vector<double>& d) {
   if (d[2] + d[4] >= d[0] || d[3] + d[5] >= d[1]) {
-    ctx.error(f[d[2] + d[4] >= d[0] ? 2 : 3].loc, fmt::format("the walls t1 + t3 = {:g} and t2 + t4 = {:g} must be thinner than a = {:g} and "
-                                    "b = {:g}", d[2] + d[4], d[3] + d[5], d[0], d[1]));
+    const std::size_t wall = d[2] + d[4] >= d[0] ? 2 : 3;
+    ctx.error(f[wall].loc, fmt::format("the walls t1 + t3 = {:g} and t2 + t4 = {:g} must be thinner than a = {:g} and "
+                                       "b = {:g}", d[2] + d[4], d[3] + d[5], d[0], d[1]));
     return false;
   }
   return true;
