@@ -59,6 +59,8 @@ struct AnalysisModel {
   /// What SectionData::nodal_thickness views, one array per shell with *NODAL THICKNESS (a deque:
   /// growing it keeps the earlier arrays in place).
   std::deque<std::array<double, 8>> shell_nodal_thickness;
+  /// What SectionData::shell_directors views: one array per shell whose directors are averaged.
+  std::deque<std::array<elements::Vec3, 8>> shell_directors;
   std::vector<std::shared_ptr<const elements::MaterialOrientation>> orientations;  ///< ElementSetup::orientation's
   double size = 0.0;  ///< diagonal of the nodes' bounding box: the model's length scale
   /// The contact interactions: pairs and what general contact expands to (pair rows).

@@ -10,6 +10,7 @@
 #include "elastic_law.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/shell_section.hpp"
+#include "shell_normals.hpp"
 
 namespace inpact::solver {
 
@@ -82,6 +83,7 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
       s.density = m.materials.at(sec.material).density.value_or(0.0);
     }
   }
+  average_shell_normals(m, am);
 }
 
 }  // namespace inpact::solver

@@ -446,7 +446,7 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     ShellMaterial material;
     if constexpr (std::is_same_v<Law, Material>)
       if (law.state_size() > 0) material = {&law, history};
-    compute_shell(type, coords, u, *section.shell, ShellThickness(section.thickness, section.nodal_thickness), request,
+    compute_shell(type, coords, u, *section.shell, ShellThickness(section.thickness, section.nodal_thickness, section.shell_directors), request,
                   delta_t, material, out);
     return;
   }

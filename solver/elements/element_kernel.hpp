@@ -51,6 +51,9 @@ struct SectionData {
   /// Shells with *NODAL THICKNESS: their nodes' thicknesses (owned by the AnalysisModel), which
   /// the kernel interpolates; empty: `thickness` throughout.
   std::span<const double> nodal_thickness{};
+  /// Shells whose nodes' normals are averaged with their neighbours' (shell_normals.hpp): the
+  /// directors at its nodes (owned by the AnalysisModel); empty: the element's own normals.
+  std::span<const Vec3> shell_directors{};
 };
 
 struct ElementRequest {

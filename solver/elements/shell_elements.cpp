@@ -265,6 +265,14 @@ bool nodal_directors(Geometry& geo) {
 
 }  // namespace
 
+bool shell_nodal_normals(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                         std::array<Vec3, 8>& normals) {
+  Geometry geo{element_shape(type), type.n_nodes, coords, {}, {}, 0.0};
+  if (!nodal_directors(geo)) return false;
+  normals = geo.director;
+  return true;
+}
+
 bool shell_axes(const Vec3& g1, const Vec3& g2, std::array<Vec3, 3>& axes) {
   Vec3 n = cross(g1, g2);
   const double l = norm(n);
@@ -315,6 +323,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
   begin_element_system(out, nd, request);
   out.min_jacobian = 0.0;
   if (!nodal_directors(geo) || !thick) return;  // degenerate: the caller reports it
+  for (std::size_t a = 0; a < thickness.directors.size(); ++a) geo.director[a] = thickness.directors[a];
   out.min_jacobian = 1e300;
   const double G = section.shear_modulus();
   std::array<Row, 5> db{};

@@ -47,13 +47,21 @@ struct ShellMaterial {
 };
 
 /// A shell element's thickness: the section's, or *NODAL THICKNESS's one per node, interpolated
-/// to the points as Abaqus does.
+/// to the points as Abaqus does; and its directors where they are not its own normals (Abaqus
+/// averages the normals of the elements that meet at a node, shell_normals.hpp).
 struct ShellThickness {
   double uniform = 0.0;
   std::span<const double> nodal;  ///< empty: `uniform` throughout
+  std::span<const Vec3> directors;  ///< one unit vector per node; empty: the element's own normals
   ShellThickness(double t) : uniform(t) {}  // NOLINT(google-explicit-constructor): a plain thickness
-  ShellThickness(double t, std::span<const double> at_nodes) : uniform(t), nodal(at_nodes) {}
+  ShellThickness(double t, std::span<const double> at_nodes, std::span<const Vec3> at_nodes_directors = {})
+      : uniform(t), nodal(at_nodes), directors(at_nodes_directors) {}
 };
+
+/// The element's own unit normal at each of its nodes (g1 × g2 of its reference geometry there);
+/// false where it vanishes.
+bool shell_nodal_normals(const model::ElementTypeInfo& type, std::span<const Vec3> coords,
+                         std::array<Vec3, 8>& normals);
 
 /// The points that carry a shell's material state: each in-plane point at each section point.
 std::size_t shell_material_points(const model::ElementTypeInfo& type, const ShellProperties& section);
