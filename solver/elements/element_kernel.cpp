@@ -446,8 +446,8 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
     ShellMaterial material;
     if constexpr (std::is_same_v<Law, Material>)
       if (law.state_size() > 0) material = {&law, history};
-    compute_shell(type, coords, u, *section.shell, ShellThickness(section.thickness, section.nodal_thickness, section.shell_directors), request,
-                  delta_t, material, out);
+    const ShellNodeData at_nodes(section.thickness, section.nodal_thickness, section.shell_directors);
+    compute_shell(type, coords, u, *section.shell, at_nodes, request, delta_t, material, out);
     return;
   }
   if (!model::is_continuum(type)) {

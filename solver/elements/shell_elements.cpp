@@ -298,13 +298,13 @@ double point_thickness(const Geometry& geo, double xi, double eta) {
 }
 
 /// The geometry of the element with its nodes' thicknesses; false for a thickness not positive.
-bool shell_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const ShellThickness& thickness,
+bool shell_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> coords, const ShellNodeData& at_nodes,
                     double offset, Geometry& geo) {
   geo = Geometry{element_shape(type), type.n_nodes, coords, {}, {}, offset};
-  if (!thickness.nodal.empty() && static_cast<int>(thickness.nodal.size()) != geo.n)
+  if (!at_nodes.nodal.empty() && static_cast<int>(at_nodes.nodal.size()) != geo.n)
     throw std::invalid_argument("compute_shell: one nodal thickness per node");
   for (int a = 0; a < geo.n; ++a) {
-    geo.thickness[a] = thickness.nodal.empty() ? thickness.uniform : thickness.nodal[a];
+    geo.thickness[a] = at_nodes.nodal.empty() ? at_nodes.uniform : at_nodes.nodal[a];
     if (!(geo.thickness[a] > 0.0)) return false;
   }
   return true;
@@ -312,18 +312,18 @@ bool shell_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> co
 
 /// The small-strain shell (shell_elements.hpp).
 void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                         const ShellProperties& section, const ShellThickness& thickness,
+                         const ShellProperties& section, const ShellNodeData& at_nodes,
                          const ElementRequest& request, std::span<const double> delta_t,
                          const ShellMaterial& material, ElementSystem& out) {
   Geometry geo;
-  const bool thick = shell_geometry(type, coords, thickness, section.offset, geo);
+  const bool thick = shell_geometry(type, coords, at_nodes, section.offset, geo);
   const int nd = geo.n_dof();
   if (static_cast<int>(coords.size()) != geo.n || static_cast<int>(u.size()) != nd)
     throw std::invalid_argument("compute_shell: coordinate or displacement count mismatch");
   begin_element_system(out, nd, request);
   out.min_jacobian = 0.0;
   if (!nodal_directors(geo) || !thick) return;  // degenerate: the caller reports it
-  for (std::size_t a = 0; a < thickness.directors.size(); ++a) geo.director[a] = thickness.directors[a];
+  for (std::size_t a = 0; a < at_nodes.directors.size(); ++a) geo.director[a] = at_nodes.directors[a];
   out.min_jacobian = 1e300;
   const double G = section.shear_modulus();
   std::array<Row, 5> db{};
@@ -409,16 +409,16 @@ std::size_t shell_material_points(const model::ElementTypeInfo& type, const Shel
 }
 
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                   const ShellProperties& section, const ShellThickness& thickness, const ElementRequest& request,
+                   const ShellProperties& section, const ShellNodeData& at_nodes, const ElementRequest& request,
                    std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out) {
   if (material.law && material.history.per_point != material.law->state_size())
     throw std::invalid_argument("compute_shell: a material with state needs its points' history");
   if (!request.nlgeom) {
-    compute_shell_small(type, coords, u, section, thickness, request, delta_t, material, out);
+    compute_shell_small(type, coords, u, section, at_nodes, request, delta_t, material, out);
     return;
   }
   const auto small_strain = [&](std::span<const double> d, const ElementRequest& r, ElementSystem& o) {
-    compute_shell_small(type, coords, d, section, thickness, r, delta_t, material, o);
+    compute_shell_small(type, coords, d, section, at_nodes, r, delta_t, material, o);
   };
   compute_corotational(CorotationalFrame::Shell, coords, u, Vec3{}, small_strain, request, out);
 }

@@ -46,15 +46,16 @@ struct ShellMaterial {
   ElementHistory history;  ///< per_point = law's state size; point = in-plane point × section points + k
 };
 
-/// A shell element's thickness: the section's, or *NODAL THICKNESS's one per node, interpolated
-/// to the points as Abaqus does; and its directors where they are not its own normals (Abaqus
-/// averages the normals of the elements that meet at a node, shell_normals.hpp).
-struct ShellThickness {
+/// What a shell element takes at its nodes beyond their coordinates: its thickness (the
+/// section's, or *NODAL THICKNESS's one per node, interpolated to the points as Abaqus does) and
+/// its directors where they are not its own normals (Abaqus averages the normals of the elements
+/// that meet at a node, shell_normals.hpp).
+struct ShellNodeData {
   double uniform = 0.0;
   std::span<const double> nodal;  ///< empty: `uniform` throughout
   std::span<const Vec3> directors;  ///< one unit vector per node; empty: the element's own normals
-  ShellThickness(double t) : uniform(t) {}  // NOLINT(google-explicit-constructor): a plain thickness
-  ShellThickness(double t, std::span<const double> at_nodes, std::span<const Vec3> at_nodes_directors = {})
+  ShellNodeData(double t) : uniform(t) {}  // NOLINT(google-explicit-constructor): a plain thickness
+  ShellNodeData(double t, std::span<const double> at_nodes, std::span<const Vec3> at_nodes_directors = {})
       : uniform(t), nodal(at_nodes), directors(at_nodes_directors) {}
 };
 
@@ -67,11 +68,11 @@ bool shell_nodal_normals(const model::ElementTypeInfo& type, std::span<const Vec
 std::size_t shell_material_points(const model::ElementTypeInfo& type, const ShellProperties& section);
 
 /// Stiffness, internal force and point output of a shell. `u` holds 6 values per node in the
-/// order above; coords the reference nodes; thickness the element's (or its nodes'); delta_t the
+/// order above; coords the reference nodes; at_nodes its thickness and directors; delta_t the
 /// nodes' temperature change (empty: none). Linear with the section's elastic lamina; with a law of
 /// `material`, its plane stress state at each section point (PE, PEEQ in the points' output).
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
-                   const ShellProperties& section, const ShellThickness& thickness, const ElementRequest& request,
+                   const ShellProperties& section, const ShellNodeData& at_nodes, const ElementRequest& request,
                    std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out);
 
 /// The local shell axes {e1, e2, e3} at a point with surface tangents g1, g2 (Abaqus's default
