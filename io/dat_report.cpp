@@ -70,14 +70,20 @@ std::string format_print_table(const PrintTable& t) {
   }
   line("");
   // Column header: each name 4 characters into its 12-character field.
-  std::string header = !element ? "       NODE FOOT-" : t.centroid ? "    ELEMENT     FOOT-" : "    ELEMENT  PT FOOT-";
+  // A beam's section-point table has a SEC PT column after PT (Abaqus prints it the same way
+  // as its FOOT-NOTE column, over two lines).
+  const bool sections = element && !t.section_point.empty();
+  std::string header = !element     ? "       NODE FOOT-"
+                       : sections    ? (t.centroid ? "    ELEMENT     SEC FOOT-" : "    ELEMENT  PT SEC FOOT-")
+                       : t.centroid  ? "    ELEMENT     FOOT-"
+                                     : "    ELEMENT  PT FOOT-";
   for (std::size_t c = 0; c < n; ++c) {
     pad_to(header, prefix + kWidth * c + 4);
     header += t.columns[c];
   }
   pad_to(header, prefix + kWidth * n);
   line(header);
-  line(element ? "                NOTE" : "            NOTE");
+  line(sections ? "                 PT NOTE" : element ? "                NOTE" : "            NOTE");
   line("");
 
   // Values as printed: round-off next to the column's largest magnitude is zero.
@@ -92,7 +98,8 @@ std::string format_print_table(const PrintTable& t) {
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (t.labels[a] != t.labels[b]) return t.labels[a] < t.labels[b];
-    return !t.ip.empty() && t.ip[a] < t.ip[b];
+    if (!t.ip.empty() && t.ip[a] != t.ip[b]) return t.ip[a] < t.ip[b];
+    return sections && t.section_point[a] < t.section_point[b];
   });
   auto values_of = [&](auto value) {
     std::string s;
@@ -105,9 +112,10 @@ std::string format_print_table(const PrintTable& t) {
       bool all_zero = true;
       for (std::size_t c = 0; c < n; ++c) all_zero = all_zero && shown(r, c) == 0.0;
       if (all_zero) continue;  // Abaqus leaves rows of zeros out
-      std::string row = !element ? fmt::format("{:>11}    ", t.labels[r])
-                                 : fmt::format("{:>12}{:>4}        ", t.labels[r],
-                                               t.ip.empty() ? std::string() : std::to_string(t.ip[r]));
+      const std::string ip = t.ip.empty() ? std::string() : std::to_string(t.ip[r]);
+      std::string row = !element  ? fmt::format("{:>11}    ", t.labels[r])
+                        : sections ? fmt::format("{:>12}{:>4}{:>4}    ", t.labels[r], ip, t.section_point[r])
+                                   : fmt::format("{:>12}{:>4}        ", t.labels[r], ip);
       line(row + values_of([&](std::size_t c) { return shown(r, c); }));
     }
     line("");

@@ -296,6 +296,7 @@ ResultsFile read_results(const fs::path& path, const ReadResultsOptions& options
       };
       const auto inst = optional_i32("instance");
       const auto ip = optional_i32("ip");
+      const auto section_point = optional_i32("section_point");
       const auto pair = optional_i32("pair");
       f.locations.reserve(f.n_loc);
       f.node_rows.assign(f.n_loc, -1);
@@ -324,6 +325,7 @@ ResultsFile read_results(const fs::path& path, const ReadResultsOptions& options
         for (std::size_t i = 0; i < labels.size(); ++i) {
           std::string name = "element " + qualified(instances, i < inst.size() ? inst[i] : 0, labels[i]);
           if (i < ip.size()) name += sub + std::to_string(ip[i]);
+          if (i < section_point.size() && section_point[i] > 0) name += " sp " + std::to_string(section_point[i]);
           f.locations.push_back(std::move(name));
         }
       } else {

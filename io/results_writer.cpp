@@ -342,6 +342,7 @@ ResultsWriter::Impl::FieldState& ResultsWriter::Impl::field_state(const FieldDat
   if (!f.elements.empty()) ctx.write(g, "elements", f.elements);
   if (!f.instance.empty()) ctx.write(g, "instance", f.instance);
   if (!f.ip.empty()) ctx.write(g, "ip", f.ip);
+  if (!f.section_point.empty()) ctx.write(g, "section_point", f.section_point);
   if (!f.pair.empty()) ctx.write(g, "pair", f.pair);
   return step->fields.emplace(f.key, std::move(s)).first->second;
 }
@@ -472,6 +473,7 @@ void ResultsWriter::write_frame(const Frame& frame) {
     check_size(f.elements.size(), "elements");
     check_size(f.instance.size(), "instances");
     check_size(f.ip.size(), "integration points");
+    check_size(f.section_point.size(), "section points");
     check_size(f.pair.size(), "pairs");
     const std::size_t n_nodes = w.model->mesh.nodes.size();
     if (f.position == Position::Nodal) {

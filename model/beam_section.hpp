@@ -36,6 +36,10 @@ struct BeamSection {
   /// *TRANSVERSE SHEAR STIFFNESS: K23, K13 (force units) and the slenderness compensation
   /// factor (Abaqus's default 0.25), each absent when not given.
   std::optional<double> k23, k13, slenderness_compensation;
+  /// *SECTION POINTS under a general section: the (x1, x2) of each point where S and E are
+  /// output, from the centroid along n1 and n2, numbered in order from 1 (Abaqus: a general
+  /// section has no section points of its own).
+  std::vector<std::array<double, 2>> section_points;
   SourceLoc loc;
 };
 

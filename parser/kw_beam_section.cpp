@@ -4,7 +4,7 @@
 /// shape's dimensions (RECT a, b; CIRC r; PIPE r, t; BOX a, b, t1..t4; I l, h, b1, b2, t1, t2,
 /// t3), second the approximate n1 direction (default (0, 0, −1)); CalculiX's OFFSET1/OFFSET2 put
 /// the node line off the section's centre. *BEAM GENERAL SECTION, SECTION=GENERAL: A, I11, I12,
-/// I22, J; n1; E, G. The other library shapes (L, HEX, TRAPEZOID, ARBITRARY, ...) and the other
+/// I22, J; n1; E, G; its *SECTION POINTS, where S and E are output. The other library shapes (L, HEX, TRAPEZOID, ARBITRARY, ...) and the other
 /// general forms (MESHED, NONLINEAR GENERAL) stop here with what is missing.
 ///
 /// CalculiX reads CIRC's number as the diameter (its "thickness"; a second number makes an
@@ -216,6 +216,34 @@ void transverse_shear_stiffness(KeywordContext& ctx) {
   if (ctx.data.size() > 1) ctx.error(ctx.data[1].loc, "expected one data line");
 }
 
+// *SECTION POINTS under *BEAM GENERAL SECTION: x1, x2 pairs, at most four a line; a (0, 0) ending a
+// line is padding unless it is the only point given (Abaqus Keywords).
+void section_points(KeywordContext& ctx) {
+  auto& sections = ctx.mesh().beam_sections;
+  if (sections.empty() || sections.back().shape != Shape::General) return;  // the section itself was refused
+  std::vector<std::array<double, 2>> points;
+  for (const Line& line : ctx.data) {
+    std::vector<Field> f;
+    split_fields(line, f);
+    while (!f.empty() && f.back().empty()) f.pop_back();
+    if (f.size() % 2 != 0 || f.size() > 8) {
+      ctx.error(line.loc, fmt::format("expected x1, x2 pairs, at most four a line; found {} values", f.size()));
+      return;
+    }
+    std::vector<std::array<double, 2>> on_line;
+    for (std::size_t i = 0; i < f.size(); i += 2) {
+      auto x1 = ctx.real(f[i], "section point x1");
+      auto x2 = ctx.real(f[i + 1], "section point x2");
+      if (!x1 || !x2) return;
+      on_line.push_back({*x1, *x2});
+    }
+    if (!on_line.empty() && on_line.back() == std::array<double, 2>{0.0, 0.0} &&
+        on_line.size() + points.size() > 1) on_line.pop_back();
+    points.insert(points.end(), on_line.begin(), on_line.end());
+  }
+  sections.back().section_points = std::move(points);
+}
+
 }  // namespace
 
 void add_beam_section_keywords(std::vector<KeywordSpec>& t) {
@@ -238,6 +266,8 @@ void add_beam_section_keywords(std::vector<KeywordSpec>& t) {
   t.back().numbers_from = 0;
   t.push_back({"*TRANSVERSE SHEAR STIFFNESS", kMeshScopes, {}, DataLines::Required, transverse_shear_stiffness,
                {"*BEAM SECTION", "*BEAM GENERAL SECTION", "*SHELL SECTION", "*SHELL GENERAL SECTION"}});
+  t.back().numbers_from = 0;
+  t.push_back({"*SECTION POINTS", kMeshScopes, {}, DataLines::Required, section_points, {"*BEAM GENERAL SECTION"}});
   t.back().numbers_from = 0;
 }
 

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <unordered_map>
 
 #include "assembler.hpp"
+#include "elements/beam_section_points.hpp"
 #include "elements/element_kernel.hpp"
 #include "elements/material.hpp"
 #include "elements/material_orientation.hpp"
@@ -174,8 +176,11 @@ bool point_key(const std::string& key) {
          key == "SM";
 }
 
-/// Beams have section forces but no stresses at points yet: S, E and the like are noted as not
-/// computed for them.
+/// Plastic strain keys and print variables: PE (PE11, ...), PEEQ, PEMAG.
+bool plastic_key(const std::string& key) { return key.rfind("PE", 0) == 0; }
+
+/// Beams are elastic: their plastic strains are noted as not computed (their S and E are at
+/// their section points, SF and SM at their integration points).
 bool model_has_beams(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
 }
@@ -309,8 +314,8 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         const std::string key = field_key(v, d);
         if (key.empty()) add_unique(not_computed_, v);
         else add_unique(a.variables, key);
-        if (point_key(key) && key != "SF" && key != "SM" && model_has_beams(am))
-          add_unique(not_computed_, key + " of beam elements (SF and SM are written for them)");
+        if (plastic_key(key) && model_has_beams(am))
+          add_unique(not_computed_, key + " of beam elements (their sections are elastic)");
         // CSTRESS = CPRESS + CSHEAR1/2, CDISP = COPEN + CSLIP1/2 (with friction).
         const bool stress = v == "CSTRESS" || v == "CSTR", disp = v == "CDISP" || v == "CDIS";
         if ((stress || disp) && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
@@ -329,9 +334,8 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
       for (const std::string& v : r.variables) {
         const auto columns = print_columns(v, d, am.dim);
         if (columns.empty()) add_unique(not_computed_, v);
-        const bool section = v.rfind("SF", 0) == 0 || v.rfind("SM", 0) == 0 || v.rfind("COORD", 0) == 0;
-        if (d == Domain::Element && !columns.empty() && !section && model_has_beams(am))
-          add_unique(not_computed_, v + " of beam elements (SF and SM are written for them)");
+        if (d == Domain::Element && !columns.empty() && plastic_key(v) && model_has_beams(am))
+          add_unique(not_computed_, v + " of beam elements (their sections are elastic)");
         for (const auto& c : columns) add_unique(a.variables, c);
       }
       print_timing_.emplace_back(r, period);
@@ -410,6 +414,27 @@ class PointCache {
     return points_[el];
   }
 
+  /// A beam's S and E at its section points (elements/beam_section_points.hpp), integration
+  /// point after integration point, with each one's integration point and section point number.
+  struct SectionPoints {
+    std::vector<elements::PointResult> results;
+    std::vector<std::int32_t> ip, number;
+  };
+  const SectionPoints& section_points_of(std::size_t el) {
+    auto [it, inserted] = section_points_.try_emplace(el);
+    if (!inserted) return it->second;
+    const elements::BeamProperties& beam = *am_.elements[el].section.beam;
+    const auto ips = of(el);
+    for (std::size_t p = 0; p < ips.size(); ++p) {
+      elements::beam_section_point_results(beam, ips[p], it->second.results);
+      for (const elements::BeamSectionPoint& q : beam.output_points) {
+        it->second.ip.push_back(static_cast<std::int32_t>(p + 1));
+        it->second.number.push_back(q.number);
+      }
+    }
+    return it->second;
+  }
+
  private:
   std::vector<elements::PointResult> computed(std::size_t el) const {
     const ElementSetup& setup = am_.elements[el];
@@ -441,6 +466,7 @@ class PointCache {
   elements::ElementRequest request_;
   std::vector<std::vector<elements::PointResult>> points_;
   std::vector<char> have_;
+  std::unordered_map<std::size_t, SectionPoints> section_points_;
 };
 
 /// Where a field key is written in this step: the union of the sets of every request that
@@ -574,6 +600,9 @@ double plastic_magnitude(const elements::PointResult& p) {
   return std::sqrt(2.0 / 3.0 * dot);
 }
 
+/// Whether a field key is reported at a beam's section points (S, E or LE; MISES comes with S).
+bool at_section_points(const std::string& key) { return key == "S" || key == "E" || key == "LE"; }
+
 FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool with_instance = am.model->instances.size() > 1;
@@ -589,14 +618,27 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
   f.region = where.region;
   const bool stress = key == "S";
   // The points of every element first, so that the arrays are sized once (a frame of a few
-  // thousand elements otherwise regrows them a dozen times).
-  std::vector<std::pair<std::size_t, std::span<const elements::PointResult>>> points;
+  // thousand elements otherwise regrows them a dozen times). A beam's S and E are at its
+  // section points, its SF and SM at its integration points; it has no plastic strain.
+  struct Located {
+    std::size_t el;
+    std::span<const elements::PointResult> points;
+    const PointCache::SectionPoints* section_points;  ///< a beam's S or E
+  };
+  std::vector<Located> points;
   std::size_t n_points = 0;
+  bool with_section_points = false;
   auto gather = [&](std::size_t el) {
-    // A beam has section forces, not stresses at points (S at its section points: not yet).
-    if (!section && model::is_beam(model::element_type(elements.type[el]))) return;
-    points.emplace_back(el, cache.of(el));
-    n_points += points.back().second.size();
+    const bool beam = model::is_beam(model::element_type(elements.type[el]));
+    if (beam && !section && !at_section_points(key)) return;
+    if (beam && !section) {
+      const auto& sp = cache.section_points_of(el);
+      points.push_back({el, sp.results, &sp});
+      with_section_points = true;
+    } else {
+      points.push_back({el, cache.of(el), nullptr});
+    }
+    n_points += points.back().points.size();
   };
   if (where.whole)
     for (std::size_t el = 0; el < elements.size(); ++el) gather(el);
@@ -604,13 +646,15 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
     for (std::int32_t el : where.rows) gather(static_cast<std::size_t>(el));
   f.elements.resize(n_points);
   f.ip.resize(n_points);
+  if (with_section_points) f.section_point.resize(n_points, 0);
   if (with_instance) f.instance.resize(n_points);
   f.values.resize(n_points * n_comp);
   std::size_t i = 0;  // the location being written
-  for (const auto& [el, pts] : points)
+  for (const auto& [el, pts, sp] : points)
     for (std::size_t p = 0; p < pts.size(); ++p, ++i) {
       f.elements[i] = elements.labels[el];
-      f.ip[i] = static_cast<std::int32_t>(p + 1);
+      f.ip[i] = sp ? sp->ip[p] : static_cast<std::int32_t>(p + 1);
+      if (sp) f.section_point[i] = sp->number[p];
       if (with_instance) f.instance[i] = elements.instance[el];
       const auto at = f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp);
       if (section) {
@@ -760,12 +804,17 @@ std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequ
   return out;
 }
 
+/// What the rows of an element table are: integration points, or a beam's section points.
+enum class Rows : std::uint8_t { IntegrationPoints, SectionPoints };
+
 /// The columns of a table of this element type: trusses and springs have the 11 component of
-/// a tensor only (Abaqus prints S11 and E11 for them) and SF1; beams their section forces and
-/// moments (no stresses at section points yet); shells the in-plane components 11, 22, 12 of S
-/// and E (plane stress, at SNEG and SPOS), MISES and their section forces and moments; continua
-/// every column but SF2, SF3 and SM.
-std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables) {
+/// a tensor only (Abaqus prints S11 and E11 for them) and SF1; beams S11, S12, E11, E12 and
+/// MISES at their section points, and their section forces and moments at their integration
+/// points, in two tables; shells the in-plane components 11, 22, 12 of S and E (plane stress,
+/// at SNEG and SPOS), MISES and their section forces and moments; continua every column but
+/// SF2, SF3 and SM.
+std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables,
+                                     Rows rows) {
   std::vector<std::string> out;
   for (const std::string& v : variables) {
     const Column c = parse_column(v);
@@ -773,7 +822,13 @@ std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const s
     const bool section = c.source == Column::Source::SF || c.source == Column::Source::SM;
     const bool axial = c.source == Column::Source::SF && c.component == 0;
     const bool in_plane = c.component == 0 || c.component == 1 || c.component == 3;
-    const bool keep = model::is_beam(type)        ? section || c.source == Column::Source::Coord
+    const bool beam_stress = c.source == Column::Source::Mises ||
+                             (tensor && c.source != Column::Source::PE && (c.component == 0 || c.component == 3));
+    if (model::is_beam(type)) {
+      if (rows == Rows::SectionPoints ? beam_stress : section || c.source == Column::Source::Coord) out.push_back(v);
+      continue;
+    }
+    const bool keep = rows == Rows::SectionPoints ? false
                       : model::is_shell(type)     ? section || c.source == Column::Source::Coord ||
                                                     c.source == Column::Source::Mises ||
                                                     (tensor && c.source != Column::Source::PE && in_plane)
@@ -784,45 +839,77 @@ std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const s
   return out;
 }
 
-/// One table per element type, in the order the types first appear in the set (Abaqus prints
-/// element output by element type).
+/// A beam's section-point results averaged over its integration points, one per section point
+/// (POSITION=CENTROIDAL), with the section point numbers.
+std::pair<std::vector<elements::PointResult>, std::vector<std::int32_t>> section_point_centroids(
+    const PointCache::SectionPoints& sp) {
+  std::map<std::int32_t, std::vector<elements::PointResult>> by_number;
+  for (std::size_t k = 0; k < sp.results.size(); ++k) by_number[sp.number[k]].push_back(sp.results[k]);
+  std::pair<std::vector<elements::PointResult>, std::vector<std::int32_t>> out;
+  for (const auto& [number, results] : by_number) {
+    out.first.push_back(centroid_of(results));
+    out.second.push_back(number);
+  }
+  return out;
+}
+
+/// One table per element type (a beam's section points and integration points apart), in the
+/// order the types first appear in the set (Abaqus prints element output by element type).
 std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequest& a, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
   const bool centroid = a.request.position == OutputRequest::Position::Centroidal;
   std::vector<std::vector<Column>> table_cols;
   std::vector<PrintTable> tables;
-  std::map<std::uint8_t, std::size_t> table_of_type;
-  auto add = [&](std::size_t el) {
+  std::map<std::pair<std::uint8_t, Rows>, std::size_t> table_of;
+  auto table = [&](std::uint8_t type, Rows rows) -> std::size_t {
+    auto [it, inserted] = table_of.emplace(std::pair{type, rows}, tables.size());
+    if (!inserted) return it->second;
+    PrintTable t;
+    t.domain = PrintTable::Domain::Element;
+    t.set = a.request.set;
+    t.element_type = std::string(model::element_type(type).name);
+    t.centroid = centroid;
+    t.columns = columns_for(model::element_type(type), a.variables, rows);
+    t.summary = a.request.summary;
+    t.totals = a.request.totals;
+    t.totals_only = a.request.totals_only;
+    std::vector<Column> cols;
+    for (const auto& c : t.columns) cols.push_back(parse_column(c));
+    table_cols.push_back(std::move(cols));
+    tables.push_back(std::move(t));
+    return it->second;
+  };
+  auto add_rows = [&](std::size_t el, Rows rows) {
     const std::uint8_t type = elements.type[el];
-    if (am.elements[el].rigid) return;  // an element following a rigid body has no points
-    if (columns_for(model::element_type(type), a.variables).empty()) return;  // (beams asked for S only)
-    auto [it, inserted] = table_of_type.emplace(type, tables.size());
-    if (inserted) {
-      PrintTable t;
-      t.domain = PrintTable::Domain::Element;
-      t.set = a.request.set;
-      t.element_type = std::string(model::element_type(type).name);
-      t.centroid = centroid;
-      t.columns = columns_for(model::element_type(type), a.variables);
-      t.summary = a.request.summary;
-      t.totals = a.request.totals;
-      t.totals_only = a.request.totals_only;
-      std::vector<Column> cols;
-      for (const auto& c : t.columns) cols.push_back(parse_column(c));
-      table_cols.push_back(std::move(cols));
-      tables.push_back(std::move(t));
-    }
-    PrintTable& t = tables[it->second];
-    const std::vector<Column>& cols = table_cols[it->second];
-    const auto& points = cache.of(el);
-    auto row = [&](const elements::PointResult& p, std::int32_t ip) {
+    if (columns_for(model::element_type(type), a.variables, rows).empty()) return;
+    const std::size_t k = table(type, rows);
+    PrintTable& t = tables[k];
+    const std::vector<Column>& cols = table_cols[k];
+    auto row = [&](const elements::PointResult& p, std::int32_t ip, std::int32_t section_point) {
       t.labels.push_back(elements.labels[el]);
       if (!centroid) t.ip.push_back(ip);
+      if (rows == Rows::SectionPoints) t.section_point.push_back(section_point);
       for (const Column& c : cols) t.values.push_back(point_value(p, c));
     };
-    if (centroid) row(centroid_of(points), 0);
+    if (rows == Rows::SectionPoints) {
+      const auto& sp = cache.section_points_of(el);
+      if (centroid) {
+        const auto [results, numbers] = section_point_centroids(sp);
+        for (std::size_t q = 0; q < results.size(); ++q) row(results[q], 0, numbers[q]);
+      } else {
+        for (std::size_t q = 0; q < sp.results.size(); ++q) row(sp.results[q], sp.ip[q], sp.number[q]);
+      }
+      return;
+    }
+    const auto& points = cache.of(el);
+    if (centroid) row(centroid_of(points), 0, 0);
     else
-      for (std::size_t p = 0; p < points.size(); ++p) row(points[p], static_cast<std::int32_t>(p + 1));
+      for (std::size_t p = 0; p < points.size(); ++p) row(points[p], static_cast<std::int32_t>(p + 1), 0);
+  };
+  auto add = [&](std::size_t el) {
+    if (am.elements[el].rigid) return;  // an element following a rigid body has no points
+    if (model::is_beam(model::element_type(elements.type[el]))) add_rows(el, Rows::SectionPoints);
+    add_rows(el, Rows::IntegrationPoints);
   };
   if (a.whole_model)
     for (std::size_t el = 0; el < elements.size(); ++el) add(el);

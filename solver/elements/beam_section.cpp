@@ -5,6 +5,7 @@
 #include <numbers>
 #include <utility>
 
+#include "beam_section_points.hpp"
 #include "model/beam_section_area.hpp"
 
 namespace inpact::solver::elements {
@@ -125,6 +126,7 @@ BeamProperties beam_properties(const model::BeamSection& section, double youngs_
   }
   p.k13 = section.k13.value_or(k13);
   p.k23 = section.k23.value_or(k23);
+  p.output_points = beam_output_points(section, p);  // from the shape's centroid, before any offset
   const std::array<double, 2> extent = section_extent(section);
   for (int k = 0; k < 2; ++k) p.centroid[k] -= section.offset[k] * extent[k];
   p.slenderness_compensation = section.slenderness_compensation.value_or(0.25);

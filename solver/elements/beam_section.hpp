@@ -7,10 +7,19 @@
 /// I11 = ∫ x2² dA (bending about n1), I22 = ∫ x1² dA (bending about n2).
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "model/beam_section.hpp"
 
 namespace inpact::solver::elements {
+
+/// A point of the section where S and E are output (beam_section_points.hpp): its number, its
+/// place from the centroid along n1 and n2, and its torsion arm c (S12 = G κ3 c).
+struct BeamSectionPoint {
+  int number = 1;
+  double x1 = 0.0, x2 = 0.0;
+  double torsion_arm = 0.0;
+};
 
 struct BeamProperties {
   double area = 0.0;
@@ -32,6 +41,8 @@ struct BeamProperties {
   /// centroid, a BOX's unequal walls, CalculiX's OFFSET1/OFFSET2. The kernel ties the centroid's
   /// line to the nodes rigidly (beam_elements.hpp); A and I above are about the centroid.
   std::array<double, 2> centroid{0.0, 0.0};
+  /// Where S and E are reported (beam_section_points.hpp); empty: the section has none.
+  std::vector<BeamSectionPoint> output_points;
 };
 
 /// The shear factor k Abaqus uses for a shape (Abaqus Analysis User's Guide, "Choosing a beam
@@ -44,7 +55,8 @@ double shear_factor(model::BeamSection::Shape shape);
 /// of the (hollow) disc, BOX's Bredt's thin-walled one on the walls' midline (A and I are the
 /// exact hollow rectangle's), I's the open thin-walled Σ b t³/3. The shear centre is taken at
 /// the centroid: exact for the doubly symmetric shapes, an approximation for an I with unequal
-/// flanges (its twist and bending do not couple here).
+/// flanges (its twist and bending do not couple here). The output section points come with them
+/// (beam_output_points).
 BeamProperties beam_properties(const model::BeamSection& section, double youngs_modulus, double poissons_ratio);
 
 }  // namespace inpact::solver::elements

@@ -97,6 +97,27 @@ TEST(DatReport, ElementTableIsPrintedPerTypeAtTheIntegrationPoints) {
   EXPECT_EQ(lines.size(), 8u);  // SUMMARY=NO: no MAXIMUM/MINIMUM
 }
 
+// A beam's stresses are at its section points: a SEC PT column after PT, rows sorted by element,
+// point and section point.
+TEST(DatReport, BeamTableHasASectionPointColumn) {
+  PrintTable t;
+  t.domain = PrintTable::Domain::Element;
+  t.element_type = "B31";
+  t.columns = {"S11", "S12"};
+  t.labels = {3, 3, 3};
+  t.ip = {1, 1, 1};
+  t.section_point = {25, 1, 5};
+  t.values = {-1.0, 0.5, 1.0, 0.5, 2.0, 0.5};
+  t.summary = false;
+  const auto lines = lines_of(format_print_table(t));
+  ASSERT_EQ(lines.size(), 9u);
+  EXPECT_EQ(lines[2], "    ELEMENT  PT SEC FOOT-   S11         S12     ");
+  EXPECT_EQ(lines[3], "                 PT NOTE");
+  EXPECT_EQ(lines[5], "           3   1   1       1.000      0.5000    ");
+  EXPECT_EQ(lines[6], "           3   1   5       2.000      0.5000    ");
+  EXPECT_EQ(lines[7], "           3   1  25      -1.000      0.5000    ");
+}
+
 // --- A uniaxial bar run end to end ------------------------------------------------------
 
 /// 2 × 2 × 10 bar of five C3D8 along z, E = 200000, ν = 0.3, z = 0 held axially (and against

@@ -333,6 +333,34 @@ TEST(ResultsWriter, UnwritablePathThrowsIoErrorWithoutHdf5Noise) {
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
+// A beam's S carries its section points: written beside ip, and named "element E ip P sp K" when
+// read (0: a location without one).
+TEST(ResultsWriter, SectionPointsAreWrittenAndNamed) {
+  TempDir dir;
+  const auto m = read_model(dir, test::kThreeBodyDeck);
+  const auto h5 = dir / "job.h5";
+  {
+    auto w = io::ResultsWriter::create(h5, m, "sha", "v");
+    w.begin_step(m.steps[0]);
+    io::Frame f = test::three_body_frame(m, 0);
+    io::FieldData& s = f.fields[2];
+    ASSERT_EQ(s.key, "S");
+    s.section_point.assign(s.elements.size(), 0);
+    s.section_point[0] = 25;
+    w.write_frame(f);
+    w.finish(io::RunStatus::Completed);
+  }
+  H5Reader f(h5.string());
+  EXPECT_EQ(f.int32s("/steps/Load/fieldOutputs/S/section_point").front(), 25);
+  EXPECT_FALSE(f.exists("/steps/Load/fieldOutputs/U/section_point"));
+  const io::ResultsFile r = io::read_results(h5);
+  for (const auto& field : r.steps.at(0).fields)
+    if (field.key == "S") {
+      EXPECT_EQ(field.locations.at(0), "element 1 ip 1 sp 25");
+      EXPECT_EQ(field.locations.at(1), "element 1 ip 2");
+    }
+}
+
 TEST(ResultsWriter, InconsistentFieldIsRejectedBeforeAnythingIsWritten) {
   TempDir dir;
   const auto m = read_model(dir, test::kThreeBodyDeck);

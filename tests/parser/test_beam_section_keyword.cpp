@@ -67,6 +67,26 @@ TEST(BeamSectionKeyword, GeneralSectionTakesAreaInertiasAndModuli) {
   EXPECT_EQ(s.shear_modulus, 8e4);
 }
 
+// *SECTION POINTS: (x1, x2) pairs, four a line at most; a (0, 0) ending a line is padding unless
+// it is the only point (Abaqus Keywords).
+TEST(BeamSectionKeyword, SectionPointsOfAGeneralSectionAreReadInOrder) {
+  const std::string general = kBeams + "*BEAM GENERAL SECTION, ELSET=B, SECTION=GENERAL\n0.06, 2e-4, 0., 4.5e-4, 3e-4\n"
+                                       "0., 1., 0.\n2e5, 8e4\n*SECTION POINTS\n";
+  {
+    DeckDir dir;
+    auto r = dir.read(general + "0.15, 0.1, -0.15, 0.1, 0., 0.\n-0.15, -0.1,\n");
+    ASSERT_TRUE(r.ok()) << r.report();
+    const auto& points = r.model.mesh.beam_sections.at(0).section_points;
+    ASSERT_EQ(points.size(), 3u);
+    EXPECT_EQ(points[1], (std::array<double, 2>{-0.15, 0.1}));
+    EXPECT_EQ(points[2], (std::array<double, 2>{-0.15, -0.1}));
+  }
+  DeckDir dir;
+  auto r = dir.read(general + "0., 0.\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  EXPECT_EQ(r.model.mesh.beam_sections.at(0).section_points.size(), 1u);
+}
+
 TEST(BeamSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError) {
   struct Case {
     std::string deck, message;
@@ -87,6 +107,11 @@ TEST(BeamSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError)
                                                                         "*BEAM SECTION"},
            {kBeams + "*BEAM SECTION, ELSET=B, MATERIAL=X, SECTION=CIRC\n0.1\n", "material 'X' is not defined"},
            {kBeams + "*BEAM GENERAL SECTION, ELSET=B\n0.06, 2e-4, 1e-5, 4.5e-4, 3e-4\n", "I12 other than 0"},
+           {kBeams + "*BEAM GENERAL SECTION, ELSET=B\n0.06, 2e-4, 0., 4.5e-4, 3e-4\n0., 1., 0.\n2e5, 8e4\n"
+                     "*SECTION POINTS\n0.1, 0.2, 0.3\n",
+            "deck.inp:13: error: *SECTION POINTS: expected x1, x2 pairs, at most four a line; found 3 values"},
+           {kBeams + kMaterial + sec + "CIRC\n0.1\n*SECTION POINTS\n0.1, 0.\n",
+            "*SECTION POINTS: must follow *BEAM GENERAL SECTION"},
        }) {
     DeckDir dir;
     auto r = dir.read(c.deck);
