@@ -107,6 +107,17 @@ struct Mesh {
   std::vector<ShellSection> shell_sections;
   /// *NODAL THICKNESS: a shell thickness per node row, for sections with NODAL THICKNESS.
   std::map<std::int32_t, double> nodal_thickness;
+  /// *NORMAL: a shell's director at one of its nodes, in place of the averaged normal.
+  struct GivenNormal {
+    std::int32_t element = 0;  ///< element row
+    int local = 0;             ///< the node's place in the element
+    std::array<double, 3> direction{};  ///< as given (not yet unit)
+    SourceLoc loc;
+  };
+  std::vector<GivenNormal> normals;
+  /// *NODE's fifth to seventh fields: a normal at the node, for every shell element there that
+  /// *NORMAL does not give one (Abaqus). Key: node row; element and local unused.
+  std::map<std::int32_t, GivenNormal> node_normals;
 };
 
 }  // namespace inpact::model

@@ -180,6 +180,20 @@ void end_instance(KeywordContext& ctx) {
     dst.shell_sections.push_back(std::move(copy));
   }
   for (const auto& [node, thickness] : src.nodal_thickness) dst.nodal_thickness[node + node_base] = thickness;
+  // Given normals are directions: they turn with the instance.
+  auto turned = [&](model::Mesh::GivenNormal n) {
+    if (inst.has_rotation) {
+      const auto& r = inst.rotation;
+      const auto x = rotate({r[0] + n.direction[0], r[1] + n.direction[1], r[2] + n.direction[2]}, r);
+      for (int i = 0; i < 3; ++i) n.direction[i] = x[i] - r[i];
+    }
+    return n;
+  };
+  for (const auto& n : src.normals) {
+    dst.normals.push_back(turned(n));
+    dst.normals.back().element += elem_base;
+  }
+  for (const auto& [node, n] : src.node_normals) dst.node_normals[node + node_base] = turned(n);
   move_rigid_bodies(ctx, inst, node_base, elem_base);
 }
 

@@ -39,7 +39,8 @@ void heading(KeywordContext& ctx) {
   }
 }
 
-// *NODE, NSET=: label, x, y[, z]. Missing coordinates are zero (2D decks give two).
+// *NODE, NSET=: label, x, y[, z][, nx, ny, nz]. Missing coordinates are zero (2D decks give two);
+// a normal, when given, is the shells' director there (solver/shell_normals.hpp).
 void node(KeywordContext& ctx) {
   model::Nodes& nodes = ctx.mesh().nodes;
   Set* nset = ctx.has("NSET") ? &set_named(ctx.mesh().nsets, ctx, "NSET") : nullptr;
@@ -64,8 +65,16 @@ void node(KeywordContext& ctx) {
       if (!v) ok = false;
       else x[i - 1] = *v;
     }
+    std::array<double, 3> normal{0, 0, 0};
+    for (std::size_t i = 4; i < f.size(); ++i) {
+      if (f[i].empty()) continue;
+      auto v = ctx.real(f[i], "normal component");
+      if (!v) ok = false;
+      else normal[i - 4] = *v;
+    }
     if (!ok) continue;
     const auto row = static_cast<std::int32_t>(nodes.labels.size());
+    if (normal != std::array<double, 3>{0, 0, 0}) ctx.mesh().node_normals[row] = {0, 0, normal, line.loc};
     if (!nodes.index.insert(0, *label, row)) {
       ctx.error(f[0].loc, fmt::format("node {} is defined twice", *label));
       continue;
@@ -379,7 +388,7 @@ void add_mesh_keywords(std::vector<KeywordSpec>& t) {
   t.push_back({"*HEADING", kModelScope, {}, DataLines::Optional, heading});
   t.push_back({"*NODE", kMeshScopes, {{"NSET", ValueKind::Required}, {"SYSTEM", ValueKind::Required, ValueType::Choice, {"R"}}},
                DataLines::Optional, node, {}, true});
-  t.back().numbers_from = 4;  // label, x, y, z read by the handler; fields 5-7 (Abaqus: a normal)
+  t.back().numbers_from = 4;  // label, x, y, z and the normal read by the handler
   t.push_back({"*ELEMENT", kMeshScopes,
                {{"TYPE", ValueKind::Required, ValueType::Text, {}, true}, {"ELSET", ValueKind::Required}},
                DataLines::Optional, element, {}, true});

@@ -1,5 +1,5 @@
-/// *SHELL SECTION, *SHELL GENERAL SECTION, their *TRANSVERSE SHEAR STIFFNESS and *NODAL
-/// THICKNESS [Abaqus Keywords].
+/// *SHELL SECTION, *SHELL GENERAL SECTION, their *TRANSVERSE SHEAR STIFFNESS, *NODAL THICKNESS
+/// and *NORMAL [Abaqus Keywords].
 ///
 /// *SHELL SECTION, ELSET=, MATERIAL=[, OFFSET=SPOS | SNEG | MIDDLE | value][, NODAL THICKNESS]:
 /// one data line, the thickness and the number of section points (Simpson, odd; default 5).
@@ -8,6 +8,8 @@
 /// through the thickness and shells of a *DENSITY-less general section stop here with what is
 /// missing.
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "handlers.hpp"
 #include "text.hpp"
@@ -102,6 +104,55 @@ void nodal_thickness(KeywordContext& ctx) {
   }
 }
 
+// *NORMAL: `element or element set, node or node set, nx, ny, nz` — a shell's director at its
+// nodes in the set (Abaqus and CalculiX). Beams' n2 by *NORMAL: not yet.
+void given_normal(KeywordContext& ctx, const Line& line, const std::vector<Field>& f) {
+  auto elements = ctx.elements(f[0]);
+  auto nodes = ctx.nodes(f[1]);
+  if (!elements || !nodes) return;
+  std::array<double, 3> n{};
+  for (int i = 0; i < 3; ++i) {
+    auto v = ctx.real(f[static_cast<std::size_t>(2 + i)], "normal component");
+    if (!v) return;
+    n[static_cast<std::size_t>(i)] = *v;
+  }
+  if (n == std::array<double, 3>{0.0, 0.0, 0.0}) {
+    ctx.error(f[2].loc, "the normal is the zero vector");
+    return;
+  }
+  auto& mesh = ctx.mesh();
+  for (std::int32_t e : *elements) {
+    if (!model::is_shell(model::element_type(mesh.elements.type[static_cast<std::size_t>(e)]))) {
+      ctx.error(f[0].loc, fmt::format("element {} is not a shell element (*NORMAL of beams is not supported yet)",
+                                      mesh.elements.labels[static_cast<std::size_t>(e)]));
+      return;
+    }
+    const auto conn = mesh.elements.nodes_of(static_cast<std::size_t>(e));
+    for (std::int32_t node : *nodes) {
+      const auto at = std::find(conn.begin(), conn.end(), node);
+      if (at == conn.end()) {
+        ctx.error(f[1].loc, fmt::format("node {} is not a node of element {}", mesh.nodes.labels[static_cast<std::size_t>(node)],
+                                        mesh.elements.labels[static_cast<std::size_t>(e)]));
+        return;
+      }
+      mesh.normals.push_back({e, static_cast<int>(at - conn.begin()), n, line.loc});
+    }
+  }
+}
+
+void normal(KeywordContext& ctx) {
+  if (ctx.has("TYPE") && ctx.name_value("TYPE") != "ELEMENT") {
+    ctx.error_param("TYPE", "TYPE=CONTACT SURFACE is not supported yet (expected ELEMENT, the default)");
+    return;
+  }
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (ctx.check_count(f, line, 5, 5, "element or element set, node or node set, nx, ny, nz"))
+      given_normal(ctx, line, f);
+  }
+}
+
 }  // namespace
 
 void shell_transverse_shear_stiffness(KeywordContext& ctx) {
@@ -146,6 +197,9 @@ void add_shell_section_keywords(std::vector<KeywordSpec>& t) {
   t.push_back({"*SHELL GENERAL SECTION", kMeshScopes, common, DataLines::Required, shell_general_section});
   t.back().numbers_from = 0;
   t.push_back({"*NODAL THICKNESS", kMeshScopes, {}, DataLines::Required, nodal_thickness});
+  t.push_back({"*NORMAL", kMeshScopes, {{"TYPE", ValueKind::Required, ValueType::Choice, {"ELEMENT", "CONTACT SURFACE"}}},
+               DataLines::Required, normal});
+  t.back().numbers_from = 2;
 }
 
 }  // namespace inpact::parser

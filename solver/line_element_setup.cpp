@@ -91,6 +91,13 @@ void setup_beams(const model::Model& m, AnalysisModel& am) {
       ElementSetup& s = am.elements[static_cast<std::size_t>(row)];
       s.section.beam = p;
       s.density = sec.material.empty() ? 0.0 : m.materials.at(sec.material).density.value_or(0.0);
+      for (std::int32_t node : m.mesh.elements.nodes_of(static_cast<std::size_t>(row)))
+        if (auto it = m.mesh.node_normals.find(node); it != m.mesh.node_normals.end())
+          throw AnalysisError(fmt::format("{}: error: *NODE: node {} of beam element {} is given a normal; a beam's n2 "
+                                          "from nodal normals is not supported yet (give n1 on the *BEAM SECTION's "
+                                          "second data line)",
+                                          m.sources.describe(it->second.loc), m.mesh.nodes.labels[static_cast<std::size_t>(node)],
+                                          m.mesh.elements.labels[static_cast<std::size_t>(row)]));
       std::array<elements::Vec3, 3> axes;
       for (const elements::TrussPoint& pt : elements::truss_points(*s.type, am.coords(static_cast<std::size_t>(row)), 3))
         if (pt.J > 0.0 && !elements::beam_axes(pt.tangent, sec.n1, axes))

@@ -4,6 +4,8 @@
 #include <numbers>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "elements/shell_elements.hpp"
 
 namespace inpact::solver {
@@ -37,6 +39,61 @@ std::vector<std::vector<NodeNormal>> normals_by_node(const model::Model& m, cons
   return by_node;
 }
 
+/// A director the deck gives (*NORMAL, or *NODE's normal) replaces the averaged one at that
+/// element's node. Abaqus warns when it lies more than 20° from the element's own normal, and
+/// takes one given more than 160° from it reversed, without a warning (Analysis User's Guide,
+/// "Defining nodal normals").
+class GivenDirectors {
+ public:
+  GivenDirectors(const model::Model& m, AnalysisModel& am, std::vector<std::array<Vec3, 8>>& directors,
+                 std::vector<bool>& changed)
+      : m_(m), am_(am), directors_(directors), changed_(changed) {}
+
+  void set(std::size_t e, int local, const model::Mesh::GivenNormal& given, const char* keyword) {
+    std::array<Vec3, 8> own;
+    if (!elements::shell_nodal_normals(*am_.elements[e].type, am_.coords(e), own)) return;  // degenerate: reported
+    const auto& g = given.direction;
+    const double length = std::sqrt(dot(g, g));
+    Vec3 unit{g[0] / length, g[1] / length, g[2] / length};
+    const double cosine = dot(unit, own[static_cast<std::size_t>(local)]);
+    if (cosine < kReverse)
+      for (double& c : unit) c = -c;
+    else if (cosine < kWarn)
+      am_.warnings.push_back(fmt::format(
+          "{} at {}: the normal of element {} at node {} lies {:.1f}° from the element's own normal", keyword,
+          m_.sources.describe(given.loc), m_.mesh.elements.labels[e],
+          m_.mesh.nodes.labels[static_cast<std::size_t>(m_.mesh.elements.nodes_of(e)[static_cast<std::size_t>(local)])],
+          std::acos(cosine) * 180.0 / std::numbers::pi));
+    directors_[e][static_cast<std::size_t>(local)] = unit;
+    changed_[e] = true;
+  }
+
+ private:
+  static inline const double kWarn = std::cos(20.0 * std::numbers::pi / 180.0);
+  static inline const double kReverse = std::cos(160.0 * std::numbers::pi / 180.0);
+  const model::Model& m_;
+  AnalysisModel& am_;
+  std::vector<std::array<Vec3, 8>>& directors_;
+  std::vector<bool>& changed_;
+};
+
+/// *NODE's normals at every shell node they are given for, then *NORMAL's, which take precedence.
+void apply_given_normals(const model::Model& m, AnalysisModel& am, std::vector<std::array<Vec3, 8>>& directors,
+                         std::vector<bool>& changed) {
+  GivenDirectors given(m, am, directors, changed);
+  if (!m.mesh.node_normals.empty())
+    for (std::size_t e = 0; e < am.elements.size(); ++e) {
+      if (!am.elements[e].section.shell || am.elements[e].rigid) continue;
+      const auto nodes = m.mesh.elements.nodes_of(e);
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        if (auto it = m.mesh.node_normals.find(nodes[a]); it != m.mesh.node_normals.end())
+          given.set(e, static_cast<int>(a), it->second, "*NODE");
+    }
+  for (const model::Mesh::GivenNormal& n : m.mesh.normals)
+    if (!am.elements[static_cast<std::size_t>(n.element)].rigid)
+      given.set(static_cast<std::size_t>(n.element), n.local, n, "*NORMAL");
+}
+
 }  // namespace
 
 void average_shell_normals(const model::Model& m, AnalysisModel& am) {
@@ -54,6 +111,7 @@ void average_shell_normals(const model::Model& m, AnalysisModel& am) {
       for (int i = 0; i < 3; ++i) director[i] = sum[i] / length;
       if (1.0 - dot(director, own.normal) > 1e-14) changed[own.element] = true;
     }
+  apply_given_normals(m, am, averaged, changed);
   for (std::size_t e = 0; e < am.elements.size(); ++e) {
     if (!changed[e]) continue;
     const std::size_t n = m.mesh.elements.nodes_of(e).size();

@@ -3,7 +3,8 @@
 /// several shell elements meet, each takes the average of its own normal there and those of the
 /// others within 20° of it, so a faceted curved surface bends as a smooth one; a fold sharper than
 /// 20° keeps each side's own normal. Only the elements whose directors change this way get the
-/// averaged ones (SectionData::shell_directors); the others keep their own.
+/// averaged ones (SectionData::shell_directors); the others keep their own. A director the deck
+/// gives by *NORMAL replaces the averaged one at its element's node.
 #include "analysis_model.hpp"
 
 namespace inpact::solver {
@@ -12,7 +13,8 @@ namespace inpact::solver {
 constexpr double kNormalAveragingDegrees = 20.0;
 
 /// Sets SectionData::shell_directors of the shells (am.elements with a shell section) whose
-/// averaged nodal normals differ from their own.
+/// averaged or given (*NORMAL) nodal normals differ from their own; a given normal far from the
+/// element's own adds a warning to am.warnings.
 void average_shell_normals(const model::Model& m, AnalysisModel& am);
 
 }  // namespace inpact::solver

@@ -62,7 +62,7 @@ TEST(NumericFields, EveryNumericKeywordChecksItsUnusedFields) {
   const Case cases[] = {
       {"*DENSITY\n7.8e-9, hot\n", "*DENSITY",
        "deck.inp:17:9: error: *DENSITY: field 2: expected a number, found 'hot'"},
-      {"*NODE\n9, 0., 0., 2., x\n", "*NODE", "deck.inp:17:16: error: *NODE: field 5: expected a number, found 'x'"},
+      {"*NODE\n9, 0., 0., 2., x\n", "*NODE", "deck.inp:17:16: error: *NODE: normal component: expected a number, found 'x'"},
       {"*SURFACE INTERACTION, NAME=I\n*FRICTION\n0.1, 0., fast\n", "*FRICTION",
        "deck.inp:18:10: error: *FRICTION: field 3: expected a number, found 'fast'"},
       {"*STEP\n*STATIC\n0.1, 1., 1e-5, 1., cfd\n*END STEP\n", "*STATIC",

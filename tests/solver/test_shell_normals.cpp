@@ -1,5 +1,6 @@
 // The shells' nodal normals (solver/shell_normals.hpp): averaged across elements that meet at a
-// node within 20°, as Abaqus does without *NORMAL, kept apart across a sharper fold.
+// node within 20°, as Abaqus does without *NORMAL, kept apart across a sharper fold; given by
+// *NORMAL or on *NODE.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "fixtures/deck_fixture.hpp"
+#include "solver/analysis_error.hpp"
 #include "solver/analysis_model.hpp"
 
 namespace inpact::test {
@@ -47,6 +49,79 @@ TEST(ShellNormals, AShallowFoldIsSmoothedAndASharpOneIsKept) {
   const auto kept = solver::build_analysis_model(sharp.model);
   EXPECT_TRUE(kept.elements[0].section.shell_directors.empty());
   EXPECT_TRUE(kept.elements[1].section.shell_directors.empty());
+}
+
+// *NORMAL replaces the averaged director at its element's node: at 10° the first plate given its
+// own normal (0, 0, 1) at node 1 keeps it there while the second still takes the bisector; one
+// given reversed (more than 160° off) is taken with the element's sense; one 25° off is used as
+// given, with a warning (Abaqus).
+TEST(ShellNormals, AGivenNormalReplacesTheAveragedOne) {
+  const DeckDir dir;
+  const auto r = dir.read(fold(10.0) + "*NORMAL\n1, 1, 0., 0., 2.\n1, 2, 0., 0., -1.\n2, 1, 0.573576436351, 0., 0.819152044289\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto am = solver::build_analysis_model(r.model);
+  const auto& first = am.elements[0].section.shell_directors;
+  const auto& second = am.elements[1].section.shell_directors;
+  ASSERT_EQ(first.size(), 4u);
+  ASSERT_EQ(second.size(), 4u);
+  // Element 1 is 3, 1, 2, 4: node 1 is its second, node 2 its third.
+  for (std::size_t a : {1u, 2u}) {
+    EXPECT_NEAR(first[a][0], 0.0, 1e-12) << a;
+    EXPECT_NEAR(first[a][2], 1.0, 1e-12) << a;
+  }
+  // Element 2 is 1, 5, 6, 2: at node 1 the given 35° tilt, 25° from its own 10°; at node 2 the
+  // bisector.
+  EXPECT_NEAR(second[0][0], std::sin(35.0 * M_PI / 180), 1e-12);
+  EXPECT_NEAR(second[3][0], std::sin(5.0 * M_PI / 180), 1e-12);
+  ASSERT_EQ(am.warnings.size(), 1u);
+  EXPECT_EQ(am.warnings[0].rfind("*NORMAL at ", 0), 0u) << am.warnings[0];
+  EXPECT_NE(am.warnings[0].find("deck.inp:19: the normal of element 2 at node 1 lies 25.0° from the element's own normal"),
+            std::string::npos)
+      << am.warnings[0];
+}
+
+// A normal on *NODE (fields 5–7) is the director of every shell at the node, *NORMAL taking
+// precedence; on a beam node it is refused (a beam's n2 from it is not read yet).
+TEST(ShellNormals, ANodeNormalIsTheDirectorOfEveryShellThere) {
+  std::string deck = fold(10.0);
+  deck.replace(deck.find("1, 0., 0., 0.\n"), 14, "1, 0., 0., 0., 0., 0., 3.\n");
+  const DeckDir dir;
+  const auto r = dir.read(deck + "*NORMAL\n2, 1, 0.1736481777, 0., 0.984807753\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto am = solver::build_analysis_model(r.model);
+  EXPECT_NEAR(am.elements[0].section.shell_directors[1][2], 1.0, 1e-12);  // element 1's node 1: *NODE's
+  EXPECT_NEAR(am.elements[1].section.shell_directors[0][0], std::sin(10.0 * M_PI / 180), 1e-9);  // *NORMAL's
+  EXPECT_TRUE(am.warnings.empty());
+
+  const auto beam = dir.read("*NODE\n1, 0., 0., 0., 0., 0., 1.\n2, 1., 0., 0.\n*ELEMENT, TYPE=B31, ELSET=B\n1, 1, 2\n"
+                             "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*BEAM SECTION, ELSET=B, MATERIAL=M, "
+                             "SECTION=CIRC\n0.1\n");
+  ASSERT_TRUE(beam.ok()) << beam.report();
+  try {
+    (void)solver::build_analysis_model(beam.model);
+    ADD_FAILURE() << "a normal on a beam node should be refused";
+  } catch (const solver::AnalysisError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.inp:2: error: *NODE: node 1 of beam element 1 is given a normal"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// *NORMAL's deck errors: a node not on the element, a beam element, the zero vector, TYPE=CONTACT
+// SURFACE.
+TEST(ShellNormals, GivenNormalsThatDoNotFitAreDeckErrors) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"*NORMAL\n1, 5, 0., 0., 1.\n", "deck.inp:17:4: error: *NORMAL: node 5 is not a node of element 1"},
+      {"*NORMAL\n1, 1, 0., 0., 0.\n", "deck.inp:17:7: error: *NORMAL: the normal is the zero vector"},
+      {"*NORMAL, TYPE=CONTACT SURFACE\nS, 1, 0., 0., 1.\n", "TYPE=CONTACT SURFACE is not supported yet"},
+      {"*NORMAL\n1, 1, 0., 0.\n", "deck.inp:17:11: error: *NORMAL: data line has 4 fields, expected 5"},
+  };
+  for (const auto& [lines, message] : cases) {
+    const DeckDir dir;
+    const auto r = dir.read(fold(10.0) + lines);
+    EXPECT_FALSE(r.ok()) << lines;
+    EXPECT_TRUE(has_diagnostic(r, message)) << r.report();
+  }
 }
 
 }  // namespace
