@@ -126,6 +126,9 @@ void element_arrays(const model::Model& model, const FieldData& f, std::size_t n
       }
     }
     const std::size_t e = row_of_point;
+    // A beam's S varies across its section, and its average would hide the bending: its cell is
+    // left empty (SF and SM show the section's state).
+    if (!f.section_point.empty() && f.section_point[i] > 0) continue;
     ++count[e];
     for (std::size_t c = 0; c < n_comp; ++c)
       sum[e * out_comp + (tensor ? static_cast<std::size_t>(slot[c]) : c)] += f.values[i * n_comp + c];

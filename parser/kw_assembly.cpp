@@ -91,6 +91,12 @@ std::array<double, 3> rotate(const std::array<double, 3>& x, const std::array<do
   return out;
 }
 
+/// A direction turned as rotate() turns points: the difference of two turned points.
+std::array<double, 3> rotate_direction(const std::array<double, 3>& d, const std::array<double, 7>& r) {
+  const auto tip = rotate({r[0] + d[0], r[1] + d[1], r[2] + d[2]}, r);
+  return {tip[0] - r[0], tip[1] - r[1], tip[2] - r[2]};
+}
+
 void move_rigid_bodies(KeywordContext& ctx, const OpenInstance& inst, std::int32_t node_base, std::int32_t elem_base);
 
 /// Copies the part's mesh into the model's mesh as a new instance.
@@ -167,11 +173,7 @@ void end_instance(KeywordContext& ctx) {
   for (const auto& beam : src.beam_sections) {  // n1 turns with the instance
     model::BeamSection copy = beam;
     copy.elset = prefix + beam.elset;
-    if (inst.has_rotation) {
-      const auto& r = inst.rotation;
-      const auto turned = rotate({r[0] + beam.n1[0], r[1] + beam.n1[1], r[2] + beam.n1[2]}, r);
-      for (int i = 0; i < 3; ++i) copy.n1[i] = turned[i] - r[i];
-    }
+    if (inst.has_rotation) copy.n1 = rotate_direction(beam.n1, inst.rotation);
     dst.beam_sections.push_back(std::move(copy));
   }
   for (const auto& shell : src.shell_sections) {
@@ -182,11 +184,7 @@ void end_instance(KeywordContext& ctx) {
   for (const auto& [node, thickness] : src.nodal_thickness) dst.nodal_thickness[node + node_base] = thickness;
   // Given normals are directions: they turn with the instance.
   auto turned = [&](model::Mesh::GivenNormal n) {
-    if (inst.has_rotation) {
-      const auto& r = inst.rotation;
-      const auto x = rotate({r[0] + n.direction[0], r[1] + n.direction[1], r[2] + n.direction[2]}, r);
-      for (int i = 0; i < 3; ++i) n.direction[i] = x[i] - r[i];
-    }
+    if (inst.has_rotation) n.direction = rotate_direction(n.direction, inst.rotation);
     return n;
   };
   for (const auto& n : src.normals) {
@@ -222,10 +220,7 @@ void move_analytical_surface(KeywordContext& ctx, const OpenInstance& inst, mode
   if (!inst.has_rotation) return;
   const auto& r = inst.rotation;
   a.origin = rotate(a.origin, r);
-  for (auto& axis : a.axes) {  // a direction turns as the difference of two turned points
-    const auto tip = rotate({r[0] + axis[0], r[1] + axis[1], r[2] + axis[2]}, r);
-    for (int i = 0; i < 3; ++i) axis[i] = tip[i] - r[i];
-  }
+  for (auto& axis : a.axes) axis = rotate_direction(axis, r);
 }
 
 /// The rigid bodies and analytical surfaces defined inside the instance (an analytical rigid part

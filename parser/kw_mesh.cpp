@@ -49,7 +49,7 @@ void node(KeywordContext& ctx) {
   nodes.coords.reserve(nodes.coords.size() + ctx.data.size());
   for (const Line& line : ctx.data) {
     split_fields(line, f);
-    if (!ctx.check_count(f, line, 1, 7, "node label, x, y, z")) continue;
+    if (!ctx.check_count(f, line, 1, 7, "node label, x, y, z[, nx, ny, nz]")) continue;
     auto label = ctx.integer(f[0], "node label");
     if (!label) continue;
     if (*label <= 0) {
@@ -74,11 +74,11 @@ void node(KeywordContext& ctx) {
     }
     if (!ok) continue;
     const auto row = static_cast<std::int32_t>(nodes.labels.size());
-    if (normal != std::array<double, 3>{0, 0, 0}) ctx.mesh().node_normals[row] = {0, 0, normal, line.loc};
     if (!nodes.index.insert(0, *label, row)) {
       ctx.error(f[0].loc, fmt::format("node {} is defined twice", *label));
       continue;
     }
+    if (normal != std::array<double, 3>{0, 0, 0}) ctx.mesh().node_normals[row] = {0, 0, normal, line.loc};
     nodes.labels.push_back(*label);
     nodes.coords.push_back(x);
     nodes.instance.push_back(0);

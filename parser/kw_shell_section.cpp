@@ -11,6 +11,7 @@
 
 #include <algorithm>
 
+#include "finalize.hpp"
 #include "handlers.hpp"
 #include "text.hpp"
 
@@ -104,6 +105,11 @@ void nodal_thickness(KeywordContext& ctx) {
   }
 }
 
+/// A field that names an entity by its label (digits), not a set.
+bool is_label(const Field& f) {
+  return !f.text.empty() && std::all_of(f.text.begin(), f.text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // *NORMAL: `element or element set, node or node set, nx, ny, nz` — a shell's director at its
 // nodes in the set (Abaqus and CalculiX). Beams' n2 by *NORMAL: not yet.
 void given_normal(KeywordContext& ctx, const Line& line, const std::vector<Field>& f) {
@@ -120,7 +126,10 @@ void given_normal(KeywordContext& ctx, const Line& line, const std::vector<Field
     ctx.error(f[2].loc, "the normal is the zero vector");
     return;
   }
+  // Sets pair each element with those of the nodes that are its own; two labels must fit.
+  const bool labels = is_label(f[0]) && is_label(f[1]);
   auto& mesh = ctx.mesh();
+  const std::size_t before = mesh.normals.size();
   for (std::int32_t e : *elements) {
     if (!model::is_shell(model::element_type(mesh.elements.type[static_cast<std::size_t>(e)]))) {
       ctx.error(f[0].loc, fmt::format("element {} is not a shell element (*NORMAL of beams is not supported yet)",
@@ -128,19 +137,17 @@ void given_normal(KeywordContext& ctx, const Line& line, const std::vector<Field
       return;
     }
     const auto conn = mesh.elements.nodes_of(static_cast<std::size_t>(e));
-    for (std::int32_t node : *nodes) {
-      const auto at = std::find(conn.begin(), conn.end(), node);
-      if (at == conn.end()) {
-        ctx.error(f[1].loc, fmt::format("node {} is not a node of element {}", mesh.nodes.labels[static_cast<std::size_t>(node)],
-                                        mesh.elements.labels[static_cast<std::size_t>(e)]));
-        return;
-      }
-      mesh.normals.push_back({e, static_cast<int>(at - conn.begin()), n, line.loc});
-    }
+    for (std::int32_t node : *nodes)
+      if (const auto at = std::find(conn.begin(), conn.end(), node); at != conn.end())
+        mesh.normals.push_back({e, static_cast<int>(at - conn.begin()), n, line.loc});
   }
+  if (mesh.normals.size() == before)
+    ctx.error(f[1].loc, labels ? fmt::format("node {} is not a node of element {}", f[1].text, f[0].text)
+                               : std::string("no node of the node set is a node of an element of the element set"));
 }
 
 void normal(KeywordContext& ctx) {
+  resolve_pending_nodes(ctx.state.mesh_build(), ctx.diags);  // elements may precede their nodes
   if (ctx.has("TYPE") && ctx.name_value("TYPE") != "ELEMENT") {
     ctx.error_param("TYPE", "TYPE=CONTACT SURFACE is not supported yet (expected ELEMENT, the default)");
     return;

@@ -185,6 +185,15 @@ bool model_has_beams(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
 }
 
+/// Whether a field key is reported at a beam's section points (S, E or LE; MISES comes with S).
+bool at_section_points(const std::string& key) { return key == "S" || key == "E" || key == "LE"; }
+
+/// A beam whose general section has no *SECTION POINTS has nowhere to report S and E.
+bool model_has_beams_without_section_points(const AnalysisModel& am) {
+  return std::any_of(am.elements.begin(), am.elements.end(),
+                     [](const ElementSetup& s) { return s.section.beam && s.section.beam->output_points.empty(); });
+}
+
 /// Beams and shells make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
 bool model_has_section_vectors(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(),
@@ -316,6 +325,8 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         else add_unique(a.variables, key);
         if (plastic_key(key) && model_has_beams(am))
           add_unique(not_computed_, key + " of beam elements (their sections are elastic)");
+        if (at_section_points(key) && model_has_beams_without_section_points(am))
+          add_unique(not_computed_, key + " of beams with a general section without *SECTION POINTS");
         // CSTRESS = CPRESS + CSHEAR1/2, CDISP = COPEN + CSLIP1/2 (with friction).
         const bool stress = v == "CSTRESS" || v == "CSTR", disp = v == "CDISP" || v == "CDIS";
         if ((stress || disp) && (d == Domain::Contact || d == Domain::Model) && model_has_friction(model))
@@ -336,6 +347,9 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (columns.empty()) add_unique(not_computed_, v);
         if (d == Domain::Element && !columns.empty() && plastic_key(v) && model_has_beams(am))
           add_unique(not_computed_, v + " of beam elements (their sections are elastic)");
+        if (d == Domain::Element && (v.rfind("S1", 0) == 0 || v.rfind("E1", 0) == 0 || v == "MISES") &&
+            model_has_beams_without_section_points(am))
+          add_unique(not_computed_, v + " of beams with a general section without *SECTION POINTS");
         for (const auto& c : columns) add_unique(a.variables, c);
       }
       print_timing_.emplace_back(r, period);
@@ -599,9 +613,6 @@ double plastic_magnitude(const elements::PointResult& p) {
   const double dot = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + 0.5 * (e[3] * e[3] + e[4] * e[4] + e[5] * e[5]);
   return std::sqrt(2.0 / 3.0 * dot);
 }
-
-/// Whether a field key is reported at a beam's section points (S, E or LE; MISES comes with S).
-bool at_section_points(const std::string& key) { return key == "S" || key == "E" || key == "LE"; }
 
 FieldData element_field(const AnalysisModel& am, const std::string& key, const KeyRegion& where, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
@@ -869,6 +880,7 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
     t.set = a.request.set;
     t.element_type = std::string(model::element_type(type).name);
     t.centroid = centroid;
+    t.at_section_points = rows == Rows::SectionPoints;
     t.columns = columns_for(model::element_type(type), a.variables, rows);
     t.summary = a.request.summary;
     t.totals = a.request.totals;
@@ -908,7 +920,8 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
   };
   auto add = [&](std::size_t el) {
     if (am.elements[el].rigid) return;  // an element following a rigid body has no points
-    if (model::is_beam(model::element_type(elements.type[el]))) add_rows(el, Rows::SectionPoints);
+    const elements::BeamProperties* beam = am.elements[el].section.beam;
+    if (beam && !beam->output_points.empty()) add_rows(el, Rows::SectionPoints);
     add_rows(el, Rows::IntegrationPoints);
   };
   if (a.whole_model)

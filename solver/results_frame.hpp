@@ -25,8 +25,9 @@ struct FieldData {
   std::vector<std::int32_t> instance;
   /// INTEGRATION_POINT: 1-based integration point; ELEMENT_NODAL: 1-based local node.
   std::vector<std::int32_t> ip;
-  /// INTEGRATION_POINT fields with beams (S, E, MISES): the section point of each location
-  /// (elements/beam_section_points.hpp), 0 where the element has none; empty when no location has one.
+  /// INTEGRATION_POINT fields with beams (S, E, LE): the section point of each beam location
+  /// (elements/beam_section_points.hpp), 0 elsewhere; empty when no location is a beam's. Shells
+  /// keep their section points in `ip` (SNEG then SPOS at each point, shell_elements.hpp).
   std::vector<std::int32_t> section_point;
   /// Contact fields: rows of the contact pair table (one location per slave node per pair).
   std::vector<std::int32_t> pair;
@@ -61,7 +62,8 @@ struct PrintTable {
   std::vector<std::string> columns;  ///< U1 U2 U3, RF1.., COORD1.., S11.., E11.., MISES
   std::vector<std::int64_t> labels;  ///< node or element label of each row
   std::vector<std::int32_t> ip;      ///< element tables at integration points: 1-based point
-  std::vector<std::int32_t> section_point;  ///< beam tables of S and E: the section point of each row
+  bool at_section_points = false;  ///< a beam table of S and E: a SEC PT column
+  std::vector<std::int32_t> section_point;  ///< at_section_points: the section point of each row
   std::vector<double> values;        ///< rows × columns, row-major
   bool summary = true;      ///< SUMMARY=YES: MAXIMUM / MINIMUM lines under each column
   bool totals = false;      ///< TOTALS=YES|ONLY: the column sums

@@ -4,7 +4,8 @@
 /// others within 20° of it, so a faceted curved surface bends as a smooth one; a fold sharper than
 /// 20° keeps each side's own normal. Only the elements whose directors change this way get the
 /// averaged ones (SectionData::shell_directors); the others keep their own. A director the deck
-/// gives by *NORMAL replaces the averaged one at its element's node.
+/// gives, by *NORMAL at an element's node or after a node's coordinates on *NODE, replaces the
+/// averaged one (*NORMAL's first).
 #include "analysis_model.hpp"
 
 namespace inpact::solver {

@@ -106,6 +106,7 @@ TEST(DatReport, BeamTableHasASectionPointColumn) {
   t.columns = {"S11", "S12"};
   t.labels = {3, 3, 3};
   t.ip = {1, 1, 1};
+  t.at_section_points = true;
   t.section_point = {25, 1, 5};
   t.values = {-1.0, 0.5, 1.0, 0.5, 2.0, 0.5};
   t.summary = false;

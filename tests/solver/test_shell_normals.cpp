@@ -93,6 +93,20 @@ TEST(ShellNormals, ANodeNormalIsTheDirectorOfEveryShellThere) {
   EXPECT_NEAR(am.elements[1].section.shell_directors[0][0], std::sin(10.0 * M_PI / 180), 1e-9);  // *NORMAL's
   EXPECT_TRUE(am.warnings.empty());
 
+  // Elements before their nodes (inpact resolves the nodes when *NORMAL needs them).
+  std::string late = fold(10.0);
+  const auto nodes_end = late.find("*ELEMENT");
+  const auto elements_end = late.find("*MATERIAL");
+  late = late.substr(nodes_end, elements_end - nodes_end) + late.substr(0, nodes_end) + late.substr(elements_end);
+  const auto reordered = dir.read(late + "*NORMAL\n1, 1, 0., 0., 1.\n");
+  ASSERT_TRUE(reordered.ok()) << reordered.report();
+  EXPECT_EQ(reordered.model.mesh.normals.at(0).local, 1);
+
+  // Sets: each element of PLATE takes the normal at those nodes of EDGE that are its own.
+  const auto sets = dir.read(fold(10.0) + "*NSET, NSET=EDGE\n1, 2, 3\n*NORMAL\nPLATE, EDGE, 0., 0., 1.\n");
+  ASSERT_TRUE(sets.ok()) << sets.report();
+  EXPECT_EQ(sets.model.mesh.normals.size(), 5u);  // element 1: nodes 3, 1, 2; element 2: 1, 2
+
   const auto beam = dir.read("*NODE\n1, 0., 0., 0., 0., 0., 1.\n2, 1., 0., 0.\n*ELEMENT, TYPE=B31, ELSET=B\n1, 1, 2\n"
                              "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*BEAM SECTION, ELSET=B, MATERIAL=M, "
                              "SECTION=CIRC\n0.1\n");
@@ -112,6 +126,8 @@ TEST(ShellNormals, ANodeNormalIsTheDirectorOfEveryShellThere) {
 TEST(ShellNormals, GivenNormalsThatDoNotFitAreDeckErrors) {
   const std::pair<std::string, std::string> cases[] = {
       {"*NORMAL\n1, 5, 0., 0., 1.\n", "deck.inp:17:4: error: *NORMAL: node 5 is not a node of element 1"},
+      {"*NSET, NSET=FAR\n5, 6\n*NORMAL\n1, FAR, 0., 0., 1.\n",
+       "deck.inp:19:4: error: *NORMAL: no node of the node set is a node of an element of the element set"},
       {"*NORMAL\n1, 1, 0., 0., 0.\n", "deck.inp:17:7: error: *NORMAL: the normal is the zero vector"},
       {"*NORMAL, TYPE=CONTACT SURFACE\nS, 1, 0., 0., 1.\n", "TYPE=CONTACT SURFACE is not supported yet"},
       {"*NORMAL\n1, 1, 0., 0.\n", "deck.inp:17:11: error: *NORMAL: data line has 4 fields, expected 5"},

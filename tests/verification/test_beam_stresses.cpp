@@ -154,6 +154,14 @@ TEST(BeamStresses, AGeneralSectionReportsAtItsSectionPoints) {
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
   expect_bending(*r, {{1, -0.15, -0.1}, {2, 0.15, 0.1}}, 2e-4, 4.5e-4);
   EXPECT_EQ(at(*r->capture.of_step(3).back(), "S", 1, 1, 1, 3), 0.0);
+
+  // Without *SECTION POINTS it has nowhere to report S.
+  const auto none = run_section("beam-s-general-none", {"*BEAM GENERAL SECTION, ELSET=BEAM, SECTION=GENERAL",
+                                                        fmt::format("0.06, 2e-4, 0., 4.5e-4, {:.17g}", J), "0., 1., 0.",
+                                                        fmt::format("{}, {}", kE, kG)});
+  ASSERT_TRUE(none->outcome.completed) << none->outcome.message;
+  const auto* stress = field(*none->capture.of_step(1).back(), "S");
+  EXPECT_TRUE(stress == nullptr || stress->elements.empty());
 }
 
 }  // namespace
