@@ -93,6 +93,9 @@ struct TemperatureEntry {
   std::string target;
   std::vector<std::int32_t> nodes;
   double value = 0.0;
+  /// The third field: the temperature's gradient ∂T/∂n through the thickness of the shells at
+  /// the nodes (value is the temperature on their reference surface); absent: none given.
+  std::optional<double> gradient;
   SourceLoc loc;
 };
 

@@ -424,16 +424,24 @@ void dsload(KeywordContext& ctx) {
 
 // --- temperatures ----------------------------------------------------------------------------
 
-/// `node|set, T` lines (the gradient fields Abaqus allows are for shells and beams).
+/// `node|set, T[, ∂T/∂n]` lines: the third field is the gradient through a shell's thickness
+/// (Abaqus's TEMPERATURE=GRADIENTS, the shell section's default; CalculiX alike). A beam's two
+/// gradients are not read.
 std::vector<model::TemperatureEntry> temperature_lines(KeywordContext& ctx) {
   std::vector<model::TemperatureEntry> out;
   std::vector<Field> f;
   for (const Line& line : ctx.data) {
     split_fields(line, f);
-    if (!ctx.check_count(f, line, 2, 2, "node or node set, temperature")) continue;
+    if (!ctx.check_count(f, line, 2, 3, "node or node set, temperature[, gradient through a shell's thickness]"))
+      continue;
     auto nodes = ctx.nodes(f[0]);
     auto t = ctx.real(f[1], "temperature");
-    if (nodes && t) out.push_back({std::string(f[0].text), std::move(*nodes), *t, line.loc});
+    std::optional<double> gradient;
+    if (f.size() > 2 && !f[2].empty()) {
+      gradient = ctx.real(f[2], "temperature gradient");
+      if (!gradient) continue;
+    }
+    if (nodes && t) out.push_back({std::string(f[0].text), std::move(*nodes), *t, gradient, line.loc});
   }
   return out;
 }

@@ -33,6 +33,17 @@
 
 namespace inpact::solver {
 
+std::size_t AnalysisModel::element_temperature_changes(std::size_t e, std::span<const double> delta_t,
+                                                       std::span<double> out) const {
+  if (delta_t.empty()) return 0;
+  const auto nodes = model->mesh.elements.nodes_of(e);
+  const std::size_t n = nodes.size();
+  for (std::size_t a = 0; a < n; ++a) out[a] = delta_t[static_cast<std::size_t>(nodes[a])];
+  if (delta_t.size() == n_nodes() || !model::is_shell(*elements[e].type)) return n;
+  for (std::size_t a = 0; a < n; ++a) out[n + a] = delta_t[n_nodes() + static_cast<std::size_t>(nodes[a])];
+  return 2 * n;
+}
+
 std::vector<elements::Vec3> AnalysisModel::coords(std::size_t e) const {
   const auto& mesh = model->mesh;
   auto nodes = mesh.elements.nodes_of(e);
@@ -290,6 +301,11 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   am.initial_temperature.assign(m.mesh.nodes.size(), 0.0);
   for (const auto& t : m.initial_temperatures)
     for (std::int32_t n : t.nodes) am.initial_temperature[static_cast<std::size_t>(n)] = t.value;
+  for (const auto& t : m.initial_temperatures)
+    if (t.gradient) {
+      am.initial_temperature_gradient.resize(m.mesh.nodes.size(), 0.0);
+      for (std::int32_t n : t.nodes) am.initial_temperature_gradient[static_cast<std::size_t>(n)] = *t.gradient;
+    }
   am.rotation_node_of.assign(m.mesh.nodes.size(), -1);
   for (const model::RotatingNode& r : model::rotating_nodes(m, am.dim))
     am.rotation_node_of[static_cast<std::size_t>(r.ref_node)] = r.rot_node;

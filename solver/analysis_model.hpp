@@ -82,6 +82,9 @@ struct AnalysisModel {
   std::vector<std::int32_t> local_node_of, transform_of;
   /// Per node row: T_initial (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 where none is given).
   std::vector<double> initial_temperature;
+  /// Per node row: the initial gradient through the thickness of the shells there (the third
+  /// field of *INITIAL CONDITIONS, TYPE=TEMPERATURE); empty when none is given (all 0).
+  std::vector<double> initial_temperature_gradient;
 
   std::size_t n_nodes() const { return model->mesh.nodes.size(); }
   std::size_t n_dof() const { return n_nodes() * static_cast<std::size_t>(dim); }
@@ -98,12 +101,18 @@ struct AnalysisModel {
   /// count.
   static constexpr std::size_t kMaxElementRows = 32;
   std::size_t element_rows(std::size_t e, std::span<std::int32_t> rows) const;
-  /// The temperature T_initial + ΔT of a node, ΔT from `delta_t` (StepConditions::
-  /// temperature_change; empty: no change).
+  /// The temperature T_initial + ΔT of a node (on a shell's reference surface), ΔT from
+  /// `delta_t` (StepConditions::temperature_change; empty: no change).
   double temperature(std::int32_t node, std::span<const double> delta_t) const {
     const auto n = static_cast<std::size_t>(node);
     return initial_temperature[n] + (delta_t.empty() ? 0.0 : delta_t[n]);
   }
+  /// Element e's temperature changes from the nodal `delta_t` (StepConditions::
+  /// temperature_change: ΔT of every node, then, when the model has shell temperature
+  /// gradients, the change of the gradient of every node): ΔT at its nodes, and for a shell the
+  /// gradient's change at its nodes after them. Writes into `out` (room for twice the nodes) and
+  /// returns the count; 0 when `delta_t` is empty.
+  std::size_t element_temperature_changes(std::size_t e, std::span<const double> delta_t, std::span<double> out) const;
   /// Reference coordinates of element e's nodes.
   std::vector<elements::Vec3> coords(std::size_t e) const;
 };

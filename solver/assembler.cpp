@@ -165,7 +165,7 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   }
   std::array<elements::Vec3, kMaxNodes> x;
   std::array<double, kMaxNodes * 3> u_el;
-  std::array<double, kMaxNodes> dt_el;
+  std::array<double, 2 * kMaxNodes> dt_el;  // ΔT, and a shell's gradient change after it
   std::array<double, kMaxNodes> temperature_el;  // T itself, for temperature-dependent data
   const bool temperature_dependent = setup.material->temperature_dependent();
   std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
@@ -174,10 +174,10 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   for (std::size_t a = 0; a < nodes.size(); ++a) {
     const std::size_t node = static_cast<std::size_t>(nodes[a]);
     x[a] = mesh.nodes.coords[node];
-    if (!request.delta_t.empty()) dt_el[a] = request.delta_t[node];
     if (temperature_dependent) temperature_el[a] = am_.temperature(nodes[a], request.delta_t);
   }
   if (temperature_dependent) er.temperature = std::span(temperature_el).first(nodes.size());
+  const std::size_t n_dt = am_.element_temperature_changes(e, request.delta_t, dt_el);
   for (std::size_t a = 0; a < n_rows; ++a)
     for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[static_cast<std::size_t>(rows[a]) * dim + c];
   const std::size_t n = nodes.size();
@@ -196,7 +196,7 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   const elements::ElementHistory history = states_ ? states_->assembly_history(e) : elements::ElementHistory{};
   elements::compute_element(*setup.type, std::span(x).first(n), std::span(u_el).first(n_rows * dim), *setup.material,
                             setup.section, er,
-                            request.delta_t.empty() ? std::span<const double>() : std::span<const double>(dt_el).first(n),
+                            std::span<const double>(dt_el).first(n_dt),
                             history, out);
 }
 

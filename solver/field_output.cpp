@@ -456,8 +456,8 @@ class PointCache {
     std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;  // a beam's rotations too
     for (std::size_t a = 0, n = am_.element_rows(el, rows); a < n; ++a)
       for (int c = 0; c < am_.dim; ++c) u_el.push_back(u_[static_cast<std::size_t>(rows[a]) * am_.dim + c]);
-    if (!delta_t_.empty())
-      for (std::int32_t node : am_.model->mesh.elements.nodes_of(el)) dt_el.push_back(delta_t_[node]);
+    dt_el.resize(2 * am_.model->mesh.elements.nodes_of(el).size());
+    dt_el.resize(am_.element_temperature_changes(el, delta_t_, dt_el));
     elements::ElementRequest request = request_;
     if (setup.material->temperature_dependent()) {
       for (std::int32_t node : am_.model->mesh.elements.nodes_of(el))

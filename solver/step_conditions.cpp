@@ -51,7 +51,10 @@ ConditionHistory initial_history(const AnalysisModel& am) {
   ConditionHistory h;
   apply_boundaries(am, am.model->boundaries, h.boundary, nullptr);
   for (const auto& t : am.model->initial_temperatures)
-    for (std::int32_t n : t.nodes) h.temperature[n] = {t.value, "", t.value};
+    for (std::int32_t n : t.nodes) {
+      h.temperature[n] = {t.value, "", t.value};
+      if (t.gradient) h.temperature_gradient[n] = {*t.gradient, "", *t.gradient};
+    }
   h.reactions.assign(am.n_dof(), 0.0);
   return h;
 }
@@ -91,9 +94,17 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
       }
   }
   for (const auto& b : step.temperatures) {
-    if (b.op == model::Op::New) target_.temperature.clear();
+    if (b.op == model::Op::New) {
+      target_.temperature.clear();
+      target_.temperature_gradient.clear();
+    }
     for (const auto& e : b.entries)
-      for (std::int32_t n : e.nodes) target_.temperature[n] = {e.value, b.amplitude, e.value};
+      for (std::int32_t n : e.nodes) {
+        target_.temperature[n] = {e.value, b.amplitude, e.value};
+        // A line without the gradient gives it 0 where one was in force.
+        const double g = e.gradient.value_or(0.0);
+        if (e.gradient || target_.temperature_gradient.count(n)) target_.temperature_gradient[n] = {g, b.amplitude, g};
+      }
   }
 
   prescribed_.assign(am.n_dof(), 0);
@@ -282,20 +293,33 @@ void StepConditions::add_rotation_force(const Key& key, double v, const std::arr
   }
 }
 
+/// The change at step time t of a nodal field given by `previous` and `target` (the state before
+/// the step and the step's own), from `initial` (empty: 0), into out[0 .. n).
+void StepConditions::nodal_change(const std::map<std::int32_t, ConditionHistory::Value>& previous,
+                                  const std::map<std::int32_t, ConditionHistory::Value>& target, std::span<const double> initial,
+                                  double t, std::span<double> out) const {
+  for (std::size_t n = 0; n < out.size(); ++n) {
+    const auto key = static_cast<std::int32_t>(n);
+    auto p = previous.find(key);
+    auto q = target.find(key);
+    const auto* prev = p == previous.end() ? nullptr : &p->second;
+    const auto* now = q == target.end() ? nullptr : &q->second;
+    if (!prev && !now) continue;
+    // A node with only an initial value keeps it (a change of 0).
+    const double value = now ? value_at(prev, now, t) : prev->end_value;
+    out[n] = value - (initial.empty() ? 0.0 : initial[n]);
+  }
+}
+
 std::vector<double> StepConditions::temperature_change(double t) const {
   if (previous_.temperature.empty() && target_.temperature.empty()) return {};
-  std::vector<double> dt(am_.n_nodes(), 0.0);
-  for (std::size_t n = 0; n < dt.size(); ++n) {
-    const auto key = static_cast<std::int32_t>(n);
-    auto p = previous_.temperature.find(key);
-    auto q = target_.temperature.find(key);
-    const auto* prev = p == previous_.temperature.end() ? nullptr : &p->second;
-    const auto* target = q == target_.temperature.end() ? nullptr : &q->second;
-    if (!prev && !target) continue;
-    // A node with only an initial temperature keeps it (T − T_initial = 0).
-    const double temp = target ? value_at(prev, target, t) : prev->end_value;
-    dt[n] = temp - am_.initial_temperature[n];
-  }
+  const std::size_t n = am_.n_nodes();
+  const bool gradients = !previous_.temperature_gradient.empty() || !target_.temperature_gradient.empty();
+  std::vector<double> dt(gradients ? 2 * n : n, 0.0);
+  nodal_change(previous_.temperature, target_.temperature, am_.initial_temperature, t, std::span(dt).first(n));
+  if (gradients)
+    nodal_change(previous_.temperature_gradient, target_.temperature_gradient, am_.initial_temperature_gradient, t,
+                 std::span(dt).subspan(n));
   return dt;
 }
 
@@ -306,6 +330,8 @@ ConditionHistory StepConditions::end_state(std::span<const double> reactions) co
   for (auto& [d, v] : h.cload) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   for (auto& [k, v] : h.dload) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   for (auto& [n, v] : h.temperature) v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
+  for (auto& [n, v] : h.temperature_gradient)
+    v.end_value = v.amplitude.empty() ? v.value : v.value * amplitude(v.amplitude, period);
   h.reactions.assign(reactions.begin(), reactions.end());
   h.released_forces.clear();  // released over this step only
   return h;

@@ -56,6 +56,9 @@ struct ConditionHistory {
   };
   std::map<DloadKey, DloadValue> dload;
   std::map<std::int32_t, Value> temperature;  ///< key: node row
+  /// The gradient through the thickness of the shells at a node (*TEMPERATURE's third field),
+  /// for the nodes whose temperature was given with one, or later without (then 0).
+  std::map<std::int32_t, Value> temperature_gradient;
   std::vector<double> reactions;              ///< per global DOF, at the end of the step
   /// The forces (f_int's part, per global DOF; empty: none) of the contact pairs and elements
   /// the next step removes (*MODEL CHANGE, REMOVE), at the end of this step: the next step
@@ -88,7 +91,9 @@ class StepConditions {
   void external_force(double t, std::span<const double> u, std::span<double> f) const;
   /// NLGEOM and a pressure load in force: the external force depends on u.
   bool has_follower_pressure() const;
-  /// Nodal temperature change T(t) − T_initial, or empty when the model has no temperatures.
+  /// Nodal temperature change T(t) − T_initial, or empty when the model has no temperatures;
+  /// when some node has a shell temperature gradient, the gradient's change g(t) − g_initial of
+  /// every node follows (2 × nodes values; AnalysisModel::element_temperature_changes).
   std::vector<double> temperature_change(double t) const;
   /// The definitions in force at the end of the step, for the next one.
   ConditionHistory end_state(std::span<const double> reactions) const;
@@ -99,6 +104,10 @@ class StepConditions {
  private:
   double ramp(double t) const;
   double amplitude(const std::string& name, double t) const;
+  /// The change at step time t of a nodal field (temperature_change).
+  void nodal_change(const std::map<std::int32_t, ConditionHistory::Value>& previous,
+                    const std::map<std::int32_t, ConditionHistory::Value>& target, std::span<const double> initial,
+                    double t, std::span<double> out) const;
   /// Value at step time t of a definition that was `prev` at the step start and is `target` in
   /// this step (either may be absent).
   template <class V>

@@ -320,6 +320,8 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
   const int nd = geo.n_dof();
   if (static_cast<int>(coords.size()) != geo.n || static_cast<int>(u.size()) != nd)
     throw std::invalid_argument("compute_shell: coordinate or displacement count mismatch");
+  if (!delta_t.empty() && delta_t.size() != coords.size() && delta_t.size() != 2 * coords.size())
+    throw std::invalid_argument("compute_shell: one temperature change per node (and one gradient change)");
   begin_element_system(out, nd, request);
   out.min_jacobian = 0.0;
   if (!nodal_directors(geo) || !thick) return;  // degenerate: the caller reports it
@@ -338,14 +340,21 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
                                             : std::array<double, 2>{5.0 / 6 * G, 5.0 / 6 * G};
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
     std::array<PointResult, 2> surfaces{};  // SNEG, SPOS
-    double temperature = 0.0;
+    double temperature = 0.0, gradient = 0.0;  // ΔT on the reference surface and Δ(∂T/∂n) here
     for (std::size_t k = 0; k < section.zeta.size(); ++k) {
       const double zeta = section.zeta[k];
       CovariantPoint p = covariant_point(geo, xi, eta, zeta);
       out.min_jacobian = std::min(out.min_jacobian, p.det);
       if (!(p.det > 0.0)) return;
       if (k == 0 && !delta_t.empty())
-        for (int a = 0; a < geo.n; ++a) temperature += p.N[a] * delta_t[a];
+        for (int a = 0; a < geo.n; ++a) {
+          temperature += p.N[a] * delta_t[static_cast<std::size_t>(a)];
+          if (delta_t.size() > static_cast<std::size_t>(geo.n))
+            gradient += p.N[a] * delta_t[static_cast<std::size_t>(geo.n + a)];
+        }
+      // At the section point, z from the reference surface along the director (the kernel's
+      // z(ζ) = t (ζ/2 − offset)).
+      const double at_point = temperature + t_here * (zeta / 2 - geo.offset) * gradient;
       tie_transverse_shear(geo, xi, eta, zeta, p);
       std::array<Vec3, 3> axes;
       if (!shell_axes(p.g[0], p.g[1], axes)) {
@@ -358,9 +367,9 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
         for (int j = 0; j < nd; ++j) strain[c] += b[c][j] * u[j];
       const std::size_t point = iq * section.zeta.size() + k;
       const LaminaPoint lamina =
-          material.law ? material_lamina(*material.law, strain, section.expansion * temperature, p.x, shear,
+          material.law ? material_lamina(*material.law, strain, section.expansion * at_point, p.x, shear,
                                          material.history.at(point))
-                       : elastic_lamina(section, strain, section.expansion * temperature, shear);
+                       : elastic_lamina(section, strain, section.expansion * at_point, shear);
       const std::array<double, 5>& stress = lamina.stress;
       const double dv = q.weight * section.weight[k] * p.det;
       for (int i = 0; i < nd && !out.internal_force.empty(); ++i)

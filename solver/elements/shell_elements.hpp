@@ -69,7 +69,9 @@ std::size_t shell_material_points(const model::ElementTypeInfo& type, const Shel
 
 /// Stiffness, internal force and point output of a shell. `u` holds 6 values per node in the
 /// order above; coords the reference nodes; at_nodes its thickness and directors; delta_t the
-/// nodes' temperature change (empty: none). Linear with the section's elastic lamina; with a law of
+/// nodes' temperature change on the reference surface (empty: none), then, when it holds twice
+/// the nodes, the change of the temperature's gradient ∂T/∂n through the thickness at them: the
+/// thermal strain at a section point z from the reference surface is α (ΔT + z Δg). Linear with the section's elastic lamina; with a law of
 /// `material`, its plane stress state at each section point (PE, PEEQ in the points' output).
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                    const ShellProperties& section, const ShellNodeData& at_nodes, const ElementRequest& request,

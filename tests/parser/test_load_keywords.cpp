@@ -223,6 +223,19 @@ TEST(InitialConditions, TemperatureOnANodeSet) {
       << bad.report();
 }
 
+// The third field is the gradient through a shell's thickness; a fourth is an error.
+TEST(InitialConditions, TemperatureWithAShellGradient) {
+  DeckDir dir;
+  auto r = dir.read(cube_step("*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALL, 20., 5.\n", "*TEMPERATURE\nALL, 373., 1000.\n7, 30.\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  EXPECT_EQ(r.model.initial_temperatures.at(0).gradient, 5.0);
+  const auto& entries = r.model.steps.at(0).temperatures.at(0).entries;
+  EXPECT_EQ(entries.at(0).gradient, 1000.0);
+  EXPECT_FALSE(entries.at(1).gradient.has_value());
+  auto bad = dir.read(cube_step("", "*TEMPERATURE\nALL, 373., 1000., 2.\n"));
+  EXPECT_TRUE(has_diagnostic(bad, "*TEMPERATURE: data line has 4 fields, expected 2 to 3")) << bad.report();
+}
+
 TEST(Amplitude, PairsAcrossLinesWithScaleAndShift) {
   DeckDir dir;
   auto r = dir.read(cube_step("*AMPLITUDE, NAME=A1\n0., 0., 0.5, 0.8, 1., 1., 2., 1.5\n3., 0.\n"

@@ -1,0 +1,106 @@
+// A temperature through a shell's thickness (*TEMPERATURE's third field, the gradient ∂T/∂n):
+// the thermal strain α (ΔT + z g) at z from the reference surface. A free 10 × 1 strip (S4 and
+// S8R, t = 0.1, α = 1e-5, E = 2e5, ν = 0.3) held at one corner only bends without stress into
+// w = −α g (x² + y²)/2 and stretches by α ΔT; a fully held one carries σ = −E α (ΔT + z g)/(1 − ν)
+// at its section points. Both exact: to 1e-7 of the largest displacement (the round-off of a
+// thin strip held at one corner) and 1e-9 of the stress.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "fixtures/deck_fixture.hpp"
+#include "solver/analysis.hpp"
+#include "verification_fixture.hpp"
+
+namespace inpact::verification {
+namespace {
+
+constexpr double kAlpha = 1e-5, kE = 2e5, kNu = 0.3, kT = 0.1;
+
+/// The strip of ten elements along x, width 1, with `hold` (*BOUNDARY lines) and the temperature
+/// line `temperature` (node set ALL) after an initial 0.
+std::string strip(const std::string& type, const std::string& hold, const std::string& temperature, double offset) {
+  const bool quadratic = type == "S8R";
+  std::string d = "*NODE, NSET=ALL\n";
+  // Corner nodes 1..11 (y = 0) and 101..111 (y = 1); S8R's midside nodes 201.. (y = 0), 301..
+  // (y = 1) at the half x, and 401..411 at y = 0.5.
+  for (int i = 0; i <= 10; ++i) {
+    d += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 1, i, i + 101, i);
+    if (quadratic) {
+      d += fmt::format("{}, {}, 0.5, 0.\n", i + 401, i);
+      if (i < 10) d += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 201, i + 0.5, i + 301, i + 0.5);
+    }
+  }
+  d += fmt::format("*ELEMENT, TYPE={}, ELSET=STRIP\n", type);
+  for (int i = 0; i < 10; ++i)
+    d += quadratic ? fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 102, i + 101, i + 201,
+                                 i + 402, i + 301, i + 401)
+                   : fmt::format("{}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 102, i + 101);
+  d += fmt::format("*MATERIAL, NAME=M\n*ELASTIC\n{}, {}\n*EXPANSION\n{}\n", kE, kNu, kAlpha);
+  d += fmt::format("*SHELL SECTION, ELSET=STRIP, MATERIAL=M, OFFSET={}\n{}\n", offset, kT);
+  d += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALL, 0.\n*BOUNDARY\n" + hold;
+  d += "*STEP\n*STATIC\n*TEMPERATURE\nALL, " + temperature + "\n*NODE PRINT, NSET=ALL\nU\n*EL PRINT\nS\n*OUTPUT, FIELD\n"
+       "*NODE OUTPUT\nU\n*ELEMENT OUTPUT\nS\n*END STEP\n";
+  return d;
+}
+
+std::unique_ptr<Run> run_text(const std::string& text) {
+  const test::DeckDir dir;
+  return run_deck(dir.write("deck.inp", text));
+}
+
+// Held at node 1 alone, ΔT = 50 on the reference surface and g = 100: u = α ΔT x, v = α ΔT y and
+// w = −α g (x² + y²)/2 (the hotter +n side lengthens, so the strip curves toward −n), no stress.
+// The reference surface at SPOS (OFFSET=0.5) gives the same (ΔT is given there).
+TEST(ShellTemperature, AFreeStripBendsWithoutStress) {
+  for (const std::string type : {"S4", "S8R"})
+    for (double offset : {0.0, 0.5}) {
+      const auto r = run_text(strip(type, "1, ENCASTRE\n", "50., 100.", offset));
+      ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+      const solver::Frame& f = *r->capture.of_step(1).back();
+      const auto& nodes = r->model().mesh.nodes;
+      for (const std::int32_t row : nset(r->model(), "ALL")) {  // not the rotation nodes
+        const auto n = static_cast<std::size_t>(row);
+        const double x = nodes.coords[n][0], y = nodes.coords[n][1];
+        const double w = -kAlpha * 100 * (x * x + y * y) / 2;
+        EXPECT_NEAR(nodal(f, "U", n, 0), kAlpha * 50 * x, 1e-7 * 0.05) << type << " node " << nodes.labels[n];
+        EXPECT_NEAR(nodal(f, "U", n, 1), kAlpha * 50 * y, 1e-7 * 0.05) << type << " node " << nodes.labels[n];
+        EXPECT_NEAR(nodal(f, "U", n, 2), w, 1e-7 * 0.05) << type << " node " << nodes.labels[n];
+      }
+      const double stress_scale = kE * kAlpha * 100 * kT;
+      for (double s : field(f, "S")->values) EXPECT_NEAR(s, 0.0, 1e-9 * stress_scale) << type;
+    }
+}
+
+// A later *TEMPERATURE line without the gradient sets it to 0: the strip straightens again and
+// keeps its stretch.
+TEST(ShellTemperature, ALineWithoutTheGradientSetsItToZero) {
+  const auto r = run_text(strip("S4", "1, ENCASTRE\n", "50., 100.", 0.0) +
+                          "*STEP\n*STATIC\n*TEMPERATURE\nALL, 50.\n*END STEP\n");
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const solver::Frame& f = *r->capture.of_step(2).back();
+  for (const std::int32_t row : nset(r->model(), "ALL")) {
+    const auto n = static_cast<std::size_t>(row);
+    EXPECT_NEAR(nodal(f, "U", n, 0), kAlpha * 50 * r->model().mesh.nodes.coords[n][0], 1e-7 * 0.05);
+    EXPECT_NEAR(nodal(f, "U", n, 2), 0.0, 1e-7 * 0.05);
+  }
+}
+
+// Every node held: S11 = S22 = −E α (ΔT + z g)/(1 − ν) at SNEG (z = −t/2) and SPOS (z = t/2).
+TEST(ShellTemperature, AHeldStripCarriesTheThermalStressThroughItsThickness) {
+  for (const std::string type : {"S4", "S8R"}) {
+    const auto r = run_text(strip(type, "ALL, ENCASTRE\n", "50., 100.", 0.0));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::FieldData& s = *field(*r->capture.of_step(1).back(), "S");
+    const std::size_t n = s.component_labels.size();
+    for (std::size_t i = 0; i < s.elements.size(); ++i) {
+      const double z = s.ip[i] % 2 == 1 ? -kT / 2 : kT / 2;  // SNEG then SPOS at each point
+      const double expected = -kE * kAlpha * (50 + z * 100) / (1 - kNu);
+      EXPECT_NEAR(s.values[i * n + 0], expected, 1e-9 * std::abs(expected)) << type << " ip " << s.ip[i];
+      EXPECT_NEAR(s.values[i * n + 1], expected, 1e-9 * std::abs(expected)) << type << " ip " << s.ip[i];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace inpact::verification
