@@ -238,6 +238,33 @@ void set_transforms(const model::Model& m, AnalysisModel& am) {
 
 }  // namespace
 
+namespace {
+
+/// A temperature gradient is a shell's (its thickness): one given at a node that no shell uses
+/// would be ignored, so a warning says so, once per line.
+void warn_gradients_off_shells(const model::Model& m, AnalysisModel& am) {
+  std::vector<char> on_shell(m.mesh.nodes.size(), 0);
+  for (std::size_t e = 0; e < m.mesh.elements.size(); ++e)
+    if (model::is_shell(model::element_type(m.mesh.elements.type[e])))
+      for (std::int32_t n : m.mesh.elements.nodes_of(e)) on_shell[static_cast<std::size_t>(n)] = 1;
+  auto check = [&](const model::TemperatureEntry& t, const char* keyword) {
+    if (!t.gradient || *t.gradient == 0.0) return;
+    for (std::int32_t n : t.nodes)
+      if (!on_shell[static_cast<std::size_t>(n)]) {
+        am.warnings.push_back(fmt::format("{} at {}: the temperature gradient at node {} is ignored: no shell element "
+                                          "uses the node (a beam's gradients are not read yet)",
+                                          keyword, m.sources.describe(t.loc), m.mesh.nodes.labels[static_cast<std::size_t>(n)]));
+        return;
+      }
+  };
+  for (const auto& t : m.initial_temperatures) check(t, "*INITIAL CONDITIONS");
+  for (const auto& step : m.steps)
+    for (const auto& b : step.temperatures)
+      for (const auto& t : b.entries) check(t, "*TEMPERATURE");
+}
+
+}  // namespace
+
 AnalysisModel build_analysis_model(const model::Model& m) {
   AnalysisModel am;
   am.model = &m;
@@ -301,11 +328,12 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   am.initial_temperature.assign(m.mesh.nodes.size(), 0.0);
   for (const auto& t : m.initial_temperatures)
     for (std::int32_t n : t.nodes) am.initial_temperature[static_cast<std::size_t>(n)] = t.value;
-  for (const auto& t : m.initial_temperatures)
-    if (t.gradient) {
-      am.initial_temperature_gradient.resize(m.mesh.nodes.size(), 0.0);
-      for (std::int32_t n : t.nodes) am.initial_temperature_gradient[static_cast<std::size_t>(n)] = *t.gradient;
-    }
+  if (std::any_of(m.initial_temperatures.begin(), m.initial_temperatures.end(), [](const auto& t) { return t.gradient; })) {
+    am.initial_temperature_gradient.assign(m.mesh.nodes.size(), 0.0);
+    for (const auto& t : m.initial_temperatures)  // a later line without it: 0, as in a step
+      for (std::int32_t n : t.nodes) am.initial_temperature_gradient[static_cast<std::size_t>(n)] = t.gradient.value_or(0.0);
+  }
+  warn_gradients_off_shells(m, am);
   am.rotation_node_of.assign(m.mesh.nodes.size(), -1);
   for (const model::RotatingNode& r : model::rotating_nodes(m, am.dim))
     am.rotation_node_of[static_cast<std::size_t>(r.ref_node)] = r.rot_node;

@@ -50,10 +50,12 @@ void apply_boundaries(const AnalysisModel& am, const std::vector<model::Boundary
 ConditionHistory initial_history(const AnalysisModel& am) {
   ConditionHistory h;
   apply_boundaries(am, am.model->boundaries, h.boundary, nullptr);
+  const bool gradients = !am.initial_temperature_gradient.empty();
   for (const auto& t : am.model->initial_temperatures)
     for (std::int32_t n : t.nodes) {
       h.temperature[n] = {t.value, "", t.value};
-      if (t.gradient) h.temperature_gradient[n] = {*t.gradient, "", *t.gradient};
+      const double g = t.gradient.value_or(0.0);  // a later line without it: 0, as in a step
+      if (gradients) h.temperature_gradient[n] = {g, "", g};
     }
   h.reactions.assign(am.n_dof(), 0.0);
   return h;
@@ -103,7 +105,8 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
         target_.temperature[n] = {e.value, b.amplitude, e.value};
         // A line without the gradient gives it 0 where one was in force.
         const double g = e.gradient.value_or(0.0);
-        if (e.gradient || target_.temperature_gradient.count(n)) target_.temperature_gradient[n] = {g, b.amplitude, g};
+        if (e.gradient || target_.temperature_gradient.count(n) || previous_.temperature_gradient.count(n))
+          target_.temperature_gradient[n] = {g, b.amplitude, g};
       }
   }
 

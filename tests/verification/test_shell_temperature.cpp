@@ -10,6 +10,7 @@
 
 #include "fixtures/deck_fixture.hpp"
 #include "solver/analysis.hpp"
+#include "solver/analysis_model.hpp"
 #include "verification_fixture.hpp"
 
 namespace inpact::verification {
@@ -74,16 +75,31 @@ TEST(ShellTemperature, AFreeStripBendsWithoutStress) {
 
 // A later *TEMPERATURE line without the gradient sets it to 0: the strip straightens again and
 // keeps its stretch.
+// The same after OP=NEW, which drops the earlier definitions first.
 TEST(ShellTemperature, ALineWithoutTheGradientSetsItToZero) {
-  const auto r = run_text(strip("S4", "1, ENCASTRE\n", "50., 100.", 0.0) +
-                          "*STEP\n*STATIC\n*TEMPERATURE\nALL, 50.\n*END STEP\n");
-  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
-  const solver::Frame& f = *r->capture.of_step(2).back();
-  for (const std::int32_t row : nset(r->model(), "ALL")) {
-    const auto n = static_cast<std::size_t>(row);
-    EXPECT_NEAR(nodal(f, "U", n, 0), kAlpha * 50 * r->model().mesh.nodes.coords[n][0], 1e-7 * 0.05);
-    EXPECT_NEAR(nodal(f, "U", n, 2), 0.0, 1e-7 * 0.05);
+  for (const std::string keyword : {"*TEMPERATURE", "*TEMPERATURE, OP=NEW"}) {
+    const auto r = run_text(strip("S4", "1, ENCASTRE\n", "50., 100.", 0.0) + "*STEP\n*STATIC\n" + keyword +
+                            "\nALL, 50.\n*END STEP\n");
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::Frame& f = *r->capture.of_step(2).back();
+    for (const std::int32_t row : nset(r->model(), "ALL")) {
+      const auto n = static_cast<std::size_t>(row);
+      EXPECT_NEAR(nodal(f, "U", n, 0), kAlpha * 50 * r->model().mesh.nodes.coords[n][0], 1e-7 * 0.05) << keyword;
+      EXPECT_NEAR(nodal(f, "U", n, 2), 0.0, 1e-7 * 0.05) << keyword;
+    }
   }
+}
+
+// A gradient at a node no shell uses would be ignored: a warning names the line and the node.
+TEST(ShellTemperature, AGradientOffTheShellsIsAWarning) {
+  const test::DeckDir dir;
+  const auto r = dir.read(test::one_cube_deck() + "*STEP\n*STATIC\n*TEMPERATURE\n1, 10., 5.\n*END STEP\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto am = solver::build_analysis_model(r.model);
+  ASSERT_EQ(am.warnings.size(), 1u);
+  EXPECT_NE(am.warnings[0].find("the temperature gradient at node 1 is ignored: no shell element uses the node"),
+            std::string::npos)
+      << am.warnings[0];
 }
 
 // Every node held: S11 = S22 = −E α (ΔT + z g)/(1 − ν) at SNEG (z = −t/2) and SPOS (z = t/2).
