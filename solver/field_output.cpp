@@ -188,6 +188,10 @@ bool model_has_beams(const AnalysisModel& am) {
 /// Whether a field key is reported at a beam's section points (S, E or LE; MISES comes with S).
 bool at_section_points(const std::string& key) { return key == "S" || key == "E" || key == "LE"; }
 
+/// A printed variable a beam reports at its section points (S11, S12, E11, E12, LE11, LE12,
+/// MISES; defined with the print columns below).
+bool beam_section_point_column(const std::string& variable);
+
 /// A beam whose general section has no *SECTION POINTS has nowhere to report S and E.
 bool model_has_beams_without_section_points(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(),
@@ -347,8 +351,8 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (columns.empty()) add_unique(not_computed_, v);
         if (d == Domain::Element && !columns.empty() && plastic_key(v) && model_has_beams(am))
           add_unique(not_computed_, v + " of beam elements (their sections are elastic)");
-        if (d == Domain::Element && (v.rfind("S1", 0) == 0 || v.rfind("E1", 0) == 0 || v == "MISES") &&
-            model_has_beams_without_section_points(am))
+        if (d == Domain::Element && model_has_beams_without_section_points(am) &&
+            std::any_of(columns.begin(), columns.end(), beam_section_point_column))
           add_unique(not_computed_, v + " of beams with a general section without *SECTION POINTS");
         for (const auto& c : columns) add_unique(a.variables, c);
       }
@@ -815,6 +819,12 @@ std::vector<PrintTable> contact_tables(const AnalysisModel& am, const ActiveRequ
   return out;
 }
 
+bool beam_section_point_column(const std::string& variable) {
+  const Column c = parse_column(variable);
+  const bool strain_or_stress = c.source == Column::Source::S || c.source == Column::Source::E;
+  return c.source == Column::Source::Mises || (strain_or_stress && (c.component == 0 || c.component == 3));
+}
+
 /// What the rows of an element table are: integration points, or a beam's section points.
 enum class Rows : std::uint8_t { IntegrationPoints, SectionPoints };
 
@@ -833,10 +843,9 @@ std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const s
     const bool section = c.source == Column::Source::SF || c.source == Column::Source::SM;
     const bool axial = c.source == Column::Source::SF && c.component == 0;
     const bool in_plane = c.component == 0 || c.component == 1 || c.component == 3;
-    const bool beam_stress = c.source == Column::Source::Mises ||
-                             (tensor && c.source != Column::Source::PE && (c.component == 0 || c.component == 3));
     if (model::is_beam(type)) {
-      if (rows == Rows::SectionPoints ? beam_stress : section || c.source == Column::Source::Coord) out.push_back(v);
+      if (rows == Rows::SectionPoints ? beam_section_point_column(v) : section || c.source == Column::Source::Coord)
+        out.push_back(v);
       continue;
     }
     const bool keep = rows == Rows::SectionPoints ? false
