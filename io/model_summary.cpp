@@ -20,6 +20,16 @@ namespace {
 
 using fmt::print;
 
+/// "material M", or a COMPOSITE's "N layers (A 0.1 at 0°, B 0.2 at OR1, …)".
+std::string shell_material_text(const model::ShellSection& s) {
+  if (s.layers.empty()) return "material " + s.material;
+  std::vector<std::string> layers;
+  for (const model::ShellLayer& l : s.layers)
+    layers.push_back(fmt::format("{} {:g} at {}", l.material, l.thickness,
+                                 l.orientation.empty() ? fmt::format("{:g}°", l.angle) : l.orientation));
+  return fmt::format("{} layers ({})", s.layers.size(), fmt::join(layers, ", "));
+}
+
 void write_mesh(std::ostream& out, const model::Model& m) {
   const auto& mesh = m.mesh;
   print(out, "Nodes      {:>10}\n", mesh.nodes.size());
@@ -81,10 +91,10 @@ void write_materials(std::ostream& out, const model::Model& m) {
           model::shape_name(s.shape), fmt::format("{}", fmt::join(s.dims, " x ")), s.n1[0], s.n1[1], s.n1[2],
           s.offset != std::array<double, 2>{} ? fmt::format(", offsets {:g}, {:g}", s.offset[0], s.offset[1]) : "");
   for (const auto& s : m.mesh.shell_sections)
-    print(out, "  shell: elset {} -> material {}, {}, {}{}\n", s.elset, s.material,
+    print(out, "  shell: elset {} -> {}, {}, {}{}\n", s.elset, shell_material_text(s),
           s.nodal_thickness ? std::string("nodal thickness") : fmt::format("thickness {:g}", s.thickness),
           s.general ? std::string("general (exact through the thickness)")
-                    : fmt::format("{} section points", s.section_points),
+                    : fmt::format("{} section points", s.point_count()),
           s.offset != 0.0 ? fmt::format(", offset {:g}", s.offset) : "");
 }
 

@@ -27,6 +27,7 @@ CellTypes cell_types(const model::ElementTypeInfo& t) {
       case 2: return {3, 2, "Polyline"};
       case 3: return {5, 4, "Triangle"};
       case 4: return {9, 5, "Quadrilateral"};
+      case 6: return {22, 36, "Triangle_6"};       // S6: corners then midsides, as VTK's
       case 8: return {23, 37, "Quadrilateral_8"};  // S8R, S8: corners then midsides, as VTK's
     }
     return {0, 0, ""};

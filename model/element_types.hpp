@@ -16,7 +16,7 @@ enum class ElementFamily : std::uint8_t {
   Spring,       ///< SPRINGA, SPRING1, SPRING2: stiffness from *SPRING; dim 0 (the model's)
   Rigid,        ///< R3D3, R3D4, R2D2, RAX2: no stiffness, a surface of a *RIGID BODY (faces SNEG, SPOS)
   Beam,         ///< B31, B32 (B32R) shear-flexible, B33 Euler–Bernoulli: beams in space, 6 DOFs a node
-  Shell         ///< S3, S3R, S4, S4R, S8R, S8: conventional shells, 6 DOFs a node (faces SNEG, SPOS)
+  Shell         ///< S3, S3R, S4, S4R, S6, S8R, S8: conventional shells, 6 DOFs a node (faces SNEG, SPOS)
 };
 
 enum class Integration : std::uint8_t { Full, Reduced, IncompatibleModes };
@@ -54,7 +54,7 @@ inline bool is_continuum(const ElementTypeInfo& t) {
 /// B31, B32, B33.
 inline bool is_beam(const ElementTypeInfo& t) { return t.family == ElementFamily::Beam; }
 
-/// S3, S3R, S4, S4R, S8R, S8.
+/// S3, S3R, S4, S4R, S6, S8R, S8.
 inline bool is_shell(const ElementTypeInfo& t) { return t.family == ElementFamily::Shell; }
 
 /// Beams and shells: elements with rotations at their nodes (model::NodeRotation).

@@ -1,12 +1,13 @@
 /// *SHELL SECTION, *SHELL GENERAL SECTION, their *TRANSVERSE SHEAR STIFFNESS, *NODAL THICKNESS
 /// and *NORMAL [Abaqus Keywords].
 ///
-/// *SHELL SECTION, ELSET=, MATERIAL=[, OFFSET=SPOS | SNEG | MIDDLE | value][, NODAL THICKNESS]:
-/// one data line, the thickness and the number of section points (Simpson, odd; default 5).
-/// *SHELL GENERAL SECTION, ELSET=, MATERIAL=: the thickness (a section given by its stiffness
-/// matrix, without MATERIAL, is not supported yet). COMPOSITE, ORIENTATION, Gauss integration
-/// through the thickness and shells of a *DENSITY-less general section stop here with what is
-/// missing.
+/// *SHELL SECTION, ELSET=, MATERIAL=[, ORIENTATION=][, OFFSET=SPOS | SNEG | MIDDLE | value][,
+/// NODAL THICKNESS]: one data line, the thickness and the number of section points (Simpson, odd;
+/// default 5). With COMPOSITE (no MATERIAL=): a line a layer from SNEG up, `thickness, section
+/// points (default 3), material, orientation name or angle, ply name`.
+/// *SHELL GENERAL SECTION, ELSET=, MATERIAL= (or COMPOSITE): the thickness (a section given by its
+/// stiffness matrix, without MATERIAL, is not supported yet). Gauss integration through the
+/// thickness and shells of a *DENSITY-less general section stop here with what is missing.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,6 +28,59 @@ double read_offset(KeywordContext& ctx) {
   return v == "SPOS" ? 0.5 : v == "SNEG" ? -0.5 : 0.0;
 }
 
+/// A number of Simpson section points (odd, at least 3); false after reporting one that is not.
+bool read_section_points(KeywordContext& ctx, const Field& f, int& points) {
+  auto n = ctx.integer(f, "number of section points");
+  if (!n) return false;
+  if (*n < 3 || *n % 2 == 0) {
+    ctx.error(f.loc, fmt::format("Simpson's rule through the thickness takes an odd number of section points, at "
+                                 "least 3; found {}", *n));
+    return false;
+  }
+  points = static_cast<int>(*n);
+  return true;
+}
+
+/// A layer's thickness: positive, or (NODAL THICKNESS) positive relative to the others.
+bool read_layer_thickness(KeywordContext& ctx, const Field& f, double& thickness) {
+  auto t = ctx.real(f, "layer thickness");
+  if (!t) return false;
+  if (!(*t > 0)) {
+    ctx.error(f.loc, fmt::format("a layer's thickness must be positive, found {:g}", *t));
+    return false;
+  }
+  thickness = *t;
+  return true;
+}
+
+/// COMPOSITE's data lines: `thickness, section points, material, orientation, ply name`, a layer
+/// each from SNEG up; the section's thickness is their sum.
+bool read_layers(KeywordContext& ctx, model::ShellSection& sec) {
+  std::vector<Field> f;
+  for (const Line& line : ctx.data) {
+    split_fields(line, f);
+    if (!ctx.check_count(f, line, 3, 5, "thickness, number of section points, material[, orientation][, ply name]"))
+      return false;
+    model::ShellLayer layer;
+    layer.loc = f[2].loc;
+    if (!read_layer_thickness(ctx, f[0], layer.thickness)) return false;
+    if (!f[1].empty() && !read_section_points(ctx, f[1], layer.section_points)) return false;
+    layer.material = normalize_label(f[2].text);
+    if (layer.material.empty()) {
+      ctx.error(f[2].loc, "a layer needs its material's name");
+      return false;
+    }
+    if (f.size() > 3 && !f[3].empty()) {
+      if (auto angle = parse_real(f[3].text)) layer.angle = *angle;
+      else layer.orientation = normalize_label(f[3].text), layer.orientation_loc = f[3].loc;
+    }
+    if (f.size() > 4) layer.ply = std::string(trim(f[4].text));
+    sec.thickness += layer.thickness;
+    sec.layers.push_back(std::move(layer));
+  }
+  return true;
+}
+
 /// The data line: thickness[, number of section points].
 bool read_thickness_line(KeywordContext& ctx, model::ShellSection& sec) {
   std::vector<Field> f;
@@ -43,44 +97,46 @@ bool read_thickness_line(KeywordContext& ctx, model::ShellSection& sec) {
     }
     sec.thickness = *t;
   }
-  if (f.size() > 1 && !f[1].empty()) {
-    auto n = ctx.integer(f[1], "number of section points");
-    if (!n) return false;
-    if (*n < 3 || *n % 2 == 0) {
-      ctx.error(f[1].loc, fmt::format("Simpson's rule through the thickness takes an odd number of section points, at "
-                                      "least 3; found {}", *n));
-      return false;
-    }
-    sec.section_points = static_cast<int>(*n);
-  }
+  if (f.size() > 1 && !f[1].empty() && !read_section_points(ctx, f[1], sec.section_points)) return false;
   if (ctx.data.size() > 1) {
-    ctx.error(ctx.data[1].loc, "expected one data line (a composite section's layers need COMPOSITE, which is not "
-                               "supported yet)");
+    split_fields(ctx.data[1], f);
+    ctx.error(f.empty() ? ctx.data[1].loc : f[0].loc,
+              "expected one data line (a section of layers, one a line, takes COMPOSITE)");
     return false;
   }
   return true;
 }
 
 void read_section(KeywordContext& ctx, bool general) {
-  const char* unsupported[] = {"COMPOSITE", "ORIENTATION", "SECTION INTEGRATION", "DENSITY"};
+  const char* unsupported[] = {"SECTION INTEGRATION", "DENSITY"};
   for (const char* p : unsupported)
     if (ctx.has(p) && !(std::string_view(p) == "SECTION INTEGRATION" && ctx.choice_value(p) == "SIMPSON")) {
       ctx.error_param(p, fmt::format("{} on a shell section is not supported yet", p));
       return;
     }
-  if (general && !ctx.has("MATERIAL")) {
+  const bool composite = ctx.has("COMPOSITE");
+  if (composite && ctx.has("MATERIAL")) {
+    ctx.error_param("MATERIAL", "a COMPOSITE section names a material on each layer's line, not MATERIAL=");
+    return;
+  }
+  if (!composite && !ctx.has("MATERIAL")) {
+    if (!general) {
+      ctx.error(ctx.keyword.loc, "missing parameter MATERIAL (or COMPOSITE with a material on each layer's line)");
+      return;
+    }
     ctx.error(ctx.keyword.loc, "a *SHELL GENERAL SECTION given by its stiffness matrix (no MATERIAL=) is not supported "
                                "yet: give MATERIAL=");
     return;
   }
   model::ShellSection sec;
   sec.elset = ctx.name_value("ELSET");
-  sec.material = ctx.name_value("MATERIAL");
+  if (!composite) sec.material = ctx.name_value("MATERIAL");
+  if (ctx.has("ORIENTATION")) sec.orientation = ctx.name_value("ORIENTATION");
   sec.general = general;
   sec.nodal_thickness = ctx.has("NODAL THICKNESS");
   sec.loc = ctx.keyword.loc;
   sec.offset = read_offset(ctx);
-  if (!read_thickness_line(ctx, sec)) return;
+  if (composite ? !read_layers(ctx, sec) : !read_thickness_line(ctx, sec)) return;
   ctx.mesh().shell_sections.push_back(std::move(sec));
   ctx.state.open_parent = general ? "*SHELL GENERAL SECTION" : "*SHELL SECTION";  // its *TRANSVERSE SHEAR STIFFNESS
 }
@@ -199,10 +255,9 @@ void add_shell_section_keywords(std::vector<KeywordSpec>& t) {
                                           {"SIMPSON", "GAUSS"}},
                                          {"POISSON", ValueKind::Required, ValueType::Real},
                                          {"DENSITY", ValueKind::Required, ValueType::Real}};
+  // No numbers_from: a COMPOSITE line names its material; the handler reads every field.
   t.push_back({"*SHELL SECTION", kMeshScopes, common, DataLines::Required, shell_section});
-  t.back().numbers_from = 0;
   t.push_back({"*SHELL GENERAL SECTION", kMeshScopes, common, DataLines::Required, shell_general_section});
-  t.back().numbers_from = 0;
   t.push_back({"*NODAL THICKNESS", kMeshScopes, {}, DataLines::Required, nodal_thickness});
   t.push_back({"*NORMAL", kMeshScopes, {{"TYPE", ValueKind::Required, ValueType::Choice, {"ELEMENT", "CONTACT SURFACE"}}},
                DataLines::Required, normal});

@@ -1,4 +1,5 @@
-/// Shell sections checked against the mesh once the deck is read: defined sets and materials,
+/// Shell sections checked against the mesh once the deck is read: defined sets, materials and
+/// orientations (the section's and its layers'),
 /// shells only, one section an element, and a *NODAL THICKNESS at every node of a section that
 /// asks for one.
 #include <fmt/format.h>
@@ -34,16 +35,28 @@ void check_shell_section(const model::Model& m, const model::ShellSection& sec, 
     diags.error(sec.loc, keyword_of(sec), fmt::format("element set '{}' is not defined", sec.elset));
     return;
   }
-  if (!m.materials.count(sec.material)) {
+  if (sec.layers.empty() && !m.materials.count(sec.material)) {
     diags.error(sec.loc, keyword_of(sec), fmt::format("material '{}' is not defined", sec.material));
     return;
+  }
+  if (!sec.orientation.empty() && !m.orientations.count(sec.orientation)) {
+    diags.error(sec.loc, keyword_of(sec), fmt::format("orientation '{}' is not defined", sec.orientation));
+    return;
+  }
+  for (const model::ShellLayer& layer : sec.layers) {
+    if (!m.materials.count(layer.material))
+      diags.error(layer.loc, keyword_of(sec), fmt::format("layer: material '{}' is not defined", layer.material));
+    if (!layer.orientation.empty() && !m.orientations.count(layer.orientation))
+      diags.error(layer.orientation_loc, keyword_of(sec),
+                  fmt::format("layer: orientation '{}' is not defined (expected an *ORIENTATION's name or an angle in "
+                              "degrees)", layer.orientation));
   }
   const auto& el = m.mesh.elements;
   for (std::int32_t e : set->second.rows) {
     const auto& type = model::element_type(el.type[static_cast<std::size_t>(e)]);
     if (!model::is_shell(type)) {
       diags.error(sec.loc, keyword_of(sec), fmt::format("element {} ({}) in set {} is not a shell element (S3, S3R, "
-                                                        "S4, S4R, S8R, S8)", el.labels[e], type.name, sec.elset));
+                                                        "S4, S4R, S6, S8R, S8)", el.labels[e], type.name, sec.elset));
       return;
     }
     if (has_section[static_cast<std::size_t>(e)]) {

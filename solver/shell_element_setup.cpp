@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -10,6 +12,7 @@
 #include "elastic_law.hpp"
 #include "elements/mises_plasticity.hpp"
 #include "elements/shell_section.hpp"
+#include "model/elastic_stiffness.hpp"
 #include "shell_normals.hpp"
 
 namespace inpact::solver {
@@ -20,18 +23,54 @@ const char* keyword_of(const model::ShellSection& sec) {
   return sec.general ? "*SHELL GENERAL SECTION" : "*SHELL SECTION";
 }
 
-/// E, ν and α of the section's material: isotropic elastic (with *PLASTIC or not), or a deck
-/// error naming what is missing.
-elements::ShellProperties shell_section_properties(const model::Model& m, const model::ShellSection& sec) {
-  const auto where = [&] { return m.sources.describe(sec.loc); };
-  const model::Material& mat = m.materials.at(sec.material);
+/// The elastic lamina of `material` (isotropic, engineering constants, orthotropic or lamina),
+/// or a deck error naming what is missing.
+elements::ShellLamina material_lamina(const model::Model& m, const model::ShellSection& sec,
+                                      const std::string& material, model::SourceLoc loc) {
+  const model::Material& mat = m.materials.at(material);
   refuse_temperature_tables(m, mat, "shell elements");
-  if (!mat.elastic || mat.elastic->type != model::Elastic::Type::Isotropic || mat.hyperelastic)
-    throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not isotropic elastic; shells take *ELASTIC, "
-                                    "TYPE=ISOTROPIC (with or without *PLASTIC) only so far", where(), keyword_of(sec),
-                                    mat.name));
-  return elements::shell_properties(sec, mat.elastic->youngs_modulus, mat.elastic->poissons_ratio,
-                                    mat.expansion ? mat.expansion->alpha : 0.0);
+  const bool linear = mat.elastic && !mat.hyperelastic;
+  if (!linear || mat.elastic->type == model::Elastic::Type::Anisotropic)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not {}; shells take *ELASTIC, TYPE=ISOTROPIC, "
+                                    "ENGINEERING CONSTANTS, ORTHOTROPIC or LAMINA so far", m.sources.describe(loc),
+                                    keyword_of(sec), mat.name, linear ? "orthotropic" : "linear elastic"));
+  const double alpha = mat.expansion ? mat.expansion->alpha : 0.0;
+  if (mat.elastic->type == model::Elastic::Type::Isotropic)
+    return elements::isotropic_lamina(mat.elastic->youngs_modulus, mat.elastic->poissons_ratio, alpha);
+  return elements::condensed_lamina(model::material_stiffness(*mat.elastic),
+                                    mat.elastic->type == model::Elastic::Type::Lamina, alpha);
+}
+
+std::optional<elements::MaterialOrientation> orientation_named(const model::Model& m, const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  return elements::MaterialOrientation(m.orientations.at(name));
+}
+
+/// The section's layers: its material through the thickness, or COMPOSITE's layers, each in its
+/// own orientation (a name) or at its angle from the section's.
+elements::ShellProperties shell_section_properties(const model::Model& m, const model::ShellSection& sec) {
+  std::vector<elements::ShellLayerProperties> layers;
+  if (sec.layers.empty()) {
+    elements::ShellLayerProperties& layer = layers.emplace_back();
+    layer.lamina = material_lamina(m, sec, sec.material, sec.loc);
+    layer.orientation = orientation_named(m, sec.orientation);
+  }
+  for (const model::ShellLayer& given : sec.layers) {
+    elements::ShellLayerProperties& layer = layers.emplace_back();
+    layer.lamina = material_lamina(m, sec, given.material, given.loc);
+    layer.orientation = orientation_named(m, given.orientation.empty() ? sec.orientation : given.orientation);
+    layer.angle = given.angle * std::numbers::pi / 180;
+  }
+  return elements::shell_properties(sec, std::move(layers));
+}
+
+/// The section's mass per volume: its layers' densities averaged over their thicknesses.
+double section_density(const model::Model& m, const model::ShellSection& sec) {
+  if (sec.layers.empty()) return m.materials.at(sec.material).density.value_or(0.0);
+  double sum = 0.0;
+  for (const model::ShellLayer& layer : sec.layers)
+    sum += layer.thickness * m.materials.at(layer.material).density.value_or(0.0);
+  return sum / sec.thickness;
 }
 
 /// The law at the section points of a shell whose material has *PLASTIC: Mises in plane stress
@@ -40,9 +79,19 @@ elements::ShellProperties shell_section_properties(const model::Model& m, const 
 /// the corotated strains (corotation.hpp), so the strains stay small while the shell turns. Null
 /// without *PLASTIC.
 std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& m, const model::ShellSection& sec) {
+  for (const model::ShellLayer& layer : sec.layers)
+    if (m.materials.at(layer.material).plastic)
+      throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; the layers of a COMPOSITE section "
+                                      "are elastic so far", m.sources.describe(layer.loc), keyword_of(sec),
+                                      layer.material));
+  if (!sec.layers.empty()) return nullptr;
   const model::Material& mat = m.materials.at(sec.material);
   if (!mat.plastic) return nullptr;
   const model::Plastic& p = *mat.plastic;
+  if (!sec.orientation.empty() || mat.elastic->type != model::Elastic::Type::Isotropic)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a plastic shell takes isotropic "
+                                    "elasticity and no ORIENTATION so far", m.sources.describe(sec.loc),
+                                    keyword_of(sec), mat.name));
   if (sec.general)
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a general shell section is "
                                     "integrated once, elastically (use *SHELL SECTION for a plastic shell)",
@@ -80,7 +129,7 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
         for (std::size_t a = 0; a < nodes.size(); ++a) at_nodes[a] = m.mesh.nodal_thickness.at(nodes[a]);
         s.section.nodal_thickness = std::span<const double>(at_nodes.data(), nodes.size());
       }
-      s.density = m.materials.at(sec.material).density.value_or(0.0);
+      s.density = section_density(m, sec);
     }
   }
   average_shell_normals(m, am);

@@ -29,12 +29,19 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
   plastic_nlgeom the plastic strip under NLGEOM (the tip turned by 0.3, then 1 rad).
   plastic_plate  a clamped square plate 1 x 1, t = 0.01, of a hardening metal under a pressure 5,
                  NLGEOM: about 13 thicknesses of deflection, yielded through its thickness.
+  laminate       the strip (L = 10, b = 1) of a lamina E1 = 1.4e5, E2 = 1e4, nu12 = 0, G12 = 5e3,
+                 G13 = 5e3, G23 = 3e3 under the tip line load 1, *SHELL SECTION, COMPOSITE; the variant
+                 picks the layup: cross [0/90/90/0] by angles, orient the same by *ORIENTATION
+                 names, unsym [0/90] (t = 0.05 each), turned one layer at 30 deg, composed the
+                 same as a section ORIENTATION at 20 deg and a layer at 10 deg; all 0.1 thick.
   rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
                  t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
                  full circle (U2, UR1, UR3 held: a planar problem).
 
-Usage: gen_shells.py --out DIR NAME ETYPE N [thin]   (writes DIR/NAME_ETYPE_N[_thin].inp)
-ETYPE is S4, S4R, S8R or S3 (each quad of the S4 grid cut into two triangles).
+Usage: gen_shells.py --out DIR NAME ETYPE N [VARIANT]   (writes DIR/NAME_ETYPE_N[_VARIANT].inp;
+VARIANT is thin for twisted, the layup for laminate)
+ETYPE is S4, S4R, S8R, S3 (each quad of the S4 grid cut into two triangles) or S6 (each quad of
+the S8R grid, centre node added, cut likewise).
 """
 import argparse
 import math
@@ -45,7 +52,7 @@ def grid(etype, nx, ny, place):
     """Nodes and elements of an nx x ny structured shell mesh over (s, t) in [0, 1]^2, placed by
     place(s, t) -> (x, y, z). Returns (nodes {label: (s, t, xyz)}, elements [[labels]])."""
     quad = etype == "S8R"
-    step = 2 if quad else 1
+    step = 2 if etype in ("S8R", "S6") else 1
     cols, rows = nx * step + 1, ny * step + 1
     label = lambda i, j: j * cols + i + 1
     nodes = {}
@@ -62,6 +69,11 @@ def grid(etype, nx, ny, place):
             if quad:
                 elements.append([label(i, j), label(i + 2, j), label(i + 2, j + 2), label(i, j + 2),
                                  label(i + 1, j), label(i + 2, j + 1), label(i + 1, j + 2), label(i, j + 1)])
+            elif etype == "S6":
+                a, b, c, d = label(i, j), label(i + 2, j), label(i + 2, j + 2), label(i, j + 2)
+                ab, bc, cd, da, ac = label(i + 1, j), label(i + 2, j + 1), label(i + 1, j + 2), label(i, j + 1), \
+                    label(i + 1, j + 1)
+                elements += [[a, b, c, ab, bc, ac], [a, c, d, ac, cd, da]]
             elif etype == "S3":
                 a, b, c, d = label(i, j), label(i + 1, j), label(i + 1, j + 1), label(i, j + 1)
                 elements += [[a, b, c], [a, c, d]]
@@ -149,7 +161,7 @@ def tip_loads(nodes, on_tip, coordinate, total, dof):
 def consistent_tip_loads(etype, nodes, on_tip, coordinate, total, dof):
     """A uniform line load on the tip edge as the elements' consistent nodal loads (linear: 1/2,
     1/2 of each edge; quadratic: 1/6, 2/3, 1/6), for the exact-answer strip."""
-    if etype != "S8R":
+    if etype not in ("S8R", "S6"):
         return tip_loads(nodes, on_tip, coordinate, total, dof)
     tip = sorted((coordinate(s, t), m) for m, (s, t, _) in nodes.items() if on_tip(s, t))
     length = tip[-1][0] - tip[0][0]
@@ -189,6 +201,30 @@ def strip(etype, n):
         consistent_tip_loads(etype, nodes, on_tip, lambda s, w: w, 1.0, 3) + ["*NODE PRINT, NSET=TIP", "U", "*END STEP"]
     return "Cantilever strip L = 10, b = 1, t = 0.1, nu = 0: a tip line load P = 1 along z", nodes, elements, \
         "2.e5, 0.", sets, tail
+
+
+LAYUPS = {
+    "cross": ("", [(0.025, "0."), (0.025, "90."), (0.025, "90."), (0.025, "0.")]),
+    "orient": ("", [(0.025, "OX"), (0.025, "OY"), (0.025, "OY"), (0.025, "OX")]),
+    "unsym": ("", [(0.05, "0."), (0.05, "90.")]),
+    "turned": ("", [(0.1, "30.")]),
+    "composed": (", ORIENTATION=O20", [(0.1, "10.")]),
+}
+
+
+def laminate(etype, n, variant):
+    """The strip of `strip` made of layers of a lamina (LAYUPS[variant])."""
+    heading, nodes, elements, material, sets, tail = strip(etype, n)
+    option, layers = LAYUPS[variant]
+    c, s = math.cos(math.radians(20)), math.sin(math.radians(20))
+    ply = ["*MATERIAL, NAME=PLY", "*ELASTIC, TYPE=LAMINA", "1.4e5, 1.e4, 0., 5.e3, 5.e3, 3.e3",
+           "*ORIENTATION, NAME=OX", "1., 0., 0., 0., 1., 0.", "*ORIENTATION, NAME=OY", "0., 1., 0., -1., 0., 0.",
+           "*ORIENTATION, NAME=O20", f"{c:.17g}, {s:.17g}, 0., {-s:.17g}, {c:.17g}, 0.",
+           f"*SHELL SECTION, ELSET=SHELL, COMPOSITE{option}"]
+    ply += [f"{t:.15g}, 3, PLY, {o}" for t, o in layers]
+    load = tail[len(section(0.1)):-1]  # without *END STEP
+    return f"Laminated cantilever strip ({variant}) L = 10, b = 1, t = 0.1: a tip line load P = 1 along z", nodes, \
+        elements, material, sets, ply + load + ["*EL PRINT, ELSET=SHELL", "S", "*END STEP"]
 
 
 def pressure(etype, n):
@@ -292,17 +328,18 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
     ap.add_argument("name", choices=["scordelis_lo", "pinched", "hemisphere", "twisted", "strip", "torsion", "rollup",
-                                     "plastic", "pressure", "tapered", "plastic_nlgeom", "plastic_plate"])
-    ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3"])
+                                     "plastic", "pressure", "tapered", "plastic_nlgeom", "plastic_plate", "laminate"])
+    ap.add_argument("etype", choices=["S4", "S4R", "S8R", "S3", "S6"])
     ap.add_argument("n", type=int)
     ap.add_argument("thin", nargs="?", default="")
     a = ap.parse_args()
     make = {"scordelis_lo": scordelis_lo, "pinched": pinched, "hemisphere": hemisphere, "strip": strip, "torsion": torsion,
             "rollup": rollup, "plastic": plastic, "pressure": pressure, "tapered": tapered,
             "plastic_nlgeom": plastic_nlgeom, "plastic_plate": plastic_plate,
-            "twisted": lambda e, n: twisted(e, n, a.thin == "thin")}[a.name]
+            "twisted": lambda e, n: twisted(e, n, a.thin == "thin"),
+            "laminate": lambda e, n: laminate(e, n, a.thin)}[a.name]
     heading, nodes, elements, material, sets, tail = make(a.etype, a.n)
-    suffix = "_thin" if a.thin == "thin" else ""
+    suffix = f"_{a.thin}" if a.thin else ""
     os.makedirs(a.out, exist_ok=True)
     write(os.path.join(a.out, f"{a.name}_{a.etype}_{a.n}{suffix}.inp"), heading, a.etype, nodes, elements,
           material, sets, tail)

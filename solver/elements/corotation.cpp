@@ -151,10 +151,10 @@ bool element_frame(CorotationalFrame kind, const std::vector<V3<S>>& x, const st
 
 /// The nodes whose motion turns the frame: a beam's end nodes (first and last; a B32's middle
 /// node moves and turns against the frame like any other), a shell's corners (the first three or
-/// four; an S8's midside nodes follow).
+/// four; an S8's or S6's midside nodes follow).
 std::vector<int> frame_nodes(CorotationalFrame kind, int n) {
   if (kind == CorotationalFrame::Beam) return {0, n - 1};
-  return n == 3 ? std::vector<int>{0, 1, 2} : std::vector<int>{0, 1, 2, 3};
+  return n == 3 || n == 6 ? std::vector<int>{0, 1, 2} : std::vector<int>{0, 1, 2, 3};
 }
 
 /// The element's reference configuration: its frame E0 (columns) and centroid C, in doubles.
@@ -450,7 +450,7 @@ bool corotated_system(CorotationalFrame kind, std::span<const Vec3> coords, cons
 
 bool takes_finite_rotations(const model::ElementTypeInfo& type) {
   if (model::is_beam(type)) return type.n_nodes == 2 || type.n_nodes == 3;
-  return model::is_shell(type) && (type.n_nodes == 3 || type.n_nodes == 4 || type.n_nodes == 8);
+  return model::is_shell(type);
 }
 
 std::array<Vec3, 3> rotation_exp(const Vec3& psi) { return exp_rotation(psi); }
@@ -467,8 +467,8 @@ void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords,
   const int n_dof = static_cast<int>(q.size());
   if (n_dof != 6 * static_cast<int>(coords.size())) throw std::invalid_argument("compute_corotational: size mismatch");
   const std::size_t nodes = coords.size();
-  const bool known = frame == CorotationalFrame::Beam ? nodes == 2 || nodes == 3 : nodes == 3 || nodes == 4 || nodes == 8;
-  if (!known) throw std::invalid_argument("compute_corotational: beams and three-, four- or eight-node shells only");
+  const bool known = frame == CorotationalFrame::Beam ? nodes == 2 || nodes == 3 : nodes == 3 || nodes == 4 || nodes == 6 || nodes == 8;
+  if (!known) throw std::invalid_argument("compute_corotational: beams and three-, four-, six- or eight-node shells only");
   begin_element_system(out, n_dof, request);
   out.min_jacobian = 0.0;
   Reference ref;

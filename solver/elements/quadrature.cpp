@@ -70,9 +70,10 @@ std::vector<QuadraturePoint> element_rule(const model::ElementTypeInfo& type) {
   if (type.family == model::ElementFamily::Truss || type.family == model::ElementFamily::Beam)
     return tensor(type.n_nodes - 1, 1);
   if (type.family == model::ElementFamily::Spring) return {{{0, 0, 0}, 1.0}};
-  // Shells: the in-plane points (shell_elements.hpp): S4 and S4R 2×2, S3 and S3R 3, S8R 2×2, S8 3×3.
+  // Shells: the in-plane points (shell_elements.hpp): S4 and S4R 2×2, S3, S3R and S6 3, S8R 2×2,
+  // S8 3×3.
   if (model::is_shell(type)) {
-    if (type.n_nodes == 3) return triangle(2);
+    if (type.n_nodes == 3 || type.n_nodes == 6) return triangle(2);
     return tensor(type.n_nodes == 8 && type.integration == Integration::Full ? 3 : 2, 2);
   }
   const bool reduced = type.integration == Integration::Reduced;

@@ -212,7 +212,14 @@ int parametric_dim(Shape s) {
 }
 
 Shape element_shape(const model::ElementTypeInfo& type) {
-  if (model::is_shell(type)) return type.n_nodes == 3 ? Shape::Tri3 : type.n_nodes == 4 ? Shape::Quad4 : Shape::Quad8;
+  if (model::is_shell(type)) {
+    switch (type.n_nodes) {
+      case 3: return Shape::Tri3;
+      case 4: return Shape::Quad4;
+      case 6: return Shape::Tri6;
+      default: return Shape::Quad8;
+    }
+  }
   if (type.dim == 3) {
     switch (type.n_nodes) {
       case 4: return Shape::Tet4;

@@ -95,7 +95,7 @@ void blend(Row& out, double wa, const Row& a, double wb, const Row& b, int n_dof
 }
 
 /// Replaces the transverse shear rows by the assumed strains of MITC4 (tied at the edge
-/// midpoints) or MITC3; S8R and S8 keep theirs.
+/// midpoints) or MITC3; S8R, S8 and S6 keep theirs.
 void tie_transverse_shear(const Geometry& geo, double xi, double eta, double zeta, CovariantPoint& p) {
   const int nd = geo.n_dof();
   if (geo.shape == Shape::Quad4) {
@@ -147,33 +147,24 @@ std::array<Row, 5> local_strain_rows(const CovariantPoint& p, const std::array<V
   return out;
 }
 
-/// The lamina's stress (σ11, σ22, τ12, τ13, τ23) from the local strains: plane stress, the
-/// transverse shear moduli `shear` in the 13 and 23 planes.
-std::array<double, 5> lamina_stress(const ShellProperties& p, const std::array<double, 5>& e,
-                                    const std::array<double, 2>& shear) {
-  const double c = p.youngs_modulus / (1 - p.poissons_ratio * p.poissons_ratio);
-  return {c * (e[0] + p.poissons_ratio * e[1]), c * (p.poissons_ratio * e[0] + e[1]),
-          p.shear_modulus() * e[2], shear[0] * e[3], shear[1] * e[4]};
-}
-
 /// The lamina at one section point: its stress (σ11, σ22, τ12, τ13, τ23) and tangent, the
 /// in-plane 3 × 3 block and the transverse shear moduli (elastic: Abaqus's shells too).
 struct LaminaPoint {
   std::array<double, 5> stress{};
-  double in_plane[3][3]{};
-  std::array<double, 2> shear{};
+  Matrix3x3 in_plane{};
+  Matrix2x2 shear{};
 };
 
-/// The elastic lamina: plane stress with the thermal strain α ΔT taken off e11 and e22.
-LaminaPoint elastic_lamina(const ShellProperties& p, std::array<double, 5> e, double thermal,
-                           const std::array<double, 2>& shear) {
+/// The elastic lamina (in the shell's local axes): plane stress with the thermal strain taken
+/// off e11 and e22.
+LaminaPoint elastic_lamina(const ShellLamina& lamina, std::array<double, 5> e, double thermal,
+                           const Matrix2x2& shear) {
   LaminaPoint l;
   e[0] -= thermal, e[1] -= thermal;
-  l.stress = lamina_stress(p, e, shear);
-  const double c = p.youngs_modulus / (1 - p.poissons_ratio * p.poissons_ratio);
-  l.in_plane[0][0] = l.in_plane[1][1] = c;
-  l.in_plane[0][1] = l.in_plane[1][0] = c * p.poissons_ratio;
-  l.in_plane[2][2] = p.shear_modulus();
+  const Matrix3x3& q = lamina.in_plane;
+  for (int a = 0; a < 3; ++a) l.stress[a] = q[a][0] * e[0] + q[a][1] * e[1] + q[a][2] * e[2];
+  for (int a = 0; a < 2; ++a) l.stress[3 + a] = shear[a][0] * e[3] + shear[a][1] * e[4];
+  l.in_plane = q;
   l.shear = shear;
   return l;
 }
@@ -182,7 +173,7 @@ LaminaPoint elastic_lamina(const ShellProperties& p, std::array<double, 5> e, do
 /// the law at the in-plane strains (ε11, ε22, γ12; it finds ε33 for σ33 = 0), from the point's
 /// committed state into its trial state; the transverse shear elastic.
 LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e, double thermal, const Vec3& position,
-                            const std::array<double, 2>& shear, const PointHistory& history) {
+                            const Matrix2x2& shear, const PointHistory& history) {
   static const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   const Vec6 strain = (Vec6() << e[0], e[1], 0.0, e[2], 0.0, 0.0).finished();
   Vec6 stress;
@@ -190,7 +181,8 @@ LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e,
   const Mat6& d = law.update({identity, strain, thermal, &position, false, 0.0}, history, stress, scratch);
   constexpr int in_plane[3] = {0, 1, 3};
   LaminaPoint l;
-  l.stress = {stress[0], stress[1], stress[3], shear[0] * e[3], shear[1] * e[4]};
+  l.stress = {stress[0], stress[1], stress[3], shear[0][0] * e[3] + shear[0][1] * e[4],
+              shear[1][0] * e[3] + shear[1][1] * e[4]};
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) l.in_plane[a][b] = d(in_plane[a], in_plane[b]);
   l.shear = shear;
@@ -201,8 +193,8 @@ LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e,
 void lamina_tangent_rows(const LaminaPoint& l, const std::array<Row, 5>& b, int n_dof, std::array<Row, 5>& db) {
   for (int j = 0; j < n_dof; ++j) {
     for (int a = 0; a < 3; ++a) db[a][j] = l.in_plane[a][0] * b[0][j] + l.in_plane[a][1] * b[1][j] + l.in_plane[a][2] * b[2][j];
-    db[3][j] = l.shear[0] * b[3][j];
-    db[4][j] = l.shear[1] * b[4][j];
+    db[3][j] = l.shear[0][0] * b[3][j] + l.shear[0][1] * b[4][j];
+    db[4][j] = l.shear[1][0] * b[3][j] + l.shear[1][1] * b[4][j];
   }
 }
 
@@ -289,6 +281,17 @@ bool shell_axes(const Vec3& g1, const Vec3& g2, std::array<Vec3, 3>& axes) {
 
 namespace {
 
+/// The transverse shear moduli at a section point of the lamina `here` (turned into the local
+/// axes): *TRANSVERSE SHEAR STIFFNESS's K/t, else 5/6 of the lamina's own.
+Matrix2x2 transverse_shear_moduli(const ShellProperties& section, const ShellLamina& here, double thickness) {
+  if (section.transverse_shear)
+    return {{{(*section.transverse_shear)[0] / thickness, 0.0}, {0.0, (*section.transverse_shear)[1] / thickness}}};
+  Matrix2x2 g = here.shear;
+  for (auto& row : g)
+    for (double& v : row) v *= 5.0 / 6;
+  return g;
+}
+
 /// The thickness at the in-plane point (ξ, η), interpolated from the nodes'.
 double point_thickness(const Geometry& geo, double xi, double eta) {
   const ShapeValues sv = evaluate_shape(geo.shape, {xi, eta, 0.0});
@@ -327,17 +330,12 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
   if (!nodal_directors(geo) || !thick) return;  // degenerate: the caller reports it
   for (std::size_t a = 0; a < at_nodes.directors.size(); ++a) geo.director[a] = at_nodes.directors[a];
   out.min_jacobian = 1e300;
-  const double G = section.shear_modulus();
   std::array<Row, 5> db{};
   const std::vector<QuadraturePoint>& rule = element_rule(type);
   for (std::size_t iq = 0; iq < rule.size(); ++iq) {
     const QuadraturePoint& q = rule[iq];
     const double xi = q.xi[0], eta = q.xi[1];
     const double t_here = point_thickness(geo, xi, eta);
-    const std::array<double, 2> shear = section.transverse_shear
-                                            ? std::array<double, 2>{(*section.transverse_shear)[0] / t_here,
-                                                                    (*section.transverse_shear)[1] / t_here}
-                                            : std::array<double, 2>{5.0 / 6 * G, 5.0 / 6 * G};
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
     std::array<PointResult, 2> surfaces{};  // SNEG, SPOS
     double temperature = 0.0, gradient = 0.0;  // ΔT on the reference surface and Δ(∂T/∂n) here
@@ -366,10 +364,14 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       for (int c = 0; c < 5; ++c)
         for (int j = 0; j < nd; ++j) strain[c] += b[c][j] * u[j];
       const std::size_t point = iq * section.zeta.size() + k;
-      const LaminaPoint lamina =
-          material.law ? material_lamina(*material.law, strain, section.expansion * at_point, p.x, shear,
-                                         material.history.at(point))
-                       : elastic_lamina(section, strain, section.expansion * at_point, shear);
+      const ShellLayerProperties& layer = section.layer_at(k);
+      const double theta = material_angle(layer, axes, p.x);
+      const ShellLamina here = turned_lamina(layer.lamina, theta);
+      const double thermal = here.expansion * at_point;
+      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here);
+      const LaminaPoint lamina = material.law ? material_lamina(*material.law, strain, thermal, p.x, shear,
+                                                                material.history.at(point))
+                                              : elastic_lamina(here, strain, thermal, shear);
       const std::array<double, 5>& stress = lamina.stress;
       const double dv = q.weight * section.weight[k] * p.det;
       for (int i = 0; i < nd && !out.internal_force.empty(); ++i)
@@ -389,10 +391,13 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       const double in_plane[3] = {stress[0], stress[1], stress[2]};
       for (int c = 0; c < 3; ++c) section_force[c] += in_plane[c] * dz, section_force[3 + c] += in_plane[c] * zm * dz;
       if (request.point_output && (k == 0 || k + 1 == section.zeta.size())) {
+        // In the layer's material axes, as Abaqus reports an oriented or layered section.
         PointResult& r = surfaces[k == 0 ? 0 : 1];
         r.coords = p.x;
-        r.stress = {stress[0], stress[1], 0.0, stress[2], 0.0, 0.0};
-        r.strain = {strain[0], strain[1], 0.0, strain[2], 0.0, 0.0};
+        const std::array<double, 5> s_m = stresses_in_material_axes(stress, theta);
+        const std::array<double, 5> e_m = strains_in_material_axes(strain, theta);
+        r.stress = {s_m[0], s_m[1], 0.0, s_m[2], 0.0, 0.0};
+        r.strain = {e_m[0], e_m[1], 0.0, e_m[2], 0.0, 0.0};
         if (material.law) material.law->plastic_output(material.history.at(point).trial, r);
       }
     }
@@ -405,10 +410,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       out.points.push_back(r);
     }
   }
-  const double nu = section.poissons_ratio;
-  const double t = geo.mean_thickness();
-  const double bending = section.youngs_modulus * t * t * t / (12 * (1 - nu * nu));
-  add_drilling(geo, 1e-4 * bending, u, out);
+  add_drilling(geo, 1e-4 * section_bending_stiffness(section, geo.mean_thickness()), u, out);
 }
 
 }  // namespace

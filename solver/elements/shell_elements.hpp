@@ -1,5 +1,5 @@
 #pragma once
-/// The conventional shells S4, S4R, S3, S3R, S8R and S8: small strain (finite rotations through
+/// The conventional shells S4, S4R, S3, S3R, S8R, S8 and S6: small strain (finite rotations through
 /// corotation.hpp under NLGEOM), linear elastic sections (shell_section.hpp) or a plastic law at
 /// every section point (ShellMaterial below).
 ///
@@ -19,16 +19,21 @@
 /// Locking: S4 and S4R tie the transverse shear to the edge midpoints (MITC4, Dvorkin and Bathe
 /// 1984), S3 and S3R to the MITC3 points (Lee and Bathe 2004), both at 2×2 (quad) or 3 (triangle)
 /// in-plane points: S4R is integrated as S4 (no hourglass modes to control). S8R takes 2×2
-/// points, S8 (CalculiX's) 3×3. Through the thickness: Simpson at the section points.
+/// points, S8 (CalculiX's) 3×3, S6 (CalculiX's six-node triangle) 3, untied. Through the
+/// thickness: Simpson at the section points.
 ///
 /// Drilling: θ·V has no stiffness in this kinematics; each node gets k_d (θ·V_a − ω_a)² / 2, ω_a
 /// the membrane rotation about V_a at the node (a rigid rotation costs nothing, flat or curved),
 /// k_d = 10⁻⁴ · E t³ / (12 (1 − ν²)), 10⁻⁴ of the plate's bending stiffness (a moment per
 /// radian, as a node's bending stiffness is): enough to keep a flat mesh non-singular.
 ///
+/// Layers (shell_section.hpp): each section point takes its layer's lamina turned from the
+/// layer's material axes into the local ones (shell_lamina.hpp).
+///
 /// Point output: at each in-plane point, section point 1 (SNEG) then the last (SPOS):
-/// PointResult::stress S11, S22, S12 (slots 0, 1, 3; S13 = S23 = 0 at the surfaces), strain
-/// likewise (γ12), and PointResult::section SF1..SF3 = N11, N22, N12 and SM1..SM3 = M11, M22,
+/// PointResult::stress S11, S22, S12 (slots 0, 1, 3; S13 = S23 = 0 at the surfaces) in that
+/// point's layer's material axes (the local axes for a section neither oriented nor turned),
+/// strain likewise (γ12), and PointResult::section SF1..SF3 = N11, N22, N12 and SM1..SM3 = M11, M22,
 /// M12 per unit length, about the midsurface; volume = t·dA shared between the two.
 #include <span>
 

@@ -45,7 +45,17 @@ TEST(ShellSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError
                                    "odd number of section points, at least 3; found 4"))
       << even.report();
   auto composite = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, COMPOSITE\n0.2\n");
-  EXPECT_TRUE(has_diagnostic(composite, "COMPOSITE on a shell section is not supported yet")) << composite.report();
+  EXPECT_TRUE(has_diagnostic(composite, "deck.inp:11:35: error: *SHELL SECTION: a COMPOSITE section names a material "
+                                        "on each layer's line, not MATERIAL="))
+      << composite.report();
+  auto no_material = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P\n0.2\n");
+  EXPECT_TRUE(has_diagnostic(no_material, "missing parameter MATERIAL (or COMPOSITE with a material on each layer's "
+                                          "line)"))
+      << no_material.report();
+  auto two_lines = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n0.1\n");
+  EXPECT_TRUE(has_diagnostic(two_lines, "deck.inp:13:1: error: *SHELL SECTION: expected one data line (a section of "
+                                        "layers, one a line, takes COMPOSITE)"))
+      << two_lines.report();
   auto nodal = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, NODAL THICKNESS\n0.2\n"
                                              "*NODAL THICKNESS\n1, 0.1\n2, 0.1\n3, 0.1\n");
   EXPECT_TRUE(has_diagnostic(nodal, "deck.inp:11:1: error: *SHELL SECTION: NODAL THICKNESS: node 4 of element 1 has no "
@@ -57,6 +67,51 @@ TEST(ShellSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError
   EXPECT_TRUE(has_diagnostic(face, "element 1 (S4) is a shell element: its faces are SPOS and SNEG (CalculiX's S2 and "
                                    "S1; edges are not supported yet), not 'S3'"))
       << face.report();
+}
+
+// COMPOSITE: a layer a line from SNEG up, `thickness, points, material, orientation or angle,
+// ply`; the section's thickness is the layers' sum.
+TEST(ShellSectionKeyword, ReadsCompositeLayers) {
+  DeckDir dir;
+  const std::string two = "*MATERIAL, NAME=N\n*ELASTIC\n2000., 0.25\n*ORIENTATION, NAME=OR1\n0., 1., 0., -1., 0., 0.\n";
+  auto r = dir.read(kPlate + kMaterial + two + "*SHELL SECTION, ELSET=P, COMPOSITE, ORIENTATION=OR1, OFFSET=SNEG\n"
+                                               "0.1, 5, M, 45., bottom\n0.3,, n, or1\n0.2, 3, M\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& s = r.model.mesh.shell_sections.at(0);
+  EXPECT_DOUBLE_EQ(s.thickness, 0.6);
+  EXPECT_EQ(s.orientation, "OR1");
+  EXPECT_EQ(s.offset, -0.5);
+  EXPECT_TRUE(s.material.empty());
+  ASSERT_EQ(s.layers.size(), 3u);
+  EXPECT_EQ(s.layers[0].section_points, 5);
+  EXPECT_EQ(s.layers[0].angle, 45.0);
+  EXPECT_EQ(s.layers[0].ply, "bottom");
+  EXPECT_EQ(s.layers[1].section_points, 3);  // Abaqus's default for a layer
+  EXPECT_EQ(s.layers[1].material, "N");
+  EXPECT_EQ(s.layers[1].orientation, "OR1");
+  EXPECT_EQ(s.layers[2].thickness, 0.2);
+  EXPECT_TRUE(s.layers[2].orientation.empty());
+}
+
+TEST(ShellSectionKeyword, CompositeLayerErrorsPointAtTheLayer) {
+  DeckDir dir;
+  auto material = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, COMPOSITE\n0.1, 3, M\n0.1, 3, X\n");
+  EXPECT_TRUE(has_diagnostic(material, "deck.inp:13:9: error: *SHELL SECTION: layer: material 'X' is not defined"))
+      << material.report();
+  auto orientation = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, COMPOSITE\n0.1, 3, M, OR9\n");
+  EXPECT_TRUE(has_diagnostic(orientation, "deck.inp:12:12: error: *SHELL SECTION: layer: orientation 'OR9' is not "
+                                          "defined (expected an *ORIENTATION's name or an angle in degrees)"))
+      << orientation.report();
+  auto thin = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, COMPOSITE\n0., 3, M\n");
+  EXPECT_TRUE(has_diagnostic(thin, "deck.inp:12:1: error: *SHELL SECTION: a layer's thickness must be positive, found 0"))
+      << thin.report();
+  auto points = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, COMPOSITE\n0.1, 2, M\n");
+  EXPECT_TRUE(has_diagnostic(points, "deck.inp:12:6: error: *SHELL SECTION: Simpson's rule through the thickness takes "
+                                     "an odd number of section points, at least 3; found 2"))
+      << points.report();
+  auto section = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, ORIENTATION=OX\n0.1\n");
+  EXPECT_TRUE(has_diagnostic(section, "deck.inp:11:1: error: *SHELL SECTION: orientation 'OX' is not defined"))
+      << section.report();
 }
 
 // CalculiX names a shell's faces S1 (SNEG) and S2 (SPOS).

@@ -1,4 +1,4 @@
-// Shell kernels S3, S3R, S4, S4R, S8R and S8 (solver/elements/shell_elements.hpp) and their
+// Shell kernels S3, S3R, S4, S4R, S8R, S8 and S6 (solver/elements/shell_elements.hpp) and their
 // sections (shell_section.hpp): rigid motions without force on flat, warped and curved
 // elements, symmetry, and one-element closed forms — a membrane stretch, pure bending with the
 // moment D·κ (Simpson's rule is exact for the cubic z² through the thickness), the offset's
@@ -39,6 +39,7 @@ ElementSystem run(std::string_view name, const std::vector<Vec3>& x, const std::
 /// Unit-square-like elements in the x–y plane, Abaqus node order (corners, then midsides).
 std::vector<Vec3> flat(std::string_view name, double a = 2.0, double b = 1.5) {
   if (name.starts_with("S3")) return {{0, 0, 0}, {a, 0, 0}, {0, b, 0}};
+  if (name == "S6") return {{0, 0, 0}, {a, 0, 0}, {0, b, 0}, {a / 2, 0, 0}, {a / 2, b / 2, 0}, {0, b / 2, 0}};
   std::vector<Vec3> x = {{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}};
   if (name.starts_with("S8"))
     for (int k = 0; k < 4; ++k) {
@@ -59,7 +60,7 @@ std::vector<Vec3> curved(std::vector<Vec3> x, double R) {
   return x;
 }
 
-constexpr const char* kTypes[] = {"S3", "S3R", "S4", "S4R", "S8R", "S8"};
+constexpr const char* kTypes[] = {"S3", "S3R", "S4", "S4R", "S8R", "S8", "S6"};
 
 // A rigid motion strains nothing and costs nothing (drilling included), flat or curved and
 // warped; the stiffness is symmetric. Round-off: 1e-10 of the largest stiffness term.

@@ -1,0 +1,122 @@
+// Composite shells (*SHELL SECTION, COMPOSITE) against classical lamination theory: the
+// laminated cantilever strip of gen_shells.py (laminate), L = 10, b = 1, t = 0.1, of a lamina
+// E1 = 1.4e5, E2 = 1e4, ν12 = 0, G12 = 5e3, G13 = 5e3, G23 = 3e3 under a tip line load P = 1.
+// With ν12 = 0 and cross plies nothing varies across the width (A12 = B12 = D12 = 0, no 16
+// terms), so the strip is a Timoshenko beam of bending stiffness b D*, D* = D11 − B11²/A11
+// (the axial force vanishes), and shear stiffness b K, K = 5/6 Σ G_k t_k with each ply's G in
+// the strip's 13 plane (G13 at 0°, G23 at 90°):
+//   δ = P L³ / (3 b D*) + P L / (b K),
+// minus P L h² / (12 b D*) for S4, whose elements are one-point Timoshenko beams (test_shells.cpp).
+#include <cmath>
+#include <cstdlib>
+
+#include "verification_fixture.hpp"
+
+namespace inpact::verification {
+namespace {
+
+constexpr double kE1 = 1.4e5, kE2 = 1e4, kG13 = 5e3, kG23 = 3e3, kL = 10.0, kP = 1.0;
+
+std::string laminate_deck(const std::string& etype, int n, const std::string& layup) {
+  const std::string cmd = "python3 " + deck_path("gen_shells.py") + " --out " + generated_dir().string() +
+                          " laminate " + etype + " " + std::to_string(n) + " " + layup;
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return (generated_dir() / ("laminate_" + etype + "_" + std::to_string(n) + "_" + layup + ".inp")).string();
+}
+
+/// A ply of the strip: its bottom and top z from the midsurface and whether its fibres run along x.
+struct Ply {
+  double bottom, top;
+  bool along_x;
+};
+
+/// D* and K of the plies (per unit width).
+std::array<double, 2> laminate_stiffness(const std::vector<Ply>& plies) {
+  double a = 0.0, b = 0.0, d = 0.0, k = 0.0;
+  for (const Ply& p : plies) {
+    const double q = p.along_x ? kE1 : kE2;
+    a += q * (p.top - p.bottom);
+    b += q * (p.top * p.top - p.bottom * p.bottom) / 2;
+    d += q * (p.top * p.top * p.top - p.bottom * p.bottom * p.bottom) / 3;
+    k += 5.0 / 6 * (p.along_x ? kG13 : kG23) * (p.top - p.bottom);
+  }
+  return {d - b * b / a, k};
+}
+
+double tip_deflection(const std::string& deck) {
+  const auto r = run_deck(deck);
+  EXPECT_TRUE(r->outcome.completed) << r->outcome.message;
+  if (!r->outcome.completed) return 0.0;
+  double sum = 0.0;
+  const auto tip = nset(r->model(), "TIP");
+  for (std::int32_t n : tip) sum += nodal(r->capture.last(), "U", static_cast<std::size_t>(n), 2);
+  return sum / static_cast<double>(tip.size());
+}
+
+double expected(const std::string& etype, const std::array<double, 2>& stiffness) {
+  const auto [d, k] = stiffness;
+  const double h = etype == "S8R" ? 0.0 : kL / 10;
+  return kP * kL * kL * kL / (3 * d) + kP * kL / k - kP * kL * h * h / (12 * d);
+}
+
+TEST(ShellComposites, CrossPlyStripsMatchLaminationTheory) {
+  const std::vector<Ply> symmetric = {{-0.05, -0.025, true}, {-0.025, 0.0, false}, {0.0, 0.025, false},
+                                      {0.025, 0.05, true}};
+  const std::vector<Ply> unsymmetric = {{-0.05, 0.0, true}, {0.0, 0.05, false}};
+  struct Case {
+    const char* etype;
+    int n;
+  };
+  for (const Case& c : {Case{"S8R", 5}, Case{"S4", 10}}) {
+    const double cross = tip_deflection(laminate_deck(c.etype, c.n, "cross"));
+    EXPECT_NEAR(cross, expected(c.etype, laminate_stiffness(symmetric)), 1e-8 * cross) << c.etype;
+    // The same plies turned by *ORIENTATION names instead of angles.
+    EXPECT_NEAR(tip_deflection(laminate_deck(c.etype, c.n, "orient")), cross, 1e-12 * cross) << c.etype;
+    // [0/90]: bending and stretching couple (B11 ≠ 0).
+    const double unsym = tip_deflection(laminate_deck(c.etype, c.n, "unsym"));
+    EXPECT_NEAR(unsym, expected(c.etype, laminate_stiffness(unsymmetric)), 1e-8 * unsym) << c.etype;
+    report(std::string("laminated strip ") + c.etype + " [0/90/90/0], [0/90]: tip / lamination theory",
+           cross / expected(c.etype, laminate_stiffness(symmetric)));
+  }
+}
+
+// A ply's angle adds to its section's ORIENTATION: a ply at 30° and one at 10° in a section
+// oriented at 20° are the same strip (it bends and twists: D16 ≠ 0).
+TEST(ShellComposites, APlyAngleAddsToTheSectionOrientation) {
+  const auto turned = run_deck(laminate_deck("S4", 10, "turned"));
+  const auto composed = run_deck(laminate_deck("S4", 10, "composed"));
+  ASSERT_TRUE(turned->outcome.completed && composed->outcome.completed);
+  const solver::Frame &a = turned->capture.last(), &b = composed->capture.last();
+  for (std::int32_t n : nset(turned->model(), "TIP"))
+    for (int c = 0; c < 3; ++c) {
+      const double u = nodal(a, "U", static_cast<std::size_t>(n), c);
+      EXPECT_NEAR(nodal(b, "U", static_cast<std::size_t>(n), c), u, 1e-10 * 200) << n << " " << c;
+    }
+  // The 30° ply is softer than the 0° one and the strip twists.
+  EXPECT_GT(nodal(a, "U", static_cast<std::size_t>(nset(turned->model(), "TIP")[0]), 2), 100.0);
+}
+
+// S is reported in each ply's material axes: at SPOS of the [0/90] strip the ply's axis 1 runs
+// across the strip (S11 = 0, no Poisson) and axis 2 along −x (S22 = σxx), at SNEG along x. With
+// ε0 = −(B11/A11) κ at the midsurface, σxx = Q (ε0 + κ z): S22(SPOS)/S11(SNEG) = E2 (ε0/κ + t/2)
+// / (E1 (ε0/κ − t/2)) at every point.
+TEST(ShellComposites, StressesAreReportedInThePlyAxes) {
+  const auto r = run_deck(laminate_deck("S8R", 5, "unsym"));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto* s = field(r->capture.last(), "S");
+  ASSERT_TRUE(s);
+  const double a11 = (kE1 + kE2) * 0.05, b11 = (kE2 - kE1) * 0.05 * 0.05 / 2;
+  const double ratio = -b11 / a11;  // ε0 / κ
+  const double expected_ratio = kE2 * (ratio + 0.05) / (kE1 * (ratio - 0.05));
+  const std::size_t n = s->component_labels.size();
+  ASSERT_EQ(s->elements.size() % 2, 0u);
+  for (std::size_t i = 0; i < s->elements.size(); i += 2) {  // SNEG, then SPOS of each point
+    const double bottom = s->values[n * i], top11 = s->values[n * (i + 1)], top22 = s->values[n * (i + 1) + 1];
+    EXPECT_NEAR(top11, 0.0, 1e-9 * std::abs(bottom)) << i;
+    EXPECT_NEAR(top22 / bottom, expected_ratio, 1e-8) << i;
+    EXPECT_NEAR(s->values[n * i + 3], 0.0, 1e-8 * std::abs(bottom)) << i;
+  }
+}
+
+}  // namespace
+}  // namespace inpact::verification
