@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "model/elastic_stiffness.hpp"
 #include "model/element_types.hpp"
 #include "model/mesh_queries.hpp"
 
@@ -186,7 +187,18 @@ double element_area(const model::Model& m, std::size_t e) {
   return std::abs(twice) / 2.0;
 }
 
+/// The modulus that scales a face's contact stiffness: isotropic, E(1 − ν)/((1 + ν)(1 − 2ν)), or
+/// E/(1 − ν²) in plane stress; another type, the mean of its stiffness's direct terms D11, D22,
+/// D33 (D33 = 0 for a lamina: D11, D22).
 double constrained_modulus(const model::Elastic& el, model::ElementFamily family) {
+  if (el.type != model::Elastic::Type::Isotropic) {
+    const model::Stiffness d = model::material_stiffness(el);
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (d[7 * i] > 0.0) sum += d[7 * i], ++n;
+    return n > 0 ? sum / n : 0.0;
+  }
   const double e = el.youngs_modulus, nu = el.poissons_ratio;
   if (family == model::ElementFamily::PlaneStress) return e / (1.0 - nu * nu);
   return e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
@@ -198,6 +210,16 @@ struct ElementElasticity {
   std::vector<const model::Elastic*> elastic;
   std::vector<double> shell_thickness;
 };
+
+/// The material that stands for a shell section's stiffness in contact: its own, or a COMPOSITE's
+/// thickest layer's (the first of equals).
+const std::string& shell_contact_material(const model::ShellSection& sec) {
+  if (sec.layers.empty()) return sec.material;
+  const model::ShellLayer* thickest = &sec.layers.front();
+  for (const model::ShellLayer& layer : sec.layers)
+    if (layer.thickness > thickest->thickness) thickest = &layer;
+  return thickest->material;
+}
 
 ElementElasticity element_elasticity(const model::Model& m) {
   ElementElasticity out{std::vector<const model::Elastic*>(m.mesh.elements.size(), nullptr),
@@ -211,7 +233,7 @@ ElementElasticity element_elasticity(const model::Model& m) {
   };
   for (const model::SolidSection& sec : m.mesh.sections) assign(sec.elset, sec.material);
   for (const model::ShellSection& sec : m.mesh.shell_sections)
-    if (const auto* rows = assign(sec.elset, sec.material))
+    if (const auto* rows = assign(sec.elset, shell_contact_material(sec)))
       for (std::int32_t e : *rows) out.shell_thickness[e] = model::shell_thickness(m.mesh, sec, static_cast<std::size_t>(e));
   return out;
 }

@@ -8,7 +8,7 @@ double section_area(const BeamSection& s) {
   const auto& d = s.dims;
   switch (s.shape) {
     case BeamSection::Shape::Rect: return d[0] * d[1];
-    case BeamSection::Shape::Circ: return std::numbers::pi * d[0] * d[0];
+    case BeamSection::Shape::Circ: return std::numbers::pi * s.circ_semi_axes()[0] * s.circ_semi_axes()[1];
     case BeamSection::Shape::Pipe: return std::numbers::pi * (d[0] * d[0] - (d[0] - d[1]) * (d[0] - d[1]));
     case BeamSection::Shape::Box: return d[0] * d[1] - (d[0] - d[2] - d[4]) * (d[1] - d[3] - d[5]);
     case BeamSection::Shape::I: return d[2] * d[4] + d[3] * d[5] + (d[1] - d[4] - d[5]) * d[6];

@@ -19,13 +19,17 @@ struct BeamSection {
   std::string elset;     ///< upper-case set name
   std::string material;  ///< upper-case material name; empty for a general section (E, G given)
   Shape shape = Shape::Rect;
-  /// The first data line: RECT a, b (widths along n1 and n2); CIRC r; PIPE r (outer), t; BOX
+  /// The first data line: RECT a, b (widths along n1 and n2); CIRC r, or an ellipse's semi-axes
+  /// r1, r2 along n1 and n2 (CalculiX's two-number CIRC, read from its full axes); PIPE r (outer), t; BOX
   /// a, b (outer widths along n1 and n2), t1..t4 (the walls at +n1, +n2, −n1, −n2); I l, h, b1,
   /// b2, t1, t2, t3 (the section origin l above the bottom edge, the height along n2, the bottom
   /// and top flanges' widths along n1 and thicknesses, the web's thickness); GENERAL A, I11, I12,
   /// I22, J.
   std::vector<double> dims;
   SourceLoc dims_loc;
+
+  /// CIRC's semi-axes along n1 and n2 (a circle's radius twice).
+  std::array<double, 2> circ_semi_axes() const { return {dims[0], dims.size() > 1 ? dims[1] : dims[0]}; }
   /// The approximate n1 direction of the second data line; Abaqus's default (0, 0, −1).
   std::array<double, 3> n1{0.0, 0.0, -1.0};
   SourceLoc n1_loc;

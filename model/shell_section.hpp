@@ -5,7 +5,6 @@
 /// (solver/elements/shell_section.hpp).
 #include <array>
 #include <optional>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +32,7 @@ struct ShellSection {
   /// ORIENTATION=: the section's material directions (upper-case *ORIENTATION name); empty:
   /// the shell's local axes.
   std::string orientation;
+  SourceLoc orientation_loc;
   /// COMPOSITE: the layers from SNEG to SPOS (their thicknesses add up to `thickness`); empty:
   /// one layer of `material` through the whole thickness.
   std::vector<ShellLayer> layers;

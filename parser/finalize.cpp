@@ -250,6 +250,16 @@ const char* density_load_label(model::DloadEntry::Kind kind) {
   return kind == model::DloadEntry::Kind::Centrifugal ? "CENTRIF" : "ROTA";
 }
 
+/// The material whose density a shell section's density loads need: its own, or a COMPOSITE's
+/// first layer without *DENSITY (its first layer when all have one).
+const std::string& density_material(const model::Model& m, const model::ShellSection& sec) {
+  if (sec.layers.empty()) return sec.material;
+  for (const model::ShellLayer& layer : sec.layers)
+    if (auto mat = m.materials.find(layer.material); mat != m.materials.end() && !mat->second.density)
+      return layer.material;
+  return sec.layers.front().material;
+}
+
 void check_density_loads(const model::Model& m, Diagnostics& diags) {
   std::vector<const model::Material*> material_of;  // element row → material, built on first need
   for (const auto& step : m.steps)
@@ -262,6 +272,12 @@ void check_density_loads(const model::Model& m, Diagnostics& diags) {
           for (const auto& sec : m.mesh.sections) {
             auto set = m.mesh.elsets.find(sec.elset);
             auto mat = m.materials.find(sec.material);
+            if (set == m.mesh.elsets.end() || mat == m.materials.end()) continue;  // reported above
+            for (std::int32_t row : set->second.rows) material_of[row] = &mat->second;
+          }
+          for (const auto& sec : m.mesh.shell_sections) {
+            auto set = m.mesh.elsets.find(sec.elset);
+            auto mat = m.materials.find(density_material(m, sec));
             if (set == m.mesh.elsets.end() || mat == m.materials.end()) continue;  // reported above
             for (std::int32_t row : set->second.rows) material_of[row] = &mat->second;
           }

@@ -98,6 +98,7 @@ std::array<double, 3> rotate_direction(const std::array<double, 3>& d, const std
 }
 
 void move_rigid_bodies(KeywordContext& ctx, const OpenInstance& inst, std::int32_t node_base, std::int32_t elem_base);
+void refuse_turned_orientation(KeywordContext& ctx, const OpenInstance& inst, const std::string& orientation);
 
 /// Copies the part's mesh into the model's mesh as a new instance.
 void end_instance(KeywordContext& ctx) {
@@ -161,6 +162,7 @@ void end_instance(KeywordContext& ctx) {
     dst.surfaces[prefix + k] = std::move(copy);
   }
   for (const auto& sec : src.sections) {
+    if (!sec.orientation.empty()) refuse_turned_orientation(ctx, inst, sec.orientation);
     model::SolidSection copy = sec;
     copy.elset = prefix + sec.elset;
     dst.sections.push_back(std::move(copy));
@@ -177,6 +179,9 @@ void end_instance(KeywordContext& ctx) {
     dst.beam_sections.push_back(std::move(copy));
   }
   for (const auto& shell : src.shell_sections) {
+    if (!shell.orientation.empty()) refuse_turned_orientation(ctx, inst, shell.orientation);
+    for (const model::ShellLayer& layer : shell.layers)
+      if (!layer.orientation.empty()) refuse_turned_orientation(ctx, inst, layer.orientation);
     model::ShellSection copy = shell;
     copy.elset = prefix + shell.elset;
     dst.shell_sections.push_back(std::move(copy));
@@ -193,6 +198,16 @@ void end_instance(KeywordContext& ctx) {
   }
   for (const auto& [node, n] : src.node_normals) dst.node_normals[node + node_base] = turned(n);
   move_rigid_bodies(ctx, inst, node_base, elem_base);
+}
+
+/// An *ORIENTATION is model-wide and does not turn with an instance: a section of a rotated
+/// instance that uses one would get the part's axes, not the instance's.
+void refuse_turned_orientation(KeywordContext& ctx, const OpenInstance& inst, const std::string& orientation) {
+  if (!inst.has_rotation) return;
+  ctx.diags.error(inst.loc, "*INSTANCE",
+                  fmt::format("instance '{}' is rotated and a section in it uses the orientation '{}': orientations do "
+                              "not turn with an instance yet (place the part unrotated, or define the orientation in "
+                              "the assembly's axes outside the part)", inst.name, orientation));
 }
 
 /// An analytical surface defined inside the instance, moved with it like its nodes: translated,

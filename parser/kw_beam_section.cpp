@@ -7,8 +7,9 @@
 /// I22, J; n1; E, G; its *SECTION POINTS, where S and E are output. The other library shapes (L, HEX, TRAPEZOID, ARBITRARY, ...) and the other
 /// general forms (MESHED, NONLINEAR GENERAL) stop here with what is missing.
 ///
-/// CalculiX reads CIRC's number as the diameter (its "thickness"; a second number makes an
-/// ellipse); inpact reads it as Abaqus does, the radius. A RECT of one width is CalculiX's square.
+/// CalculiX reads CIRC's number as the diameter (its "thickness"); inpact reads it as Abaqus does,
+/// the radius. Two numbers are CalculiX's ellipse, its full axes along n1 and n2 (a warning;
+/// Abaqus has no such form). A RECT of one width is CalculiX's square.
 #include <fmt/format.h>
 
 #include "handlers.hpp"
@@ -28,7 +29,7 @@ struct ShapeSpec {
 };
 
 constexpr ShapeSpec kShapes[] = {{"RECT", Shape::Rect, 2, "a (width along n1), b (along n2)"},
-                                 {"CIRC", Shape::Circ, 1, "radius"},
+                                 {"CIRC", Shape::Circ, 1, "radius (or CalculiX's ellipse: its axes along n1, n2)"},
                                  {"PIPE", Shape::Pipe, 2, "outer radius, wall thickness"},
                                  {"BOX", Shape::Box, 6, "a, b (outer widths along n1, n2), t1, t2, t3, t4 (walls)"},
                                  {"I", Shape::I, 7, "l, h, b1, b2, t1, t2, t3"},
@@ -46,9 +47,14 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
                                       f[0].text));
     f.push_back(f[0]);
   }
-  if (!ctx.check_count(f, line, spec.n_dims, spec.shape == Shape::General ? 7 : spec.n_dims, spec.layout)) return false;
+  const bool ellipse = spec.shape == Shape::Circ && f.size() == 2;
+  if (ellipse)
+    ctx.warning(f[0].loc, fmt::format("CIRC with two numbers is read as CalculiX's ellipse: its full axes {} along n1 "
+                                      "and {} along n2 (a one-number CIRC is Abaqus's radius)", f[0].text, f[1].text));
+  const std::size_t n_dims = ellipse ? 2 : spec.n_dims;
+  if (!ctx.check_count(f, line, n_dims, spec.shape == Shape::General ? 7 : n_dims, spec.layout)) return false;
   sec.dims_loc = line.loc;
-  for (std::size_t i = 0; i < spec.n_dims; ++i) {
+  for (std::size_t i = 0; i < n_dims; ++i) {
     auto v = ctx.real(f[i], "section dimension");
     if (!v) return false;
     const bool signed_value = spec.shape == Shape::General && i == 2;  // I12
@@ -62,7 +68,7 @@ bool read_dims(KeywordContext& ctx, const Line& line, const ShapeSpec& spec, mod
                           "principal axes)");
       return false;
     }
-    sec.dims.push_back(*v);
+    sec.dims.push_back(ellipse ? *v / 2 : *v);  // the model holds the ellipse's semi-axes
   }
   if (spec.shape == Shape::Pipe && sec.dims[1] > sec.dims[0]) {
     ctx.error(f[1].loc, fmt::format("the wall thickness {:g} exceeds the outer radius {:g}", sec.dims[1], sec.dims[0]));

@@ -64,7 +64,8 @@ bool read_layers(KeywordContext& ctx, model::ShellSection& sec) {
     model::ShellLayer layer;
     layer.loc = f[2].loc;
     if (!read_layer_thickness(ctx, f[0], layer.thickness)) return false;
-    if (!f[1].empty() && !read_section_points(ctx, f[1], layer.section_points)) return false;
+    // A general section integrates each layer exactly: its number of points is not used.
+    if (!sec.general && !f[1].empty() && !read_section_points(ctx, f[1], layer.section_points)) return false;
     layer.material = normalize_label(f[2].text);
     if (layer.material.empty()) {
       ctx.error(f[2].loc, "a layer needs its material's name");
@@ -131,7 +132,7 @@ void read_section(KeywordContext& ctx, bool general) {
   model::ShellSection sec;
   sec.elset = ctx.name_value("ELSET");
   if (!composite) sec.material = ctx.name_value("MATERIAL");
-  if (ctx.has("ORIENTATION")) sec.orientation = ctx.name_value("ORIENTATION");
+  if (ctx.has("ORIENTATION")) sec.orientation = ctx.name_value("ORIENTATION"), sec.orientation_loc = ctx.param_loc("ORIENTATION");
   sec.general = general;
   sec.nodal_thickness = ctx.has("NODAL THICKNESS");
   sec.loc = ctx.keyword.loc;

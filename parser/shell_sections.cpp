@@ -39,10 +39,8 @@ void check_shell_section(const model::Model& m, const model::ShellSection& sec, 
     diags.error(sec.loc, keyword_of(sec), fmt::format("material '{}' is not defined", sec.material));
     return;
   }
-  if (!sec.orientation.empty() && !m.orientations.count(sec.orientation)) {
-    diags.error(sec.loc, keyword_of(sec), fmt::format("orientation '{}' is not defined", sec.orientation));
-    return;
-  }
+  if (!sec.orientation.empty() && !m.orientations.count(sec.orientation))
+    diags.error(sec.orientation_loc, keyword_of(sec), fmt::format("orientation '{}' is not defined", sec.orientation));
   for (const model::ShellLayer& layer : sec.layers) {
     if (!m.materials.count(layer.material))
       diags.error(layer.loc, keyword_of(sec), fmt::format("layer: material '{}' is not defined", layer.material));

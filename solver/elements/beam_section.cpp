@@ -28,7 +28,7 @@ std::array<double, 2> section_extent(const model::BeamSection& s) {
   switch (s.shape) {
     case model::BeamSection::Shape::Rect:
     case model::BeamSection::Shape::Box: return {d[0], d[1]};
-    case model::BeamSection::Shape::Circ:
+    case model::BeamSection::Shape::Circ: return {2 * s.circ_semi_axes()[0], 2 * s.circ_semi_axes()[1]};
     case model::BeamSection::Shape::Pipe: return {2 * d[0], 2 * d[0]};
     case model::BeamSection::Shape::I: return {std::max(d[2], d[3]), d[1]};
     case model::BeamSection::Shape::General: return {0.0, 0.0};
@@ -98,10 +98,13 @@ BeamProperties beam_properties(const model::BeamSection& section, double youngs_
       p.i22 = d[1] * d[0] * d[0] * d[0] / 12.0;
       p.torsion = rectangle_torsion(d[0], d[1]);
       break;
-    case Shape::Circ:
-      p.i11 = p.i22 = pi * std::pow(d[0], 4) / 4.0;
-      p.torsion = 2.0 * p.i11;
+    case Shape::Circ: {  // an ellipse of semi-axes a (n1), b (n2); a circle when a = b
+      const auto [a, b] = section.circ_semi_axes();
+      p.i11 = pi * a * b * b * b / 4.0;
+      p.i22 = pi * a * a * a * b / 4.0;
+      p.torsion = pi * a * a * a * b * b * b / (a * a + b * b);
       break;
+    }
     case Shape::Pipe: {
       const double inner = d[0] - d[1];
       p.i11 = p.i22 = pi * (std::pow(d[0], 4) - std::pow(inner, 4)) / 4.0;

@@ -13,9 +13,12 @@ std::vector<BeamSectionPoint> rect_points(double a, double b) {
   return {{1, -a / 2, -b / 2, 0.0}, {5, a / 2, -b / 2, 0.0}, {21, -a / 2, b / 2, 0.0}, {25, a / 2, b / 2, 0.0}};
 }
 
-/// CIRC r: the surface on the axes, counterclockwise from +n1.
-std::vector<BeamSectionPoint> circ_points(double r) {
-  return {{3, r, 0.0, r}, {7, 0.0, r, r}, {11, -r, 0.0, r}, {15, 0.0, -r, r}};
+/// CIRC, semi-axes a (n1) and b (n2): the surface on the axes, counterclockwise from +n1. The
+/// ellipse's torsional shear there is 2T/(π a² b) at (±a, 0) and 2T/(π a b²) at (0, ±b), T = G J
+/// κ3 with J = π a³b³/(a² + b²): arms 2ab²/(a² + b²) and 2a²b/(a² + b²), r for a circle.
+std::vector<BeamSectionPoint> circ_points(double a, double b) {
+  const double on_n1 = 2 * a * b * b / (a * a + b * b), on_n2 = 2 * a * a * b / (a * a + b * b);
+  return {{3, a, 0.0, on_n1}, {7, 0.0, b, on_n2}, {11, -a, 0.0, on_n1}, {15, 0.0, -b, on_n2}};
 }
 
 /// PIPE of outer radius r: eight points on the outer surface, every 45° from +n1.
@@ -52,7 +55,7 @@ std::vector<BeamSectionPoint> beam_output_points(const model::BeamSection& secti
   std::vector<BeamSectionPoint> points;
   switch (section.shape) {
     case Shape::Rect: points = rect_points(d[0], d[1]); break;
-    case Shape::Circ: points = circ_points(d[0]); break;
+    case Shape::Circ: points = circ_points(section.circ_semi_axes()[0], section.circ_semi_axes()[1]); break;
     case Shape::Pipe: points = pipe_points(d[0]); break;
     case Shape::Box: points = box_points(d, properties.torsion); break;
     case Shape::I: points = i_points(d); break;

@@ -60,7 +60,7 @@ void compute_corotational(CorotationalFrame frame, std::span<const Vec3> coords,
                           ElementSystem& out);
 
 /// Whether the element type turns with finite rotations here: the beams (B31, B32, B32R, B33) and
-/// the shells (S3, S3R, S4, S4R, S8, S8R). The one rule the set-up and the kernels use.
+/// the shells (S3, S3R, S4, S4R, S6, S8, S8R). The one rule the set-up and the kernels use.
 bool takes_finite_rotations(const model::ElementTypeInfo& type);
 
 /// exp([ψ]×) and its inverse on rotations by less than π, exposed for tests.

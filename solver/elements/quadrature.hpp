@@ -19,7 +19,7 @@ struct QuadraturePoint {
 ///   C3D6 2 (triangle centroid × 2-point Gauss through r) ·
 ///   CPE4/CPS4/CAX4 and …4I 2×2 · …4R 1 · …8 3×3 · …8R 2×2 · …3 1 · …6 3 ·
 ///   T2D2, T3D2 1 · T3D3 2 (Gauss along the element) · springs 1 (the element) ·
-///   shells in their plane: S4, S4R, S8R 2×2 · S8 3×3 · S3, S3R 3.
+///   shells in their plane: S4, S4R, S8R 2×2 · S8 3×3 · S3, S3R, S6 3.
 std::vector<QuadraturePoint> element_rule(const model::ElementTypeInfo& type);
 
 /// A rule for integrating over a face/edge shape; exact for the polynomial degree `order` for

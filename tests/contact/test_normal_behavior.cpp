@@ -226,3 +226,38 @@ TEST(NormalBehavior, TwoMaterialsTakeTheSofterModulusOverTheSlavesThickness) {
   // The soft side keeps its own: its modulus is already the softer.
   EXPECT_DOUBLE_EQ(contact::softer_element_stiffness(*m, *s), 4.0);
 }
+
+// A directional *ELASTIC scales the face by the mean of its direct stiffnesses: engineering
+// constants with every ν = 0 have D11 = E1, D22 = E2, D33 = E3.
+TEST(NormalBehavior, AnOrthotropicMaterialTakesTheMeanDirectStiffness) {
+  model::Model m = one_element("C3D8", brick(1, 1, 1), 0.0, 0.0);
+  model::Elastic& e = *m.materials["M"].elastic;
+  e.type = model::Elastic::Type::EngineeringConstants;
+  e.constants = {300.0, 200.0, 100.0, 0.0, 0.0, 0.0, 50.0, 50.0, 50.0};
+  auto s = contact::surface_scales(m, element_surface(1));
+  ASSERT_TRUE(s);
+  EXPECT_NEAR(s->element_stiffness, 200.0, 1e-12);
+}
+
+// A COMPOSITE shell takes its thickest layer's material, over the whole section's thickness:
+// the same as a shell of that material alone.
+TEST(NormalBehavior, ACompositeShellTakesItsThickestLayer) {
+  const std::vector<std::array<double, 3>> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  model::Model single = one_element("S4", square, 100.0, 0.3);
+  single.mesh.sections.clear();
+  model::ShellSection sec;
+  sec.elset = "E";
+  sec.material = "M";
+  sec.thickness = 0.3;
+  single.mesh.shell_sections.push_back(sec);
+  model::Model layered = single;
+  layered.materials["SOFT"].elastic = model::Elastic{1.0, 0.3, {}};
+  model::ShellSection& composite = layered.mesh.shell_sections[0];
+  composite.material.clear();
+  composite.layers = {{0.1, 3, "SOFT", "", 0.0, "", {}, {}}, {0.2, 3, "M", "", 0.0, "", {}, {}}};
+  auto a = contact::surface_scales(single, element_surface(1));
+  auto b = contact::surface_scales(layered, element_surface(1));
+  ASSERT_TRUE(a && b);
+  EXPECT_GT(b->element_stiffness, 0.0);
+  EXPECT_DOUBLE_EQ(b->element_stiffness, a->element_stiffness);
+}

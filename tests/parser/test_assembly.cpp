@@ -87,3 +87,19 @@ TEST(Assembly, UndefinedPartAndKeywordsInTheWrongPlace) {
   EXPECT_TRUE(has_diagnostic(r2, "*MATERIAL: not allowed inside *PART")) << r2.report();
   EXPECT_TRUE(has_diagnostic(r2, "*PART: missing *END PART")) << r2.report();
 }
+
+// An *ORIENTATION does not turn with an instance: an oriented section in a rotated instance is
+// refused (its material axes would silently stay the part's), an unrotated one is read.
+TEST(Assembly, AnOrientedSectionInARotatedInstanceIsRefused) {
+  DeckDir dir;
+  std::string part = kPart;
+  part.replace(part.find("MATERIAL=M\n"), 11, "MATERIAL=M, ORIENTATION=OR\n");
+  const std::string orientation = "*ORIENTATION, NAME=OR\n1., 0., 0., 0., 1., 0.\n";
+  auto turned = dir.read(orientation + part + "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=B2, PART=Block\n0., 0., 0.\n"
+                                              "0., 0., 0., 0., 0., 1., 90.\n*END INSTANCE\n*END ASSEMBLY\n" + kMaterial);
+  EXPECT_TRUE(has_diagnostic(turned, "instance 'B2' is rotated and a section in it uses the orientation 'OR'"))
+      << turned.report();
+  auto placed = dir.read(orientation + part + "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=B1, PART=Block\n5., 0., 0.\n"
+                                              "*END INSTANCE\n*END ASSEMBLY\n" + kMaterial);
+  EXPECT_TRUE(placed.ok()) << placed.report();
+}

@@ -110,8 +110,20 @@ TEST(ShellSectionKeyword, CompositeLayerErrorsPointAtTheLayer) {
                                      "an odd number of section points, at least 3; found 2"))
       << points.report();
   auto section = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M, ORIENTATION=OX\n0.1\n");
-  EXPECT_TRUE(has_diagnostic(section, "deck.inp:11:1: error: *SHELL SECTION: orientation 'OX' is not defined"))
+  EXPECT_TRUE(has_diagnostic(section, "deck.inp:11:50: error: *SHELL SECTION: orientation 'OX' is not defined"))
       << section.report();
+}
+
+// GRAV needs the density of every layer (one without it would silently lighten the shell); a
+// general section does not use a layer's number of points.
+TEST(ShellSectionKeyword, CompositeLayersNeedTheirDensityForGravity) {
+  DeckDir dir;
+  const std::string dense = "*MATERIAL, NAME=D\n*ELASTIC\n1000., 0.3\n*DENSITY\n7.8e-9\n";
+  const std::string step = "*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*DLOAD\nP, GRAV, 9.81, 0., 0., -1.\n*END STEP\n";
+  auto light = dir.read(kPlate + kMaterial + dense + "*SHELL SECTION, ELSET=P, COMPOSITE\n0.1, 3, D\n0.1, 3, M\n" + step);
+  EXPECT_TRUE(has_diagnostic(light, "GRAV needs the density of material 'M' (add *DENSITY to it)")) << light.report();
+  auto general = dir.read(kPlate + dense + "*SHELL GENERAL SECTION, ELSET=P, COMPOSITE\n0.1, 1, D\n0.1, 1, D\n" + step);
+  EXPECT_TRUE(general.ok()) << general.report();
 }
 
 // CalculiX names a shell's faces S1 (SNEG) and S2 (SPOS).

@@ -102,6 +102,24 @@ TEST(BeamStresses, ACircleCarriesTheTorsionalShearOnItsSurface) {
   expect_torsion(*r, {{3, tau}, {7, tau}, {11, tau}, {15, tau}});
 }
 
+// CalculiX's two-number CIRC: an ellipse of full axes 0.3 (n1) and 0.2 (n2), semi-axes a = 0.15,
+// b = 0.1: I11 = π a b³/4, I22 = π a³ b/4, J = π a³ b³/(a² + b²); the torque gives 2T/(π a² b)
+// at (±a, 0) and 2T/(π a b²) at (0, ±b), and the tip turns by T L/(G J) (B33: exact).
+TEST(BeamStresses, CalculixsEllipseCarriesItsBendingAndTorsion) {
+  const auto r = run_section("beam-s-ellipse", {"*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=CIRC", "0.3, 0.2",
+                                                "0., 1., 0."});
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const double a = 0.15, b = 0.1, pi = std::numbers::pi;
+  const double i11 = pi * a * b * b * b / 4, i22 = pi * a * a * a * b / 4;
+  const double j = pi * a * a * a * b * b * b / (a * a + b * b);
+  expect_bending(*r, {{3, a, 0.0}, {7, 0.0, b}, {11, -a, 0.0}, {15, 0.0, -b}}, i11, i22);
+  const double on_n1 = 2 * 5 / (pi * a * a * b), on_n2 = 2 * 5 / (pi * a * b * b);
+  expect_torsion(*r, {{3, on_n1}, {7, on_n2}, {11, on_n1}, {15, on_n2}});
+  const auto tip = static_cast<std::size_t>(nset(r->model(), "TIP").at(0));
+  const double twist = 5 * kL / (kG * j);
+  EXPECT_NEAR(nodal(*r->capture.of_step(3).back(), "UR", tip, 0), twist, 1e-9 * twist);
+}
+
 // BOX 0.3 × 0.2 with walls 0.02 (±n1) and 0.03 (±n2): the midline's corners, each with Bredt's
 // T/(2 A_m t) of the wall that starts there (1: t1, 5: t2, 9: t3, 13: t4).
 TEST(BeamStresses, ABoxCarriesBredtsShearInItsWalls) {
