@@ -200,14 +200,21 @@ void end_instance(KeywordContext& ctx) {
   move_rigid_bodies(ctx, inst, node_base, elem_base);
 }
 
-/// An *ORIENTATION is model-wide and does not turn with an instance: a section of a rotated
-/// instance that uses one would get the part's axes, not the instance's.
+/// An *ORIENTATION is model-wide and does not move with an instance: a section of a rotated
+/// instance that uses one would get the part's axes, not the instance's; a cylindrical one's axis
+/// stays where the part has it when the instance is translated.
 void refuse_turned_orientation(KeywordContext& ctx, const OpenInstance& inst, const std::string& orientation) {
-  if (!inst.has_rotation) return;
+  const auto found = ctx.model().orientations.find(orientation);
+  const bool cylindrical = found != ctx.model().orientations.end() &&
+                           found->second.system == model::Orientation::System::Cylindrical;
+  const bool moved = inst.translation != std::array<double, 3>{0.0, 0.0, 0.0};
+  if (!inst.has_rotation && !(cylindrical && moved)) return;
   ctx.diags.error(inst.loc, "*INSTANCE",
-                  fmt::format("instance '{}' is rotated and a section in it uses the orientation '{}': orientations do "
-                              "not turn with an instance yet (place the part unrotated, or define the orientation in "
-                              "the assembly's axes outside the part)", inst.name, orientation));
+                  fmt::format("instance '{}' is {} and a section in it uses the {}orientation '{}': orientations do not "
+                              "move with an instance yet (place this instance {}, or mesh the part where the "
+                              "assembly has it)", inst.name, inst.has_rotation ? "rotated" : "translated",
+                              cylindrical ? "cylindrical " : "", orientation,
+                              inst.has_rotation ? "unrotated" : "untranslated"));
 }
 
 /// An analytical surface defined inside the instance, moved with it like its nodes: translated,

@@ -90,7 +90,7 @@ double material_angle(const ShellLayerProperties& layer, const std::array<Vec3, 
   const Eigen::Vector3d n(axes[2][0], axes[2][1], axes[2][2]);
   Eigen::Vector3d m = q.row(0).transpose() - q.row(0).dot(n) * n;
   double back = 0.0;
-  if (m.norm() < 1e-6) {  // axis 1 along the normal: axis 2 lies in the surface
+  if (m.norm() < std::sin(0.1 * std::numbers::pi / 180)) {  // axis 1 within 0.1° of the normal
     m = q.row(1).transpose() - q.row(1).dot(n) * n;
     back = -std::numbers::pi / 2;
   }

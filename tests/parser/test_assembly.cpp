@@ -102,4 +102,11 @@ TEST(Assembly, AnOrientedSectionInARotatedInstanceIsRefused) {
   auto placed = dir.read(orientation + part + "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=B1, PART=Block\n5., 0., 0.\n"
                                               "*END INSTANCE\n*END ASSEMBLY\n" + kMaterial);
   EXPECT_TRUE(placed.ok()) << placed.report();
+  // A cylindrical orientation's axis runs through fixed points: a translation moves it too.
+  const std::string cylinder = "*ORIENTATION, NAME=OR, SYSTEM=CYLINDRICAL\n0., 0., 0., 0., 0., 1.\n";
+  auto shifted = dir.read(cylinder + part + "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=B1, PART=Block\n5., 0., 0.\n"
+                                            "*END INSTANCE\n*END ASSEMBLY\n" + kMaterial);
+  EXPECT_TRUE(has_diagnostic(shifted, "instance 'B1' is translated and a section in it uses the cylindrical "
+                                      "orientation 'OR'"))
+      << shifted.report();
 }

@@ -55,6 +55,22 @@ TEST(BeamSectionKeyword, ARectOfOneWidthIsCalculixsSquare) {
                                 "square"));
 }
 
+// CalculiX's CIRC of two numbers is an ellipse of those full axes (n1 first): the model holds
+// its semi-axes; a one-number CIRC stays Abaqus's radius.
+TEST(BeamSectionKeyword, ACircOfTwoNumbersIsCalculixsEllipse) {
+  DeckDir dir;
+  auto r = dir.read(kBeams + kMaterial + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.3, 0.2\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& s = r.model.mesh.beam_sections.at(0);
+  EXPECT_EQ(s.circ_semi_axes(), (std::array<double, 2>{0.15, 0.1}));
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:12:1: warning: *BEAM SECTION: CIRC with two numbers is read as CalculiX's "
+                                "ellipse: its full axes 0.3 along n1 and 0.2 along n2"))
+      << r.report();
+  auto circle = dir.read(kBeams + kMaterial + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.3\n");
+  ASSERT_TRUE(circle.ok()) << circle.report();
+  EXPECT_EQ(circle.model.mesh.beam_sections.at(0).circ_semi_axes(), (std::array<double, 2>{0.3, 0.3}));
+}
+
 TEST(BeamSectionKeyword, GeneralSectionTakesAreaInertiasAndModuli) {
   DeckDir dir;
   auto r = dir.read(kBeams + "*BEAM GENERAL SECTION, ELSET=B, SECTION=GENERAL\n0.06, 2e-4, 0., 4.5e-4, 3e-4\n"

@@ -92,8 +92,12 @@ TEST(ShellComposites, APlyAngleAddsToTheSectionOrientation) {
       const double u = nodal(a, "U", static_cast<std::size_t>(n), c);
       EXPECT_NEAR(nodal(b, "U", static_cast<std::size_t>(n), c), u, 1e-10 * 200) << n << " " << c;
     }
-  // The 30° ply is softer than the 0° one and the strip twists.
-  EXPECT_GT(nodal(a, "U", static_cast<std::size_t>(nset(turned->model(), "TIP")[0]), 2), 100.0);
+  // The 30° ply is softer than the 0° one, and the strip twists: its tip's edges lift unequally.
+  const auto tip = nset(turned->model(), "TIP");
+  const double edge = nodal(a, "U", static_cast<std::size_t>(tip.front()), 2);
+  const double other = nodal(a, "U", static_cast<std::size_t>(tip.back()), 2);
+  EXPECT_GT(edge, 100.0);
+  EXPECT_GT(std::abs(edge - other), 1e-3 * edge);
 }
 
 // S is reported in each ply's material axes: at SPOS of the [0/90] strip the ply's axis 1 runs
