@@ -55,6 +55,9 @@ struct Orientation {
   double c[3] = {0, 0, 0};  ///< rectangular: the origin (default the global origin)
   int axis = 1;
   double angle = 0.0;  ///< degrees
+  /// Whether the second data line was given: for shells it names the axis nearest the normal
+  /// (Abaqus requires it there; CalculiX decks leave it out).
+  bool rotation_given = false;
   SourceLoc loc;
 };
 

@@ -91,7 +91,7 @@ void orientation(KeywordContext& ctx) {
   if (ctx.has("LOCAL DIRECTIONS"))
     return ctx.error_param("LOCAL DIRECTIONS", "LOCAL DIRECTIONS is not supported yet");
   if (!read_points(ctx, ctx.data[0], o)) return;
-  if (ctx.data.size() > 1) read_rotation(ctx, ctx.data[1], o);
+  if (ctx.data.size() > 1) read_rotation(ctx, ctx.data[1], o), o.rotation_given = true;
   if (ctx.data.size() > 2) ctx.error(ctx.data[2].loc, "expected at most two data lines (points; additional rotation)");
   if (!ctx.model().orientations.try_emplace(key, std::move(o)).second)
     ctx.error_param("NAME", fmt::format("orientation '{}' is defined twice", key));

@@ -32,7 +32,8 @@ shell benchmarks of MacNeal and Harder (1985) and a cantilever strip against clo
   laminate       the strip (L = 10, b = 1) of a lamina E1 = 1.4e5, E2 = 1e4, nu12 = 0, G12 = 5e3,
                  G13 = 5e3, G23 = 3e3 under the tip line load 1, *SHELL SECTION, COMPOSITE; the variant
                  picks the layup: cross [0/90/90/0] by angles, orient the same by *ORIENTATION
-                 names, unsym [0/90] (t = 0.05 each), turned one layer at 30 deg, composed the
+                 names, normal1 the same by orientations whose axis 1 is the normal (second line
+                 "1, 0.": Abaqus projects axis 2), unsym [0/90] (t = 0.05 each), turned one layer at 30 deg, composed the
                  same as a section ORIENTATION at 20 deg and a layer at 10 deg; all 0.1 thick.
   rollup         Sze, Liu and Lo's (2004) strip under an end moment, NLGEOM: L = 12, b = 1,
                  t = 0.1, E = 1.2e6, nu = 0, M = 50 pi / 3 = 2 pi EI / L about -y rolls it into a
@@ -206,6 +207,7 @@ def strip(etype, n):
 LAYUPS = {
     "cross": ("", [(0.025, "0."), (0.025, "90."), (0.025, "90."), (0.025, "0.")]),
     "orient": ("", [(0.025, "OX"), (0.025, "OY"), (0.025, "OY"), (0.025, "OX")]),
+    "normal1": ("", [(0.025, "NX"), (0.025, "NY"), (0.025, "NY"), (0.025, "NX")]),
     "unsym": ("", [(0.05, "0."), (0.05, "90.")]),
     "turned": ("", [(0.1, "30.")]),
     "composed": (", ORIENTATION=O20", [(0.1, "10.")]),
@@ -220,6 +222,9 @@ def laminate(etype, n, variant):
     ply = ["*MATERIAL, NAME=PLY", "*ELASTIC, TYPE=LAMINA", "1.4e5, 1.e4, 0., 5.e3, 5.e3, 3.e3",
            "*ORIENTATION, NAME=OX", "1., 0., 0., 0., 1., 0.", "*ORIENTATION, NAME=OY", "0., 1., 0., -1., 0., 0.",
            "*ORIENTATION, NAME=O20", f"{c:.17g}, {s:.17g}, 0., {-s:.17g}, {c:.17g}, 0.",
+           # Axis 1 along the normal, named so on the second line: Abaqus projects axis 2 (x, y).
+           "*ORIENTATION, NAME=NX", "0., 0., 1., 1., 0., 0.", "1, 0.",
+           "*ORIENTATION, NAME=NY", "0., 0., 1., 0., 1., 0.", "1, 0.",
            f"*SHELL SECTION, ELSET=SHELL, COMPOSITE{option}"]
     ply += [f"{t:.15g}, 3, PLY, {o}" for t, o in layers]
     load = tail[len(section(0.1)):-1]  # without *END STEP

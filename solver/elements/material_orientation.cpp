@@ -34,7 +34,8 @@ MaterialOrientation::MaterialOrientation(const model::Orientation& o)
       b_(vec(o.b)),
       fixed_(Eigen::Matrix3d::Identity()),
       axis_(o.axis - 1),
-      angle_(o.angle * std::numbers::pi / 180.0) {
+      angle_(o.angle * std::numbers::pi / 180.0),
+      rotation_given_(o.rotation_given) {
   if (!cylindrical_) fixed_ = with_rotation(rectangular_axes(o));
 }
 

@@ -21,6 +21,10 @@ class MaterialOrientation {
   bool varies() const { return cylindrical_; }
   /// The local axes at `x` (rows of Q), the additional rotation included.
   Eigen::Matrix3d axes_at(const Vec3& x) const;
+  /// The axis (0-based) a shell projects onto its surface as material direction 1: Abaqus takes
+  /// the second data line's axis as the one nearest the normal and projects the next in the
+  /// cycle 1 → 2 → 3 → 1; without that line (CalculiX's decks) axis 1.
+  int shell_projected_axis() const { return rotation_given_ ? (axis_ + 1) % 3 : 0; }
 
  private:
   Eigen::Matrix3d with_rotation(const Eigen::Matrix3d& axes) const;
@@ -30,6 +34,7 @@ class MaterialOrientation {
   Eigen::Matrix3d fixed_;  ///< rectangular: the axes
   int axis_ = 0;           ///< 0-based local axis of the additional rotation
   double angle_ = 0.0;     ///< radians
+  bool rotation_given_ = false;
 };
 
 /// T(Q): the engineering-shear Voigt strain of the frame whose axes are Q's rows, from the

@@ -88,10 +88,11 @@ double material_angle(const ShellLayerProperties& layer, const std::array<Vec3, 
   if (!layer.orientation) return layer.angle;
   const Eigen::Matrix3d q = layer.orientation->axes_at(x);
   const Eigen::Vector3d n(axes[2][0], axes[2][1], axes[2][2]);
-  Eigen::Vector3d m = q.row(0).transpose() - q.row(0).dot(n) * n;
+  const int first = layer.orientation->shell_projected_axis(), second = (first + 1) % 3;
+  Eigen::Vector3d m = q.row(first).transpose() - q.row(first).dot(n) * n;
   double back = 0.0;
-  if (m.norm() < std::sin(0.1 * std::numbers::pi / 180)) {  // axis 1 within 0.1° of the normal
-    m = q.row(1).transpose() - q.row(1).dot(n) * n;
+  if (m.norm() < std::sin(0.1 * std::numbers::pi / 180)) {  // within 0.1° of the normal: the next
+    m = q.row(second).transpose() - q.row(second).dot(n) * n;  // axis is direction 2
     back = -std::numbers::pi / 2;
   }
   const Eigen::Vector3d e1(axes[0][0], axes[0][1], axes[0][2]), e2(axes[1][0], axes[1][1], axes[1][2]);

@@ -55,7 +55,8 @@ struct ShellLayerProperties {
 };
 
 /// θ of the layer at a point with local shell axes `axes` (e1, e2, normal) and reference
-/// coordinates x. An orientation whose axis 1 is normal to the surface gives its axis 2's
+/// coordinates x: the orientation's projected axis (MaterialOrientation::shell_projected_axis)
+/// on the surface, or, where that axis lies within 0.1° of the normal, the next axis's
 /// projection turned back by 90°.
 double material_angle(const ShellLayerProperties& layer, const std::array<Vec3, 3>& axes, const Vec3& x);
 

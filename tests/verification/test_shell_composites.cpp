@@ -70,8 +70,10 @@ TEST(ShellComposites, CrossPlyStripsMatchLaminationTheory) {
   for (const Case& c : {Case{"S8R", 5}, Case{"S4", 10}}) {
     const double cross = tip_deflection(laminate_deck(c.etype, c.n, "cross"));
     EXPECT_NEAR(cross, expected(c.etype, laminate_stiffness(symmetric)), 1e-8 * cross) << c.etype;
-    // The same plies turned by *ORIENTATION names instead of angles.
+    // The same plies turned by *ORIENTATION names instead of angles; and by orientations whose
+    // axis 1 is the normal, as their second line says, so that Abaqus projects their axis 2.
     EXPECT_NEAR(tip_deflection(laminate_deck(c.etype, c.n, "orient")), cross, 1e-12 * cross) << c.etype;
+    EXPECT_NEAR(tip_deflection(laminate_deck(c.etype, c.n, "normal1")), cross, 1e-12 * cross) << c.etype;
     // [0/90]: bending and stretching couple (B11 ≠ 0).
     const double unsym = tip_deflection(laminate_deck(c.etype, c.n, "unsym"));
     EXPECT_NEAR(unsym, expected(c.etype, laminate_stiffness(unsymmetric)), 1e-8 * unsym) << c.etype;
