@@ -70,7 +70,7 @@ std::string format_print_table(const PrintTable& t) {
   }
   line("");
   // Column header: each name 4 characters into its 12-character field.
-  // A beam's section-point table has a SEC PT column after PT (Abaqus prints it the same way
+  // A beam's or shell's section-point table has a SEC PT column after PT (Abaqus prints it the same way
   // as its FOOT-NOTE column, over two lines).
   const bool sections = element && t.at_section_points;
   std::string header = !element     ? "       NODE FOOT-"

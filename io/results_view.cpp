@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -90,6 +91,43 @@ ViewArray nodal_array(const model::Model& model, const FieldData& f, std::size_t
   return a;
 }
 
+/// Per cell, the sum and count of a field's values at its locations.
+struct CellSums {
+  std::size_t n_comp;
+  std::vector<double> sum;
+  std::vector<std::int32_t> count;
+  CellSums(std::size_t n_cells, std::size_t comp) : n_comp(comp), sum(n_cells * comp, 0.0), count(n_cells, 0) {}
+  /// `slot`: where each of the n values goes (tensor components in VTK's order); null: in order.
+  void add(std::size_t cell, const double* values, std::size_t n, const int* slot) {
+    ++count[cell];
+    for (std::size_t c = 0; c < n; ++c) sum[cell * n_comp + (slot ? static_cast<std::size_t>(slot[c]) : c)] += values[c];
+  }
+};
+
+/// The cells' means as the array `name` (NaN where a cell has no location); for a stress tensor
+/// also `name`_Mises, the von Mises stress of the mean.
+void push_cell_array(const std::string& name, const CellSums& s, bool tensor, std::vector<ViewArray>& out) {
+  const std::size_t n_cells = s.count.size();
+  ViewArray a{name, true, s.n_comp, std::vector<double>(n_cells * s.n_comp, kNaN)};
+  for (std::size_t e = 0; e < n_cells; ++e)
+    if (s.count[e])
+      for (std::size_t c = 0; c < s.n_comp; ++c) a.values[e * s.n_comp + c] = s.sum[e * s.n_comp + c] / s.count[e];
+  const bool stress = tensor && (name == "S" || name.rfind("S_SP", 0) == 0);
+  if (!stress) {
+    out.push_back(std::move(a));
+    return;
+  }
+  ViewArray mises{name + "_Mises", true, 1, std::vector<double>(n_cells, kNaN)};
+  for (std::size_t e = 0; e < n_cells; ++e) {
+    if (!s.count[e]) continue;
+    const double* v = &a.values[e * 6];
+    const double d = (v[0] - v[1]) * (v[0] - v[1]) + (v[1] - v[2]) * (v[1] - v[2]) + (v[2] - v[0]) * (v[2] - v[0]);
+    mises.values[e] = std::sqrt(0.5 * d + 3.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]));
+  }
+  out.push_back(std::move(a));
+  out.push_back(std::move(mises));
+}
+
 void element_arrays(const model::Model& model, const FieldData& f, std::size_t n_comp,
                     const std::filesystem::path& path, std::vector<ViewArray>& out) {
   const auto& elements = model.mesh.elements;
@@ -104,8 +142,10 @@ void element_arrays(const model::Model& model, const FieldData& f, std::size_t n
     tensor = slot[c] >= 0;
   }
   const std::size_t out_comp = tensor ? 6 : n_comp;
-  std::vector<double> sum(n_cells * out_comp, 0.0);
-  std::vector<std::int32_t> count(n_cells, 0);
+  // The cell's mean over its locations; a shell's section points apart, one array each
+  // (<key>_SP<k>, k from SNEG = 1 up), as a shell's S varies through its thickness.
+  CellSums whole(n_cells, out_comp);
+  std::map<std::int32_t, CellSums> by_section_point;
   std::size_t row_of_point = 0;
   for (std::size_t i = 0; i < nloc; ++i) {
     const std::int32_t inst = f.instance.empty() ? 0 : f.instance[i];
@@ -127,32 +167,18 @@ void element_arrays(const model::Model& model, const FieldData& f, std::size_t n
       }
     }
     const std::size_t e = row_of_point;
-    // A beam's S varies across its section, and its average would hide the bending: its cell is
-    // left empty (SF and SM show the section's state).
-    if (!f.section_point.empty() && f.section_point[i] > 0) continue;
-    ++count[e];
-    for (std::size_t c = 0; c < n_comp; ++c)
-      sum[e * out_comp + (tensor ? static_cast<std::size_t>(slot[c]) : c)] += f.values[i * n_comp + c];
-  }
-  ViewArray a{f.key, true, out_comp, std::vector<double>(n_cells * out_comp, kNaN)};
-  for (std::size_t e = 0; e < n_cells; ++e)
-    if (count[e])
-      for (std::size_t c = 0; c < out_comp; ++c) a.values[e * out_comp + c] = sum[e * out_comp + c] / count[e];
-
-  if (tensor && f.key == "S") {
-    // von Mises of the element-average stress.
-    ViewArray mises{"S_Mises", true, 1, std::vector<double>(n_cells, kNaN)};
-    for (std::size_t e = 0; e < n_cells; ++e) {
-      if (!count[e]) continue;
-      const double* s = &a.values[e * 6];
-      const double d = (s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0]);
-      mises.values[e] = std::sqrt(0.5 * d + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+    CellSums* target = &whole;
+    if (!f.section_point.empty() && f.section_point[i] > 0) {
+      // A beam's S varies across its section, and its average would hide the bending: its cell
+      // is left empty (SF and SM show the section's state).
+      if (!model::is_shell(model::element_type(elements.type[e]))) continue;
+      target = &by_section_point.try_emplace(f.section_point[i], n_cells, out_comp).first->second;
     }
-    out.push_back(std::move(a));
-    out.push_back(std::move(mises));
-    return;
+    target->add(e, &f.values[i * n_comp], n_comp, tensor ? slot.data() : nullptr);
   }
-  out.push_back(std::move(a));
+  push_cell_array(f.key, whole, tensor, out);
+  for (const auto& [number, sums] : by_section_point)
+    push_cell_array(fmt::format("{}_SP{}", f.key, number), sums, tensor, out);
 }
 
 // VTK's wedge has its base (0,1,2) turning away from the top face (3,4,5) by the right-hand

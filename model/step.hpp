@@ -115,6 +115,9 @@ struct OutputRequest {
   bool totals_only = false;
   bool summary = true;  ///< *NODE PRINT, SUMMARY
   bool global = false;  ///< GLOBAL=YES: a transformed node's values in global axes (else its local ones)
+  /// *ELEMENT OUTPUT's section-point line: the shell and beam section points to report (1-based,
+  /// sorted, unique); empty = Abaqus's default (a shell's SNEG and SPOS, a beam's output points).
+  std::vector<int> section_points;
   SourceLoc loc;
 };
 

@@ -33,9 +33,9 @@ std::string_view domain_name(OutputDomain d) {
 }
 
 /// The variable names on the data lines, checked against the identifiers of `domain`.
-void read_variables(KeywordContext& ctx, OutputDomain domain, OutputRequest& r) {
+void read_variables(KeywordContext& ctx, OutputDomain domain, OutputRequest& r, std::span<const Line> lines) {
   std::vector<Field> f;
-  for (const Line& line : ctx.data) {
+  for (const Line& line : lines) {
     split_fields(line, f);
     for (const Field& field : f) {
       if (field.empty()) continue;
@@ -167,8 +167,10 @@ void output(KeywordContext& ctx) {
 }
 
 /// What *NODE/*ELEMENT/*CONTACT OUTPUT share: the kind from the open *OUTPUT, its frequency,
-/// VARIABLE=, and the variables on the data lines.
-OutputRequest sub_request(KeywordContext& ctx, Kind field_kind, Kind history_kind, OutputDomain domain) {
+/// VARIABLE=, and the variables on the data lines (`lines`: all of them unless a line before
+/// names something else).
+OutputRequest sub_request(KeywordContext& ctx, Kind field_kind, Kind history_kind, OutputDomain domain,
+                          std::span<const Line> lines) {
   const BuildState& s = ctx.state;
   OutputRequest r;
   r.kind = s.output_is_history ? history_kind : field_kind;
@@ -181,20 +183,60 @@ OutputRequest sub_request(KeywordContext& ctx, Kind field_kind, Kind history_kin
   r.preselect = variable == "PRESELECT";
   r.all = variable == "ALL";
   // Abaqus: without VARIABLE= the variables must be listed on data lines.
-  if (variable.empty() && ctx.data.empty())
+  if (variable.empty() && lines.empty())
     ctx.error(ctx.keyword.loc, "list the output variables on data lines, or give VARIABLE=PRESELECT or ALL");
-  read_variables(ctx, domain, r);
+  read_variables(ctx, domain, r, lines);
   return r;
 }
 
+/// Whether a data line holds numbers only: *ELEMENT OUTPUT's section-point line (no output
+/// variable's name is a number).
+bool numbers_only(const Line& line) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  bool any = false;
+  for (const Field& field : f) {
+    if (field.empty()) continue;
+    if (!parse_int(field.text) && !parse_real(field.text)) return false;
+    any = true;
+  }
+  return any;
+}
+
+/// *ELEMENT OUTPUT's first data line when it lists section points (Abaqus: up to 16 numbers, a
+/// shell's from 1 = SNEG up through its layers, a beam's as its section numbers them): sorted.
+std::vector<int> section_point_line(KeywordContext& ctx, const Line& line) {
+  std::vector<Field> f;
+  split_fields(line, f);
+  std::vector<int> out;
+  int given = 0;
+  for (const Field& field : f) {
+    if (field.empty()) continue;
+    if (++given == 17)
+      ctx.error(field.loc, "at most 16 section points on a line (give another *ELEMENT OUTPUT for the rest)");
+    const auto n = parse_int(field.text);
+    if (!n || *n < 1) {
+      ctx.error(field.loc, fmt::format("a section point is a positive integer, found '{}'", field.text));
+      continue;
+    }
+    out.push_back(static_cast<int>(*n));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 void node_output(KeywordContext& ctx) {
-  OutputRequest r = sub_request(ctx, Kind::NodeField, Kind::NodeHistory, OutputDomain::Node);
+  OutputRequest r = sub_request(ctx, Kind::NodeField, Kind::NodeHistory, OutputDomain::Node, ctx.data);
   r.set = checked_set(ctx, "NSET", true);
   ctx.state.step->output.push_back(std::move(r));
 }
 
 void element_output(KeywordContext& ctx) {
-  OutputRequest r = sub_request(ctx, Kind::ElementField, Kind::ElementHistory, OutputDomain::Element);
+  const bool with_points = !ctx.data.empty() && numbers_only(ctx.data.front());
+  OutputRequest r = sub_request(ctx, Kind::ElementField, Kind::ElementHistory, OutputDomain::Element,
+                                ctx.data.subspan(with_points ? 1 : 0));
+  if (with_points) r.section_points = section_point_line(ctx, ctx.data.front());
   r.set = checked_set(ctx, "ELSET", false);
   r.position = position_of(ctx);
   reject_params(ctx, {"EXTERIOR", "REBAR", "SECTION POINTS"});
@@ -202,7 +244,7 @@ void element_output(KeywordContext& ctx) {
 }
 
 void contact_output(KeywordContext& ctx) {
-  OutputRequest r = sub_request(ctx, Kind::ContactField, Kind::ContactHistory, OutputDomain::Contact);
+  OutputRequest r = sub_request(ctx, Kind::ContactField, Kind::ContactHistory, OutputDomain::Contact, ctx.data);
   contact_surfaces(ctx, r);
   r.set = checked_set(ctx, "NSET", true);
   ctx.state.step->output.push_back(std::move(r));
@@ -226,7 +268,7 @@ OutputRequest print_request(KeywordContext& ctx, Kind kind, OutputDomain domain)
   r.summary = ctx.choice_value("SUMMARY") != "NO";
   r.global = ctx.choice_value("GLOBAL") == "YES";
   r.preselect = ctx.data.empty();  // *CONTACT PRINT without data lines prints its defaults
-  read_variables(ctx, domain, r);
+  read_variables(ctx, domain, r, ctx.data);
   return r;
 }
 

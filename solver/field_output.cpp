@@ -6,11 +6,14 @@
 #include <map>
 #include <unordered_map>
 
+#include <fmt/format.h>
+
 #include "assembler.hpp"
 #include "elements/beam_section_points.hpp"
 #include "elements/element_kernel.hpp"
 #include "elements/material.hpp"
 #include "elements/material_orientation.hpp"
+#include "elements/shell_section.hpp"
 #include "material_states.hpp"
 #include "model/reference_nodes.hpp"
 
@@ -198,6 +201,16 @@ bool model_has_beams_without_section_points(const AnalysisModel& am) {
                      [](const ElementSetup& s) { return s.section.beam && s.section.beam->output_points.empty(); });
 }
 
+/// Some shell section has `number` section points or more, or some beam reports that point.
+bool model_has_section_point(const AnalysisModel& am, int number) {
+  return std::any_of(am.elements.begin(), am.elements.end(), [&](const ElementSetup& s) {
+    if (s.section.shell) return static_cast<int>(s.section.shell->zeta.size()) >= number;
+    if (!s.section.beam) return false;
+    const auto& points = s.section.beam->output_points;
+    return std::any_of(points.begin(), points.end(), [&](const auto& q) { return q.number == number; });
+  });
+}
+
 /// Beams and shells make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
 bool model_has_section_vectors(const AnalysisModel& am) {
   return std::any_of(am.elements.begin(), am.elements.end(),
@@ -343,6 +356,9 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (std::find(v.begin(), v.end(), "U") != v.end()) add_unique(a.variables, "UR");
         if (std::find(v.begin(), v.end(), "RF") != v.end()) add_unique(a.variables, "RM");
       }
+      for (int number : r.section_points)
+        if (!model_has_section_point(am, number))
+          add_unique(not_computed_, fmt::format("element output at section point {} (no shell or beam section has it)", number));
       field_timing_.emplace_back(r, period);
       field_.push_back(std::move(a));
     } else {
@@ -432,25 +448,45 @@ class PointCache {
     return points_[el];
   }
 
-  /// A beam's S and E at its section points (elements/beam_section_points.hpp), integration
-  /// point after integration point, with each one's integration point and section point number.
+  /// S and E at a beam's or a shell's section points, integration point after integration
+  /// point, with each one's integration point, section point number and whether the section
+  /// reports it by default (SectionPointChoice). A beam's come from its integration points'
+  /// results (elements/beam_section_points.hpp), all defaults; a shell's are its kernel's points
+  /// (shell_elements.hpp: section.output_points at each in-plane point), SNEG and SPOS the defaults.
   struct SectionPoints {
-    std::vector<elements::PointResult> results;
+    std::vector<elements::PointResult> own;  ///< a beam's (a shell's stay in the cache)
+    std::span<const elements::PointResult> results;
     std::vector<std::int32_t> ip, number;
+    std::vector<char> is_default;
   };
   const SectionPoints& section_points_of(std::size_t el) {
     auto [it, inserted] = section_points_.try_emplace(el);
-    if (!inserted) return it->second;
-    const elements::BeamProperties& beam = *am_.elements[el].section.beam;
+    SectionPoints& sp = it->second;
+    if (!inserted) return sp;
     const auto ips = of(el);
+    if (const elements::ShellProperties* shell = am_.elements[el].section.shell) {
+      const std::size_t n_out = shell->output_points.size();
+      const int last = static_cast<int>(shell->zeta.size());
+      for (std::size_t p = 0; p < ips.size(); ++p) {
+        const int number = shell->output_points[p % n_out] + 1;
+        sp.ip.push_back(static_cast<std::int32_t>(p / n_out + 1));
+        sp.number.push_back(number);
+        sp.is_default.push_back(number == 1 || number == last);
+      }
+      sp.results = ips;
+      return sp;
+    }
+    const elements::BeamProperties& beam = *am_.elements[el].section.beam;
     for (std::size_t p = 0; p < ips.size(); ++p) {
-      elements::beam_section_point_results(beam, ips[p], it->second.results);
+      elements::beam_section_point_results(beam, ips[p], sp.own);
       for (const elements::BeamSectionPoint& q : beam.output_points) {
-        it->second.ip.push_back(static_cast<std::int32_t>(p + 1));
-        it->second.number.push_back(q.number);
+        sp.ip.push_back(static_cast<std::int32_t>(p + 1));
+        sp.number.push_back(q.number);
+        sp.is_default.push_back(1);
       }
     }
-    return it->second;
+    sp.results = sp.own;
+    return sp;
   }
 
  private:
@@ -487,12 +523,32 @@ class PointCache {
   std::unordered_map<std::size_t, SectionPoints> section_points_;
 };
 
-/// Where a field key is written in this step: the union of the sets of every request that
-/// asks for it (not only the due ones), so that its locations are the same in every frame.
+/// The section points a request reports: Abaqus's default (a shell's SNEG and SPOS, a beam's
+/// output points) unless its *ELEMENT OUTPUT lists them; several requests report the union.
+struct SectionPointChoice {
+  bool defaults = false;
+  std::set<int> numbers;
+  void add(const OutputRequest& r) {
+    if (r.section_points.empty()) defaults = true;
+    numbers.insert(r.section_points.begin(), r.section_points.end());
+  }
+  bool keeps(int number, bool is_default) const { return (defaults && is_default) || numbers.count(number) > 0; }
+};
+
+SectionPointChoice section_point_choice(const OutputRequest& r) {
+  SectionPointChoice c;
+  c.add(r);
+  return c;
+}
+
+/// Where a field key is written in this step: the union of the sets (and of the section points)
+/// of every request that asks for it (not only the due ones), so that its locations are the same
+/// in every frame.
 struct KeyRegion {
   bool whole = false;
   std::vector<std::int32_t> rows;
   std::string region;
+  SectionPointChoice section_points;
 };
 
 KeyRegion key_region(const StepOutput& output, const std::string& key) {
@@ -505,6 +561,7 @@ KeyRegion key_region(const StepOutput& output, const std::string& key) {
     const bool same_domain = nodal_key(key) ? domain_of(a.request.kind) == Domain::Node
                                             : domain_of(a.request.kind) == Domain::Element;
     if (a.whole_model || !same_domain) k.whole = true;
+    k.section_points.add(a.request);
     rows.insert(a.rows.begin(), a.rows.end());
     if (!a.whole_model && same_domain) add_unique(names, a.request.set);
   }
@@ -632,57 +689,63 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
                                 : tensor_labels(key, am.dim);
   f.region = where.region;
   const bool stress = key == "S";
-  // The points of every element first, so that the arrays are sized once (a frame of a few
-  // thousand elements otherwise regrows them a dozen times). A beam's S and E are at its
-  // section points, its SF and SM at its integration points; it has no plastic strain.
-  struct Located {
+  // The locations of every element first, so that the arrays are sized once (a frame of a few
+  // thousand elements otherwise regrows them a dozen times). A beam's S and E are at its section
+  // points, its SF and SM at its integration points, and it has no plastic strain; a shell's SF
+  // and SM are at its in-plane points, everything else at its section points.
+  struct Location {
     std::size_t el;
-    std::span<const elements::PointResult> points;
-    const PointCache::SectionPoints* section_points;  ///< a beam's S or E
+    const elements::PointResult* point;
+    std::int32_t ip, section_point;
   };
-  std::vector<Located> points;
-  std::size_t n_points = 0;
+  std::vector<Location> at;
   bool with_section_points = false;
   auto gather = [&](std::size_t el) {
-    const bool beam = model::is_beam(model::element_type(elements.type[el]));
+    const ElementSetup& setup = am.elements[el];
+    const bool beam = setup.section.beam != nullptr, shell = setup.section.shell != nullptr;
     if (beam && !section && !at_section_points(key)) return;
-    if (beam && !section) {
+    if ((beam || shell) && !section) {
       const auto& sp = cache.section_points_of(el);
-      points.push_back({el, sp.results, &sp});
+      for (std::size_t p = 0; p < sp.results.size(); ++p)
+        if (where.section_points.keeps(sp.number[p], sp.is_default[p]))
+          at.push_back({el, &sp.results[p], sp.ip[p], sp.number[p]});
       with_section_points = true;
-    } else {
-      points.push_back({el, cache.of(el), nullptr});
+      return;
     }
-    n_points += points.back().points.size();
+    const auto points = cache.of(el);
+    const std::size_t stride = shell ? setup.section.shell->output_points.size() : 1;  // one per in-plane point
+    for (std::size_t p = 0; p < points.size(); p += stride)
+      at.push_back({el, &points[p], static_cast<std::int32_t>(p / stride + 1), 0});
   };
   if (where.whole)
     for (std::size_t el = 0; el < elements.size(); ++el) gather(el);
   else
     for (std::int32_t el : where.rows) gather(static_cast<std::size_t>(el));
+  const std::size_t n_points = at.size();
   f.elements.resize(n_points);
   f.ip.resize(n_points);
   if (with_section_points) f.section_point.resize(n_points, 0);
   if (with_instance) f.instance.resize(n_points);
   f.values.resize(n_points * n_comp);
-  std::size_t i = 0;  // the location being written
-  for (const auto& [el, pts, sp] : points)
-    for (std::size_t p = 0; p < pts.size(); ++p, ++i) {
-      f.elements[i] = elements.labels[el];
-      f.ip[i] = sp ? sp->ip[p] : static_cast<std::int32_t>(p + 1);
-      if (sp) f.section_point[i] = sp->number[p];
-      if (with_instance) f.instance[i] = elements.instance[el];
-      const auto at = f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp);
-      if (section) {
-        std::copy_n(pts[p].section.begin() + (key == "SM" ? 3 : 0), n_comp, at);
-        continue;
-      }
-      if (scalar) {
-        *at = key == "PEEQ" ? pts[p].peeq : plastic_magnitude(pts[p]);
-        continue;
-      }
-      const auto& v = stress ? pts[p].stress : key == "PE" ? pts[p].plastic_strain : pts[p].strain;
-      std::copy_n(v.begin(), n_comp, at);
+  for (std::size_t i = 0; i < n_points; ++i) {
+    const Location& l = at[i];
+    const elements::PointResult& p = *l.point;
+    f.elements[i] = elements.labels[l.el];
+    f.ip[i] = l.ip;
+    if (with_section_points) f.section_point[i] = l.section_point;
+    if (with_instance) f.instance[i] = elements.instance[l.el];
+    const auto out = f.values.begin() + static_cast<std::ptrdiff_t>(i * n_comp);
+    if (section) {
+      std::copy_n(p.section.begin() + (key == "SM" ? 3 : 0), n_comp, out);
+      continue;
     }
+    if (scalar) {
+      *out = key == "PEEQ" ? p.peeq : plastic_magnitude(p);
+      continue;
+    }
+    const auto& v = stress ? p.stress : key == "PE" ? p.plastic_strain : p.strain;
+    std::copy_n(v.begin(), n_comp, out);
+  }
   return f;
 }
 
@@ -825,15 +888,15 @@ bool beam_section_point_column(const std::string& variable) {
   return c.source == Column::Source::Mises || (strain_or_stress && (c.component == 0 || c.component == 3));
 }
 
-/// What the rows of an element table are: integration points, or a beam's section points.
+/// What the rows of an element table are: integration points, or a beam's or shell's section points.
 enum class Rows : std::uint8_t { IntegrationPoints, SectionPoints };
 
 /// The columns of a table of this element type: trusses and springs have the 11 component of
 /// a tensor only (Abaqus prints S11 and E11 for them) and SF1; beams S11, S12, E11, E12 and
 /// MISES at their section points, and their section forces and moments at their integration
-/// points, in two tables; shells the in-plane components 11, 22, 12 of S and E (plane stress,
-/// at SNEG and SPOS), MISES and their section forces and moments; continua every column but
-/// SF2, SF3 and SM.
+/// points, in two tables; shells the in-plane components 11, 22, 12 of S and E (plane stress)
+/// and MISES at their section points, their section forces and moments at their in-plane
+/// points; continua every column but SF2, SF3 and SM.
 std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables,
                                      Rows rows) {
   std::vector<std::string> out;
@@ -848,23 +911,26 @@ std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const s
         out.push_back(v);
       continue;
     }
-    const bool keep = rows == Rows::SectionPoints ? false
-                      : model::is_shell(type)     ? section || c.source == Column::Source::Coord ||
-                                                    c.source == Column::Source::Mises ||
-                                                    (tensor && c.source != Column::Source::PE && in_plane)
-                      : model::is_continuum(type) ? !section || axial
-                                                  : (!tensor || c.component == 0) && (!section || axial);
+    const bool shell_section_point =
+        c.source == Column::Source::Mises || (tensor && c.source != Column::Source::PE && in_plane);
+    const bool keep = model::is_shell(type) ? (rows == Rows::SectionPoints
+                                                   ? shell_section_point
+                                                   : section || c.source == Column::Source::Coord)
+                      : rows == Rows::SectionPoints ? false
+                      : model::is_continuum(type)   ? !section || axial
+                                                    : (!tensor || c.component == 0) && (!section || axial);
     if (keep) out.push_back(v);
   }
   return out;
 }
 
-/// A beam's section-point results averaged over its integration points, one per section point
-/// (POSITION=CENTROIDAL), with the section point numbers.
+/// A beam's or shell's section-point results averaged over its integration points, one per
+/// section point the request reports (POSITION=CENTROIDAL), with the section point numbers.
 std::pair<std::vector<elements::PointResult>, std::vector<std::int32_t>> section_point_centroids(
-    const PointCache::SectionPoints& sp) {
+    const PointCache::SectionPoints& sp, const SectionPointChoice& choice) {
   std::map<std::int32_t, std::vector<elements::PointResult>> by_number;
-  for (std::size_t k = 0; k < sp.results.size(); ++k) by_number[sp.number[k]].push_back(sp.results[k]);
+  for (std::size_t k = 0; k < sp.results.size(); ++k)
+    if (choice.keeps(sp.number[k], sp.is_default[k])) by_number[sp.number[k]].push_back(sp.results[k]);
   std::pair<std::vector<elements::PointResult>, std::vector<std::int32_t>> out;
   for (const auto& [number, results] : by_number) {
     out.first.push_back(centroid_of(results));
@@ -877,6 +943,7 @@ std::pair<std::vector<elements::PointResult>, std::vector<std::int32_t>> section
 /// order the types first appear in the set (Abaqus prints element output by element type).
 std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequest& a, PointCache& cache) {
   const auto& elements = am.model->mesh.elements;
+  const SectionPointChoice choice = section_point_choice(a.request);
   const bool centroid = a.request.position == OutputRequest::Position::Centroidal;
   std::vector<std::vector<Column>> table_cols;
   std::vector<PrintTable> tables;
@@ -915,22 +982,25 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
     if (rows == Rows::SectionPoints) {
       const auto& sp = cache.section_points_of(el);
       if (centroid) {
-        const auto [results, numbers] = section_point_centroids(sp);
+        const auto [results, numbers] = section_point_centroids(sp, choice);
         for (std::size_t q = 0; q < results.size(); ++q) row(results[q], 0, numbers[q]);
       } else {
-        for (std::size_t q = 0; q < sp.results.size(); ++q) row(sp.results[q], sp.ip[q], sp.number[q]);
+        for (std::size_t q = 0; q < sp.results.size(); ++q)
+          if (choice.keeps(sp.number[q], sp.is_default[q])) row(sp.results[q], sp.ip[q], sp.number[q]);
       }
       return;
     }
     const auto& points = cache.of(el);
+    const elements::ShellProperties* shell = am.elements[el].section.shell;
+    const std::size_t stride = shell ? shell->output_points.size() : 1;  // a shell's: one per in-plane point
     if (centroid) row(centroid_of(points), 0, 0);
     else
-      for (std::size_t p = 0; p < points.size(); ++p) row(points[p], static_cast<std::int32_t>(p + 1), 0);
+      for (std::size_t p = 0; p < points.size(); p += stride) row(points[p], static_cast<std::int32_t>(p / stride + 1), 0);
   };
   auto add = [&](std::size_t el) {
     if (am.elements[el].rigid) return;  // an element following a rigid body has no points
     const elements::BeamProperties* beam = am.elements[el].section.beam;
-    if (beam && !beam->output_points.empty()) add_rows(el, Rows::SectionPoints);
+    if ((beam && !beam->output_points.empty()) || am.elements[el].section.shell) add_rows(el, Rows::SectionPoints);
     add_rows(el, Rows::IntegrationPoints);
   };
   if (a.whole_model)

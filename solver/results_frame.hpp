@@ -25,9 +25,10 @@ struct FieldData {
   std::vector<std::int32_t> instance;
   /// INTEGRATION_POINT: 1-based integration point; ELEMENT_NODAL: 1-based local node.
   std::vector<std::int32_t> ip;
-  /// INTEGRATION_POINT fields with beams (S, E, LE): the section point of each beam location
-  /// (elements/beam_section_points.hpp), 0 elsewhere; empty when no location is a beam's. Shells
-  /// keep their section points in `ip` (SNEG then SPOS at each point, shell_elements.hpp).
+  /// INTEGRATION_POINT fields at beams' or shells' section points (S, E, LE; a shell's PE, PEEQ,
+  /// PEMAG too): the section point of each such location (elements/beam_section_points.hpp; a
+  /// shell's from 1 = SNEG up, shell_elements.hpp), 0 elsewhere; empty when there is none. `ip`
+  /// is then the (in-plane) integration point.
   std::vector<std::int32_t> section_point;
   /// Contact fields: rows of the contact pair table (one location per slave node per pair).
   std::vector<std::int32_t> pair;
@@ -62,7 +63,7 @@ struct PrintTable {
   std::vector<std::string> columns;  ///< U1 U2 U3, RF1.., COORD1.., S11.., E11.., MISES
   std::vector<std::int64_t> labels;  ///< node or element label of each row
   std::vector<std::int32_t> ip;      ///< element tables at integration points: 1-based point
-  bool at_section_points = false;  ///< a beam table of S and E: a SEC PT column
+  bool at_section_points = false;  ///< a beam's or shell's table of S and E: a SEC PT column
   std::vector<std::int32_t> section_point;  ///< at_section_points: the section point of each row
   std::vector<double> values;        ///< rows × columns, row-major
   bool summary = true;      ///< SUMMARY=YES: MAXIMUM / MINIMUM lines under each column

@@ -337,7 +337,9 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     const double xi = q.xi[0], eta = q.xi[1];
     const double t_here = point_thickness(geo, xi, eta);
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
-    std::array<PointResult, 2> surfaces{};  // SNEG, SPOS
+    // The reported section points (section.output_points, SNEG first) go to out.points from here.
+    const std::size_t first_reported = out.points.size();
+    std::size_t next_reported = 0;
     double temperature = 0.0, gradient = 0.0;  // ΔT on the reference surface and Δ(∂T/∂n) here
     for (std::size_t k = 0; k < section.zeta.size(); ++k) {
       const double zeta = section.zeta[k];
@@ -390,9 +392,11 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       const double dz = section.weight[k] * t_here / 2, zm = zeta * t_here / 2;
       const double in_plane[3] = {stress[0], stress[1], stress[2]};
       for (int c = 0; c < 3; ++c) section_force[c] += in_plane[c] * dz, section_force[3 + c] += in_plane[c] * zm * dz;
-      if (request.point_output && (k == 0 || k + 1 == section.zeta.size())) {
+      if (request.point_output && next_reported < section.output_points.size() &&
+          section.output_points[next_reported] == static_cast<int>(k)) {
         // In the layer's material axes, as Abaqus reports an oriented or layered section.
-        PointResult& r = surfaces[k == 0 ? 0 : 1];
+        ++next_reported;
+        PointResult& r = out.points.emplace_back();
         r.coords = p.x;
         const std::array<double, 5> s_m = stresses_in_material_axes(stress, theta);
         const std::array<double, 5> e_m = strains_in_material_axes(strain, theta);
@@ -404,10 +408,9 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     if (!request.point_output) continue;
     const CovariantPoint mid = covariant_point(geo, xi, eta, 0.0);
     const double da = q.weight * norm(cross(mid.g[0], mid.g[1]));
-    for (PointResult& r : surfaces) {
-      r.volume = da * t_here / 2;
-      r.section = section_force;
-      out.points.push_back(r);
+    for (std::size_t j = first_reported; j < out.points.size(); ++j) {
+      out.points[j].volume = da * t_here / static_cast<double>(next_reported);
+      out.points[j].section = section_force;
     }
   }
   add_drilling(geo, 1e-4 * section_bending_stiffness(section, geo.mean_thickness()), u, out);

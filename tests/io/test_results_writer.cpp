@@ -10,6 +10,7 @@
 
 #include "h5_read.hpp"
 #include "io/results_reader.hpp"
+#include "io/results_view.hpp"
 #include "io/results_writer.hpp"
 #include "io_fixture.hpp"
 #include "sample_jobs.hpp"
@@ -486,4 +487,40 @@ TEST(ResultsWriter, StepHoldsTheContactInteractionsAsTheAnalysisEnforcesThem) {
   w.finish(io::RunStatus::Completed);
   H5Reader f(h5.string());
   EXPECT_EQ(f.strings("/steps/" + m.steps.at(0).name + "/contact_interactions"), lines);
+}
+
+// A shell's S varies through its thickness: the view gives one cell array per section point
+// (S_SP<k>, the mean over the element's in-plane points at that section point, and its von
+// Mises), and leaves S itself empty on shells, whose mean over SNEG and SPOS would hide bending.
+TEST(ResultsView, ShellsGetOneCellArrayPerSectionPoint) {
+  TempDir dir;
+  const auto m = read_model(dir, "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 2., 0., 0.\n"
+                                 "6, 2., 1., 0.\n*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n2, 2, 5, 6, 3\n"
+                                 "*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*SHELL SECTION, ELSET=PLATE, MATERIAL=M\n0.1\n"
+                                 "*STEP\n*STATIC\n*END STEP\n");
+  solver::FieldData s;
+  s.key = "S";
+  s.position = solver::Position::IntegrationPoint;
+  s.component_labels = {"S11", "S22", "S33", "S12", "S13", "S23"};
+  // Element 1 at in-plane points 1 and 2, element 2 at point 1: SNEG (1) and SPOS (5) each.
+  s.elements = {1, 1, 1, 1, 2, 2};
+  s.ip = {1, 1, 2, 2, 1, 1};
+  s.section_point = {1, 5, 1, 5, 1, 5};
+  const double s11[] = {-10, 10, -20, 20, -30, 30};
+  for (double v : s11) s.values.insert(s.values.end(), {v, 0, 0, 0, 0, 0});
+  solver::Frame frame;
+  frame.fields.push_back(s);
+  const auto arrays = io::build_view_arrays(m, frame, dir / "job.h5");
+  auto array = [&](const std::string& name) -> const io::ViewArray* {
+    for (const auto& a : arrays)
+      if (a.name == name) return &a;
+    return nullptr;
+  };
+  const io::ViewArray* sneg = array("S_SP1");
+  const io::ViewArray* spos = array("S_SP5");
+  ASSERT_TRUE(sneg && spos && array("S_SP1_Mises") && array("S"));
+  EXPECT_DOUBLE_EQ(sneg->values[0], -15.0);  // cell 0, XX: the mean of −10 and −20
+  EXPECT_DOUBLE_EQ(spos->values[6], 30.0);   // cell 1, XX
+  EXPECT_DOUBLE_EQ(array("S_SP1_Mises")->values[1], 30.0);
+  EXPECT_TRUE(std::isnan(array("S")->values[0]));
 }

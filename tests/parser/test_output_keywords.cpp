@@ -116,6 +116,27 @@ TEST(Output, UnknownVariableSuggestsTheClosestName) {
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:28:8: error: *EL PRINT: unknown element output variable 'SXX'")) << r.report();
 }
 
+// *ELEMENT OUTPUT's optional first data line of section point numbers (Abaqus: up to 16 on it):
+// sorted and unique; a request without it keeps the default (empty).
+TEST(Output, ElementOutputReadsASectionPointLine) {
+  DeckDir dir;
+  auto r = dir.read(cube_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\n5, 1, 3, 3\nS, E\n*ELEMENT OUTPUT\nS\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& out = r.model.steps[0].output;
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].section_points, (std::vector<int>{1, 3, 5}));
+  EXPECT_EQ(out[0].variables, (std::vector<std::string>{"S", "E"}));
+  EXPECT_TRUE(out[1].section_points.empty());
+  auto bad = dir.read(cube_step("*OUTPUT, FIELD\n*ELEMENT OUTPUT\n0, 2.5\nS\n*ELEMENT OUTPUT\n"
+                                "1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17\nS\n"));
+  EXPECT_TRUE(has_diagnostic(bad, "deck.inp:24:1: error: *ELEMENT OUTPUT: a section point is a positive integer, found '0'"))
+      << bad.report();
+  EXPECT_TRUE(has_diagnostic(bad, "error: *ELEMENT OUTPUT: a section point is a positive integer, found '2.5'"))
+      << bad.report();
+  EXPECT_TRUE(has_diagnostic(bad, "deck.inp:27:56: error: *ELEMENT OUTPUT: at most 16 section points on a line"))
+      << bad.report();
+}
+
 TEST(Output, SubOptionsNeedOutputAndEveryRequestIsStepData) {
   DeckDir dir;
   auto r = dir.read(cube_step("*NODE OUTPUT\nU\n*OUTPUT\n*OUTPUT, FIELD\n*NODE OUTPUT, NSET=NOPE\nU\n*ELEMENT OUTPUT\n"

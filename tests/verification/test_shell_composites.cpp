@@ -9,7 +9,10 @@
 // minus P L h² / (12 b D*) for S4, whose elements are one-point Timoshenko beams (test_shells.cpp).
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 
+#include "fixtures/deck_fixture.hpp"
 #include "verification_fixture.hpp"
 
 namespace inpact::verification {
@@ -117,10 +120,47 @@ TEST(ShellComposites, StressesAreReportedInThePlyAxes) {
   const std::size_t n = s->component_labels.size();
   ASSERT_EQ(s->elements.size() % 2, 0u);
   for (std::size_t i = 0; i < s->elements.size(); i += 2) {  // SNEG, then SPOS of each point
+    ASSERT_EQ(s->section_point[i], 1);
+    ASSERT_EQ(s->section_point[i + 1], 6);  // two plies of three points
     const double bottom = s->values[n * i], top11 = s->values[n * (i + 1)], top22 = s->values[n * (i + 1) + 1];
     EXPECT_NEAR(top11, 0.0, 1e-9 * std::abs(bottom)) << i;
     EXPECT_NEAR(top22 / bottom, expected_ratio, 1e-8) << i;
     EXPECT_NEAR(s->values[n * i + 3], 0.0, 1e-8 * std::abs(bottom)) << i;
+  }
+}
+
+// The inner plies, asked for at their middles (points 2, 5, 8, 11 of [0/90/90/0], three points
+// a ply), as Abaqus's manual shows it: the strip bends without membrane strain (symmetric, ν12 =
+// 0), so each ply carries Q κ z in its own axes. The 0° plies' S11 = E1 κ z (S22 = 0), the 90°
+// plies' S22 = E2 κ z (S11 = 0): at one in-plane point S22(5)/S11(2) = E2 z5 / (E1 z2) = E2/(3 E1),
+// S11(11) = −S11(2) and S22(8) = −S22(5).
+TEST(ShellComposites, InnerPliesAreReportedAtTheSectionPointsAskedFor) {
+  std::ifstream in(laminate_deck("S8R", 5, "cross"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  deck.insert(deck.rfind("*END STEP"), "*OUTPUT, FIELD\n*ELEMENT OUTPUT\n2, 5, 8, 11\nS\n");
+  const test::DeckDir dir;
+  const auto r = run_deck(dir.write("deck.inp", deck));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto* s = field(r->capture.last(), "S");
+  ASSERT_TRUE(s);
+  const std::size_t n = s->component_labels.size();
+  ASSERT_EQ(s->elements.size(), 5u * 4 * 4);  // 5 elements, 2 × 2 points, 4 section points
+  for (std::size_t i = 0; i < s->elements.size(); i += 4) {
+    ASSERT_EQ(s->section_point[i], 2);
+    ASSERT_EQ(s->section_point[i + 3], 11);
+    const double* sp2 = &s->values[n * i];
+    const double* sp5 = &s->values[n * (i + 1)];
+    const double* sp8 = &s->values[n * (i + 2)];
+    const double* sp11 = &s->values[n * (i + 3)];
+    const double scale = std::abs(sp2[0]);
+    EXPECT_GT(scale, 0.0);
+    EXPECT_NEAR(sp2[1], 0.0, 1e-9 * scale);
+    EXPECT_NEAR(sp5[0], 0.0, 1e-9 * scale);
+    EXPECT_NEAR(sp5[1] / sp2[0], kE2 / (3 * kE1), 1e-8) << i;
+    EXPECT_NEAR(sp11[0], -sp2[0], 1e-9 * scale) << i;
+    EXPECT_NEAR(sp8[1], -sp5[1], 1e-9 * scale) << i;
   }
 }
 

@@ -6,6 +6,7 @@
 // thin strip held at one corner) and 1e-9 of the stress.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "fixtures/deck_fixture.hpp"
@@ -110,10 +111,54 @@ TEST(ShellTemperature, AHeldStripCarriesTheThermalStressThroughItsThickness) {
     const solver::FieldData& s = *field(*r->capture.of_step(1).back(), "S");
     const std::size_t n = s.component_labels.size();
     for (std::size_t i = 0; i < s.elements.size(); ++i) {
-      const double z = s.ip[i] % 2 == 1 ? -kT / 2 : kT / 2;  // SNEG then SPOS at each point
+      ASSERT_TRUE(s.section_point[i] == 1 || s.section_point[i] == 5) << s.section_point[i];  // SNEG, SPOS
+      const double z = s.section_point[i] == 1 ? -kT / 2 : kT / 2;
       const double expected = -kE * kAlpha * (50 + z * 100) / (1 - kNu);
       EXPECT_NEAR(s.values[i * n + 0], expected, 1e-9 * std::abs(expected)) << type << " ip " << s.ip[i];
       EXPECT_NEAR(s.values[i * n + 1], expected, 1e-9 * std::abs(expected)) << type << " ip " << s.ip[i];
+    }
+  }
+}
+
+// *ELEMENT OUTPUT with a section-point line reports those points, numbered from SNEG (1) to SPOS
+// (5) through the default five: the same closed form at z = t (k − 3)/4, and at each in-plane
+// point exactly the points asked for, in order. *EL PRINT keeps Abaqus's default, SNEG and SPOS.
+TEST(ShellTemperature, SectionPointsAskedForAreReportedThroughTheThickness) {
+  for (const std::string type : {"S4", "S8R"}) {
+    std::string deck = strip(type, "ALL, ENCASTRE\n", "50., 100.", 0.0);
+    const std::string asked = "*ELEMENT OUTPUT\nS\n";
+    deck.replace(deck.find(asked), asked.size(),
+                 "*ELEMENT OUTPUT\n2, 3, 4\nS\n*ELEMENT OUTPUT, ELSET=STRIP\n5, 7\nS\n");
+    const auto r = run_text(deck);
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::FieldData& s = *field(*r->capture.of_step(1).back(), "S");
+    const std::size_t n = s.component_labels.size(), in_plane = 4;  // 2 × 2 in-plane points
+    ASSERT_EQ(s.elements.size(), 10 * in_plane * 4) << type;  // points 2, 3, 4 and 5 of each
+    for (std::size_t i = 0; i < s.elements.size(); ++i) {
+      EXPECT_EQ(s.section_point[i], static_cast<std::int32_t>(2 + i % 4)) << type << " location " << i;
+      EXPECT_EQ(s.ip[i], static_cast<std::int32_t>(i / 4 % in_plane + 1)) << type << " location " << i;
+      const double z = kT * (s.section_point[i] - 3) / 4;
+      const double expected = -kE * kAlpha * (50 + z * 100) / (1 - kNu);
+      EXPECT_NEAR(s.values[i * n + 0], expected, 1e-9 * std::abs(expected)) << type << " sp " << s.section_point[i];
+    }
+    // A point no section has (7 of 5) is said once, not silently dropped.
+    EXPECT_EQ(std::count_if(r->capture.messages.begin(), r->capture.messages.end(),
+                            [](const std::string& m) {
+                              return m.find("element output at section point 7 (no shell or beam section has it)") !=
+                                     std::string::npos;
+                            }),
+              1);
+    // The .dat table: SNEG and SPOS at each in-plane point, S11 of the closed form.
+    const solver::PrintTable* table = nullptr;
+    for (const auto& t : r->capture.prints.back().tables)
+      if (t.at_section_points && t.element_type == type) table = &t;
+    ASSERT_TRUE(table) << type;
+    ASSERT_EQ(table->section_point.size(), 10 * in_plane * 2) << type;
+    for (std::size_t row = 0; row < table->section_point.size(); ++row) {
+      const std::int32_t sp = table->section_point[row];
+      ASSERT_TRUE(sp == 1 || sp == 5) << sp;
+      const double expected = -kE * kAlpha * (50 + (sp == 1 ? -kT / 2 : kT / 2) * 100) / (1 - kNu);
+      EXPECT_NEAR(table->values[row * table->columns.size()], expected, 1e-9 * std::abs(expected)) << type;
     }
   }
 }
