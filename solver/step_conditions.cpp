@@ -95,10 +95,12 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
         target_.dload[key] = {magnitude, e.direction, e.point, b.amplitude, magnitude};
       }
   }
+  bool temperatures_renewed = false;
   for (const auto& b : step.temperatures) {
     if (b.op == model::Op::New) {
       target_.temperature.clear();
       target_.temperature_gradient.clear();
+      temperatures_renewed = true;
     }
     for (const auto& e : b.entries)
       for (std::int32_t n : e.nodes) {
@@ -109,6 +111,7 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
           target_.temperature_gradient[n] = {g, b.amplitude, g};
       }
   }
+  if (temperatures_renewed) return_removed_temperatures();
 
   prescribed_.assign(am.n_dof(), 0);
   for (const auto& [d, v] : target_.boundary) prescribed_[d] = 1;
@@ -312,6 +315,23 @@ void StepConditions::nodal_change(const std::map<std::int32_t, ConditionHistory:
     const double value = now ? value_at(prev, now, t) : prev->end_value;
     out[n] = value - (initial.empty() ? 0.0 : initial[n]);
   }
+}
+
+/// [K *TEMPERATURE, OP]: "a temperature that is removed via OP=NEW is reset to the value given on
+/// the INITIAL CONDITIONS option or to zero if no initial temperature was defined", following the
+/// step's own amplitude (a ramp in a static step), not the AMPLITUDE of the new lines. The
+/// gradient through a shell's thickness likewise.
+void StepConditions::return_removed_temperatures() {
+  auto reset = [](const std::map<std::int32_t, ConditionHistory::Value>& before,
+                  std::map<std::int32_t, ConditionHistory::Value>& now, std::span<const double> initial) {
+    for (const auto& [n, v] : before)
+      if (!now.count(n)) {
+        const double back = initial.empty() ? 0.0 : initial[static_cast<std::size_t>(n)];
+        now[n] = {back, "", back};
+      }
+  };
+  reset(previous_.temperature, target_.temperature, am_.initial_temperature);
+  reset(previous_.temperature_gradient, target_.temperature_gradient, am_.initial_temperature_gradient);
 }
 
 std::vector<double> StepConditions::temperature_change(double t) const {

@@ -104,6 +104,8 @@ class StepConditions {
  private:
   double ramp(double t) const;
   double amplitude(const std::string& name, double t) const;
+  /// OP=NEW: the temperatures it removed return to their initial values over the step.
+  void return_removed_temperatures();
   /// The change at step time t of a nodal field (temperature_change).
   void nodal_change(const std::map<std::int32_t, ConditionHistory::Value>& previous,
                     const std::map<std::int32_t, ConditionHistory::Value>& target, std::span<const double> initial,

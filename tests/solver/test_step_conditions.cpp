@@ -114,3 +114,47 @@ TEST(StepConditions, FixedHoldsTheStepStartValue) {
   s3.apply_prescribed(0.5, u_start, u);
   EXPECT_DOUBLE_EQ(u[dof(7, 3)], 0.125 + 0.5 * (0.5 - 0.125)) << "redefined: ramps from where it was";
 }
+
+// *TEMPERATURE, OP=NEW removes the earlier temperatures: a node it does not give again returns to
+// its *INITIAL CONDITIONS value (0 where none), over the step by the step's own ramp, whatever
+// AMPLITUDE the new lines name [K *TEMPERATURE, OP]; and it stays there in the next step.
+TEST(StepConditions, TemperaturesRemovedByOpNewRampBackToTheirInitialValues) {
+  DeckDir dir;
+  auto r = dir.read(one_cube_deck(R"(*AMPLITUDE, NAME=HOLD
+0., 1., 1., 1.
+*INITIAL CONDITIONS, TYPE=TEMPERATURE
+1, 20.
+*STEP
+*STATIC
+*TEMPERATURE
+1, 100.
+2, 60.
+3, 40.
+*END STEP
+*STEP
+*STATIC
+*TEMPERATURE, OP=NEW, AMPLITUDE=HOLD
+3, 80.
+*END STEP
+*STEP
+*STATIC
+*END STEP
+)"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto am = solver::build_analysis_model(r.model);
+  solver::StepConditions s1(am, r.model.steps[0], solver::initial_history(am), 0.0);
+  const auto h1 = s1.end_state(std::vector<double>(am.n_dof(), 0.0));
+  solver::StepConditions s2(am, r.model.steps[1], h1, 1.0);
+  auto dt = s2.temperature_change(0.5);  // T − T_initial, T_initial = 20 at node 1, 0 elsewhere
+  EXPECT_DOUBLE_EQ(dt[0], 40.0);  // node 1: 100 → 20, half way: 60
+  EXPECT_DOUBLE_EQ(dt[1], 30.0);  // node 2: 60 → 0, half way
+  EXPECT_DOUBLE_EQ(dt[2], 80.0);  // node 3: given again, at once by HOLD
+  dt = s2.temperature_change(1.0);
+  EXPECT_DOUBLE_EQ(dt[0], 0.0);
+  EXPECT_DOUBLE_EQ(dt[1], 0.0);
+  solver::StepConditions s3(am, r.model.steps[2], s2.end_state(std::vector<double>(am.n_dof(), 0.0)), 2.0);
+  dt = s3.temperature_change(0.5);
+  EXPECT_DOUBLE_EQ(dt[0], 0.0);
+  EXPECT_DOUBLE_EQ(dt[1], 0.0);
+  EXPECT_DOUBLE_EQ(dt[2], 80.0);
+}
