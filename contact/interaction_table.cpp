@@ -205,6 +205,13 @@ void add_all_exterior(GeneralRows& g, const model::GeneralContact::Inclusion& in
   for (auto* s : body_surfaces) names.push_back(s->name);
   g.t.notes.push_back(fmt::format("{}: general contact: self-contact within a body is not searched ({} bodies: {})",
                                   g.m.sources.describe(inc.loc), body_surfaces.size(), fmt::join(names, ", ")));
+  // Beams have no faces: Abaqus's general contact takes their surfaces, inpact's does not yet.
+  const auto& types = g.m.mesh.elements.type;
+  const auto beams = std::count_if(types.begin(), types.end(), [](std::uint8_t t) { return model::is_beam(model::element_type(t)); });
+  if (beams > 0)
+    g.t.notes.push_back(fmt::format("{}: general contact: the {} beam elements are not in ALL EXTERIOR (they have no "
+                                    "faces here); their contact needs a *CONTACT PAIR with a node-based slave surface",
+                                    g.m.sources.describe(inc.loc), beams));
 }
 
 /// Self-contact of a named surface: one row, weight ½.

@@ -358,8 +358,9 @@ bool on_shells(const model::Model& m, const model::Surface& s) {
 
 }  // namespace
 
-/// ALL EXTERIOR is made of the solids' exterior faces: a shell's faces are not among them yet, so
-/// a model with shells would lose their contact without a word.
+/// ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the solids' exterior
+/// faces: a shell's faces are not among them yet, so a model with shells would lose their contact
+/// without a word.
 void check_all_exterior_without_shells(const model::Model& m) {
   if (!m.general_contact.defined) return;
   const auto& types = m.mesh.elements.type;
@@ -367,11 +368,13 @@ void check_all_exterior_without_shells(const model::Model& m) {
                                     [](std::uint8_t t) { return model::is_shell(model::element_type(t)); });
   if (shells == 0) return;
   for (const model::GeneralContact::Inclusion& inc : m.general_contact.inclusions)
-    if (inc.first.empty() && inc.second.empty())
+    if (inc.first.empty() || inc.second.empty())
       refuse(m, inc.loc, "*CONTACT INCLUSIONS",
-             fmt::format("ALL EXTERIOR would leave out the model's {} shell elements: general contact with shells is "
-                         "not supported yet; name the solids' surfaces in the inclusions, and use *CONTACT PAIR for "
+             fmt::format("{} would leave out the model's {} shell elements: general contact with shells is not "
+                         "supported yet; name the solids' surfaces in the inclusions, and use *CONTACT PAIR for "
                          "contact on the shells' faces",
+                         inc.first.empty() && inc.second.empty() ? "ALL EXTERIOR" : "the exterior surface (an empty "
+                                                                                   "field)",
                          shells));
 }
 

@@ -43,6 +43,22 @@ TEST(GeneralContactTable, AllExteriorPairsTheTwoBodiesBothWaysWithHalfWeight) {
   EXPECT_NE(t->notes[0].find("self-contact within a body is not searched"), std::string::npos);
 }
 
+// Beams have no faces: ALL EXTERIOR leaves them out, and a note says so and how to reach them.
+TEST(GeneralContactTable, AllExteriorNotesTheBeamsItLeavesOut) {
+  const DeckDir dir;
+  const auto r = dir.read(one_cube_deck("*NODE\n101, 3., 0., 0.\n102, 4., 0., 0.\n103, 5., 0., 0.\n"
+                                        "*ELEMENT, TYPE=B31, ELSET=BEAM\n101, 101, 102\n102, 102, 103\n"
+                                        "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=CIRC\n0.1\n0., 0., 1.\n"
+                                        "*CONTACT\n*CONTACT INCLUSIONS, ALL EXTERIOR\n"));
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto t = contact::interaction_table(r.model);
+  ASSERT_EQ(t->notes.size(), 2u);
+  EXPECT_NE(t->notes[1].find("general contact: the 2 beam elements are not in ALL EXTERIOR (they have no faces "
+                             "here); their contact needs a *CONTACT PAIR with a node-based slave surface"),
+            std::string::npos)
+      << t->notes[1];
+}
+
 TEST(GeneralContactTable, DirectEnforcementMakesOneRowWithTheFinerSurfaceAsSlave) {
   const DeckDir dir;
   const auto r = dir.read(general_deck("*SURFACE INTERACTION, NAME=SMOOTH\n",

@@ -335,26 +335,33 @@ TEST(Shells, TwistedBeam) {
   run_benchmark({"twisted", "CENTRE", 1, 1.294e-3, "S4", {2, 4}, 0.02}, true, 2);
 }
 
-// General contact's ALL EXTERIOR is made of the solids' faces; with shells in the model it would
-// leave their contact out without a word, so it is a deck error at the inclusion's line.
-TEST(Shells, AllExteriorInAModelWithShellsIsRefused) {
-  const auto path = edited_deck("shell_on_block_spos_s4.inp", "shell-all-exterior", [](const std::string& line) {
-    if (line.starts_with("*CONTACT PAIR"))
-      return std::vector<std::string>{"*CONTACT", "*CONTACT INCLUSIONS, ALL EXTERIOR", "*CONTACT PROPERTY ASSIGNMENT",
-                                      ", , HARD"};
-    if (line == "UNDERSIDE, TOP") return std::vector<std::string>{};
-    return std::vector<std::string>{line};
-  });
-  std::string message;
-  try {
-    message = run_deck(path.string())->outcome.message;
-  } catch (const std::exception& e) {
-    message = e.what();
+// General contact's ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the
+// solids' faces; with shells in the model they would leave their contact out without a word, so
+// each is a deck error at the inclusion's line.
+TEST(Shells, GeneralContactOnTheExteriorInAModelWithShellsIsRefused) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"*CONTACT INCLUSIONS, ALL EXTERIOR"}, "ALL EXTERIOR would leave out the model's 16 shell elements"},
+      {{"*CONTACT INCLUSIONS", ", TOP"}, "the exterior surface (an empty field) would leave out the model's 16 shell"}};
+  for (const auto& [inclusion, expected] : cases) {
+    const auto path = edited_deck("shell_on_block_spos_s4.inp", "shell-exterior", [&](const std::string& line) {
+      if (line.starts_with("*CONTACT PAIR")) {
+        std::vector<std::string> out{"*CONTACT"};
+        out.insert(out.end(), inclusion.begin(), inclusion.end());
+        out.insert(out.end(), {"*CONTACT PROPERTY ASSIGNMENT", ", , HARD"});
+        return out;
+      }
+      if (line == "UNDERSIDE, TOP") return std::vector<std::string>{};
+      return std::vector<std::string>{line};
+    });
+    std::string message;
+    try {
+      message = run_deck(path.string())->outcome.message;
+    } catch (const std::exception& e) {
+      message = e.what();
+    }
+    std::filesystem::remove(path);
+    EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: " + expected), std::string::npos) << message;
   }
-  std::filesystem::remove(path);
-  EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: ALL EXTERIOR would leave out the model's 16 shell elements"),
-            std::string::npos)
-      << message;
 }
 
 }  // namespace
