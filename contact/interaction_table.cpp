@@ -205,13 +205,20 @@ void add_all_exterior(GeneralRows& g, const model::GeneralContact::Inclusion& in
   for (auto* s : body_surfaces) names.push_back(s->name);
   g.t.notes.push_back(fmt::format("{}: general contact: self-contact within a body is not searched ({} bodies: {})",
                                   g.m.sources.describe(inc.loc), body_surfaces.size(), fmt::join(names, ", ")));
-  // Beams have no faces: Abaqus's general contact takes their surfaces, inpact's does not yet.
+  // Beams have no faces, and shells' are not taken yet: Abaqus's general contact includes both.
+  // (A model with shells gets here only when a *CONTACT PAIR is on them: check_contact_supported.)
   const auto& types = g.m.mesh.elements.type;
-  const auto beams = std::count_if(types.begin(), types.end(), [](std::uint8_t t) { return model::is_beam(model::element_type(t)); });
-  if (beams > 0)
+  auto count = [&](bool (*of_kind)(const model::ElementTypeInfo&)) {
+    return std::count_if(types.begin(), types.end(), [&](std::uint8_t t) { return of_kind(model::element_type(t)); });
+  };
+  if (const auto beams = count(model::is_beam); beams > 0)
     g.t.notes.push_back(fmt::format("{}: general contact: the {} beam elements are not in ALL EXTERIOR (they have no "
                                     "faces here); their contact needs a *CONTACT PAIR with a node-based slave surface",
                                     g.m.sources.describe(inc.loc), beams));
+  if (const auto shells = count(model::is_shell); shells > 0)
+    g.t.notes.push_back(fmt::format("{}: general contact: the {} shell elements are not in ALL EXTERIOR (general "
+                                    "contact with shells is not supported yet); their contact is the *CONTACT PAIRs'",
+                                    g.m.sources.describe(inc.loc), shells));
 }
 
 /// Self-contact of a named surface: one row, weight ½.

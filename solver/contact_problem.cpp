@@ -359,14 +359,24 @@ bool on_shells(const model::Model& m, const model::Surface& s) {
 }  // namespace
 
 /// ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the solids' exterior
-/// faces: a shell's faces are not among them yet, so a model with shells would lose their contact
-/// without a word.
+/// faces: a shell's faces are not among them yet, so a model with shells and no *CONTACT PAIR on
+/// them would lose their contact without a word.
 void check_all_exterior_without_shells(const model::Model& m) {
   if (!m.general_contact.defined) return;
   const auto& types = m.mesh.elements.type;
   const auto shells = std::count_if(types.begin(), types.end(),
                                     [](std::uint8_t t) { return model::is_shell(model::element_type(t)); });
   if (shells == 0) return;
+  // A *CONTACT PAIR on shell faces says where the shells' contact is: general contact may then
+  // take the solids (a note in the interaction table says what it leaves out).
+  auto pair_on_shells = [&](const model::ContactPair& p) {
+    for (const std::string* name : {&p.slave, &p.master})
+      if (auto it = m.mesh.surfaces.find(*name); it != m.mesh.surfaces.end() && on_shells(m, it->second)) return true;
+    return false;
+  };
+  if (std::any_of(m.contact_pairs.begin(), m.contact_pairs.end(), pair_on_shells)) return;
+  for (const model::Step& step : m.steps)
+    if (std::any_of(step.contact_pairs.begin(), step.contact_pairs.end(), pair_on_shells)) return;
   for (const model::GeneralContact::Inclusion& inc : m.general_contact.inclusions)
     if (inc.first.empty() || inc.second.empty())
       refuse(m, inc.loc, "*CONTACT INCLUSIONS",

@@ -993,9 +993,19 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
     const auto& points = cache.of(el);
     const elements::ShellProperties* shell = am.elements[el].section.shell;
     const std::size_t stride = shell ? shell->output_points.size() : 1;  // a shell's: one per in-plane point
-    if (centroid) row(centroid_of(points), 0, 0);
-    else
-      for (std::size_t p = 0; p < points.size(); p += stride) row(points[p], static_cast<std::int32_t>(p / stride + 1), 0);
+    if (centroid) {
+      row(centroid_of(points), 0, 0);
+      return;
+    }
+    for (std::size_t p = 0; p < points.size(); p += stride) {
+      if (stride == 1) {
+        row(points[p], static_cast<std::int32_t>(p + 1), 0);
+        continue;
+      }
+      elements::PointResult mid = points[p];  // a shell's in-plane point: halfway between SNEG and SPOS
+      for (int c = 0; c < 3; ++c) mid.coords[c] = 0.5 * (points[p].coords[c] + points[p + stride - 1].coords[c]);
+      row(mid, static_cast<std::int32_t>(p / stride + 1), 0);
+    }
   };
   auto add = [&](std::size_t el) {
     if (am.elements[el].rigid) return;  // an element following a rigid body has no points

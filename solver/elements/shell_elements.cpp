@@ -408,8 +408,12 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     if (!request.point_output) continue;
     const CovariantPoint mid = covariant_point(geo, xi, eta, 0.0);
     const double da = q.weight * norm(cross(mid.g[0], mid.g[1]));
+    // SNEG and SPOS stand for half the volume each, the other reported points for none: what is
+    // computed from the points' volumes (ALLSE, centroids, the stabilisation's lumped mass) then
+    // does not depend on which section points an output request asks for.
     for (std::size_t j = first_reported; j < out.points.size(); ++j) {
-      out.points[j].volume = da * t_here / static_cast<double>(next_reported);
+      const bool surface = j == first_reported || j + 1 == out.points.size();
+      out.points[j].volume = surface ? da * t_here / 2 : 0.0;
       out.points[j].section = section_force;
     }
   }

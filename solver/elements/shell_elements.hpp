@@ -35,7 +35,8 @@
 /// (slots 0, 1, 3; the transverse shears are not reported) in that point's layer's material axes
 /// (the local axes for a section neither oriented nor turned), strain likewise (γ12), and
 /// PointResult::section SF1..SF3 = N11, N22, N12 and SM1..SM3 = M11, M22, M12 per unit length,
-/// about the midsurface, the same at each; volume = t·dA shared between them.
+/// about the midsurface, the same at each; volume = t·dA/2 at SNEG and at SPOS and 0 at the
+/// others, so that nothing computed from the volumes depends on the output request.
 #include <span>
 
 #include "element_kernel.hpp"

@@ -335,35 +335,6 @@ TEST(Shells, TwistedBeam) {
   run_benchmark({"twisted", "CENTRE", 1, 1.294e-3, "S4", {2, 4}, 0.02}, true, 2);
 }
 
-// General contact's ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the
-// solids' faces; with shells in the model they would leave their contact out without a word, so
-// each is a deck error at the inclusion's line.
-TEST(Shells, GeneralContactOnTheExteriorInAModelWithShellsIsRefused) {
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"*CONTACT INCLUSIONS, ALL EXTERIOR"}, "ALL EXTERIOR would leave out the model's 16 shell elements"},
-      {{"*CONTACT INCLUSIONS", ", TOP"}, "the exterior surface (an empty field) would leave out the model's 16 shell"}};
-  for (const auto& [inclusion, expected] : cases) {
-    const auto path = edited_deck("shell_on_block_spos_s4.inp", "shell-exterior", [&](const std::string& line) {
-      if (line.starts_with("*CONTACT PAIR")) {
-        std::vector<std::string> out{"*CONTACT"};
-        out.insert(out.end(), inclusion.begin(), inclusion.end());
-        out.insert(out.end(), {"*CONTACT PROPERTY ASSIGNMENT", ", , HARD"});
-        return out;
-      }
-      if (line == "UNDERSIDE, TOP") return std::vector<std::string>{};
-      return std::vector<std::string>{line};
-    });
-    std::string message;
-    try {
-      message = run_deck(path.string())->outcome.message;
-    } catch (const std::exception& e) {
-      message = e.what();
-    }
-    std::filesystem::remove(path);
-    EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: " + expected), std::string::npos) << message;
-  }
-}
-
 }  // namespace
 }  // namespace inpact::verification
 
@@ -477,6 +448,52 @@ TEST(Shells, AShellMasterOfTwoThicknessesIsRefusedAtThePairsLine) {
                          "are at different distances from their nodes (0.1 and 0.05"),
             std::string::npos)
       << message;
+}
+
+// General contact's ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the
+// solids' faces; with shells in the model they would leave their contact out without a word, so
+// each is a deck error at the inclusion's line.
+TEST(Shells, GeneralContactOnTheExteriorInAModelWithShellsIsRefused) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"*CONTACT INCLUSIONS, ALL EXTERIOR"}, "ALL EXTERIOR would leave out the model's 16 shell elements"},
+      {{"*CONTACT INCLUSIONS", ", TOP"}, "the exterior surface (an empty field) would leave out the model's 16 shell"}};
+  for (const auto& [inclusion, expected] : cases) {
+    const auto path = edited_deck("shell_on_block_spos_s4.inp", "shell-exterior", [&](const std::string& line) {
+      if (line.starts_with("*CONTACT PAIR")) {
+        std::vector<std::string> out{"*CONTACT"};
+        out.insert(out.end(), inclusion.begin(), inclusion.end());
+        out.insert(out.end(), {"*CONTACT PROPERTY ASSIGNMENT", ", , HARD"});
+        return out;
+      }
+      if (line == "UNDERSIDE, TOP") return std::vector<std::string>{};
+      return std::vector<std::string>{line};
+    });
+    std::string message;
+    try {
+      message = run_deck(path.string())->outcome.message;
+    } catch (const std::exception& e) {
+      message = e.what();
+    }
+    std::filesystem::remove(path);
+    EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: " + expected), std::string::npos) << message;
+  }
+}
+
+// With a *CONTACT PAIR on the shells' faces, general contact may take the solids: the plate on the
+// block runs as with the pair alone, and a note says the shells are left to the pair.
+TEST(Shells, AllExteriorBesideAPairOnTheShellsRuns) {
+  const auto path = edited_deck("shell_on_block_spos_s4.inp", "shell-pair-and-general", [](const std::string& line) {
+    if (line == "UNDERSIDE, TOP")
+      return std::vector<std::string>{line, "*CONTACT", "*CONTACT INCLUSIONS, ALL EXTERIOR"};
+    return std::vector<std::string>{line};
+  });
+  const auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  expect_plate_on_block(*r, "pair beside ALL EXTERIOR", 1e-2, 1e-12);
+  EXPECT_TRUE(std::any_of(r->capture.messages.begin(), r->capture.messages.end(), [](const std::string& m) {
+    return m.find("general contact: the 16 shell elements are not in ALL EXTERIOR") != std::string::npos;
+  }));
 }
 
 }  // namespace
