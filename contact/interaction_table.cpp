@@ -43,13 +43,7 @@ std::vector<Body> bodies(const model::Model& m) {
   std::vector<std::int32_t> all(el.size());
   std::iota(all.begin(), all.end(), 0);
   std::map<std::int32_t, Body> by_root;
-  // A shell's two faces share their nodes, so neither counts as exterior by occurrence: both are
-  // its body's, as Abaqus's general contact takes both sides of a shell.
-  std::vector<model::Face> faces = model::exterior_faces(el, all);
-  for (std::size_t e = 0; e < el.size(); ++e)
-    if (model::is_shell(model::element_type(el.type[e])))
-      for (std::uint8_t side : {std::uint8_t{0}, std::uint8_t{1}}) faces.push_back({static_cast<std::int32_t>(e), side});
-  for (const model::Face& f : faces) {
+  for (const model::Face& f : model::exterior_faces(el, all)) {
     const std::int32_t root = comp.find(el.nodes_of(static_cast<std::size_t>(f.element))[0]);
     auto [it, fresh] = by_root.try_emplace(root, Body{root, el.labels[static_cast<std::size_t>(f.element)], {}});
     it->second.first_label = std::min(it->second.first_label, el.labels[static_cast<std::size_t>(f.element)]);
@@ -198,30 +192,7 @@ struct GeneralRows {
   }
   void once(const model::Surface* a, const model::Surface* b) {
     if (!first_time(a->name, b->name)) return;
-    if (const model::ContactPair* p = pair_between(*a, *b)) {
-      t.notes.push_back(fmt::format("{}: general contact between {} and {} is left to *CONTACT PAIR {}/{}",
-                                    m.sources.describe(m.general_contact.loc), a->name, b->name, p->slave, p->master));
-      return;
-    }
     add_general(m, t, a, b);
-  }
-  /// A *CONTACT PAIR (model or step data) with one surface on a's faces and the other on b's: it
-  /// takes precedence over general contact between them (both enforcing the same contact would
-  /// count it twice, or make a multiplier method's constraints redundant).
-  const model::ContactPair* pair_between(const model::Surface& a, const model::Surface& b) const {
-    auto on = [&](const std::string& name, const model::Surface& body) {
-      auto it = m.mesh.surfaces.find(name);
-      return it != m.mesh.surfaces.end() && shares_faces(it->second, body);
-    };
-    auto between = [&](const model::ContactPair& p) {
-      return (on(p.slave, a) && on(p.master, b)) || (on(p.slave, b) && on(p.master, a));
-    };
-    for (const model::ContactPair& p : m.contact_pairs)
-      if (between(p)) return &p;
-    for (const model::Step& step : m.steps)
-      for (const model::ContactPair& p : step.contact_pairs)
-        if (between(p)) return &p;
-    return nullptr;
   }
 };
 
@@ -234,13 +205,20 @@ void add_all_exterior(GeneralRows& g, const model::GeneralContact::Inclusion& in
   for (auto* s : body_surfaces) names.push_back(s->name);
   g.t.notes.push_back(fmt::format("{}: general contact: self-contact within a body is not searched ({} bodies: {})",
                                   g.m.sources.describe(inc.loc), body_surfaces.size(), fmt::join(names, ", ")));
-  // Beams have no faces: Abaqus's general contact takes their surfaces, inpact's does not yet.
+  // Beams have no faces, and shells' are not taken yet: Abaqus's general contact includes both.
+  // (A model with shells gets here only when a *CONTACT PAIR is on them: check_contact_supported.)
   const auto& types = g.m.mesh.elements.type;
-  const auto beams = std::count_if(types.begin(), types.end(), [](std::uint8_t t) { return model::is_beam(model::element_type(t)); });
-  if (beams > 0)
+  auto count = [&](bool (*of_kind)(const model::ElementTypeInfo&)) {
+    return std::count_if(types.begin(), types.end(), [&](std::uint8_t t) { return of_kind(model::element_type(t)); });
+  };
+  if (const auto beams = count(model::is_beam); beams > 0)
     g.t.notes.push_back(fmt::format("{}: general contact: the {} beam elements are not in ALL EXTERIOR (they have no "
                                     "faces here); their contact needs a *CONTACT PAIR with a node-based slave surface",
                                     g.m.sources.describe(inc.loc), beams));
+  if (const auto shells = count(model::is_shell); shells > 0)
+    g.t.notes.push_back(fmt::format("{}: general contact: the {} shell elements are not in ALL EXTERIOR (general "
+                                    "contact with shells is not supported yet); their contact is the *CONTACT PAIRs'",
+                                    g.m.sources.describe(inc.loc), shells));
 }
 
 /// Self-contact of a named surface: one row, weight ½.

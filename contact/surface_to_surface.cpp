@@ -1,9 +1,7 @@
 #include "surface_to_surface.hpp"
 
 #include <algorithm>
-#include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 #include "mortar_segments.hpp"
@@ -68,25 +66,6 @@ void add_point_hessian(const ExpandedTerms& terms, double c, const GapLinearizat
 
 }  // namespace
 
-namespace {
-
-/// Per facet, the other facet on the same nodes (a shell's other face), or −1.
-std::vector<std::int32_t> twin_facets(std::span<const Facet> facets) {
-  std::vector<std::int32_t> twin(facets.size(), -1);
-  std::map<std::vector<std::int32_t>, std::int32_t> first;
-  for (std::size_t i = 0; i < facets.size(); ++i) {
-    std::vector<std::int32_t> key(facets[i].node_rows().begin(), facets[i].node_rows().end());
-    std::sort(key.begin(), key.end());
-    auto [it, fresh] = first.try_emplace(std::move(key), static_cast<std::int32_t>(i));
-    if (fresh) continue;
-    twin[i] = it->second;
-    twin[static_cast<std::size_t>(it->second)] = static_cast<std::int32_t>(i);
-  }
-  return twin;
-}
-
-}  // namespace
-
 std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N) {
   if (shape != FacetShape::Tri6 && shape != FacetShape::Quad8) return N;
   const int nc = facet_n_corners(shape);
@@ -109,7 +88,6 @@ SurfaceToSurfacePair::SurfaceToSurfacePair(const model::Model& model, const mode
                                 "' is node based (use TYPE=NODE TO SURFACE)");
   points_.resize(slave_.facets().size());
   node_area_ = slave_.nodal_areas(reference_coordinates(model.mesh.nodes));
-  master_twin_ = twin_facets(master_.facets());
 }
 
 void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) {
@@ -132,7 +110,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
         const auto i = static_cast<std::size_t>(slave_.local_index(f.nodes[a]));
         const double w = pt.W[static_cast<std::size_t>(a)] * pt.da;
         out[i].area += w;
-        weighted_gap[i] += w * face_gap(pt);
+        weighted_gap[i] += w * pt.projection.gap;
         weighted_normal[i] = axpy(w, pt.projection.normal, weighted_normal[i]);
       }
     }
@@ -195,7 +173,6 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
     pt.projection =
         closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, master_boxes_);
-    on_front_twin(x, g.x, pt.projection);
     if (pt.projection.facet >= 0 && dot(g.n, pt.projection.normal) > -kOverlapCosine)
       project_onto_facing(x, g, candidates, pt.projection);
     const Projection& pr = pt.projection;
@@ -203,10 +180,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     // (judged on the faceted projection: beyond the master's free edge the idealised one
     // would look orthogonal too)
     pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine && projects_orthogonally(pr);
-    pt.face_distance = 0.0;
     if (!pt.overlaps) continue;
-    if (!slave_face_distance_.empty()) pt.face_distance += slave_face_distance_[fi];
-    if (!master_face_distance_.empty()) pt.face_distance += master_face_distance_[static_cast<std::size_t>(pr.facet)];
     const bool warm = pt.corrected_hint.facet == pt.projection.facet;
     pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
     pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
@@ -227,17 +201,8 @@ void SurfaceToSurfacePair::project_onto_facing(std::span<const Vec3> x, const Fa
   if (facing.empty()) return;
   const Projection q = closest_projection(master_.facets(), facing, x, g.x, nullptr, master_boxes_);
   if (q.facet < 0 || q.region != ProjectionRegion::Interior || dot(g.n, q.normal) > -kOverlapCosine) return;
-  if (master_twin_[static_cast<std::size_t>(q.facet)] >= 0) return;  // a shell's side: on_front_twin's
   const double half_size2 = 0.25 * master_boxes_[static_cast<std::size_t>(q.facet)].size2;
   if (q.gap < 0.0 && q.gap * q.gap < half_size2) p = q;
-}
-
-void SurfaceToSurfacePair::on_front_twin(std::span<const Vec3> x, const Vec3& xs, Projection& p) const {
-  if (p.facet < 0 || !(p.gap < 0.0)) return;
-  const std::int32_t twin = master_twin_[static_cast<std::size_t>(p.facet)];
-  if (twin < 0) return;
-  const std::int32_t only[1] = {twin};
-  p = closest_projection(master_.facets(), only, x, xs, nullptr, master_boxes_);
 }
 
 /// The slave node's own closest-point projection (for friction), kept in k.projection's facet,
@@ -250,21 +215,12 @@ void SurfaceToSurfacePair::project_node(std::span<const Vec3> x, SlaveKinematics
   if (self_contact_) drop_neighbours(master_.facets(), own, candidates);
   k.projection = closest_projection(master_.facets(), candidates, x, x[static_cast<std::size_t>(k.node)], nullptr,
                                     master_boxes_);
-  on_front_twin(x, x[static_cast<std::size_t>(k.node)], k.projection);
   // Friction acts where the node itself faces the master: beyond a free edge its closest point is
   // the edge, seen sideways (the distance turns tangential), and a slip measured there runs the
   // wrong way (a node whose faces overlap the master by a sliver got μ p against the slide).
   const Projection& pr = k.projection;
   k.friction_found = pr.facet >= 0 && projects_orthogonally(pr);
   if (k.friction_found) correct_master(x, x[static_cast<std::size_t>(k.node)], k.projection);
-}
-
-void SurfaceToSurfacePair::set_face_distances(std::vector<double> slave, std::vector<double> master) {
-  if ((!slave.empty() && slave.size() != slave_.facets().size()) ||
-      (!master.empty() && master.size() != master_.facets().size()))
-    throw std::invalid_argument("set_face_distances: one distance per facet");
-  slave_face_distance_ = std::move(slave);
-  master_face_distance_ = std::move(master);
 }
 
 void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave) {
@@ -374,7 +330,7 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
     for (const Point& pt : points_[static_cast<std::size_t>(fi)])
       if (pt.overlaps) {
         sum_w += pt.W[a] * pt.da;
-        sum_wg += pt.W[a] * pt.da * face_gap(pt);
+        sum_wg += pt.W[a] * pt.da * pt.projection.gap;
       }
   }
   if (!(sum_w > 0.0)) return;
@@ -400,7 +356,7 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
       }
       const std::vector<double>& grad = pt.smoothed_gradient;
       const std::vector<double>& dlnda = pt.log_area_gradient;
-      const double cw = c * (face_gap(pt) - g_node);
+      const double cw = c * (pt.projection.gap - g_node);
       const std::size_t ns = sf.n_nodes;
       for (std::size_t b = 0; b < ns; ++b)
         for (std::size_t j = 0; j < d; ++j)

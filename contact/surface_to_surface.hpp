@@ -95,12 +95,6 @@ class SurfaceToSurfacePair final : public PairKinematics {
   void set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave);
   bool smoothed() const { return !master_correction_.empty() || !slave_correction_.empty(); }
 
-  /// How far each facet's contact face lies from its nodes along its normal (per facet of the
-  /// slave and of the master; empty: 0): a shell's face, (½ ∓ o)·t (solver/shell_contact_offsets.hpp).
-  /// Each point's gap loses its slave facet's and its master facet's distance, so a node whose
-  /// facets lie on both faces of a shell, or a master of mixed faces, takes each point's own.
-  void set_face_distances(std::vector<double> slave, std::vector<double> master);
-
  private:
   /// One integration point of a slave facet at the last update.
   struct Point {
@@ -113,7 +107,6 @@ class SurfaceToSurfacePair final : public PairKinematics {
     ProjectionHint corrected_hint;  ///< the corrected projection's facet and ξ: the next correction's start
     bool overlaps = false;
     bool master_corrected = false;  ///< the projection was moved onto the master's idealised surface
-    double face_distance = 0.0;     ///< its slave and master facets' face distances: off its gap
     /// The point's gap linearised against its master facet: computed by the first linearize()
     /// of a slave node that needs it after an update(), and kept for the other nodes of the
     /// facet (linearize() runs on one thread, on the coordinates of the last update()).
@@ -141,15 +134,6 @@ class SurfaceToSurfacePair final : public PairKinematics {
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
   SurfaceCorrections master_correction_, slave_correction_;
-  std::vector<double> slave_face_distance_, master_face_distance_;  ///< set_face_distances()
-  /// Per master facet, the other face of the same shell (its nodes, turned), or −1. A point is on
-  /// the side of the face it lies in front of: behind one twin, it faces the other
-  /// (on_front_twin); a facing search never takes a twin (project_onto_facing).
-  std::vector<std::int32_t> master_twin_;
-  /// p, or its projection onto p's twin when the point lies behind p.
-  void on_front_twin(std::span<const Vec3> x, const Vec3& xs, Projection& p) const;
-  /// The point's gap less its facets' face distances.
-  static double face_gap(const Point& pt) { return pt.projection.gap - pt.face_distance; }
   /// Moves p onto the master's idealised surface for the slave point xs; whether it was corrected.
   bool correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
                       const std::array<double, 2>* start = nullptr) const;

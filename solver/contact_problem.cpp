@@ -263,10 +263,6 @@ std::unique_ptr<contact::PairKinematics> pair_geometry(const AnalysisModel& am, 
       s2s->set_geometric_correction(contact::build_corrections(m, contact::deck_surface_name(m, entry.master), named),
                                     contact::build_corrections(m, contact::deck_surface_name(m, entry.slave), named));
     }
-    // General contact's bodies take shells' faces where they lie, each point its own facets'
-    // (a pair's offsets are per slave node: shell_thickness_offsets, in the constructor).
-    if (entry.general)
-      s2s->set_face_distances(shell_face_distances(m, s2s->slave().facets()), shell_face_distances(m, s2s->master().facets()));
     geometry = std::move(s2s);
   } else {
     auto nts = std::make_unique<contact::NodeToSurfacePair>(m, *entry.slave, *entry.master, am.dim, r.thickness);
@@ -351,7 +347,49 @@ std::vector<std::string> ContactProblem::describe() const {
   return out;
 }
 
+namespace {
+
+/// An element-based surface with a face on a shell element.
+bool on_shells(const model::Model& m, const model::Surface& s) {
+  return std::any_of(s.faces.begin(), s.faces.end(), [&](const model::Face& f) {
+    return model::is_shell(model::element_type(m.mesh.elements.type[static_cast<std::size_t>(f.element)]));
+  });
+}
+
+}  // namespace
+
+/// ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the solids' exterior
+/// faces: a shell's faces are not among them yet, so a model with shells and no *CONTACT PAIR on
+/// them would lose their contact without a word.
+void check_all_exterior_without_shells(const model::Model& m) {
+  if (!m.general_contact.defined) return;
+  const auto& types = m.mesh.elements.type;
+  const auto shells = std::count_if(types.begin(), types.end(),
+                                    [](std::uint8_t t) { return model::is_shell(model::element_type(t)); });
+  if (shells == 0) return;
+  // A *CONTACT PAIR on shell faces says where the shells' contact is: general contact may then
+  // take the solids (a note in the interaction table says what it leaves out).
+  auto pair_on_shells = [&](const model::ContactPair& p) {
+    for (const std::string* name : {&p.slave, &p.master})
+      if (auto it = m.mesh.surfaces.find(*name); it != m.mesh.surfaces.end() && on_shells(m, it->second)) return true;
+    return false;
+  };
+  if (std::any_of(m.contact_pairs.begin(), m.contact_pairs.end(), pair_on_shells)) return;
+  for (const model::Step& step : m.steps)
+    if (std::any_of(step.contact_pairs.begin(), step.contact_pairs.end(), pair_on_shells)) return;
+  for (const model::GeneralContact::Inclusion& inc : m.general_contact.inclusions)
+    if (inc.first.empty() || inc.second.empty())
+      refuse(m, inc.loc, "*CONTACT INCLUSIONS",
+             fmt::format("{} would leave out the model's {} shell elements: general contact with shells is not "
+                         "supported yet; name the solids' surfaces in the inclusions, and use *CONTACT PAIR for "
+                         "contact on the shells' faces",
+                         inc.first.empty() && inc.second.empty() ? "ALL EXTERIOR" : "the exterior surface (an empty "
+                                                                                   "field)",
+                         shells));
+}
+
 void check_contact_supported(const model::Model& m, const contact::InteractionTable& table) {
+  check_all_exterior_without_shells(m);
   for (const contact::ContactInteraction& e : table.rows) {
     const model::ContactPair& p = e.pair;
     const std::string kw = e.general ? "*CONTACT" : "*CONTACT PAIR";
@@ -364,6 +402,12 @@ void check_contact_supported(const model::Model& m, const contact::InteractionTa
       refuse(m, p.loc, kw, "ADJUST: the model was not adjusted before the analysis (contact::apply_adjust)");
     if (e.master->kind == model::Surface::Kind::Node)
       refuse(m, p.loc, kw, fmt::format("the master surface {} is node based; a master surface must be made of element faces", p.master));
+    for (const model::Surface* s : {e.slave, e.master})
+      if (on_shells(m, *s) && e.general)
+        refuse(m, p.loc, kw, fmt::format("surface {} lies on shell elements: general contact with shells is not "
+                                         "supported yet; use *CONTACT PAIR (contact on the shells' faces, or with NO "
+                                         "THICKNESS at their nodes)",
+                                         s->name));
     if (!e.general && e.master->kind == model::Surface::Kind::Element) check_shell_master(m, p, *e.master);
   }
 }

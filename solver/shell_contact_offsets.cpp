@@ -49,18 +49,6 @@ void check_shell_master(const model::Model& m, const model::ContactPair& pair, c
   }
 }
 
-std::vector<double> shell_face_distances(const model::Model& m, std::span<const contact::Facet> facets) {
-  const auto section = shell_section_of(m);
-  std::vector<double> out(facets.size(), 0.0);
-  bool any = false;
-  for (std::size_t i = 0; i < facets.size(); ++i) {
-    out[i] = face_distance(m, section, facets[i].element, facets[i].face);
-    any = any || out[i] != 0.0;
-  }
-  if (!any) out.clear();
-  return out;
-}
-
 std::vector<double> shell_thickness_offsets(const model::Model& m, const model::ContactPair& pair,
                                             const contact::PairKinematics& geometry) {
   if (pair.no_thickness) return {};

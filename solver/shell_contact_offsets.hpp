@@ -5,7 +5,6 @@
 /// thickness and o the section's OFFSET (model::ShellSection::offset). Both surfaces' distances
 /// come off the pair's measured gap; the gap's gradient does not change (a constant shift along
 /// the normal, as the shell's own rotation of the offset is left out: small rotations).
-#include <span>
 #include <vector>
 
 #include "contact/pair_kinematics.hpp"
@@ -23,10 +22,5 @@ void check_shell_master(const model::Model& model, const model::ContactPair& pai
 /// shells or the pair has NO THICKNESS. The master passed check_shell_master.
 std::vector<double> shell_thickness_offsets(const model::Model& model, const model::ContactPair& pair,
                                             const contact::PairKinematics& geometry);
-
-/// Per facet, how far its contact face lies from its nodes (face_distance above: (½ ∓ o)·t on a
-/// shell, 0 elsewhere); empty when every distance is 0. General contact takes these per point
-/// (contact::SurfaceToSurfacePair::set_face_distances): its bodies mix both faces of shells.
-std::vector<double> shell_face_distances(const model::Model& model, std::span<const contact::Facet> facets);
 
 }  // namespace inpact::solver
