@@ -219,6 +219,10 @@ void add_all_exterior(GeneralRows& g, const model::GeneralContact::Inclusion& in
     g.t.notes.push_back(fmt::format("{}: general contact: the {} shell elements are not in ALL EXTERIOR (general "
                                     "contact with shells is not supported yet); their contact is the *CONTACT PAIRs'",
                                     g.m.sources.describe(inc.loc), shells));
+  if (const auto rigid = count(model::is_rigid); rigid > 0)
+    g.t.notes.push_back(fmt::format("{}: general contact: the {} rigid elements are not in ALL EXTERIOR (their two "
+                                    "faces are not taken yet); their contact is the *CONTACT PAIRs'",
+                                    g.m.sources.describe(inc.loc), rigid));
 }
 
 /// Self-contact of a named surface: one row, weight ½.

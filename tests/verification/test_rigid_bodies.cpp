@@ -335,5 +335,28 @@ TEST(RigidBody, NoSlaveNodeSlipsFartherThanTheRigidPunchSlides) {
   EXPECT_LE(std::abs(rf1), 0.2 * std::abs(rf2) * (1.0 + 1e-9));
 }
 
+// General contact's ALL EXTERIOR does not take the two faces of rigid elements yet: the R3D4
+// punch would pass through the block without a word (RF3 = 0, "completed"), so the deck is an
+// error at the inclusion's line, naming the way out.
+TEST(RigidBody, AllExteriorWithoutAPairOnRigidElementsIsRefused) {
+  const auto path = edited_deck("rigid_punch_r3d4.inp", "r3d4-all-exterior", [](const std::string& line) {
+    if (line.starts_with("*CONTACT PAIR"))
+      return std::vector<std::string>{"*CONTACT", "*CONTACT INCLUSIONS, ALL EXTERIOR", "*CONTACT PROPERTY ASSIGNMENT",
+                                      ", , FRICTIONLESS"};
+    if (line == "BLOCK_TOP, PUNCH_BOTTOM") return std::vector<std::string>{};
+    return std::vector<std::string>{line};
+  });
+  std::string message;
+  try {
+    message = run_deck(path.string())->outcome.message;
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: ALL EXTERIOR would leave out the model's 16 rigid elements"),
+            std::string::npos)
+      << message;
+}
+
 }  // namespace
 }  // namespace inpact::verification
