@@ -452,7 +452,7 @@ class PointCache {
   /// point, with each one's integration point, section point number and whether the section
   /// reports it by default (SectionPointChoice). A beam's come from its integration points'
   /// results (elements/beam_section_points.hpp), all defaults; a shell's are its kernel's points
-  /// (shell_elements.hpp: section.output_points at each in-plane point), SNEG and SPOS the defaults.
+  /// (shell_elements.hpp: every section point at each in-plane point), SNEG and SPOS the defaults.
   struct SectionPoints {
     std::vector<elements::PointResult> own;  ///< a beam's (a shell's stay in the cache)
     std::span<const elements::PointResult> results;
@@ -465,11 +465,11 @@ class PointCache {
     if (!inserted) return sp;
     const auto ips = of(el);
     if (const elements::ShellProperties* shell = am_.elements[el].section.shell) {
-      const std::size_t n_out = shell->output_points.size();
-      const int last = static_cast<int>(shell->zeta.size());
+      const std::size_t n = shell->zeta.size();
+      const int last = static_cast<int>(n);
       for (std::size_t p = 0; p < ips.size(); ++p) {
-        const int number = shell->output_points[p % n_out] + 1;
-        sp.ip.push_back(static_cast<std::int32_t>(p / n_out + 1));
+        const int number = static_cast<int>(p % n) + 1;
+        sp.ip.push_back(static_cast<std::int32_t>(p / n + 1));
         sp.number.push_back(number);
         sp.is_default.push_back(number == 1 || number == last);
       }
@@ -713,7 +713,7 @@ FieldData element_field(const AnalysisModel& am, const std::string& key, const K
       return;
     }
     const auto points = cache.of(el);
-    const std::size_t stride = shell ? setup.section.shell->output_points.size() : 1;  // one per in-plane point
+    const std::size_t stride = shell ? setup.section.shell->zeta.size() : 1;  // one per in-plane point
     for (std::size_t p = 0; p < points.size(); p += stride)
       at.push_back({el, &points[p], static_cast<std::int32_t>(p / stride + 1), 0});
   };
@@ -992,7 +992,7 @@ std::vector<PrintTable> element_tables(const AnalysisModel& am, const ActiveRequ
     }
     const auto& points = cache.of(el);
     const elements::ShellProperties* shell = am.elements[el].section.shell;
-    const std::size_t stride = shell ? shell->output_points.size() : 1;  // a shell's: one per in-plane point
+    const std::size_t stride = shell ? shell->zeta.size() : 1;  // a shell's: one per in-plane point
     if (centroid) {
       row(centroid_of(points), 0, 0);
       return;

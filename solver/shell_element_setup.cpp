@@ -46,17 +46,6 @@ std::optional<elements::MaterialOrientation> orientation_named(const model::Mode
   return elements::MaterialOrientation(m.orientations.at(name));
 }
 
-/// Every section point number an *ELEMENT OUTPUT of any step names: the kernel reports these
-/// beside SNEG and SPOS, and each request picks its own (field_output.cpp).
-std::vector<int> requested_section_points(const model::Model& m) {
-  std::vector<int> out;
-  for (const model::Step& step : m.steps)
-    for (const model::OutputRequest& r : step.output) out.insert(out.end(), r.section_points.begin(), r.section_points.end());
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
 /// The section's layers: its material through the thickness, or COMPOSITE's layers, each in its
 /// own orientation (a name) or at its angle from the section's.
 elements::ShellProperties shell_section_properties(const model::Model& m, const model::ShellSection& sec) {
@@ -72,7 +61,7 @@ elements::ShellProperties shell_section_properties(const model::Model& m, const 
     layer.orientation = orientation_named(m, given.orientation.empty() ? sec.orientation : given.orientation);
     layer.angle = given.angle * std::numbers::pi / 180;
   }
-  return elements::shell_properties(sec, std::move(layers), requested_section_points(m));
+  return elements::shell_properties(sec, std::move(layers));
 }
 
 /// The section's mass per volume: its layers' densities averaged over their thicknesses.

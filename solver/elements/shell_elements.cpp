@@ -337,9 +337,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     const double xi = q.xi[0], eta = q.xi[1];
     const double t_here = point_thickness(geo, xi, eta);
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
-    // The reported section points (section.output_points, SNEG first) go to out.points from here.
-    const std::size_t first_reported = out.points.size();
-    std::size_t next_reported = 0;
+    const std::size_t first_reported = out.points.size();  // every section point, from SNEG up
     double temperature = 0.0, gradient = 0.0;  // ΔT on the reference surface and Δ(∂T/∂n) here
     for (std::size_t k = 0; k < section.zeta.size(); ++k) {
       const double zeta = section.zeta[k];
@@ -392,10 +390,8 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       const double dz = section.weight[k] * t_here / 2, zm = zeta * t_here / 2;
       const double in_plane[3] = {stress[0], stress[1], stress[2]};
       for (int c = 0; c < 3; ++c) section_force[c] += in_plane[c] * dz, section_force[3 + c] += in_plane[c] * zm * dz;
-      if (request.point_output && next_reported < section.output_points.size() &&
-          section.output_points[next_reported] == static_cast<int>(k)) {
+      if (request.point_output) {
         // In the layer's material axes, as Abaqus reports an oriented or layered section.
-        ++next_reported;
         PointResult& r = out.points.emplace_back();
         r.coords = p.x;
         const std::array<double, 5> s_m = stresses_in_material_axes(stress, theta);
@@ -408,13 +404,11 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     if (!request.point_output) continue;
     const CovariantPoint mid = covariant_point(geo, xi, eta, 0.0);
     const double da = q.weight * norm(cross(mid.g[0], mid.g[1]));
-    // SNEG and SPOS stand for half the volume each, the other reported points for none: what is
-    // computed from the points' volumes (ALLSE, centroids, the stabilisation's lumped mass) then
-    // does not depend on which section points an output request asks for.
-    for (std::size_t j = first_reported; j < out.points.size(); ++j) {
-      const bool surface = j == first_reported || j + 1 == out.points.size();
-      out.points[j].volume = surface ? da * t_here / 2 : 0.0;
-      out.points[j].section = section_force;
+    // Each section point stands for its Simpson share of t·dA: sums over the points (ALLSE,
+    // centroids, the stabilisation's lumped mass) integrate through the thickness.
+    for (std::size_t k = 0; k < section.zeta.size(); ++k) {
+      out.points[first_reported + k].volume = da * t_here / 2 * section.weight[k];
+      out.points[first_reported + k].section = section_force;
     }
   }
   add_drilling(geo, 1e-4 * section_bending_stiffness(section, geo.mean_thickness()), u, out);

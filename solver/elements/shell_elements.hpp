@@ -30,13 +30,12 @@
 /// Layers (shell_section.hpp): each section point takes its layer's lamina turned from the
 /// layer's material axes into the local ones (shell_lamina.hpp).
 ///
-/// Point output: at each in-plane point, the section points of ShellProperties::output_points in
-/// order (SNEG and SPOS, and those *ELEMENT OUTPUT asks for): PointResult::stress S11, S22, S12
-/// (slots 0, 1, 3; the transverse shears are not reported) in that point's layer's material axes
-/// (the local axes for a section neither oriented nor turned), strain likewise (γ12), and
-/// PointResult::section SF1..SF3 = N11, N22, N12 and SM1..SM3 = M11, M22, M12 per unit length,
-/// about the midsurface, the same at each; volume = t·dA/2 at SNEG and at SPOS and 0 at the
-/// others, so that nothing computed from the volumes depends on the output request.
+/// Point output: at each in-plane point, every section point from SNEG (1) up through the layers
+/// (output picks the ones a request reports): PointResult::stress S11, S22, S12 (slots 0, 1, 3;
+/// the transverse shears are not reported) in that point's layer's material axes (the local axes
+/// for a section neither oriented nor turned), strain likewise (γ12), and PointResult::section
+/// SF1..SF3 = N11, N22, N12 and SM1..SM3 = M11, M22, M12 per unit length, about the midsurface,
+/// the same at each; volume = the point's Simpson share of t·dA (they sum to t·dA).
 #include <span>
 
 #include "element_kernel.hpp"

@@ -1,6 +1,5 @@
 #include "shell_section.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 namespace inpact::solver::elements {
@@ -17,17 +16,7 @@ void simpson_points(int n, std::vector<double>& zeta, std::vector<double>& weigh
   }
 }
 
-std::vector<int> shell_output_points(int n_points, std::span<const int> requested) {
-  std::vector<int> out{0, n_points - 1};
-  for (int number : requested)
-    if (number >= 1 && number <= n_points) out.push_back(number - 1);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-ShellProperties shell_properties(const model::ShellSection& section, std::vector<ShellLayerProperties> layers,
-                                 std::span<const int> requested) {
+ShellProperties shell_properties(const model::ShellSection& section, std::vector<ShellLayerProperties> layers) {
   const bool composite = !section.layers.empty();
   if (layers.size() != (composite ? section.layers.size() : 1))
     throw std::invalid_argument("shell_properties: one lamina per layer");
@@ -49,7 +38,6 @@ ShellProperties shell_properties(const model::ShellSection& section, std::vector
     below += fraction;
   }
   p.zeta.back() = 1.0;  // SPOS exactly, whatever the fractions' rounding
-  p.output_points = shell_output_points(static_cast<int>(p.zeta.size()), requested);
   if (section.transverse_shear) p.transverse_shear = std::array<double, 2>{(*section.transverse_shear)[0],
                                                                            (*section.transverse_shear)[1]};
   return p;

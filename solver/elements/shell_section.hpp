@@ -7,7 +7,6 @@
 /// of it.
 #include <array>
 #include <optional>
-#include <span>
 #include <vector>
 
 #include "model/shell_section.hpp"
@@ -28,18 +27,11 @@ struct ShellProperties {
   /// taken uniform through the thickness, its modulus K/t. Unset: 5/6 of each layer's own G at
   /// its section points (5/6 Σ G_k t_k in all, the thickness-weighted mean of the layers').
   std::optional<std::array<double, 2>> transverse_shear;
-  /// The section points the kernel reports (0-based, ascending): shell_output_points().
-  std::vector<int> output_points;
 
   const ShellLayerProperties& layer_at(std::size_t point) const {
     return layers[static_cast<std::size_t>(layer_of[point])];
   }
 };
-
-/// The section points (0-based, ascending) a section of `n_points` reports: SNEG and SPOS (the
-/// first and the last, Abaqus's default output) and each 1-based number in `requested` (an
-/// *ELEMENT OUTPUT section-point line) that the section has.
-std::vector<int> shell_output_points(int n_points, std::span<const int> requested);
 
 /// Simpson's rule with n (odd, ≥ 3) points on [−1, 1].
 void simpson_points(int n, std::vector<double>& zeta, std::vector<double>& weight);
@@ -48,9 +40,7 @@ void simpson_points(int n, std::vector<double>& zeta, std::vector<double>& weigh
 /// with Simpson's points in each: the section's number (Abaqus's default 5) for one layer, each
 /// layer's own (default 3) for COMPOSITE; a general section is integrated with 3 points a layer,
 /// exact for its linear elastic stiffness.
-/// `requested`: the section points *ELEMENT OUTPUT asks for (shell_output_points()).
-ShellProperties shell_properties(const model::ShellSection& section, std::vector<ShellLayerProperties> layers,
-                                 std::span<const int> requested = {});
+ShellProperties shell_properties(const model::ShellSection& section, std::vector<ShellLayerProperties> layers);
 
 /// One isotropic elastic layer (E, ν, α): the plain section.
 ShellProperties shell_properties(const model::ShellSection& section, double youngs_modulus, double poissons_ratio,
