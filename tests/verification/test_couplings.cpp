@@ -154,14 +154,7 @@ TEST(Coupling, ALoadOnAnUncoupledReferenceDofIsADeckError) {
     cload_line = line_no + 2;
     return std::vector<std::string>{line, "*CLOAD", "REF, 1, 5."};
   });
-  std::string message;
-  try {
-    const auto r = run_deck(path.string());
-    message = r->outcome.completed ? "completed" : r->outcome.message;
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  std::filesystem::remove(path);
+  const std::string message = stop_message(path);
   EXPECT_NE(message.find(":" + std::to_string(cload_line) + ": error: *CLOAD: node 82 DOF 1 carries a load but nothing "
                          "connects that degree of freedom"),
             std::string::npos)

@@ -346,13 +346,7 @@ TEST(RigidBody, AllExteriorWithoutAPairOnRigidElementsIsRefused) {
     if (line == "BLOCK_TOP, PUNCH_BOTTOM") return std::vector<std::string>{};
     return std::vector<std::string>{line};
   });
-  std::string message;
-  try {
-    message = run_deck(path.string())->outcome.message;
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  std::filesystem::remove(path);
+  const std::string message = stop_message(path);
   EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: ALL EXTERIOR would leave out the model's 16 rigid elements"),
             std::string::npos)
       << message;

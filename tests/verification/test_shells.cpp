@@ -437,13 +437,7 @@ TEST(Shells, AShellMasterOfTwoThicknessesIsRefusedAtThePairsLine) {
                                       "*SHELL SECTION, ELSET=L2, MATERIAL=STEEL"};
     return std::vector<std::string>{line};
   });
-  std::string message;
-  try {
-    message = run_deck(path.string())->outcome.message;
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  std::filesystem::remove(path);
+  const std::string message = stop_message(path);
   EXPECT_NE(message.find(".inp:114:1: error: *CONTACT PAIR: the master surface LOWER_TOP lies on shells whose faces "
                          "are at different distances from their nodes (0.1 and 0.05"),
             std::string::npos)
@@ -468,13 +462,7 @@ TEST(Shells, GeneralContactOnTheExteriorInAModelWithShellsIsRefused) {
       if (line == "UNDERSIDE, TOP") return std::vector<std::string>{};
       return std::vector<std::string>{line};
     });
-    std::string message;
-    try {
-      message = run_deck(path.string())->outcome.message;
-    } catch (const std::exception& e) {
-      message = e.what();
-    }
-    std::filesystem::remove(path);
+    const std::string message = stop_message(path);
     EXPECT_NE(message.find(": error: *CONTACT INCLUSIONS: " + expected), std::string::npos) << message;
   }
 }

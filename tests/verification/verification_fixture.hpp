@@ -115,6 +115,20 @@ inline std::unique_ptr<Run> run_deck(const std::string& path) {
   return r;
 }
 
+/// What a run of the deck at `path` stops with: "completed", the outcome's message, or the deck
+/// error the analysis throws (for tests of refusals); the deck file is removed afterwards.
+inline std::string stop_message(const std::filesystem::path& path) {
+  std::string message;
+  try {
+    const auto r = run_deck(path.string());
+    message = r->outcome.completed ? "completed" : r->outcome.message;
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  return message;
+}
+
 inline const solver::FieldData* field(const solver::Frame& f, const std::string& key) {
   for (const auto& fd : f.fields)
     if (fd.key == key) return &fd;
