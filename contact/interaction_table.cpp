@@ -217,11 +217,13 @@ void add_all_exterior(GeneralRows& g, const model::GeneralContact::Inclusion& in
                                     g.m.sources.describe(inc.loc), beams));
   if (const auto shells = count(model::is_shell); shells > 0)
     g.t.notes.push_back(fmt::format("{}: general contact: the {} shell elements are not in ALL EXTERIOR (general "
-                                    "contact with shells is not supported yet); their contact is the *CONTACT PAIRs'",
+                                    "contact with shells is not supported yet); their contact is that of the *CONTACT PAIRs and named "
+                                    "inclusions on them",
                                     g.m.sources.describe(inc.loc), shells));
   if (const auto rigid = count(model::is_rigid); rigid > 0)
     g.t.notes.push_back(fmt::format("{}: general contact: the {} rigid elements are not in ALL EXTERIOR (their two "
-                                    "faces are not taken yet); their contact is the *CONTACT PAIRs'",
+                                    "faces are not taken yet); their contact is that of the *CONTACT PAIRs and named "
+                                    "inclusions on them",
                                     g.m.sources.describe(inc.loc), rigid));
 }
 

@@ -10,6 +10,7 @@
 
 #include "analysis_error.hpp"
 #include "shell_contact_offsets.hpp"
+#include "two_sided_exterior.hpp"
 #include "model/element_types.hpp"
 #include "step_conditions.hpp"
 #include "contact/analytical_pair.hpp"
@@ -349,19 +350,6 @@ std::vector<std::string> ContactProblem::describe() const {
 
 namespace {
 
-/// Shells and rigid elements (R3D3, R3D4, R2D2, RAX2): two faces, SNEG and SPOS, on the same nodes.
-bool two_sided(std::uint8_t type) {
-  const model::ElementTypeInfo& t = model::element_type(type);
-  return model::is_shell(t) || model::is_rigid(t);
-}
-
-/// An element-based surface with a face on a shell or rigid element.
-bool on_two_sided(const model::Model& m, const model::Surface& s) {
-  return std::any_of(s.faces.begin(), s.faces.end(), [&](const model::Face& f) {
-    return two_sided(m.mesh.elements.type[static_cast<std::size_t>(f.element)]);
-  });
-}
-
 /// An element-based surface with a face on a shell element (whose faces lie off its nodes).
 bool on_shells(const model::Model& m, const model::Surface& s) {
   return std::any_of(s.faces.begin(), s.faces.end(), [&](const model::Face& f) {
@@ -369,52 +357,10 @@ bool on_shells(const model::Model& m, const model::Surface& s) {
   });
 }
 
-/// "16 shell elements", "4 rigid elements", or both.
-std::string two_sided_counts(const model::Model& m) {
-  std::int64_t shells = 0, rigid = 0;
-  for (std::uint8_t t : m.mesh.elements.type) {
-    shells += model::is_shell(model::element_type(t)) ? 1 : 0;
-    rigid += model::is_rigid(model::element_type(t)) ? 1 : 0;
-  }
-  std::vector<std::string> parts;
-  if (shells > 0) parts.push_back(fmt::format("{} shell elements", shells));
-  if (rigid > 0) parts.push_back(fmt::format("{} rigid elements (R3D3, R3D4, R2D2, RAX2)", rigid));
-  return fmt::format("{}", fmt::join(parts, " and "));
-}
-
 }  // namespace
 
-/// ALL EXTERIOR, and an inclusion's empty field (the exterior), are made of the solids' exterior
-/// faces: the two faces of a shell or of a rigid element share their nodes and are not among them
-/// yet, so a model with such elements and no *CONTACT PAIR on them would lose their contact (a
-/// rigid punch would pass through the block) without a word.
-void check_all_exterior_without_two_sided(const model::Model& m) {
-  if (!m.general_contact.defined) return;
-  const auto& types = m.mesh.elements.type;
-  if (std::none_of(types.begin(), types.end(), two_sided)) return;
-  // A *CONTACT PAIR on their faces says where their contact is: general contact may then take
-  // the solids (a note in the interaction table says what it leaves out).
-  auto pair_on_two_sided = [&](const model::ContactPair& p) {
-    for (const std::string* name : {&p.slave, &p.master})
-      if (auto it = m.mesh.surfaces.find(*name); it != m.mesh.surfaces.end() && on_two_sided(m, it->second)) return true;
-    return false;
-  };
-  if (std::any_of(m.contact_pairs.begin(), m.contact_pairs.end(), pair_on_two_sided)) return;
-  for (const model::Step& step : m.steps)
-    if (std::any_of(step.contact_pairs.begin(), step.contact_pairs.end(), pair_on_two_sided)) return;
-  for (const model::GeneralContact::Inclusion& inc : m.general_contact.inclusions)
-    if (inc.first.empty() || inc.second.empty())
-      refuse(m, inc.loc, "*CONTACT INCLUSIONS",
-             fmt::format("{} would leave out the model's {}: general contact with their two-sided faces is not "
-                         "supported yet; name the solids' surfaces in the inclusions, and use *CONTACT PAIR for "
-                         "contact on those faces",
-                         inc.first.empty() && inc.second.empty() ? "ALL EXTERIOR" : "the exterior surface (an empty "
-                                                                                   "field)",
-                         two_sided_counts(m)));
-}
-
 void check_contact_supported(const model::Model& m, const contact::InteractionTable& table) {
-  check_all_exterior_without_two_sided(m);
+  check_two_sided_bodies_in_exterior(m);
   for (const contact::ContactInteraction& e : table.rows) {
     const model::ContactPair& p = e.pair;
     const std::string kw = e.general ? "*CONTACT" : "*CONTACT PAIR";

@@ -343,7 +343,10 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       const double zeta = section.zeta[k];
       CovariantPoint p = covariant_point(geo, xi, eta, zeta);
       out.min_jacobian = std::min(out.min_jacobian, p.det);
-      if (!(p.det > 0.0)) return;
+      if (!(p.det > 0.0)) {
+        out.points.resize(first_reported);  // no partial set of section points
+        return;
+      }
       if (k == 0 && !delta_t.empty())
         for (int a = 0; a < geo.n; ++a) {
           temperature += p.N[a] * delta_t[static_cast<std::size_t>(a)];
@@ -357,6 +360,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       std::array<Vec3, 3> axes;
       if (!shell_axes(p.g[0], p.g[1], axes)) {
         out.min_jacobian = 0.0;
+        out.points.resize(first_reported);
         return;
       }
       const std::array<Row, 5> b = local_strain_rows(p, axes, nd);

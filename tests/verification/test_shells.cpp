@@ -449,8 +449,8 @@ TEST(Shells, AShellMasterOfTwoThicknessesIsRefusedAtThePairsLine) {
 // each is a deck error at the inclusion's line.
 TEST(Shells, GeneralContactOnTheExteriorInAModelWithShellsIsRefused) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"*CONTACT INCLUSIONS, ALL EXTERIOR"}, "ALL EXTERIOR would leave out the model's 16 shell elements"},
-      {{"*CONTACT INCLUSIONS", ", TOP"}, "the exterior surface (an empty field) would leave out the model's 16 shell"}};
+      {{"*CONTACT INCLUSIONS, ALL EXTERIOR"}, "ALL EXTERIOR would leave out the 16 shell elements that no *CONTACT"},
+      {{"*CONTACT INCLUSIONS", ", TOP"}, "the exterior surface (an empty field) would leave out the 16 shell"}};
   for (const auto& [inclusion, expected] : cases) {
     const auto path = edited_deck("shell_on_block_spos_s4.inp", "shell-exterior", [&](const std::string& line) {
       if (line.starts_with("*CONTACT PAIR")) {
