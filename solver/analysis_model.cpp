@@ -13,21 +13,17 @@
 #include "analysis_error.hpp"
 #include "element_activity.hpp"
 #include "analytical_contact.hpp"
-#include "combined_hardening_setup.hpp"
 #include "anisotropic_law.hpp"
 #include "contact/geometric_correction.hpp"
 #include "contact_problem.hpp"
 #include "elastic_law.hpp"
-#include "elements/combined_plasticity.hpp"
-#include "elements/finite_strain_mises.hpp"
-#include "elements/log_strain_plasticity.hpp"
 #include "elements/material.hpp"
 #include "elements/material_orientation.hpp"
 #include "elements/mises_plasticity.hpp"
-#include "elements/plane_stress_condensation.hpp"
 #include "elements/quadrature.hpp"
 #include "hyperelastic_material.hpp"
 #include "line_element_setup.hpp"
+#include "plastic_law.hpp"
 #include "shell_element_setup.hpp"
 #include "model/reference_nodes.hpp"
 
@@ -41,6 +37,20 @@ std::size_t AnalysisModel::element_temperature_changes(std::size_t e, std::span<
   for (std::size_t a = 0; a < n; ++a) out[a] = delta_t[static_cast<std::size_t>(nodes[a])];
   if (delta_t.size() == n_nodes() || !model::is_shell(*elements[e].type)) return n;
   for (std::size_t a = 0; a < n; ++a) out[n + a] = delta_t[n_nodes() + static_cast<std::size_t>(nodes[a])];
+  return 2 * n;
+}
+
+std::size_t AnalysisModel::element_temperatures(std::size_t e, std::span<const double> delta_t,
+                                                std::span<double> out) const {
+  const auto nodes = model->mesh.elements.nodes_of(e);
+  const std::size_t n = nodes.size();
+  for (std::size_t a = 0; a < n; ++a) out[a] = temperature(nodes[a], delta_t);
+  if (!model::is_shell(*elements[e].type)) return n;
+  for (std::size_t a = 0; a < n; ++a) {
+    const auto node = static_cast<std::size_t>(nodes[a]);
+    const double initial = initial_temperature_gradient.empty() ? 0.0 : initial_temperature_gradient[node];
+    out[n + a] = initial + (delta_t.size() > n_nodes() ? delta_t[n_nodes() + node] : 0.0);
+  }
   return 2 * n;
 }
 
@@ -66,53 +76,13 @@ std::size_t AnalysisModel::element_rows(std::size_t e, std::span<std::int32_t> r
 
 namespace {
 
-/// HARDENING=COMBINED, and KINEMATIC with several temperatures: the Chaboche law
-/// (combined_plasticity.hpp) at each temperature of the data, 3D.
-std::shared_ptr<elements::Material> combined_law(const model::Model& m, const model::Material& mat,
-                                                 const elements::ElasticConstants& c, std::vector<std::string>& warnings) {
-  CombinedLawData data = combined_law_data(m, mat);
-  warnings.insert(warnings.end(), data.notes.begin(), data.notes.end());
-  return std::make_shared<elements::CombinedPlasticity>(c, std::move(data.sets), std::move(data.temperatures));
-}
-
-/// The Mises material of *PLASTIC. Small strain: MisesPlasticity (isotropic or linear
-/// kinematic, with its own plane stress iteration) or CombinedPlasticity. When a step has
-/// NLGEOM: isotropic hardening in the exponential-map law (finite_strain_mises.hpp); kinematic
-/// and combined hardening, whose backstress needs a frame, through the Lagrangian logarithmic
-/// strain (log_strain_plasticity.hpp); both agree on paths with fixed principal axes. Plane
-/// stress elements take the 3D laws through PlaneStressCondensation (S33 = 0 at each point).
-std::shared_ptr<elements::Material> plastic_law(const model::Model& m, const model::Material& mat,
-                                                model::ElementFamily family, const elements::ElasticConstants& c,
-                                                std::vector<std::string>& warnings) {
-  const model::Plastic& p = *mat.plastic;
-  if (mat.cyclic_hardening && p.hardening != model::Plastic::Hardening::Combined)
-    throw AnalysisError(fmt::format("{}: error: *CYCLIC HARDENING: it needs *PLASTIC, HARDENING=COMBINED (material '{}')",
-                                    m.sources.describe(mat.cyclic_hardening->loc), mat.name));
-  const bool combined = p.hardening == model::Plastic::Hardening::Combined ||
-                        (p.hardening == model::Plastic::Hardening::Kinematic && p.several_temperatures());
-  elements::MisesHardening h;
-  if (!combined) {
-    h = elements::isotropic_hardening(p.table);
-    h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
-  }
-  const bool nlgeom = model::first_nlgeom_step(m.steps) != nullptr;
-  std::shared_ptr<elements::Material> law;
-  if (!nlgeom && !combined) return std::make_shared<elements::MisesPlasticity>(c, std::move(h), family);
-  if (!nlgeom) law = combined_law(m, mat, c, warnings);
-  else if (combined) law = std::make_shared<elements::LogStrainPlasticity>(combined_law(m, mat, c, warnings));
-  else if (h.kinematic)
-    law = std::make_shared<elements::LogStrainPlasticity>(std::make_shared<elements::MisesPlasticity>(c, std::move(h)));
-  else law = std::make_shared<elements::FiniteStrainMises>(c, std::move(h));
-  if (family == model::ElementFamily::PlaneStress) return std::make_shared<elements::PlaneStressCondensation>(law);
-  return law;
-}
-
 /// Each element's material law and section data. One law per section and element family (plane
 /// stress condenses the elasticity matrix), shared by the section's elements; an element no
 /// section covers keeps zero constants.
 void assign_materials(const model::Model& m, AnalysisModel& am) {
   // A hyperelastic law also depends on whether the element is hybrid (an incompressible one).
   std::map<std::tuple<std::size_t, model::ElementFamily, bool>, const elements::Material*> laws;
+  const bool nlgeom = model::first_nlgeom_step(m.steps) != nullptr;
   const auto law = [&](std::size_t section, const model::ElementTypeInfo& type, const elements::ElasticConstants& c,
                        const model::Material* mat) {
     const model::ElementFamily family = type.family;
@@ -123,7 +93,8 @@ void assign_materials(const model::Model& m, AnalysisModel& am) {
     if (hyperelastic) l = am.materials.emplace_back(hyperelastic_law(m, *mat, family, type.hybrid, am.warnings)).get();
     else if (mat && mat->elastic && mat->elastic->type != model::Elastic::Type::Isotropic)
       l = am.materials.emplace_back(anisotropic_law(m, m.mesh.sections[section], *mat, family)).get();
-    else if (mat && mat->plastic) l = am.materials.emplace_back(plastic_law(m, *mat, family, c, am.warnings)).get();
+    else if (mat && mat->plastic)
+      l = am.materials.emplace_back(plastic_law(m, *mat, family, c, nlgeom, am.warnings)).get();
     else l = am.materials.emplace_back(isotropic_elastic_law(mat, family, c)).get();
     return l;
   };

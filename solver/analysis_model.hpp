@@ -107,6 +107,11 @@ struct AnalysisModel {
     const auto n = static_cast<std::size_t>(node);
     return initial_temperature[n] + (delta_t.empty() ? 0.0 : delta_t[n]);
   }
+  /// Element e's temperatures, for temperature-dependent data (elements::ElementRequest::
+  /// temperature): T at its nodes, and for a shell the gradient ∂T/∂n at them after them (the
+  /// initial one plus its change in `delta_t`). Writes into `out` (room for twice the nodes) and
+  /// returns the count.
+  std::size_t element_temperatures(std::size_t e, std::span<const double> delta_t, std::span<double> out) const;
   /// Element e's temperature changes from the nodal `delta_t` (StepConditions::
   /// temperature_change: ΔT of every node, then, when the model has shell temperature
   /// gradients, the change of the gradient of every node): ΔT at its nodes, and for a shell the

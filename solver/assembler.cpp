@@ -166,18 +166,14 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   std::array<elements::Vec3, kMaxNodes> x;
   std::array<double, kMaxNodes * 3> u_el;
   std::array<double, 2 * kMaxNodes> dt_el;  // ΔT, and a shell's gradient change after it
-  std::array<double, kMaxNodes> temperature_el;  // T itself, for temperature-dependent data
-  const bool temperature_dependent = setup.material->temperature_dependent();
+  std::array<double, 2 * kMaxNodes> temperature_el;  // T (and a shell's ∂T/∂n) for temperature-dependent data
   std::array<std::int32_t, AnalysisModel::kMaxElementRows> rows;
   const std::size_t n_rows = am_.element_rows(e, rows);  // a beam's rotations follow its nodes
   const std::size_t dim = static_cast<std::size_t>(am_.dim);
-  for (std::size_t a = 0; a < nodes.size(); ++a) {
-    const std::size_t node = static_cast<std::size_t>(nodes[a]);
-    x[a] = mesh.nodes.coords[node];
-    if (temperature_dependent) temperature_el[a] = am_.temperature(nodes[a], request.delta_t);
-  }
-  if (temperature_dependent) er.temperature = std::span(temperature_el).first(nodes.size());
+  for (std::size_t a = 0; a < nodes.size(); ++a) x[a] = mesh.nodes.coords[static_cast<std::size_t>(nodes[a])];
   const std::size_t n_dt = am_.element_temperature_changes(e, request.delta_t, dt_el);
+  if (setup.material->temperature_dependent())
+    er.temperature = std::span(temperature_el).first(am_.element_temperatures(e, request.delta_t, temperature_el));
   for (std::size_t a = 0; a < n_rows; ++a)
     for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[static_cast<std::size_t>(rows[a]) * dim + c];
   const std::size_t n = nodes.size();

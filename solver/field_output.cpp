@@ -500,8 +500,8 @@ class PointCache {
     dt_el.resize(am_.element_temperature_changes(el, delta_t_, dt_el));
     elements::ElementRequest request = request_;
     if (setup.material->temperature_dependent()) {
-      for (std::int32_t node : am_.model->mesh.elements.nodes_of(el))
-        temperature_el.push_back(am_.temperature(node, delta_t_));
+      temperature_el.resize(2 * am_.model->mesh.elements.nodes_of(el).size());
+      temperature_el.resize(am_.element_temperatures(el, delta_t_, temperature_el));
       request.temperature = temperature_el;
     }
     // From the committed history: the output of a converged increment comes before its commit.
@@ -894,9 +894,9 @@ enum class Rows : std::uint8_t { IntegrationPoints, SectionPoints };
 /// The columns of a table of this element type: trusses and springs have the 11 component of
 /// a tensor only (Abaqus prints S11 and E11 for them) and SF1; beams S11, S12, E11, E12 and
 /// MISES at their section points, and their section forces and moments at their integration
-/// points, in two tables; shells the in-plane components 11, 22, 12 of S and E (plane stress)
-/// and MISES at their section points, their section forces and moments at their in-plane
-/// points; continua every column but SF2, SF3 and SM.
+/// points, in two tables; shells the in-plane components 11, 22, 12 of S, E and PE (plane
+/// stress), MISES, PEEQ and PEMAG at their section points, their section forces and moments at
+/// their in-plane points; continua every column but SF2, SF3 and SM.
 std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const std::vector<std::string>& variables,
                                      Rows rows) {
   std::vector<std::string> out;
@@ -911,8 +911,8 @@ std::vector<std::string> columns_for(const model::ElementTypeInfo& type, const s
         out.push_back(v);
       continue;
     }
-    const bool shell_section_point =
-        c.source == Column::Source::Mises || (tensor && c.source != Column::Source::PE && in_plane);
+    const bool plastic_scalar = c.source == Column::Source::Peeq || c.source == Column::Source::Pemag;
+    const bool shell_section_point = c.source == Column::Source::Mises || plastic_scalar || (tensor && in_plane);
     const bool keep = model::is_shell(type) ? (rows == Rows::SectionPoints
                                                    ? shell_section_point
                                                    : section || c.source == Column::Source::Coord)

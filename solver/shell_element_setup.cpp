@@ -10,9 +10,9 @@
 #include "analysis_error.hpp"
 #include "model/mesh_queries.hpp"
 #include "elastic_law.hpp"
-#include "elements/mises_plasticity.hpp"
 #include "elements/shell_section.hpp"
 #include "model/elastic_stiffness.hpp"
+#include "plastic_law.hpp"
 #include "shell_normals.hpp"
 
 namespace inpact::solver {
@@ -28,7 +28,10 @@ const char* keyword_of(const model::ShellSection& sec) {
 elements::ShellLamina material_lamina(const model::Model& m, const model::ShellSection& sec,
                                       const std::string& material, model::SourceLoc loc) {
   const model::Material& mat = m.materials.at(material);
-  refuse_temperature_tables(m, mat, "shell elements");
+  // Temperature tables go through the section points' law (shell_point_law); a layer, a general
+  // section and a directional lamina are integrated from constants.
+  if (!sec.layers.empty() || sec.general || (mat.elastic && mat.elastic->type != model::Elastic::Type::Isotropic))
+    refuse_temperature_tables(m, mat, "a COMPOSITE, general or directional shell section");
   const bool linear = mat.elastic && !mat.hyperelastic;
   if (!linear || mat.elastic->type == model::Elastic::Type::Anisotropic)
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not {}; shells take *ELASTIC, TYPE=ISOTROPIC, "
@@ -61,7 +64,9 @@ elements::ShellProperties shell_section_properties(const model::Model& m, const 
     layer.orientation = orientation_named(m, given.orientation.empty() ? sec.orientation : given.orientation);
     layer.angle = given.angle * std::numbers::pi / 180;
   }
-  return elements::shell_properties(sec, std::move(layers));
+  elements::ShellProperties properties = elements::shell_properties(sec, std::move(layers));
+  properties.orientation = orientation_named(m, sec.orientation);
+  return properties;
 }
 
 /// The section's mass per volume: its layers' densities averaged over their thicknesses.
@@ -73,12 +78,14 @@ double section_density(const model::Model& m, const model::ShellSection& sec) {
   return sum / sec.thickness;
 }
 
-/// The law at the section points of a shell whose material has *PLASTIC: Mises in plane stress
-/// (σ33 = 0 at each point), isotropic or linear kinematic hardening at one temperature, small
-/// strain; the transverse shear stays elastic, as in Abaqus's shells. Under NLGEOM the law sees
-/// the corotated strains (corotation.hpp), so the strains stay small while the shell turns. Null
-/// without *PLASTIC.
-std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& m, const model::ShellSection& sec) {
+/// The law at the section points of a shell whose points need one, null for an elastic lamina
+/// of constants. *PLASTIC: Mises in plane stress (σ33 = 0 at each point) with any hardening
+/// *PLASTIC takes (plastic_law.hpp), at small strain; under NLGEOM the law sees the corotated
+/// strains (corotation.hpp), so the strains stay small while the shell turns. Temperature tables
+/// of an isotropic *ELASTIC or *EXPANSION: the plane stress elastic law at each point's
+/// temperature. The transverse shear stays elastic, as in Abaqus's shells.
+std::shared_ptr<const elements::Material> shell_point_law(const model::Model& m, const model::ShellSection& sec,
+                                                          std::vector<std::string>& warnings) {
   for (const model::ShellLayer& layer : sec.layers)
     if (m.materials.at(layer.material).plastic)
       throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; the layers of a COMPOSITE section "
@@ -86,8 +93,16 @@ std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& 
                                       layer.material));
   if (!sec.layers.empty()) return nullptr;
   const model::Material& mat = m.materials.at(sec.material);
-  if (!mat.plastic) return nullptr;
-  const model::Plastic& p = *mat.plastic;
+  const bool tables = (mat.elastic && mat.elastic->temperature_dependent()) ||
+                      (mat.expansion && mat.expansion->temperature_dependent());
+  if (!mat.plastic && !tables) return nullptr;
+  elements::ElasticConstants c;
+  c.youngs_modulus = mat.elastic->youngs_modulus;
+  c.poissons_ratio = mat.elastic->poissons_ratio;
+  c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
+  if (!mat.plastic)  // (a general section's tables are refused with its lamina)
+    return sec.general ? nullptr : isotropic_elastic_law(&mat, model::ElementFamily::PlaneStress, c);
+  refuse_temperature_tables(m, mat, "*PLASTIC");
   if (!sec.orientation.empty() || mat.elastic->type != model::Elastic::Type::Isotropic)
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a plastic shell takes isotropic "
                                     "elasticity and no ORIENTATION so far", m.sources.describe(sec.loc),
@@ -96,17 +111,7 @@ std::shared_ptr<const elements::Material> shell_plastic_law(const model::Model& 
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a general shell section is "
                                     "integrated once, elastically (use *SHELL SECTION for a plastic shell)",
                                     m.sources.describe(sec.loc), keyword_of(sec), mat.name));
-  if (p.hardening == model::Plastic::Hardening::Combined || mat.cyclic_hardening || p.several_temperatures())
-    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC with combined hardening or several "
-                                    "temperatures; shells take isotropic or kinematic hardening at one temperature so "
-                                    "far", m.sources.describe(sec.loc), keyword_of(sec), mat.name));
-  elements::ElasticConstants c;
-  c.youngs_modulus = mat.elastic->youngs_modulus;
-  c.poissons_ratio = mat.elastic->poissons_ratio;
-  c.expansion = mat.expansion ? mat.expansion->alpha : 0.0;
-  elements::MisesHardening h = elements::isotropic_hardening(p.table);
-  h.kinematic = p.hardening == model::Plastic::Hardening::Kinematic;
-  return std::make_shared<elements::MisesPlasticity>(c, std::move(h), model::ElementFamily::PlaneStress);
+  return plastic_law(m, mat, model::ElementFamily::PlaneStress, c, false, warnings);
 }
 
 }  // namespace
@@ -115,13 +120,13 @@ void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
   for (const model::ShellSection& sec : m.mesh.shell_sections) {
     const elements::ShellProperties* p =
         am.shells.emplace_back(std::make_shared<elements::ShellProperties>(shell_section_properties(m, sec))).get();
-    const std::shared_ptr<const elements::Material> plastic = shell_plastic_law(m, sec);
-    if (plastic) am.materials.push_back(plastic);
+    const std::shared_ptr<const elements::Material> law = shell_point_law(m, sec, am.warnings);
+    if (law) am.materials.push_back(law);
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];
       s.section.shell = p;
-      if (plastic) s.material = plastic.get();
+      if (law) s.material = law.get();
       s.section.thickness = model::shell_thickness(m.mesh, sec, e);
       if (sec.nodal_thickness) {
         const auto nodes = m.mesh.elements.nodes_of(e);

@@ -443,9 +443,8 @@ void compute_with(const model::ElementTypeInfo& type, std::span<const Vec3> coor
                   std::span<const double> delta_t, const ElementHistory& history, ElementSystem& out) {
   if (model::is_shell(type)) {
     if (!section.shell) throw std::invalid_argument("compute_element: a shell without its section");
-    ShellMaterial material;
-    if constexpr (std::is_same_v<Law, Material>)
-      if (law.state_size() > 0) material = {&law, history};
+    ShellMaterial material;  // none: the section's elastic laminae of constants
+    if (law.state_size() > 0 || law.temperature_dependent()) material = {&law, history};
     const ShellNodeData at_nodes(section.thickness, section.nodal_thickness, section.shell_directors);
     compute_shell(type, coords, u, *section.shell, at_nodes, request, delta_t, material, out);
     return;

@@ -62,7 +62,8 @@ struct ElementRequest {
   bool point_output = false;   ///< fill ElementSystem::points (stress, strain, coordinates)
   bool nlgeom = false;         ///< total Lagrangian, St. Venant–Kirchhoff (see continuum_kinematics.hpp)
   /// The temperature T of each node of the element, for a material whose data depend on it
-  /// (Material::temperature_dependent); empty: T = 0 at every point.
+  /// (Material::temperature_dependent); empty: T = 0 at every point. A shell's may hold the
+  /// gradient ∂T/∂n at its nodes after them (compute_shell).
   std::span<const double> temperature = {};
 };
 

@@ -172,13 +172,13 @@ LaminaPoint elastic_lamina(const ShellLamina& lamina, std::array<double, 5> e, d
 /// A lamina of a material with state (a Mises law for plane stress, shell_element_setup.cpp):
 /// the law at the in-plane strains (ε11, ε22, γ12; it finds ε33 for σ33 = 0), from the point's
 /// committed state into its trial state; the transverse shear elastic.
-LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e, double thermal, const Vec3& position,
-                            const Matrix2x2& shear, const PointHistory& history) {
+LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e, double thermal, double temperature,
+                            const Vec3& position, const Matrix2x2& shear, const PointHistory& history) {
   static const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   const Vec6 strain = (Vec6() << e[0], e[1], 0.0, e[2], 0.0, 0.0).finished();
   Vec6 stress;
   Mat6 scratch;
-  const Mat6& d = law.update({identity, strain, thermal, &position, false, 0.0}, history, stress, scratch);
+  const Mat6& d = law.update({identity, strain, thermal, &position, false, temperature}, history, stress, scratch);
   constexpr int in_plane[3] = {0, 1, 3};
   LaminaPoint l;
   l.stress = {stress[0], stress[1], stress[3], shear[0][0] * e[3] + shear[0][1] * e[4],
@@ -283,10 +283,15 @@ namespace {
 
 /// The transverse shear moduli at a section point of the lamina `here` (turned into the local
 /// axes): *TRANSVERSE SHEAR STIFFNESS's K/t, else 5/6 of the lamina's own.
-Matrix2x2 transverse_shear_moduli(const ShellProperties& section, const ShellLamina& here, double thickness) {
+Matrix2x2 transverse_shear_moduli(const ShellProperties& section, const ShellLamina& here, double thickness,
+                                  const Material* law, double temperature) {
   if (section.transverse_shear)
     return {{{(*section.transverse_shear)[0] / thickness, 0.0}, {0.0, (*section.transverse_shear)[1] / thickness}}};
   Matrix2x2 g = here.shear;
+  if (law && law->temperature_dependent()) {  // an isotropic law: G at the point's temperature
+    const double g_here = law->elastic_at(temperature).shear_modulus();
+    g = {{{g_here, 0.0}, {0.0, g_here}}};
+  }
   for (auto& row : g)
     for (double& v : row) v *= 5.0 / 6;
   return g;
@@ -311,6 +316,19 @@ bool shell_geometry(const model::ElementTypeInfo& type, std::span<const Vec3> co
     if (!(geo.thickness[a] > 0.0)) return false;
   }
   return true;
+}
+
+/// N and M (N11, N22, N12, M11, M22, M12, in the shell's default axes at `mid`) turned into the
+/// axes of the section's orientation there.
+std::array<double, 6> section_force_in_section_axes(const ShellProperties& section, const CovariantPoint& mid,
+                                                    const std::array<double, 6>& in_default_axes) {
+  std::array<Vec3, 3> axes;
+  if (!shell_axes(mid.g[0], mid.g[1], axes)) return in_default_axes;
+  const double theta = orientation_angle(section.orientation, axes, mid.x);
+  const auto& f = in_default_axes;
+  const std::array<double, 5> n = stresses_in_material_axes({f[0], f[1], f[2], 0.0, 0.0}, theta);
+  const std::array<double, 5> m = stresses_in_material_axes({f[3], f[4], f[5], 0.0, 0.0}, theta);
+  return {n[0], n[1], n[2], m[0], m[1], m[2]};
 }
 
 /// The small-strain shell (shell_elements.hpp).
@@ -339,6 +357,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     std::array<double, 6> section_force{};  // N11, N22, N12, M11, M22, M12
     const std::size_t first_reported = out.points.size();  // every section point, from SNEG up
     double temperature = 0.0, gradient = 0.0;  // ΔT on the reference surface and Δ(∂T/∂n) here
+    double reference_t = 0.0, reference_g = 0.0;  // T itself and ∂T/∂n, for temperature-dependent data
     for (std::size_t k = 0; k < section.zeta.size(); ++k) {
       const double zeta = section.zeta[k];
       CovariantPoint p = covariant_point(geo, xi, eta, zeta);
@@ -353,9 +372,16 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
           if (delta_t.size() > static_cast<std::size_t>(geo.n))
             gradient += p.N[a] * delta_t[static_cast<std::size_t>(geo.n + a)];
         }
+      if (k == 0 && !request.temperature.empty())
+        for (int a = 0; a < geo.n; ++a) {
+          reference_t += p.N[a] * request.temperature[static_cast<std::size_t>(a)];
+          if (request.temperature.size() > static_cast<std::size_t>(geo.n))
+            reference_g += p.N[a] * request.temperature[static_cast<std::size_t>(geo.n + a)];
+        }
       // At the section point, z from the reference surface along the director (the kernel's
       // z(ζ) = t (ζ/2 − offset)).
-      const double at_point = temperature + t_here * (zeta / 2 - geo.offset) * gradient;
+      const double z = t_here * (zeta / 2 - geo.offset);
+      const double at_point = temperature + z * gradient, temperature_here = reference_t + z * reference_g;
       tie_transverse_shear(geo, xi, eta, zeta, p);
       std::array<Vec3, 3> axes;
       if (!shell_axes(p.g[0], p.g[1], axes)) {
@@ -371,10 +397,11 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       const ShellLayerProperties& layer = section.layer_at(k);
       const double theta = material_angle(layer, axes, p.x);
       const ShellLamina here = turned_lamina(layer.lamina, theta);
-      const double thermal = here.expansion * at_point;
-      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here);
-      const LaminaPoint lamina = material.law ? material_lamina(*material.law, strain, thermal, p.x, shear,
-                                                                material.history.at(point))
+      const double thermal = material.law ? material.law->thermal_strain(temperature_here, at_point)
+                                          : here.expansion * at_point;
+      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here, material.law, temperature_here);
+      const LaminaPoint lamina = material.law ? material_lamina(*material.law, strain, thermal, temperature_here, p.x,
+                                                                shear, material.history.at(point))
                                               : elastic_lamina(here, strain, thermal, shear);
       const std::array<double, 5>& stress = lamina.stress;
       const double dv = q.weight * section.weight[k] * p.det;
@@ -408,6 +435,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
     if (!request.point_output) continue;
     const CovariantPoint mid = covariant_point(geo, xi, eta, 0.0);
     const double da = q.weight * norm(cross(mid.g[0], mid.g[1]));
+    if (section.orientation) section_force = section_force_in_section_axes(section, mid, section_force);
     // Each section point stands for its Simpson share of t·dA: sums over the points (ALLSE,
     // centroids, the stabilisation's lumped mass) integrate through the thickness.
     for (std::size_t k = 0; k < section.zeta.size(); ++k) {

@@ -77,8 +77,10 @@ std::size_t shell_material_points(const model::ElementTypeInfo& type, const Shel
 /// order above; coords the reference nodes; at_nodes its thickness and directors; delta_t the
 /// nodes' temperature change on the reference surface (empty: none), then, when it holds twice
 /// the nodes, the change of the temperature's gradient ∂T/∂n through the thickness at them: the
-/// thermal strain at a section point z from the reference surface is α (ΔT + z Δg). Linear with the section's elastic lamina; with a law of
-/// `material`, its plane stress state at each section point (PE, PEEQ in the points' output).
+/// thermal strain at a section point z from the reference surface is α (ΔT + z Δg). Linear with
+/// the section's elastic lamina; with a law of `material`, its plane stress state at each section
+/// point (PE, PEEQ in the points' output) at the temperature T + z g there, T (and g after it,
+/// when request.temperature holds twice the nodes) interpolated from request.temperature.
 void compute_shell(const model::ElementTypeInfo& type, std::span<const Vec3> coords, std::span<const double> u,
                    const ShellProperties& section, const ShellNodeData& at_nodes, const ElementRequest& request,
                    std::span<const double> delta_t, const ShellMaterial& material, ElementSystem& out);

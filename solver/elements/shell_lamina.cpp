@@ -85,10 +85,15 @@ std::array<double, 5> stresses_in_material_axes(const std::array<double, 5>& e, 
 }
 
 double material_angle(const ShellLayerProperties& layer, const std::array<Vec3, 3>& axes, const Vec3& x) {
-  if (!layer.orientation) return layer.angle;
-  const Eigen::Matrix3d q = layer.orientation->axes_at(x);
+  return orientation_angle(layer.orientation, axes, x) + layer.angle;
+}
+
+double orientation_angle(const std::optional<MaterialOrientation>& orientation, const std::array<Vec3, 3>& axes,
+                         const Vec3& x) {
+  if (!orientation) return 0.0;
+  const Eigen::Matrix3d q = orientation->axes_at(x);
   const Eigen::Vector3d n(axes[2][0], axes[2][1], axes[2][2]);
-  const int first = layer.orientation->shell_projected_axis(), second = (first + 1) % 3;
+  const int first = orientation->shell_projected_axis(), second = (first + 1) % 3;
   Eigen::Vector3d m = q.row(first).transpose() - q.row(first).dot(n) * n;
   double back = 0.0;
   if (m.norm() < std::sin(0.1 * std::numbers::pi / 180)) {  // within 0.1° of the normal: the next
@@ -96,7 +101,7 @@ double material_angle(const ShellLayerProperties& layer, const std::array<Vec3, 
     back = -std::numbers::pi / 2;
   }
   const Eigen::Vector3d e1(axes[0][0], axes[0][1], axes[0][2]), e2(axes[1][0], axes[1][1], axes[1][2]);
-  return std::atan2(m.dot(e2), m.dot(e1)) + back + layer.angle;
+  return std::atan2(m.dot(e2), m.dot(e1)) + back;
 }
 
 }  // namespace inpact::solver::elements

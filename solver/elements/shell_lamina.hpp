@@ -59,5 +59,8 @@ struct ShellLayerProperties {
 /// on the surface, or, where that axis lies within 0.1° of the normal, the next axis's
 /// projection turned back by 90°.
 double material_angle(const ShellLayerProperties& layer, const std::array<Vec3, 3>& axes, const Vec3& x);
+/// The same for an orientation alone (none: 0), the axes of an oriented section's SF and SM.
+double orientation_angle(const std::optional<MaterialOrientation>& orientation, const std::array<Vec3, 3>& axes,
+                         const Vec3& x);
 
 }  // namespace inpact::solver::elements

@@ -27,6 +27,9 @@ struct ShellProperties {
   /// taken uniform through the thickness, its modulus K/t. Unset: 5/6 of each layer's own G at
   /// its section points (5/6 Σ G_k t_k in all, the thickness-weighted mean of the layers').
   std::optional<std::array<double, 2>> transverse_shear;
+  /// The section's *ORIENTATION (ORIENTATION=): the axes SF and SM are reported in (Abaqus
+  /// outputs a shell's element variables in its local directions); none: the shell's default.
+  std::optional<MaterialOrientation> orientation;
 
   const ShellLayerProperties& layer_at(std::size_t point) const {
     return layers[static_cast<std::size_t>(layer_of[point])];

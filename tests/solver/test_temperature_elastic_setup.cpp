@@ -78,7 +78,7 @@ TEST(TemperatureElasticSetup, DirectionalElasticityWithAnExpansionTableIsRefused
       << setup_error(deck);
 }
 
-TEST(TemperatureElasticSetup, TrussesBeamsAndShellsRefuseTables) {
+TEST(TemperatureElasticSetup, TrussesBeamsAndLayeredShellsRefuseTables) {
   const std::string truss = std::string(kNodes) + "*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n"
                             "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n" + kTable;
   EXPECT_NE(setup_error(truss).find("together with T3D2 elements is not supported yet"), std::string::npos)
@@ -88,8 +88,15 @@ TEST(TemperatureElasticSetup, TrussesBeamsAndShellsRefuseTables) {
                            "*MATERIAL, NAME=M\n" + kTable;
   EXPECT_NE(setup_error(beam).find("together with beam elements is not supported yet"), std::string::npos)
       << setup_error(beam);
+  // A shell of one isotropic material reads its tables at each section point
+  // (test_shell_temperature.cpp); a COMPOSITE's layers are integrated from constants.
   const std::string shell = std::string(kNodes) + "*ELEMENT, TYPE=S4, ELSET=S\n1, 1, 2, 3, 4\n"
                             "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n" + kTable;
-  EXPECT_NE(setup_error(shell).find("together with shell elements is not supported yet"), std::string::npos)
-      << setup_error(shell);
+  EXPECT_EQ(setup_error(shell), "");
+  const std::string layered = std::string(kNodes) + "*ELEMENT, TYPE=S4, ELSET=S\n1, 1, 2, 3, 4\n"
+                              "*SHELL SECTION, ELSET=S, COMPOSITE\n0.05, 3, M\n0.05, 3, M\n*MATERIAL, NAME=M\n" + kTable;
+  EXPECT_NE(setup_error(layered).find("together with a COMPOSITE, general or directional shell section is not "
+                                      "supported yet"),
+            std::string::npos)
+      << setup_error(layered);
 }

@@ -10,7 +10,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <numbers>
 #include <sstream>
+
+#include <fmt/format.h>
 
 #include "fixtures/deck_fixture.hpp"
 #include "verification_fixture.hpp"
@@ -161,6 +164,39 @@ TEST(ShellComposites, InnerPliesAreReportedAtTheSectionPointsAskedFor) {
     EXPECT_NEAR(sp5[1] / sp2[0], kE2 / (3 * kE1), 1e-8) << i;
     EXPECT_NEAR(sp11[0], -sp2[0], 1e-9 * scale) << i;
     EXPECT_NEAR(sp8[1], -sp5[1], 1e-9 * scale) << i;
+  }
+}
+
+// SF and SM are reported in the axes of the section's ORIENTATION, as S is (Abaqus gives a shell's
+// element variables in its local directions). A plate of four S4 (4 × 1, t = 0.1, isotropic) held
+// in its plane and pulled along x by N = 1 a length: in axes turned by 30° about the normal, SF1 =
+// N cos²30°, SF2 = N sin²30°, SF3 = −N sin 30° cos 30° and t·S at every point, to 1e-12; without
+// the orientation SF = (N, 0, 0).
+TEST(ShellComposites, SectionForcesAreReportedInTheSectionOrientation) {
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  for (const bool oriented : {false, true}) {
+    std::string deck = "*NODE, NSET=ALL\n";
+    for (int i = 0; i <= 4; ++i) deck += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 1, i, i + 11, i);
+    deck += "*ELEMENT, TYPE=S4, ELSET=PLATE\n";
+    for (int i = 0; i < 4; ++i) deck += fmt::format("{}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 12, i + 11);
+    deck += fmt::format("*ORIENTATION, NAME=TURNED\n{}, {}, 0., {}, {}, 0.\n", c, s, -s, c);
+    deck += std::string("*SHELL SECTION, ELSET=PLATE, MATERIAL=M") + (oriented ? ", ORIENTATION=TURNED" : "") +
+            "\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*BOUNDARY\n1, 1, 2\n11, 1, 1\nALL, 3, 6\n"
+            "*STEP\n*STATIC\n*CLOAD\n5, 1, 0.5\n15, 1, 0.5\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, SF\n*END STEP\n";
+    const test::DeckDir dir;
+    const auto r = run_deck(dir.write("deck.inp", deck));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::FieldData& sf = *field(r->capture.last(), "SF");
+    const solver::FieldData& stress = *field(r->capture.last(), "S");
+    ASSERT_EQ(sf.component_labels.size(), 3u);
+    const std::array<double, 3> expected = oriented ? std::array{c * c, s * s, -s * c} : std::array{1.0, 0.0, 0.0};
+    const std::size_t n = stress.component_labels.size();
+    for (std::size_t i = 0; i < sf.elements.size(); ++i)
+      for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_NEAR(sf.values[3 * i + k], expected[k], 1e-12) << "oriented " << oriented << " SF" << k + 1;
+        const std::size_t slot = k == 2 ? 3 : k;  // S11, S22, S12
+        EXPECT_NEAR(0.1 * stress.values[n * (2 * i) + slot], expected[k], 1e-12) << "S at SNEG, " << k;
+      }
   }
 }
 

@@ -120,6 +120,34 @@ TEST(ShellTemperature, AHeldStripCarriesTheThermalStressThroughItsThickness) {
   }
 }
 
+// The held strip of a material whose E and α depend on temperature (E = 2e5 − 1e3 T, α = 1e-5 +
+// 1e-7 T from rows at 0 and 100, reference temperature 0): S11 = −E(T) ε_th/(1 − ν) with ε_th =
+// α(T) T − α(Tᴵ) Tᴵ at each section point's own T = 50 + 100 z, from an initial 0 and from an
+// initial 20 + 40 z (the gradient of *INITIAL CONDITIONS), to 1e-9.
+TEST(ShellTemperature, TemperatureTablesAreReadAtEachSectionPoint) {
+  const std::string constant = fmt::format("*ELASTIC\n{}, {}\n*EXPANSION\n{}\n", kE, kNu, kAlpha);
+  const std::string tables = "*ELASTIC\n2e5, 0.3, 0.\n1e5, 0.3, 100.\n*EXPANSION\n1e-5, 0.\n2e-5, 100.\n";
+  const auto E = [](double T) { return 2e5 - 1e3 * T; };
+  const auto alpha = [](double T) { return 1e-5 + 1e-7 * T; };
+  for (const std::string type : {"S4", "S8R"})
+    for (const auto& [t0, g0] : {std::pair{0.0, 0.0}, std::pair{20.0, 40.0}}) {
+      std::string deck = strip(type, "ALL, ENCASTRE\n", "50., 100.", 0.0);
+      deck.replace(deck.find(constant), constant.size(), tables);
+      const std::string initial = "TYPE=TEMPERATURE\nALL, 0.\n";
+      deck.replace(deck.find(initial), initial.size(), fmt::format("TYPE=TEMPERATURE\nALL, {}, {}\n", t0, g0));
+      const auto r = run_text(deck);
+      ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+      const solver::FieldData& s = *field(*r->capture.of_step(1).back(), "S");
+      const std::size_t n = s.component_labels.size();
+      for (std::size_t i = 0; i < s.elements.size(); ++i) {
+        const double z = s.section_point[i] == 1 ? -kT / 2 : kT / 2;
+        const double T = 50 + 100 * z, Ti = t0 + g0 * z;
+        const double expected = -E(T) * (alpha(T) * T - alpha(Ti) * Ti) / (1 - kNu);
+        EXPECT_NEAR(s.values[i * n], expected, 1e-9 * std::abs(expected)) << type << " T0 " << t0 << " z " << z;
+      }
+    }
+}
+
 // *ELEMENT OUTPUT with a section-point line reports those points, numbered from SNEG (1) to SPOS
 // (5) through the default five: the same closed form at z = t (k − 3)/4, and at each in-plane
 // point exactly the points asked for, in order. *EL PRINT keeps Abaqus's default, SNEG and SPOS.

@@ -181,7 +181,7 @@ inline double sum_abs_rf(const Run& r, const solver::Frame& f) {
 struct PointValue {
   std::int64_t element;
   int ip;
-  std::array<double, 3> x;
+  std::array<double, 3> x{};  ///< the point's reference coordinates (0 for a shell's or beam's)
   std::vector<double> s;  ///< components as in the frame (4 in 2D, 6 in 3D)
 };
 
@@ -194,6 +194,7 @@ inline std::vector<PointValue> point_values(const Run& r, const solver::Frame& f
   std::map<std::int64_t, std::vector<solver::elements::Vec3>> pts;
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const auto& type = model::element_type(mesh.elements.type[e]);
+    if (!model::is_continuum(type)) continue;  // shells, beams: x stays 0
     std::vector<solver::elements::Vec3> x;
     for (std::int32_t n : mesh.elements.nodes_of(e)) {
       const auto& c = mesh.nodes.coords[n];
@@ -213,8 +214,10 @@ inline std::vector<PointValue> point_values(const Run& r, const solver::Frame& f
     PointValue p;
     p.element = fd->elements[i];
     p.ip = fd->ip[i];
-    const auto& c = pts.at(p.element).at(static_cast<std::size_t>(p.ip - 1));
-    p.x = {c[0], c[1], c[2]};
+    if (const auto at = pts.find(p.element); at != pts.end()) {
+      const auto& c = at->second.at(static_cast<std::size_t>(p.ip - 1));
+      p.x = {c[0], c[1], c[2]};
+    }
     p.s.assign(fd->values.begin() + static_cast<std::ptrdiff_t>(i * ncomp),
                fd->values.begin() + static_cast<std::ptrdiff_t>((i + 1) * ncomp));
     out.push_back(std::move(p));
