@@ -2,6 +2,7 @@
 /// Boundary conditions, loads, amplitudes, constraints and initial conditions.
 /// Targets are resolved to rows by the parser; `target` keeps the text as written for reports.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -67,7 +68,8 @@ struct DloadEntry {
   std::vector<std::int32_t> elements;  ///< rows
   std::vector<std::uint8_t> faces;     ///< Pressure: face per element (0 = S1)
   double magnitude = 0.0;
-  std::array<double, 3> direction{0, 0, 0};  ///< Gravity; BodyForce (unit axis); CENTRIF, ROTA: the rotation axis (unit)
+  /// Gravity; BodyForce (unit axis); CENTRIF, ROTA: the rotation axis (unit)
+  std::array<double, 3> direction{0, 0, 0};
   std::array<double, 3> point{0, 0, 0};      ///< CENTRIF, ROTA: a point on the rotation axis
   SourceLoc loc;
 };
@@ -76,6 +78,26 @@ struct DloadEntry {
 inline bool scales_with_density(DloadEntry::Kind kind) {
   return kind == DloadEntry::Kind::Gravity || kind == DloadEntry::Kind::Centrifugal ||
          kind == DloadEntry::Kind::RotaryAcceleration;
+}
+
+/// Which load of element i of `e` a definition is, so that a later one of the same replaces it
+/// (another step) or adds to it (the same step): the face for pressure (0 = S1), 100 + the axis
+/// for a body force, 200 gravity, 300 CENTRIF, 400 ROTA.
+inline int dload_slot(const DloadEntry& e, std::size_t i) {
+  switch (e.kind) {
+    case DloadEntry::Kind::Pressure: return e.faces[i];
+    case DloadEntry::Kind::BodyForce: {
+      int axis = 0;
+      for (int c = 1; c < 3; ++c)
+        if (std::abs(e.direction[static_cast<std::size_t>(c)]) > std::abs(e.direction[static_cast<std::size_t>(axis)]))
+          axis = c;
+      return 100 + axis;
+    }
+    case DloadEntry::Kind::Gravity: return 200;
+    case DloadEntry::Kind::Centrifugal: return 300;
+    case DloadEntry::Kind::RotaryAcceleration: return 400;
+  }
+  return 0;
 }
 
 struct DloadBlock {

@@ -185,7 +185,7 @@ void cload(KeywordContext& ctx) {
     if (*dof > 3 && !reference_nodes && !has_rotating_elements(ctx.mesh()))
       ctx.warning(f[1].loc, fmt::format("DOF {} is a rotation: inpact's solid and plane elements have none, so "
                                         "this moment acts on nothing", *dof));
-    b.entries.push_back({std::string(f[0].text), std::move(*nodes), *dof, *magnitude, line.loc});
+    b.entries.push_back({std::string(f[0].text), std::move(*nodes), *dof, *magnitude, f[0].loc});
   }
   ctx.state.step->cloads.push_back(std::move(b));
 }
@@ -323,7 +323,7 @@ void dload(KeywordContext& ctx) {
     model::DloadEntry e;
     e.target = std::string(f[0].text);
     e.magnitude = *magnitude;
-    e.loc = line.loc;
+    e.loc = f[0].loc;
     const bool face_label = label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '9';
     if (label == "P") {
       // A shell's positive pressure acts along its positive normal (Abaqus: "the force vector points
@@ -412,7 +412,7 @@ void dsload(KeywordContext& ctx) {
     e.kind = model::DloadEntry::Kind::Pressure;
     e.target = std::string(f[0].text);
     e.magnitude = *magnitude;
-    e.loc = line.loc;
+    e.loc = f[0].loc;
     for (const model::Face& face : it->second.faces) {
       e.elements.push_back(face.element);
       e.faces.push_back(face.face);

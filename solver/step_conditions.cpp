@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "elements/face_loads.hpp"
 
@@ -11,31 +12,24 @@ namespace {
 
 using Key = ConditionHistory::DloadKey;
 
-/// Key of a distributed-load definition: the face for pressure, the axis for body forces.
-int dload_key(const model::DloadEntry& e, std::size_t i) {
-  switch (e.kind) {
-    case model::DloadEntry::Kind::Pressure: return e.faces[i];
-    case model::DloadEntry::Kind::BodyForce:
-      return 100 + static_cast<int>(std::max_element(e.direction.begin(), e.direction.end(),
-                                                     [](double a, double b) { return std::abs(a) < std::abs(b); }) -
-                                    e.direction.begin());
-    case model::DloadEntry::Kind::Gravity: return 200;
-    case model::DloadEntry::Kind::Centrifugal: return 300;
-    case model::DloadEntry::Kind::RotaryAcceleration: return 400;
-  }
-  return 0;
+/// Whether a step starts its definitions of one kind afresh: OP=NEW on any of its blocks of that
+/// kind removes what earlier steps defined, not what the step's other blocks define (Abaqus/CAE
+/// writes OP=NEW on each of a step's blocks; CalculiX reads it on the first).
+template <class Block>
+bool renews(const std::vector<Block>& blocks) {
+  return std::any_of(blocks.begin(), blocks.end(), [](const Block& b) { return b.op == model::Op::New; });
 }
 
 /// *BOUNDARY blocks applied to a map of DOF definitions; OP=NEW empties it first and records
-/// the DOFs it released.
+/// the DOFs it released. A DOF given twice takes the later value.
 void apply_boundaries(const AnalysisModel& am, const std::vector<model::BoundaryBlock>& blocks,
                       std::map<std::int64_t, ConditionHistory::Value>& defs, std::vector<std::int64_t>* released) {
+  if (renews(blocks)) {
+    if (released)
+      for (const auto& [d, v] : defs) released->push_back(d);
+    defs.clear();
+  }
   for (const auto& b : blocks) {
-    if (b.op == model::Op::New) {
-      if (released)
-        for (const auto& [d, v] : defs) released->push_back(d);
-      defs.clear();
-    }
     for (const auto& e : b.entries)
       for (std::int32_t node : e.nodes)
         for (int dof = e.first_dof; dof <= e.last_dof; ++dof) {
@@ -77,31 +71,14 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
     if (!target_.boundary.count(d) && d < static_cast<std::int64_t>(previous.reactions.size()))
       released_reaction_[d] = previous.reactions[d];
 
-  for (const auto& b : step.cloads) {
-    if (b.op == model::Op::New) target_.cload.clear();
-    for (const auto& e : b.entries)
-      for (std::int32_t node : e.nodes)
-        if (const std::int64_t d = am.dof_index(node, e.dof); d >= 0)
-          target_.cload[d] = {e.magnitude, b.amplitude, e.magnitude};
+  apply_cloads(step.cloads);
+  apply_dloads(step.dloads);
+  const bool temperatures_renewed = renews(step.temperatures);
+  if (temperatures_renewed) {
+    target_.temperature.clear();
+    target_.temperature_gradient.clear();
   }
-  for (const auto& b : step.dloads) {
-    if (b.op == model::Op::New)
-      std::erase_if(target_.dload, [&](const auto& kv) { return kv.first.surface_load == b.surface_load; });
-    for (const auto& e : b.entries)
-      for (std::size_t i = 0; i < e.elements.size(); ++i) {
-        const Key key{e.elements[i], dload_key(e, i), b.surface_load};
-        double magnitude = e.magnitude;
-        if (model::scales_with_density(e.kind)) magnitude *= am.elements[e.elements[i]].density;
-        target_.dload[key] = {magnitude, e.direction, e.point, b.amplitude, magnitude};
-      }
-  }
-  bool temperatures_renewed = false;
   for (const auto& b : step.temperatures) {
-    if (b.op == model::Op::New) {
-      target_.temperature.clear();
-      target_.temperature_gradient.clear();
-      temperatures_renewed = true;
-    }
     for (const auto& e : b.entries)
       for (std::int32_t n : e.nodes) {
         target_.temperature[n] = {e.value, b.amplitude, e.value};
@@ -117,6 +94,53 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
   for (const auto& [d, v] : target_.boundary) prescribed_[d] = 1;
   for (const auto& [k, v] : previous_.dload) add_dload_shape(k);
   for (const auto& [k, v] : target_.dload) add_dload_shape(k);
+}
+
+/// A step's *CLOAD blocks: a DOF they load replaces its load of earlier steps; a DOF loaded
+/// twice in the step carries the sum (Abaqus and CalculiX; one amplitude, parser/finalize.cpp).
+void StepConditions::apply_cloads(const std::vector<model::CloadBlock>& blocks) {
+  if (renews(blocks)) target_.cload.clear();
+  std::set<std::int64_t> loaded_in_step;
+  for (const auto& b : blocks)
+    for (const auto& e : b.entries)
+      for (std::int32_t node : e.nodes) {
+        const std::int64_t d = am_.dof_index(node, e.dof);
+        if (d < 0) continue;
+        if (loaded_in_step.insert(d).second) target_.cload[d] = {e.magnitude, b.amplitude, e.magnitude};
+        else target_.cload[d].value += e.magnitude, target_.cload[d].end_value += e.magnitude;
+      }
+}
+
+/// A step's *DLOAD and *DSLOAD blocks, by the same rule per element face or body load:
+/// gravities add as vectors, CENTRIF and ROTA about one axis (parser/finalize.cpp) by their
+/// magnitudes. OP=NEW of *DLOAD removes the earlier *DLOADs, of *DSLOAD the *DSLOADs.
+void StepConditions::apply_dloads(const std::vector<model::DloadBlock>& blocks) {
+  for (const bool surface_load : {false, true})
+    if (std::any_of(blocks.begin(), blocks.end(),
+                    [&](const auto& b) { return b.surface_load == surface_load && b.op == model::Op::New; }))
+      std::erase_if(target_.dload, [&](const auto& kv) { return kv.first.surface_load == surface_load; });
+  std::set<Key> loaded_in_step;
+  for (const auto& b : blocks)
+    for (const auto& e : b.entries)
+      for (std::size_t i = 0; i < e.elements.size(); ++i) {
+        const Key key{e.elements[i], model::dload_slot(e, i), b.surface_load};
+        double magnitude = e.magnitude;
+        if (model::scales_with_density(e.kind)) magnitude *= am_.elements[e.elements[i]].density;
+        if (loaded_in_step.insert(key).second) {
+          target_.dload[key] = {magnitude, e.direction, e.point, b.amplitude, magnitude};
+          continue;
+        }
+        ConditionHistory::DloadValue& v = target_.dload[key];
+        if (key.key == 200) {  // g1 d1 + g2 d2: the sum's length and direction
+          std::array<double, 3> g{};
+          for (int c = 0; c < 3; ++c) g[c] = v.value * v.direction[c] + magnitude * e.direction[c];
+          v.value = std::hypot(g[0], g[1], g[2]);
+          for (int c = 0; c < 3; ++c) v.direction[c] = v.value > 0.0 ? g[c] / v.value : 0.0;
+        } else {
+          v.value += magnitude;
+        }
+        v.end_value = v.value;
+      }
 }
 
 void StepConditions::add_dload_shape(const Key& key) {

@@ -106,6 +106,8 @@ class StepConditions {
   double amplitude(const std::string& name, double t) const;
   /// OP=NEW: the temperatures it removed return to their initial values over the step.
   void return_removed_temperatures();
+  void apply_cloads(const std::vector<model::CloadBlock>& blocks);
+  void apply_dloads(const std::vector<model::DloadBlock>& blocks);
   /// The change at step time t of a nodal field (temperature_change).
   void nodal_change(const std::map<std::int32_t, ConditionHistory::Value>& previous,
                     const std::map<std::int32_t, ConditionHistory::Value>& target, std::span<const double> initial,

@@ -169,7 +169,8 @@ LaminaPoint elastic_lamina(const ShellLamina& lamina, std::array<double, 5> e, d
   return l;
 }
 
-/// A lamina of a material with state (a Mises law for plane stress, shell_element_setup.cpp):
+/// A lamina of a material law (plane-stress Mises plasticity, or elasticity with temperature
+/// tables; shell_element_setup.cpp):
 /// the law at the in-plane strains (ε11, ε22, γ12; it finds ε33 for σ33 = 0), from the point's
 /// committed state into its trial state; the transverse shear elastic.
 LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e, double thermal, double temperature,
@@ -284,12 +285,14 @@ namespace {
 /// The transverse shear moduli at a section point of the lamina `here` (turned into the local
 /// axes): *TRANSVERSE SHEAR STIFFNESS's K/t, else 5/6 of the lamina's own.
 Matrix2x2 transverse_shear_moduli(const ShellProperties& section, const ShellLamina& here, double thickness,
-                                  const Material* law, double temperature) {
+                                  const Material* law, double initial_temperature) {
   if (section.transverse_shear)
     return {{{(*section.transverse_shear)[0] / thickness, 0.0}, {0.0, (*section.transverse_shear)[1] / thickness}}};
   Matrix2x2 g = here.shear;
-  if (law && law->temperature_dependent()) {  // an isotropic law: G at the point's temperature
-    const double g_here = law->elastic_at(temperature).shear_modulus();
+  // An isotropic law with temperature tables: G at the point's initial temperature, as Abaqus
+  // sizes a section's derived stiffnesses from the initial elastic properties.
+  if (law && law->temperature_dependent()) {
+    const double g_here = law->elastic_at(initial_temperature).shear_modulus();
     g = {{{g_here, 0.0}, {0.0, g_here}}};
   }
   for (auto& row : g)
@@ -399,7 +402,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
       const ShellLamina here = turned_lamina(layer.lamina, theta);
       const double thermal = material.law ? material.law->thermal_strain(temperature_here, at_point)
                                           : here.expansion * at_point;
-      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here, material.law, temperature_here);
+      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here, material.law, temperature_here - at_point);
       const LaminaPoint lamina = material.law ? material_lamina(*material.law, strain, thermal, temperature_here, p.x,
                                                                 shear, material.history.at(point))
                                               : elastic_lamina(here, strain, thermal, shear);

@@ -121,7 +121,8 @@ TEST(Loads, CloadDloadAndTemperatureInAStep) {
 TEST(Loads, GravityNeedsADensity) {
   DeckDir dir;
   auto r = dir.read(cube_step("", "*DLOAD\nCUBE, GRAV, 9.81, 0, 0, -1\n"));
-  EXPECT_TRUE(has_diagnostic(r, "deck.inp:23: error: *DLOAD: GRAV needs the density of material 'STEEL' (add *DENSITY to it)"))
+  EXPECT_TRUE(has_diagnostic(
+      r, "deck.inp:23:1: error: *DLOAD: GRAV needs the density of material 'STEEL' (add *DENSITY to it)"))
       << r.report();
   auto ok = dir.read(one_cube_deck("*DENSITY\n7.8e-9\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 9.81, 0, 0, -1\n*END STEP\n"));
   EXPECT_TRUE(ok.ok()) << ok.report();

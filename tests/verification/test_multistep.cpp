@@ -10,6 +10,11 @@
 //  Step 3 (DIRECT 0.25): RIGHT driven to u1 = 0.4 from where it is (0.09 → 0.4, ramped), 30 at Q
 //    (the step-2 end value, constant): N34 = (1000 u4 − 90)/4, RF1(RIGHT) = N34,
 //    RF1(LEFT) = −(N34 + 30).
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "fixtures/deck_fixture.hpp"
 #include "verification_fixture.hpp"
 
 namespace inpact::verification {
@@ -84,6 +89,78 @@ TEST(MultiStep, OpNewLoadsAndReleasedSupportsRampToZeroAndAmplitudesDriveLoads) 
   }
   report("multistep: worst |value - hand value|", worst);
   report("multistep: Newton iterations (10 increments)", r->capture.iterations);
+}
+
+/// The multistep bar's text with `from` replaced by `to` (once, where it must be).
+std::string bar_with(const std::string& from, const std::string& to) {
+  std::ifstream in(deck_path("multistep_bar.inp"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// Abaqus/CAE writes each boundary condition and load of a step as its own block, every one with
+// OP=NEW when any changes: OP=NEW removes what earlier steps defined, not the step's other
+// blocks. And two loads at one DOF in one step add up (Abaqus, CalculiX). Step 2 of the bar
+// written so (its three support lines as three OP=NEW blocks, its 15 at Q as 10 + 5 in two
+// OP=NEW blocks) gives the same numbers at every increment, to 1e-14.
+TEST(MultiStep, OpNewOnEachBlockOfAStepKeepsTheStepsOwnAndLoadsAtOneDofAdd) {
+  const std::string step2 =
+      "*BOUNDARY, OP=NEW\nLEFT, 1, 1\nY0, 2, 2\nZ0, 3, 3\n*CLOAD, OP=NEW, AMPLITUDE=A2\nQ, 1, 15.\n";
+  const std::string as_cae_writes = "*BOUNDARY, OP=NEW\nLEFT, 1, 1\n*BOUNDARY, OP=NEW\nY0, 2, 2\n*BOUNDARY, OP=NEW\n"
+                                    "Z0, 3, 3\n*CLOAD, OP=NEW, AMPLITUDE=A2\nQ, 1, 10.\n"
+                                    "*CLOAD, OP=NEW, AMPLITUDE=A2\nQ, 1, 5.\n";
+  const std::string cae = bar_with(step2, as_cae_writes);
+  const test::DeckDir dir;
+  const auto written = run_deck(dir.write("cae.inp", cae));
+  const auto reference = run_deck(deck_path("multistep_bar.inp"));
+  ASSERT_TRUE(written->outcome.completed && reference->outcome.completed) << written->outcome.message;
+  ASSERT_EQ(written->capture.frames.size(), reference->capture.frames.size());
+  for (std::size_t k = 0; k < reference->capture.frames.size(); ++k) {
+    const solver::Frame &got = written->capture.frames[k].frame, &want = reference->capture.frames[k].frame;
+    for (std::size_t n = 0; n < reference->model().mesh.nodes.size(); ++n)
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(nodal(got, "U", n, c), nodal(want, "U", n, c), 1e-14) << "frame " << k << " node " << n;
+        EXPECT_NEAR(nodal(got, "RF", n, c), nodal(want, "RF", n, c), 1e-11) << "frame " << k << " node " << n;
+      }
+  }
+}
+
+// Loads that add up need one amplitude: a second load at Q in step 2 under the step's own ramp
+// is a deck error at its line.
+TEST(MultiStep, LoadsAtOneDofInOneStepWithTwoAmplitudesAreRefused) {
+  const std::string deck = bar_with("*CLOAD, OP=NEW, AMPLITUDE=A2\nQ, 1, 15.\n",
+                                    "*CLOAD, OP=NEW, AMPLITUDE=A2\nQ, 1, 10.\n*CLOAD\nQ, 1, 5.\n");
+  const test::DeckDir dir;
+  const parser::ReadResult parsed = parser::read_deck(dir.write("two.inp", deck));
+  ASSERT_FALSE(parsed.ok());
+  const std::string message = parsed.report();
+  EXPECT_NE(message.find("two.inp:79:1: error: *CLOAD: node"), std::string::npos) << message;
+  EXPECT_NE(message.find("is loaded earlier in this step with AMPLITUDE=A2; loads at one DOF in one step add up and "
+                         "need one amplitude"),
+            std::string::npos)
+      << message;
+}
+
+// Two gravities and two pressures on one cube in one step (1 × 1 × 1 C3D8, density 2, its base
+// held): GRAV 10 along −z and 5 along +x, P 3 and 4 on its top. The base carries −(ρ V g) and
+// the pressures' 7: ΣRF = (−10, 0, 20 + 7), to 1e-10.
+TEST(MultiStep, GravitiesAndPressuresInOneStepAdd) {
+  const std::string deck =
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n7, 1., 1., 1.\n"
+      "8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=BASE\n1, 2, 3, 4\n"
+      "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n"
+      "*BOUNDARY\nBASE, ENCASTRE\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 10., 0., 0., -1.\nCUBE, P2, 3.\n"
+      "*DLOAD\nCUBE, GRAV, 5., 1., 0., 0.\nCUBE, P2, 4.\n*OUTPUT, FIELD\n*NODE OUTPUT\nRF\n*END STEP\n";
+  const test::DeckDir dir;
+  const auto r = run_deck(dir.write("cube.inp", deck));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto rf = sum_rf(*r, r->capture.last());
+  EXPECT_NEAR(rf[0], -10.0, 1e-10);
+  EXPECT_NEAR(rf[1], 0.0, 1e-10);
+  EXPECT_NEAR(rf[2], 27.0, 1e-10);
 }
 
 }  // namespace
