@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <string>
-#include <tuple>
 
 #include <fmt/format.h>
 
@@ -310,47 +308,6 @@ void check_contact_changes(const model::Model& m, Diagnostics& diags, const mode
                     fmt::format("no *SURFACE BEHAVIOR follows: the surface behavior of '{}' is not changed", c.interaction));
 }
 
-/// Loads given twice at one DOF (or element face, or body load) in one step add up
-/// (solver/step_conditions.cpp), so they must share an amplitude; CENTRIF and ROTA also their
-/// axis. One error a step and load kind, at the first line that differs.
-void check_cloads_that_add_up(const model::Model& m, Diagnostics& diags, const model::Step& step) {
-  std::map<std::pair<std::int32_t, int>, const std::string*> cload_amplitude;
-  for (const auto& b : step.cloads)
-    for (const auto& e : b.entries)
-      for (std::int32_t node : e.nodes)
-        if (const auto [it, first] = cload_amplitude.try_emplace({node, e.dof}, &b.amplitude);
-            !first && *it->second != b.amplitude) {
-          diags.error(e.loc, "*CLOAD",
-                      fmt::format("node {} DOF {} is loaded earlier in this step with {}; loads at one DOF in one "
-                                  "step add up and need one amplitude",
-                                  m.mesh.nodes.labels[static_cast<std::size_t>(node)], e.dof,
-                                  it->second->empty() ? "the step's default amplitude" : "AMPLITUDE=" + *it->second));
-          return;
-        }
-}
-
-void check_dloads_that_add_up(const model::Model& m, Diagnostics& diags, const model::Step& step) {
-  std::map<std::tuple<std::int32_t, int, bool>, std::pair<const model::DloadBlock*, const model::DloadEntry*>> dload;
-  for (const auto& b : step.dloads)
-    for (const auto& e : b.entries)
-      for (std::size_t i = 0; i < e.elements.size(); ++i) {
-        const auto [it, first] = dload.try_emplace({e.elements[i], model::dload_slot(e, i), b.surface_load}, &b, &e);
-        if (first) continue;
-        const auto& [earlier_block, earlier] = it->second;
-        const bool rotation = e.kind == model::DloadEntry::Kind::Centrifugal ||
-                              e.kind == model::DloadEntry::Kind::RotaryAcceleration;
-        std::string why;
-        if (earlier_block->amplitude != b.amplitude) why = "with another amplitude; such loads add up and need one";
-        else if (rotation && (earlier->direction != e.direction || earlier->point != e.point))
-          why = "about another axis; two rotations of one element in one step are not supported";
-        if (why.empty()) continue;
-        diags.error(e.loc, b.surface_load ? "*DSLOAD" : "*DLOAD",
-                    fmt::format("element {} has this load earlier in this step {}",
-                                m.mesh.elements.labels[static_cast<std::size_t>(e.elements[i])], why));
-        return;
-      }
-}
-
 void check_steps(model::Model& m, Diagnostics& diags) {
   for (const auto& b : m.boundaries) check_amplitude(m, diags, b.amplitude, b.loc, "*BOUNDARY");
   for (const auto& step : m.steps) {
@@ -362,8 +319,6 @@ void check_steps(model::Model& m, Diagnostics& diags) {
       check_amplitude(m, diags, b.amplitude, b.loc, b.surface_load ? "*DSLOAD" : "*DLOAD");
     for (const auto& b : step.temperatures) check_amplitude(m, diags, b.amplitude, b.loc, "*TEMPERATURE");
     check_contact_changes(m, diags, step);
-    check_cloads_that_add_up(m, diags, step);
-    check_dloads_that_add_up(m, diags, step);
   }
   check_density_loads(m, diags);
 }

@@ -1,6 +1,7 @@
 /// *HEADING *NODE *ELEMENT *NSET *ELSET *SURFACE: the mesh and its named regions (an analytical
 /// *SURFACE's profile: kw_analytical_surface.cpp).
 #include <algorithm>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -380,6 +381,10 @@ void surface(KeywordContext& ctx) {
   }
   if (surf.kind == model::Surface::Kind::Element && surf.faces.empty() && !ctx.diags.has_errors())
     ctx.error(ctx.keyword.loc, fmt::format("surface '{}' has no faces", surf.name));
+  // A surface is a set of faces (Abaqus, CalculiX): a face given twice (two overlapping element
+  // sets, an element's free faces and one of them by name) is one face, loaded once.
+  std::set<std::pair<std::int32_t, int>> seen;
+  std::erase_if(surf.faces, [&](const model::Face& face) { return !seen.insert({face.element, face.face}).second; });
 }
 
 }  // namespace

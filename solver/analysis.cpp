@@ -63,6 +63,23 @@ void check_loads_act_on_something(const AnalysisModel& am, std::size_t index, co
                                       am.model->sources.describe(cload_line(am, index, d)), node_dof(am, d)));
 }
 
+}  // namespace
+
+void check_step_setup(const AnalysisModel& am) {
+  ConditionHistory history = initial_history(am);
+  double total_time = 0.0;
+  for (std::size_t index = 0; index < am.model->steps.size(); ++index) {
+    const model::Step& step = am.model->steps[index];
+    const StepConditions conditions(am, step, history, total_time);
+    const DofMap dofs = DofMap::build(am, conditions.prescribed(), step.nlgeom, step_elements(*am.model, index).active);
+    check_loads_act_on_something(am, index, conditions, dofs);
+    history = conditions.end_state(std::vector<double>(am.n_dof(), 0.0));
+    total_time += step.static_procedure->time_period;
+  }
+}
+
+namespace {
+
 /// What a step needs while it runs, built when it starts. Not movable: the assembler keeps a
 /// reference to the DOF map beside it.
 struct StepRun {

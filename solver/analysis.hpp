@@ -38,6 +38,12 @@ AnalysisOutcome run_analysis(const model::Model& model, AnalysisObserver& observ
 struct AnalysisModel;
 class MaterialStates;
 
+/// What each step's run is built from, without analysing: its conditions and its DOF map, with
+/// the deck errors only they find (an *EQUATION on a held DOF, a DOF eliminated twice, a load on
+/// a DOF nothing connects). `inpact check` calls it; a run finds the same errors as it builds
+/// each step (the same functions). Throws AnalysisError.
+void check_step_setup(const AnalysisModel& am);
+
 /// The same for a model already resolved, with the points' material history in `states`
 /// (built for `am`, committed increment after increment): for callers that give elements
 /// their own material laws (tests), or look at the history afterwards.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -54,6 +55,14 @@ Matrix3d skew(const Vector3d& a) {
 
 std::string where(const AnalysisModel& am, const model::Coupling& c) {
   return fmt::format("{}: error: {}: coupling '{}'", am.model->sources.describe(c.loc), c.keyword(), c.name);
+}
+
+/// The DOFs *EQUATION eliminates: each equation's first term's.
+std::set<std::int64_t> equation_dofs(const AnalysisModel& am) {
+  std::set<std::int64_t> out;
+  for (const model::Equation& eq : am.model->equations)
+    if (const std::int64_t d = am.dof_index(eq.terms[0].node, eq.terms[0].dof); d >= 0) out.insert(d);
+  return out;
 }
 
 }  // namespace
@@ -142,30 +151,34 @@ std::vector<CouplingRow> distributing_rows(const AnalysisModel& am, const model:
 
 void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Kind>& kind,
                                  std::map<std::int64_t, std::vector<MasterTerm>>& dependent) {
+  const std::set<std::int64_t> by_equation = equation_dofs(am);
   for (const model::Coupling& c : am.model->couplings) {
     if (c.kind != model::Coupling::Kind::Distributing) continue;
-    std::vector<CouplingRow> prescribed_rows;
+    // A reference DOF held by a *BOUNDARY, or eliminated by an *EQUATION (CalculiX's pret3 ties
+    // a beam's end to it so), keeps that rule: Σ a u = u_ref is solved for coupling-node DOFs.
+    std::vector<LinearRow> rows_on_coupling_nodes;
     for (CouplingRow& row : distributing_rows(am, c)) {
       const auto d = static_cast<std::size_t>(row.ref_dof);
-      if (dependent.count(row.ref_dof))
-        throw AnalysisError(fmt::format("{}: the reference node's DOF is already eliminated by another constraint (an "
-                                        "*EQUATION, tie or coupling makes it dependent); expected the reference node "
+      if (dependent.count(row.ref_dof) && !by_equation.count(row.ref_dof))
+        throw AnalysisError(fmt::format("{}: the reference node's DOF is already eliminated by another constraint (a "
+                                        "tie, rigid body or coupling makes it dependent); expected the reference node "
                                         "free of other constraints",
                                         where(am, c)));
+      if (dependent.count(row.ref_dof)) {
+        rows_on_coupling_nodes.push_back({std::move(row.terms), dependent.at(row.ref_dof)});
+        continue;
+      }
       if (kind[d] == DofMap::Kind::Prescribed) {
-        prescribed_rows.push_back(std::move(row));
+        rows_on_coupling_nodes.push_back({std::move(row.terms), {{row.ref_dof, 1.0}}});
         continue;
       }
       dependent[row.ref_dof] = std::move(row.terms);
       kind[d] = DofMap::Kind::Dependent;
     }
-    if (prescribed_rows.empty()) continue;
-    // A *BOUNDARY on the reference node: Σ a u = u_ref, solved for coupling-node DOFs instead.
-    std::vector<LinearRow> rows;
-    for (CouplingRow& row : prescribed_rows) rows.push_back({std::move(row.terms), {{row.ref_dof, 1.0}}});
-    eliminate_rows(rows, kind, dependent,
-                   fmt::format("{}: the boundary conditions on reference node {} leave no free coupling-node degree "
-                               "of freedom to satisfy them (the coupling nodes are held already)",
+    if (rows_on_coupling_nodes.empty()) continue;
+    eliminate_rows(rows_on_coupling_nodes, kind, dependent,
+                   fmt::format("{}: the boundary conditions or *EQUATIONs on reference node {} leave no free "
+                               "coupling-node degree of freedom to satisfy them (the coupling nodes are held already)",
                                where(am, c), am.model->mesh.nodes.labels[static_cast<std::size_t>(c.ref_node)]));
   }
 }

@@ -364,6 +364,30 @@ void DofMap::lay_out(const Dependents& dependent) {
   }
 }
 
+namespace {
+
+/// An *EQUATION connects its DOFs: where one of them is used, every one is (a node that only an
+/// equation names, as a coupling's reference node tied to a loaded node, carries its load).
+void mark_equation_dofs_used(const AnalysisModel& am, std::vector<DofMap::Kind>& kind) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const model::Equation& eq : am.model->equations) {
+      const auto used = [&](const model::Equation::Term& t) {
+        const std::int64_t d = am.dof_index(t.node, t.dof);
+        return d >= 0 && kind[static_cast<std::size_t>(d)] != DofMap::Kind::Unused;
+      };
+      if (!std::any_of(eq.terms.begin(), eq.terms.end(), used)) continue;
+      for (const model::Equation::Term& t : eq.terms)
+        if (const std::int64_t d = am.dof_index(t.node, t.dof); d >= 0 && !used(t)) {
+          kind[static_cast<std::size_t>(d)] = DofMap::Kind::Free;
+          changed = true;
+        }
+    }
+  }
+}
+
+}  // namespace
+
 DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& prescribed, bool finite_rotations,
                      std::span<const std::uint8_t> active) {
   const model::Model& m = *am.model;
@@ -396,6 +420,7 @@ DofMap DofMap::build(const AnalysisModel& am, const std::vector<std::uint8_t>& p
   mark_followed_rotations_used(rotation_followers(am), map.kind_);
   mark_distributing_reference_dofs(am, finite_rotations, map.kind_);
   mark_oriented_reference_dofs(am, finite_rotations, map.kind_);
+  mark_equation_dofs_used(am, map.kind_);
   for (std::int64_t d = 0; d < n; ++d)
     if (prescribed[d] && map.kind_[d] == Kind::Free) map.kind_[d] = Kind::Prescribed;
   map.lay_out(map.dependents(am, nullptr));

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <set>
 
+#include <fmt/format.h>
+
+#include "analysis_error.hpp"
 #include "elements/face_loads.hpp"
 
 namespace inpact::solver {
@@ -97,7 +100,8 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
 }
 
 /// A step's *CLOAD blocks: a DOF they load replaces its load of earlier steps; a DOF loaded
-/// twice in the step carries the sum (Abaqus and CalculiX; one amplitude, parser/finalize.cpp).
+/// twice in the step carries the sum (Abaqus and CalculiX), so the two need one amplitude (a
+/// deck error otherwise: `inpact check` builds the conditions too).
 void StepConditions::apply_cloads(const std::vector<model::CloadBlock>& blocks) {
   if (renews(blocks)) target_.cload.clear();
   std::set<std::int64_t> loaded_in_step;
@@ -106,14 +110,24 @@ void StepConditions::apply_cloads(const std::vector<model::CloadBlock>& blocks) 
       for (std::int32_t node : e.nodes) {
         const std::int64_t d = am_.dof_index(node, e.dof);
         if (d < 0) continue;
-        if (loaded_in_step.insert(d).second) target_.cload[d] = {e.magnitude, b.amplitude, e.magnitude};
-        else target_.cload[d].value += e.magnitude, target_.cload[d].end_value += e.magnitude;
+        if (loaded_in_step.insert(d).second) {
+          target_.cload[d] = {e.magnitude, b.amplitude, e.magnitude};
+          continue;
+        }
+        ConditionHistory::Value& v = target_.cload[d];
+        if (v.amplitude != b.amplitude)
+          throw AnalysisError(fmt::format("{}: error: *CLOAD: node {} DOF {} is loaded earlier in this step with {}; "
+                                          "loads at one DOF in one step add up and need one amplitude",
+                                          am_.model->sources.describe(e.loc),
+                                          am_.model->mesh.nodes.labels[static_cast<std::size_t>(node)], e.dof,
+                                          v.amplitude.empty() ? "the step's own amplitude" : "AMPLITUDE=" + v.amplitude));
+        v.value += e.magnitude;
       }
 }
 
 /// A step's *DLOAD and *DSLOAD blocks, by the same rule per element face or body load:
-/// gravities add as vectors, CENTRIF and ROTA about one axis (parser/finalize.cpp) by their
-/// magnitudes. OP=NEW of *DLOAD removes the earlier *DLOADs, of *DSLOAD the *DSLOADs.
+/// gravities add as vectors, CENTRIF and ROTA about one axis by their magnitudes. OP=NEW of
+/// *DLOAD removes the earlier *DLOADs, of *DSLOAD the *DSLOADs.
 void StepConditions::apply_dloads(const std::vector<model::DloadBlock>& blocks) {
   for (const bool surface_load : {false, true})
     if (std::any_of(blocks.begin(), blocks.end(),
@@ -131,6 +145,15 @@ void StepConditions::apply_dloads(const std::vector<model::DloadBlock>& blocks) 
           continue;
         }
         ConditionHistory::DloadValue& v = target_.dload[key];
+        const bool rotation = key.key == 300 || key.key == 400;
+        if (v.amplitude != b.amplitude || (rotation && (v.direction != e.direction || v.point != e.point)))
+          throw AnalysisError(fmt::format("{}: error: {}: element {} has this load earlier in this step {}",
+                                          am_.model->sources.describe(e.loc), b.surface_load ? "*DSLOAD" : "*DLOAD",
+                                          am_.model->mesh.elements.labels[static_cast<std::size_t>(e.elements[i])],
+                                          v.amplitude != b.amplitude
+                                              ? "with another amplitude; loads that add up need one"
+                                              : "about another axis; two rotations of one element in one step are not "
+                                                "supported"));
         if (key.key == 200) {  // g1 d1 + g2 d2: the sum's length and direction
           std::array<double, 3> g{};
           for (int c = 0; c < 3; ++c) g[c] = v.value * v.direction[c] + magnitude * e.direction[c];

@@ -7,9 +7,11 @@
 ///    applies at once (AMPLITUDE=STEP);
 ///  - with AMPLITUDE=name the value is magnitude × a(t);
 ///  - *BOUNDARY, FIXED holds a DOF where it is at the start of the step;
-///  - OP=MOD (default) changes the definitions it names and keeps the others; OP=NEW removes
-///    every earlier one of its kind first: removed loads ramp down to zero, and a removed
-///    boundary condition leaves its reaction as a load that ramps down to zero.
+///  - OP=MOD (default) changes the definitions it names and keeps the others; OP=NEW (on any
+///    of a step's blocks of a kind) removes the earlier steps' definitions of that kind: removed
+///    loads ramp down to zero, and a removed boundary condition leaves its reaction as a load
+///    that ramps down to zero;
+///  - a load given twice in one step (a DOF, an element face, a body load) carries the sum.
 /// Loads act on the reference geometry, except pressure (*DLOAD Pn, *DSLOAD P) in an NLGEOM step:
 /// it follows the surface (Abaqus's default), evaluated on X + u each iteration; its load
 /// stiffness is not in the tangent (Newton then converges linearly on that part).

@@ -133,5 +133,35 @@ TEST(CheckMatchesRun, RunWritesTheStepsInteractionsIntoTheDatFile) {
   fs::remove_all(dir);
 }
 
+// A deck error only a step's conditions or DOF map find (here two loads at one DOF in one step
+// with two amplitudes, which add up) stops `inpact check` as it stops `inpact run`: exit 3, the
+// same line.
+TEST(CheckMatchesRun, AStepsDeckErrorStopsCheckAsItStopsTheRun) {
+  const fs::path dir = fs::temp_directory_path() / ("inpact-check-step-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string deck = (dir / "deck.inp").string();
+  std::ofstream(deck) << "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n"
+                         "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n1.\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n"
+                         "*AMPLITUDE, NAME=A\n0., 0., 1., 1.\n*BOUNDARY\n1, 1, 3\n2, 2, 3\n*STEP\n*STATIC\n"
+                         "*CLOAD\n2, 1, 1.\n*CLOAD, AMPLITUDE=A\n2, 1, 2.\n*END STEP\n";
+  const std::string expected = "deck.inp:21:1: error: *CLOAD: node 2 DOF 1 is loaded earlier in this step with the "
+                               "step's own amplitude";
+  testing::internal::CaptureStderr();
+  const int rc = run_check({deck, {}});
+  const std::string said = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(rc, 3);
+  EXPECT_NE(said.find(expected), std::string::npos) << said;
+  RunOptions options;
+  options.deck = deck;
+  options.output_dir = dir.string();
+  options.job = "job";
+  options.quiet = true;
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(run_analysis(options), 3);
+  const std::string run_said = testing::internal::GetCapturedStderr();
+  EXPECT_NE(run_said.find(expected), std::string::npos) << run_said;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace inpact::app

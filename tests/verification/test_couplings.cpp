@@ -266,6 +266,41 @@ TEST(Coupling, DistributingColumnCarriesTheLoadAndTheReferenceNodeFollowsTheFace
   EXPECT_GT(std::abs(ur[2]), 1e-6);  // M3 twists the face
 }
 
+// An *EQUATION may eliminate a distributing coupling's reference DOF (CalculiX's pret3 ties a
+// beam's end to its reference node so): u_82 = u_999, the load on node 999. The coupling is then
+// solved for coupling-node DOFs, and the column answers as with the load on the reference node
+// itself: every U to 1e-12 of the largest, node 999 moving as the reference node did.
+TEST(Coupling, AnEquationOnTheReferenceNodeLeavesTheCouplingOnItsFace) {
+  const auto path = edited_deck("coupling_distributing_column_c3d8.inp", "coupling-equation", [](const std::string& line) {
+    if (line == "*STEP")
+      return std::vector<std::string>{"*NODE", "999, 0.5, 0.5, 4.5", "*EQUATION", "2", "82, 1, 1., 999, 1, -1.", "2",
+                                      "82, 2, 1., 999, 2, -1.", "2", "82, 3, 1., 999, 3, -1.", line};
+    return std::vector<std::string>{line == "REF, 1, 10." ? "999, 1, 10." : line};
+  });
+  const auto tied = run_deck(path.string());
+  std::filesystem::remove(path);
+  const auto direct = run_deck(deck_path("coupling_distributing_column_c3d8.inp"));
+  ASSERT_TRUE(tied->outcome.completed) << tied->outcome.message;
+  ASSERT_TRUE(direct->outcome.completed) << direct->outcome.message;
+  const solver::Frame &a = tied->capture.last(), &b = direct->capture.last();
+  const auto& tied_labels = tied->model().mesh.nodes.labels;
+  const auto row_of = [&](std::int64_t label) {  // the tied deck's row of a node label
+    return static_cast<std::size_t>(std::find(tied_labels.begin(), tied_labels.end(), label) - tied_labels.begin());
+  };
+  const std::vector<std::int32_t> column = nset(direct->model(), "ALL");
+  double largest = 0.0;
+  for (std::int32_t n : column)
+    for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(nodal(b, "U", static_cast<std::size_t>(n), c)));
+  for (std::int32_t n : column) {
+    const std::size_t row = row_of(direct->model().mesh.nodes.labels[static_cast<std::size_t>(n)]);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(nodal(a, "U", row, c), nodal(b, "U", static_cast<std::size_t>(n), c), 1e-12 * largest) << n;
+  }
+  const std::size_t ref = static_cast<std::size_t>(ref_node(direct->model()));
+  ASSERT_LT(row_of(999), tied_labels.size());
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(nodal(a, "U", row_of(999), c), nodal(b, "U", ref, c), 1e-12 * largest);
+}
+
 // Measured: the face's mean u3 exact and its rotation about x to 2.2e-16; the reference node's
 // RF balances the base's to 4.4e-15.
 TEST(Coupling, DistributingPrescribedReferenceNodeSetsTheFaceMeanMotion) {
