@@ -6,8 +6,6 @@
 #include "deck_loading.hpp"
 #include "exit_codes.hpp"
 #include "io/model_summary.hpp"
-#include "solver/analysis.hpp"
-#include "solver/analysis_error.hpp"
 #include "solver/analysis_model.hpp"
 #include "solver/linear_solver_choice.hpp"
 
@@ -26,12 +24,6 @@ int run_check(const CheckOptions& options) {
   // The analysis model resolves every contact interaction per step: the summary prints what the
   // run will enforce, from the same records (load_analysable_deck has validated it already).
   const solver::AnalysisModel am = solver::build_analysis_model(result->model);
-  try {
-    solver::check_step_setup(am);  // what only a step's conditions and DOF map find
-  } catch (const solver::AnalysisError& e) {
-    std::fprintf(stderr, "%s\n%s: the deck cannot be analysed\n", e.what(), options.deck.c_str());
-    return kDeckError;
-  }
   io::write_model_summary(std::cout, result->model, am.interactions);
   // What contact leaves out or decides for the deck (the run prints the same notes).
   for (const auto& note : am.contact->notes) std::cout << "\n" << note << "\n";

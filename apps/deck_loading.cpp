@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "contact/initial_adjustment.hpp"
+#include "solver/analysis.hpp"
 #include "solver/analysis_error.hpp"
 #include "solver/analysis_model.hpp"
 
@@ -24,6 +25,8 @@ std::optional<parser::ReadResult> load_analysable_deck(const std::string& deck,
     contact::apply_adjust(result.model);  // ADJUST: slave nodes onto their masters, strain-free
     const solver::AnalysisModel am = solver::build_analysis_model(result.model);
     for (const auto& w : am.warnings) std::fprintf(stderr, "%s: warning: %s\n", deck.c_str(), w.c_str());
+    // What only a step's conditions and DOF map find, before any step is analysed.
+    solver::check_step_setup(am);
   } catch (const solver::AnalysisError& e) {
     std::fprintf(stderr, "%s\n%s: the deck cannot be analysed\n", e.what(), deck.c_str());
     return std::nullopt;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include <Eigen/Dense>
@@ -165,7 +166,15 @@ void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Ki
                                         "free of other constraints",
                                         where(am, c)));
       if (dependent.count(row.ref_dof)) {
-        rows_on_coupling_nodes.push_back({std::move(row.terms), dependent.at(row.ref_dof)});
+        // Σ a u − (the equation's rule for u_ref) = 0, one term a DOF: the equation may name a
+        // coupling node, which must not be its own pivot's master.
+        std::map<std::int64_t, double> merged;
+        for (const MasterTerm& t : row.terms) merged[t.dof] += t.weight;
+        for (const MasterTerm& t : dependent.at(row.ref_dof)) merged[t.dof] -= t.weight;
+        std::vector<MasterTerm> lhs;
+        for (const auto& [dof, weight] : merged)
+          if (weight != 0.0) lhs.push_back({dof, weight});
+        rows_on_coupling_nodes.push_back({std::move(lhs), {}});
         continue;
       }
       if (kind[d] == DofMap::Kind::Prescribed) {

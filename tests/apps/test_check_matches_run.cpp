@@ -133,9 +133,9 @@ TEST(CheckMatchesRun, RunWritesTheStepsInteractionsIntoTheDatFile) {
   fs::remove_all(dir);
 }
 
-// A deck error only a step's conditions or DOF map find (here two loads at one DOF in one step
+// A deck error only a step's conditions or DOF map find (here two loads at one DOF in step 2
 // with two amplitudes, which add up) stops `inpact check` as it stops `inpact run`: exit 3, the
-// same line.
+// same line, and the run before it analyses step 1 (no results file).
 TEST(CheckMatchesRun, AStepsDeckErrorStopsCheckAsItStopsTheRun) {
   const fs::path dir = fs::temp_directory_path() / ("inpact-check-step-" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -143,8 +143,9 @@ TEST(CheckMatchesRun, AStepsDeckErrorStopsCheckAsItStopsTheRun) {
   std::ofstream(deck) << "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n"
                          "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n1.\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n"
                          "*AMPLITUDE, NAME=A\n0., 0., 1., 1.\n*BOUNDARY\n1, 1, 3\n2, 2, 3\n*STEP\n*STATIC\n"
+                         "*CLOAD\n2, 1, 1.\n*END STEP\n*STEP\n*STATIC\n"
                          "*CLOAD\n2, 1, 1.\n*CLOAD, AMPLITUDE=A\n2, 1, 2.\n*END STEP\n";
-  const std::string expected = "deck.inp:21:1: error: *CLOAD: node 2 DOF 1 is loaded earlier in this step with the "
+  const std::string expected = "deck.inp:26:1: error: *CLOAD: node 2 DOF 1 is loaded earlier in this step with the "
                                "step's own amplitude";
   testing::internal::CaptureStderr();
   const int rc = run_check({deck, {}});
@@ -160,6 +161,7 @@ TEST(CheckMatchesRun, AStepsDeckErrorStopsCheckAsItStopsTheRun) {
   EXPECT_EQ(run_analysis(options), 3);
   const std::string run_said = testing::internal::GetCapturedStderr();
   EXPECT_NE(run_said.find(expected), std::string::npos) << run_said;
+  EXPECT_FALSE(fs::exists(dir / "job.h5"));
   fs::remove_all(dir);
 }
 

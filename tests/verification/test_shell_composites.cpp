@@ -200,5 +200,38 @@ TEST(ShellComposites, SectionForcesAreReportedInTheSectionOrientation) {
   }
 }
 
+// SM turns with the section's ORIENTATION as SF does: the plate clamped at x = 0 and bent by end
+// moments about y (its isotropic stiffness does not see the orientation), SM in axes turned by
+// 30° is the default axes' SM turned, m11' = c² m11 + s² m22 + 2cs m12, m22' = s² m11 + c² m22 −
+// 2cs m12, m12' = cs (m22 − m11) + (c² − s²) m12, at every in-plane point to 1e-10.
+TEST(ShellComposites, SectionMomentsTurnWithTheSectionOrientation) {
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  std::vector<double> sm[2];
+  for (const bool oriented : {false, true}) {
+    std::string deck = "*NODE, NSET=ALL\n";
+    for (int i = 0; i <= 4; ++i) deck += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 1, i, i + 11, i);
+    deck += "*ELEMENT, TYPE=S4, ELSET=PLATE\n";
+    for (int i = 0; i < 4; ++i) deck += fmt::format("{}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 12, i + 11);
+    deck += fmt::format("*ORIENTATION, NAME=TURNED\n{}, {}, 0., {}, {}, 0.\n", c, s, -s, c);
+    deck += std::string("*SHELL SECTION, ELSET=PLATE, MATERIAL=M") + (oriented ? ", ORIENTATION=TURNED" : "") +
+            "\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*BOUNDARY\n1, ENCASTRE\n11, ENCASTRE\n"
+            "*STEP\n*STATIC\n*CLOAD\n5, 5, 0.5\n15, 5, 0.5\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nSM\n*END STEP\n";
+    const test::DeckDir dir;
+    const auto r = run_deck(dir.write("deck.inp", deck));
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    sm[oriented] = field(r->capture.last(), "SM")->values;
+  }
+  ASSERT_EQ(sm[0].size(), sm[1].size());
+  double largest = 0.0;
+  for (double v : sm[0]) largest = std::max(largest, std::abs(v));
+  EXPECT_GT(largest, 0.5);
+  for (std::size_t i = 0; i + 2 < sm[0].size(); i += 3) {
+    const double m11 = sm[0][i], m22 = sm[0][i + 1], m12 = sm[0][i + 2];
+    EXPECT_NEAR(sm[1][i], c * c * m11 + s * s * m22 + 2 * c * s * m12, 1e-10 * largest) << i;
+    EXPECT_NEAR(sm[1][i + 1], s * s * m11 + c * c * m22 - 2 * c * s * m12, 1e-10 * largest) << i;
+    EXPECT_NEAR(sm[1][i + 2], c * s * (m22 - m11) + (c * c - s * s) * m12, 1e-10 * largest) << i;
+  }
+}
+
 }  // namespace
 }  // namespace inpact::verification
