@@ -167,24 +167,31 @@ TEST(ShellComposites, InnerPliesAreReportedAtTheSectionPointsAskedFor) {
   }
 }
 
+/// A plate of four S4 (4 × 1, t = 0.1, E = 2e5, ν = 0.3), its section ORIENTATION (when
+/// `oriented`) turned by 30° about z; `step` is the deck after *BOUNDARY (supports, the step).
+std::unique_ptr<Run> run_turned_plate(bool oriented, const std::string& step) {
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  std::string deck = "*NODE, NSET=ALL\n";
+  for (int i = 0; i <= 4; ++i) deck += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 1, i, i + 11, i);
+  deck += "*ELEMENT, TYPE=S4, ELSET=PLATE\n";
+  for (int i = 0; i < 4; ++i) deck += fmt::format("{}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 12, i + 11);
+  deck += fmt::format("*ORIENTATION, NAME=TURNED\n{}, {}, 0., {}, {}, 0.\n", c, s, -s, c);
+  deck += std::string("*SHELL SECTION, ELSET=PLATE, MATERIAL=M") + (oriented ? ", ORIENTATION=TURNED" : "") +
+          "\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*BOUNDARY\n" + step;
+  const test::DeckDir dir;
+  return run_deck(dir.write("deck.inp", deck));
+}
+
 // SF and SM are reported in the axes of the section's ORIENTATION, as S is (Abaqus gives a shell's
-// element variables in its local directions). A plate of four S4 (4 × 1, t = 0.1, isotropic) held
-// in its plane and pulled along x by N = 1 a length: in axes turned by 30° about the normal, SF1 =
+// element variables in its local directions). The plate (run_turned_plate) held in its plane and
+// pulled along x by N = 1 a length: in axes turned by 30° about the normal, SF1 =
 // N cos²30°, SF2 = N sin²30°, SF3 = −N sin 30° cos 30° and t·S at every point, to 1e-12; without
 // the orientation SF = (N, 0, 0).
 TEST(ShellComposites, SectionForcesAreReportedInTheSectionOrientation) {
   const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
   for (const bool oriented : {false, true}) {
-    std::string deck = "*NODE, NSET=ALL\n";
-    for (int i = 0; i <= 4; ++i) deck += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 1, i, i + 11, i);
-    deck += "*ELEMENT, TYPE=S4, ELSET=PLATE\n";
-    for (int i = 0; i < 4; ++i) deck += fmt::format("{}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 12, i + 11);
-    deck += fmt::format("*ORIENTATION, NAME=TURNED\n{}, {}, 0., {}, {}, 0.\n", c, s, -s, c);
-    deck += std::string("*SHELL SECTION, ELSET=PLATE, MATERIAL=M") + (oriented ? ", ORIENTATION=TURNED" : "") +
-            "\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*BOUNDARY\n1, 1, 2\n11, 1, 1\nALL, 3, 6\n"
-            "*STEP\n*STATIC\n*CLOAD\n5, 1, 0.5\n15, 1, 0.5\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, SF\n*END STEP\n";
-    const test::DeckDir dir;
-    const auto r = run_deck(dir.write("deck.inp", deck));
+    const auto r = run_turned_plate(oriented, "1, 1, 2\n11, 1, 1\nALL, 3, 6\n*STEP\n*STATIC\n*CLOAD\n5, 1, 0.5\n"
+                                              "15, 1, 0.5\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, SF\n*END STEP\n");
     ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
     const solver::FieldData& sf = *field(r->capture.last(), "SF");
     const solver::FieldData& stress = *field(r->capture.last(), "S");
@@ -208,16 +215,8 @@ TEST(ShellComposites, SectionMomentsTurnWithTheSectionOrientation) {
   const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
   std::vector<double> sm[2];
   for (const bool oriented : {false, true}) {
-    std::string deck = "*NODE, NSET=ALL\n";
-    for (int i = 0; i <= 4; ++i) deck += fmt::format("{}, {}, 0., 0.\n{}, {}, 1., 0.\n", i + 1, i, i + 11, i);
-    deck += "*ELEMENT, TYPE=S4, ELSET=PLATE\n";
-    for (int i = 0; i < 4; ++i) deck += fmt::format("{}, {}, {}, {}, {}\n", i + 1, i + 1, i + 2, i + 12, i + 11);
-    deck += fmt::format("*ORIENTATION, NAME=TURNED\n{}, {}, 0., {}, {}, 0.\n", c, s, -s, c);
-    deck += std::string("*SHELL SECTION, ELSET=PLATE, MATERIAL=M") + (oriented ? ", ORIENTATION=TURNED" : "") +
-            "\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*BOUNDARY\n1, ENCASTRE\n11, ENCASTRE\n"
-            "*STEP\n*STATIC\n*CLOAD\n5, 5, 0.5\n15, 5, 0.5\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nSM\n*END STEP\n";
-    const test::DeckDir dir;
-    const auto r = run_deck(dir.write("deck.inp", deck));
+    const auto r = run_turned_plate(oriented, "1, ENCASTRE\n11, ENCASTRE\n*STEP\n*STATIC\n*CLOAD\n5, 5, 0.5\n"
+                                              "15, 5, 0.5\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nSM\n*END STEP\n");
     ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
     sm[oriented] = field(r->capture.last(), "SM")->values;
   }
