@@ -58,6 +58,31 @@ std::string where(const AnalysisModel& am, const model::Coupling& c) {
   return fmt::format("{}: error: {}: coupling '{}'", am.model->sources.describe(c.loc), c.keyword(), c.name);
 }
 
+/// Σ w u of `terms` over DOFs without a rule: each dependent DOF replaced by its rule, chains
+/// followed (a cycle is a deck error).
+std::map<std::int64_t, double> without_rules(const std::vector<MasterTerm>& terms,
+                                             const std::map<std::int64_t, std::vector<MasterTerm>>& dependent) {
+  std::map<std::int64_t, double> current;
+  for (const MasterTerm& t : terms) current[t.dof] += t.weight;
+  for (std::size_t pass = 0;; ++pass) {
+    if (pass > dependent.size())
+      throw AnalysisError("*EQUATION / coupling: the constraints eliminate each other's degrees of freedom in a cycle");
+    std::map<std::int64_t, double> next;
+    bool substituted = false;
+    for (const auto& [dof, weight] : current) {
+      const auto rule = dependent.find(dof);
+      if (rule == dependent.end()) {
+        next[dof] += weight;
+        continue;
+      }
+      substituted = true;
+      for (const MasterTerm& m : rule->second) next[m.dof] += weight * m.weight;
+    }
+    current = std::move(next);
+    if (!substituted) return current;
+  }
+}
+
 /// The DOFs *EQUATION eliminates: each equation's first term's.
 std::set<std::int64_t> equation_dofs(const AnalysisModel& am) {
   std::set<std::int64_t> out;
@@ -156,8 +181,10 @@ void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Ki
   for (const model::Coupling& c : am.model->couplings) {
     if (c.kind != model::Coupling::Kind::Distributing) continue;
     // A reference DOF held by a *BOUNDARY, or eliminated by an *EQUATION (CalculiX's pret3 ties
-    // a beam's end to it so), keeps that rule: Σ a u = u_ref is solved for coupling-node DOFs.
+    // a beam's end to it so), keeps that rule: Σ a u = u_ref is solved for other DOFs of the
+    // row (the coupling nodes', or a free DOF the equation names).
     std::vector<LinearRow> rows_on_coupling_nodes;
+    std::vector<CouplingRow> held_by_equation;
     for (CouplingRow& row : distributing_rows(am, c)) {
       const auto d = static_cast<std::size_t>(row.ref_dof);
       if (dependent.count(row.ref_dof) && !by_equation.count(row.ref_dof))
@@ -166,15 +193,7 @@ void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Ki
                                         "free of other constraints",
                                         where(am, c)));
       if (dependent.count(row.ref_dof)) {
-        // Σ a u − (the equation's rule for u_ref) = 0, one term a DOF: the equation may name a
-        // coupling node, which must not be its own pivot's master.
-        std::map<std::int64_t, double> merged;
-        for (const MasterTerm& t : row.terms) merged[t.dof] += t.weight;
-        for (const MasterTerm& t : dependent.at(row.ref_dof)) merged[t.dof] -= t.weight;
-        std::vector<MasterTerm> lhs;
-        for (const auto& [dof, weight] : merged)
-          if (weight != 0.0) lhs.push_back({dof, weight});
-        rows_on_coupling_nodes.push_back({std::move(lhs), {}});
+        held_by_equation.push_back(std::move(row));  // once the coupling's other rows have their rules
         continue;
       }
       if (kind[d] == DofMap::Kind::Prescribed) {
@@ -183,6 +202,17 @@ void add_distributing_dependents(const AnalysisModel& am, std::vector<DofMap::Ki
       }
       dependent[row.ref_dof] = std::move(row.terms);
       kind[d] = DofMap::Kind::Dependent;
+    }
+    // Σ a u − (the equation's rule for u_ref) = 0 over DOFs without a rule (chains followed),
+    // one term a DOF: the equation may name a coupling node or another reference DOF, which must
+    // not become its own pivot's master.
+    for (const CouplingRow& row : held_by_equation) {
+      std::map<std::int64_t, double> merged = without_rules(row.terms, dependent);
+      for (const auto& [dof, weight] : without_rules(dependent.at(row.ref_dof), dependent)) merged[dof] -= weight;
+      std::vector<MasterTerm> lhs;
+      for (const auto& [dof, weight] : merged)
+        if (weight != 0.0) lhs.push_back({dof, weight});
+      rows_on_coupling_nodes.push_back({std::move(lhs), {}});
     }
     if (rows_on_coupling_nodes.empty()) continue;
     eliminate_rows(rows_on_coupling_nodes, kind, dependent,

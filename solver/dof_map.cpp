@@ -253,6 +253,9 @@ void substitute_chains(Dependents& dependent) {
       terms = std::move(next);
       if (!substituted) break;
     }
+    // A chain that leads back to d would leave u_d a master of itself, which no equation holds.
+    if (std::any_of(terms.begin(), terms.end(), [&](const MasterTerm& t) { return t.dof == d; }))
+      throw AnalysisError("*EQUATION / *TIE / coupling: the constraints make a degree of freedom depend on itself");
   }
 }
 

@@ -301,29 +301,45 @@ TEST(Coupling, AnEquationOnTheReferenceNodeLeavesTheCouplingOnItsFace) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(nodal(a, "U", row_of(999), c), nodal(b, "U", ref, c), 1e-12 * largest);
 }
 
-// The equation may name a node of the coupled face itself: u1 of the reference node = u1 of top
-// node 77. Both rules hold at the end: the reference node moves with the face's weighted mean
-// (u_R = mean + UR × d) and its u1 is node 77's, to 1e-12 of its motion.
-TEST(Coupling, AnEquationToAFaceNodeAndTheCouplingBothHold) {
-  const auto path = edited_deck("coupling_distributing_column_c3d8.inp", "coupling-face-equation",
-                                [](const std::string& line) {
-                                  if (line != "*STEP") return std::vector<std::string>{line};
-                                  return std::vector<std::string>{"*EQUATION", "2", "82, 1, 1., 77, 1, -1.", line};
-                                });
-  const auto r = run_deck(path.string());
-  std::filesystem::remove(path);
-  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
-  const auto& m = r->model();
-  const auto& f = r->capture.last();
-  const std::int32_t ref = ref_node(m);
-  const auto [mean, theta] = face_mean_motion(m, f);
-  const V3 u_ref = vec(f, "U", ref), ur = vec(f, "UR", ref);
-  const V3 turn = cross(ur, {0, 0, 0.5});
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(u_ref[c], mean[c] + turn[c], 1e-12 * norm(u_ref)) << c;
-  const auto& labels = m.mesh.nodes.labels;
-  const auto row77 = static_cast<std::int32_t>(std::find(labels.begin(), labels.end(), 77) - labels.begin());
-  EXPECT_NEAR(u_ref[0], vec(f, "U", row77)[0], 1e-12 * norm(u_ref));
-  EXPECT_GT(std::abs(u_ref[0]), 1e-6);
+// The equation may name a node of the coupled face, or another DOF of the reference node itself:
+// u1 of the reference node = u1 of top node 77, or = its own u3. Both rules hold at the end: the
+// reference node moves with the face's weighted mean (u_R = mean + UR × d) and its u1 is what the
+// equation says, to 1e-12 of the motion. Tied to node 77 the equation's force stays inside the
+// column, so the base carries the load F1 = 10 (1e-10); tied to its own u3 it pushes the node
+// along x and z against each other, a support of its own.
+TEST(Coupling, AnEquationToAFaceNodeOrTheReferenceNodeAndTheCouplingBothHold) {
+  struct Case {
+    const char* equation;
+    std::int64_t other_node;
+    int other_component;
+  };
+  for (const Case& k : {Case{"82, 1, 1., 77, 1, -1.", 77, 0}, Case{"82, 1, 1., 82, 3, -1.", 82, 2}}) {
+    SCOPED_TRACE(k.equation);
+    const auto path = edited_deck("coupling_distributing_column_c3d8.inp", "coupling-face-equation",
+                                  [&](const std::string& line) {
+                                    if (line != "*STEP") return std::vector<std::string>{line};
+                                    return std::vector<std::string>{"*EQUATION", "2", k.equation, line};
+                                  });
+    const auto r = run_deck(path.string());
+    std::filesystem::remove(path);
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const auto& m = r->model();
+    const auto& f = r->capture.last();
+    const std::int32_t ref = ref_node(m);
+    const auto [mean, theta] = face_mean_motion(m, f);
+    const V3 u_ref = vec(f, "U", ref), ur = vec(f, "UR", ref);
+    const V3 turn = cross(ur, {0, 0, 0.5});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(u_ref[c], mean[c] + turn[c], 1e-12 * norm(u_ref)) << c;
+    const auto& labels = m.mesh.nodes.labels;
+    const auto other = static_cast<std::int32_t>(std::find(labels.begin(), labels.end(), k.other_node) - labels.begin());
+    EXPECT_NEAR(u_ref[0], vec(f, "U", other)[static_cast<std::size_t>(k.other_component)], 1e-12 * norm(u_ref));
+    EXPECT_GT(std::abs(u_ref[0]), 1e-6);
+    if (k.other_node == 82) continue;
+    const auto [force, moment] = resultant(m, f, "BASE", coords(m, ref));
+    EXPECT_NEAR(force[0], -10.0, 1e-10 * 10);
+    EXPECT_NEAR(force[1], 0.0, 1e-10 * 10);
+    EXPECT_NEAR(force[2], 0.0, 1e-10 * 10);
+  }
 }
 
 // Measured: the face's mean u3 exact and its rotation about x to 2.2e-16; the reference node's
