@@ -19,7 +19,6 @@
 #include "elastic_law.hpp"
 #include "elements/material.hpp"
 #include "elements/material_orientation.hpp"
-#include "elements/mises_plasticity.hpp"
 #include "elements/quadrature.hpp"
 #include "hyperelastic_material.hpp"
 #include "line_element_setup.hpp"
