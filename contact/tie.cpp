@@ -57,9 +57,23 @@ double typical_facet_diagonal(const ContactSurface& s, std::span<const Vec3> x) 
   return sizes[sizes.size() / 2];
 }
 
+/// The surface of a tie's side; a slave made of shell edges ties the edges' nodes, as a node-based
+/// slave does (the shell's rotations stay free: the junction is a hinge).
 ContactSurface build_surface(const model::Model& m, const model::Tie& t, const std::string& name) {
+  const model::Surface& surface = m.mesh.surfaces.at(name);
   try {
-    return ContactSurface::build(m, m.mesh.surfaces.at(name));
+    if (!surface.edges.empty()) {
+      model::Surface nodes;
+      nodes.name = surface.name;
+      nodes.kind = model::Surface::Kind::Node;
+      for (const model::Face& edge : surface.edges)
+        for (std::int32_t n : model::edge_nodes(m.mesh.elements, edge)) nodes.nodes.push_back(n);
+      std::sort(nodes.nodes.begin(), nodes.nodes.end());
+      nodes.nodes.erase(std::unique(nodes.nodes.begin(), nodes.nodes.end()), nodes.nodes.end());
+      nodes.node_areas.assign(nodes.nodes.size(), 1.0);
+      return ContactSurface::build(m, nodes);
+    }
+    return ContactSurface::build(m, surface);
   } catch (const std::invalid_argument& e) {
     throw TieError(fmt::format("tie {}: {}", t.name, e.what()), t.line_loc);
   }

@@ -52,7 +52,9 @@ void write_mesh(std::ostream& out, const model::Model& m) {
   write_sets("Elem sets", mesh.elsets);
   print(out, "Surfaces   {:>10}\n", mesh.surfaces.size());
   for (const auto& [k, s] : mesh.surfaces) {
-    if (s.kind == model::Surface::Kind::Element)
+    if (s.kind == model::Surface::Kind::Element && !s.edges.empty())
+      print(out, "  {:<32} {:>10} shell edges\n", s.name, s.edges.size());
+    else if (s.kind == model::Surface::Kind::Element)
       print(out, "  {:<32} {:>10} faces\n", s.name, s.faces.size());
     else if (s.kind == model::Surface::Kind::Analytical)
       print(out, "  {:<32} {:>10} segments (analytical)\n", s.name,

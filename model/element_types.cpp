@@ -41,6 +41,12 @@ constexpr std::array<FaceDef, 2> kRigidQuad = {face({1, 2, 3, 4}), face({1, 4, 3
 // Shells have the two sides of the rigid elements: S1 = SNEG (the node order), S2 = SPOS.
 constexpr std::array<FaceDef, 2> kShellQuad8 = {face({1, 2, 3, 4}, {5, 6, 7, 8}), face({1, 4, 3, 2}, {8, 7, 6, 5})};
 constexpr std::array<FaceDef, 2> kShellTri6 = {face({1, 2, 3}, {4, 5, 6}), face({1, 3, 2}, {6, 5, 4})};
+// A shell's edges run from corner n to corner n + 1 (the midside node between them last).
+constexpr std::array<FaceDef, 3> kShellTri3Edges = {face({1, 2}), face({2, 3}), face({3, 1})};
+constexpr std::array<FaceDef, 4> kShellQuad4Edges = {face({1, 2}), face({2, 3}), face({3, 4}), face({4, 1})};
+constexpr std::array<FaceDef, 3> kShellTri6Edges = {face({1, 2}, {4}), face({2, 3}, {5}), face({3, 1}, {6})};
+constexpr std::array<FaceDef, 4> kShellQuad8Edges = {face({1, 2}, {5}), face({2, 3}, {6}), face({3, 4}, {7}),
+                                                     face({4, 1}, {8})};
 constexpr std::array<FaceDef, 2> kRigidLine = {face({1, 2}), face({2, 1})};
 constexpr std::array<FaceDef, 3> kTri6 = {face({1, 2}, {4}), face({2, 3}, {5}), face({3, 1}, {6})};
 
@@ -108,13 +114,13 @@ constexpr ElementTypeInfo kTypes[] = {
     {"RAX2", F::Rigid, I::Full, 2, 2, 1, kRigidLine},
     // Conventional shells (shell_elements.hpp). S8 is CalculiX's full-integration S8R, S6 its
     // six-node triangle.
-    {"S3", F::Shell, I::Full, 3, 3, 1, kRigidTri},
-    {"S3R", F::Shell, I::Reduced, 3, 3, 1, kRigidTri},
-    {"S4", F::Shell, I::Full, 3, 4, 1, kRigidQuad},
-    {"S4R", F::Shell, I::Reduced, 3, 4, 1, kRigidQuad},
-    {"S8R", F::Shell, I::Reduced, 3, 8, 2, kShellQuad8},
-    {"S8", F::Shell, I::Full, 3, 8, 2, kShellQuad8},
-    {"S6", F::Shell, I::Full, 3, 6, 2, kShellTri6},
+    {"S3", F::Shell, I::Full, 3, 3, 1, kRigidTri, false, kShellTri3Edges},
+    {"S3R", F::Shell, I::Reduced, 3, 3, 1, kRigidTri, false, kShellTri3Edges},
+    {"S4", F::Shell, I::Full, 3, 4, 1, kRigidQuad, false, kShellQuad4Edges},
+    {"S4R", F::Shell, I::Reduced, 3, 4, 1, kRigidQuad, false, kShellQuad4Edges},
+    {"S8R", F::Shell, I::Reduced, 3, 8, 2, kShellQuad8, false, kShellQuad8Edges},
+    {"S8", F::Shell, I::Full, 3, 8, 2, kShellQuad8, false, kShellQuad8Edges},
+    {"S6", F::Shell, I::Full, 3, 6, 2, kShellTri6, false, kShellTri6Edges},
 };
 
 }  // namespace

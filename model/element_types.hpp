@@ -42,6 +42,10 @@ struct ElementTypeInfo {
   /// Hybrid (…H): mixed displacement–pressure, the pressure condensed in the element
   /// (solver/elements/hybrid.hpp); the rest of the type is the standard element's.
   bool hybrid = false;
+  /// A shell's edges, edge n at [n − 1] (Abaqus's E1.., CalculiX's S3..): the corner from which the
+  /// edge runs by the element's node order, the next corner, then the midside node. Empty for
+  /// other types.
+  std::span<const FaceDef> edges{};
 };
 
 /// Solids, plane and axisymmetric elements: the types with faces, sections of a material and

@@ -54,10 +54,25 @@ struct CloadBlock {
   SourceLoc loc;
 };
 
-/// *DLOAD / *DSLOAD: pressure on element faces, or a body force per volume on elements.
+/// The direction of a traction on a shell edge, force per unit length (Abaqus's EDNORn, EDSHRn,
+/// EDTn on edge n; EDNOR, EDSHR, EDT on an edge-based surface): positive NORMAL pushes into the
+/// element in its plane, positive SHEAR runs along the edge in the element's node order, positive
+/// TRANSVERSE acts against the shell's positive normal.
+enum class EdgeTraction : std::uint8_t { Normal, Shear, Transverse };
+
+/// The load slot (dload_slot) of a traction on shell edge `edge` (0 = E1): 10 + 3 × edge + direction,
+/// below 100 as the face pressures are, since both follow the deformed element.
+inline int edge_load_slot(int edge, EdgeTraction traction) { return 10 + 3 * edge + static_cast<int>(traction); }
+inline bool is_edge_load_slot(int slot) { return slot >= 10 && slot < 100; }
+inline int slot_edge(int slot) { return (slot - 10) / 3; }
+inline EdgeTraction slot_edge_traction(int slot) { return static_cast<EdgeTraction>((slot - 10) % 3); }
+
+/// *DLOAD / *DSLOAD: pressure on element faces, traction on shell edges, or a body force per
+/// volume on elements.
 struct DloadEntry {
   enum class Kind : std::uint8_t {
     Pressure,  ///< P (2D: on the element's faces given by `face`) / Pn on face n
+    EdgeLoad,  ///< EDNORn, EDSHRn, EDTn: on the shell edges given by `faces` (0 = E1)
     Gravity,     ///< GRAV: magnitude × direction × density
     BodyForce,   ///< BX, BY, BZ: force per unit volume in one direction
     Centrifugal,  ///< CENTRIF: density × ω² (the magnitude) × the distance vector from the axis
@@ -66,7 +81,8 @@ struct DloadEntry {
   Kind kind = Kind::Pressure;
   std::string target;
   std::vector<std::int32_t> elements;  ///< rows
-  std::vector<std::uint8_t> faces;     ///< Pressure: face per element (0 = S1)
+  std::vector<std::uint8_t> faces;     ///< Pressure: face per element (0 = S1); EdgeLoad: edge (0 = E1)
+  EdgeTraction edge_traction = EdgeTraction::Normal;  ///< EdgeLoad
   double magnitude = 0.0;
   /// Gravity; BodyForce (unit axis); CENTRIF, ROTA: the rotation axis (unit)
   std::array<double, 3> direction{0, 0, 0};
@@ -81,11 +97,13 @@ inline bool scales_with_density(DloadEntry::Kind kind) {
 }
 
 /// Which load of element i of `e` a definition is, so that a later one of the same replaces it
-/// (another step) or adds to it (the same step): the face for pressure (0 = S1), 100 + the axis
+/// (another step) or adds to it (the same step): the face for pressure (0 = S1), edge_load_slot
+/// for an edge traction, 100 + the axis
 /// for a body force, 200 gravity, 300 CENTRIF, 400 ROTA.
 inline int dload_slot(const DloadEntry& e, std::size_t i) {
   switch (e.kind) {
     case DloadEntry::Kind::Pressure: return e.faces[i];
+    case DloadEntry::Kind::EdgeLoad: return edge_load_slot(e.faces[i], e.edge_traction);
     case DloadEntry::Kind::BodyForce: {
       int axis = 0;
       for (int c = 1; c < 3; ++c)

@@ -63,6 +63,9 @@ struct Surface {
   std::string name;
   Kind kind = Kind::Element;
   std::vector<Face> faces;          ///< Kind::Element
+  /// Kind::Element: shell edges (`face` indexes ElementTypeInfo::edges), Abaqus's edge-based
+  /// surface; a surface has faces or edges, not both.
+  std::vector<Face> edges;
   std::vector<std::int32_t> nodes;  ///< Kind::Node (rows)
   std::vector<double> node_areas;   ///< Kind::Node: area per node (1.0 when not given)
   std::int32_t analytical = -1;     ///< Kind::Analytical: index into Model::analytical_surfaces

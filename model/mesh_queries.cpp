@@ -23,6 +23,14 @@ std::vector<std::int32_t> face_nodes(const Elements& elements, Face face) {
   return out;
 }
 
+std::vector<std::int32_t> edge_nodes(const Elements& elements, Face edge) {
+  const FaceDef& def = element_type(elements.type[edge.element]).edges[edge.face];
+  auto nodes = elements.nodes_of(edge.element);
+  std::vector<std::int32_t> out(def.n_nodes);
+  for (int i = 0; i < def.n_nodes; ++i) out[i] = nodes[def.nodes[i]];
+  return out;
+}
+
 namespace {
 
 /// A face keyed by its sorted corner nodes (up to 4), so that the two elements sharing it agree.

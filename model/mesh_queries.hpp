@@ -14,6 +14,9 @@ int spatial_dimension(const Elements& elements);
 /// Node rows of one face (corners first, then midside nodes).
 std::vector<std::int32_t> face_nodes(const Elements& elements, Face face);
 
+/// Node rows of one shell edge (its two corners, then its midside node).
+std::vector<std::int32_t> edge_nodes(const Elements& elements, Face edge);
+
 /// Faces of `subset` (element rows) not shared with any element of the whole mesh, matched by
 /// their corner nodes: the free surface Abaqus builds for a surface defined by an element set
 /// without face identifiers, and for ALL EXTERIOR general contact.

@@ -156,9 +156,15 @@ void check_sections(model::Model& m, Diagnostics& diags) {
     diags.error({0, 0, 0}, "*SOLID SECTION", fmt::format("{} elements in all have no section", missing));
 }
 
+/// A surface named by contact, *TIE or *COUPLING: defined, and made of faces or nodes (shell edges
+/// serve a tie's slave side, *DSLOAD and *PRE-TENSION SECTION only).
 void check_surface(const model::Model& m, Diagnostics& diags, const std::string& name, model::SourceLoc loc,
-                   const char* keyword) {
-  if (!name.empty()) check_defined(diags, m.mesh.surfaces, name, loc, keyword, "surface");
+                   const char* keyword, bool shell_edges_allowed = false) {
+  if (name.empty() || !check_defined(diags, m.mesh.surfaces, name, loc, keyword, "surface")) return;
+  const model::Surface& s = m.mesh.surfaces.at(name);
+  if (!s.edges.empty() && !shell_edges_allowed)
+    diags.error(loc, keyword, fmt::format("surface '{}' is made of shell edges; {} needs element faces (SPOS, SNEG, "
+                                          "S1, ...) or nodes", s.name, keyword));
 }
 
 void check_contact(model::Model& m, Diagnostics& diags) {
@@ -228,9 +234,10 @@ void check_ties(const model::Model& m, Diagnostics& diags) {
     const auto [it, fresh] = first_of_name.emplace(t.name, &t);
     if (!fresh && (it->second->loc.line != t.loc.line || it->second->loc.file != t.loc.file))
       diags.error(t.loc, "*TIE", fmt::format("tie name '{}' is used already (line {})", t.name, it->second->loc.line));
-    check_surface(m, diags, t.slave, t.line_loc, "*TIE");
-    if (check_defined(diags, m.mesh.surfaces, t.master, t.master_loc, "*TIE", "surface") &&
-        m.mesh.surfaces.at(t.master).kind != model::Surface::Kind::Element)
+    check_surface(m, diags, t.slave, t.line_loc, "*TIE", true);  // a shell edge ties its nodes
+    check_surface(m, diags, t.master, t.master_loc, "*TIE");
+    if (const auto master = m.mesh.surfaces.find(t.master);
+        master != m.mesh.surfaces.end() && master->second.kind != model::Surface::Kind::Element)
       diags.error(t.master_loc, "*TIE", fmt::format("tie {}: the master surface '{}' is node based; a master surface must be "
                                                   "made of element faces", t.name, t.master));
     if (!t.tied_nset.empty()) check_defined(diags, m.mesh.nsets, t.tied_nset, t.loc, "*TIE", "node set");

@@ -158,6 +158,7 @@ void end_instance(KeywordContext& ctx) {
     model::Surface copy = s;
     copy.name = inst.name + "." + s.name;
     for (auto& f : copy.faces) f.element += elem_base;
+    for (auto& f : copy.edges) f.element += elem_base;
     for (auto& n : copy.nodes) n += node_base;
     dst.surfaces[prefix + k] = std::move(copy);
   }

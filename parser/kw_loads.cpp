@@ -224,6 +224,41 @@ std::optional<std::uint8_t> pressure_face(KeywordContext& ctx, const Field& labe
   return static_cast<std::uint8_t>(n - 1);
 }
 
+/// The shell edge tractions by label stem: EDNOR, EDSHR, EDT (model::EdgeTraction).
+std::optional<model::EdgeTraction> edge_traction_of(std::string_view stem) {
+  if (stem == "EDNOR") return model::EdgeTraction::Normal;
+  if (stem == "EDSHR") return model::EdgeTraction::Shear;
+  if (stem == "EDT") return model::EdgeTraction::Transverse;
+  return std::nullopt;
+}
+
+/// `EDNORn`, `EDSHRn`, `EDTn` → the traction and edge n − 1 when every element is a shell with that
+/// edge; nullopt when the label is none of them; −1 for the edge when an error was reported.
+std::optional<std::pair<model::EdgeTraction, int>> edge_load_label(KeywordContext& ctx, const Field& label_field,
+                                                                    const std::string& label,
+                                                                    const std::vector<std::int32_t>& elements) {
+  const std::size_t digits = label.find_first_of("0123456789");
+  if (digits == std::string::npos || digits + 1 != label.size()) return std::nullopt;
+  const auto traction = edge_traction_of(std::string_view(label).substr(0, digits));
+  if (!traction) return std::nullopt;
+  const int edge = label[digits] - '1';
+  const auto& el = ctx.mesh().elements;
+  for (std::int32_t e : elements) {
+    const auto& info = model::element_type(el.type[static_cast<std::size_t>(e)]);
+    if (!model::is_shell(info)) {
+      ctx.error(label_field.loc, fmt::format("{} is a load on a shell's edge; element {} ({}) is not a shell", label,
+                                             el.labels[static_cast<std::size_t>(e)], info.name));
+      return std::pair{*traction, -1};
+    }
+    if (edge < 0 || edge >= static_cast<int>(info.edges.size())) {
+      ctx.error(label_field.loc, fmt::format("element {} ({}) has no edge {}: its edges are 1..{}", el.labels[e],
+                                             info.name, label[digits], info.edges.size()));
+      return std::pair{*traction, -1};
+    }
+  }
+  return std::pair{*traction, edge};
+}
+
 /// Fields f[first..first+2] as a vector into `out`; false (errors given) when one is not a number.
 bool read_vector(KeywordContext& ctx, const std::vector<Field>& f, std::size_t first, const char* what,
                  std::array<double, 3>& out) {
@@ -307,7 +342,8 @@ std::vector<std::int32_t> all_elements(KeywordContext& ctx) {
 // centrifugal force ρ ω² r of a rotation about the axis through x0 along n; needs *DENSITY),
 // `element|elset, ROTA, α, x0, y0, z0, n1, n2, n3` (the rotary acceleration α about that axis;
 // its d'Alembert force −ρ α n × r; needs *DENSITY), `element|elset, BX|BY|BZ, b` (force per unit
-// volume). GRAV with the element field empty loads every element of the model.
+// volume), `element|elset, EDNORn|EDSHRn|EDTn, q` (a traction per unit length on edge n of shells,
+// model::EdgeTraction). GRAV with the element field empty loads every element of the model.
 void dload(KeywordContext& ctx) {
   if (!data_or_new(ctx)) return;
   model::DloadBlock b = dload_block(ctx);
@@ -340,6 +376,12 @@ void dload(KeywordContext& ctx) {
       }
       e.kind = model::DloadEntry::Kind::Pressure;
       e.faces.assign(elements->size(), 0);
+    } else if (const auto edge_load = edge_load_label(ctx, f[1], label, *elements)) {
+      if (edge_load->second < 0) continue;
+      if (!ctx.check_count(f, line, 3, 3, "element or element set, edge load type, force per unit length")) continue;
+      e.kind = model::DloadEntry::Kind::EdgeLoad;
+      e.edge_traction = edge_load->first;
+      e.faces.assign(elements->size(), static_cast<std::uint8_t>(edge_load->second));
     } else if (face_label) {
       auto face = pressure_face(ctx, f[1], label[1] - '0', *elements);
       if (!face) continue;
@@ -365,9 +407,11 @@ void dload(KeywordContext& ctx) {
       e.kind = model::DloadEntry::Kind::BodyForce;
       e.direction[label[1] - 'X'] = 1.0;
     } else {
-      std::vector<std::string> names{"GRAV", "CENTRIF", "ROTA", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6"};
+      std::vector<std::string> names{"GRAV", "CENTRIF", "ROTA", "BX", "BY", "BZ", "P1", "P2", "P3", "P4", "P5", "P6",
+                                     "EDNOR1", "EDSHR1", "EDT1"};
       const std::string guess = did_you_mean(label, names);
-      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, CENTRIF, ROTA, BX, BY, BZ){}",
+      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported (inpact supports Pn, GRAV, CENTRIF, ROTA, BX, BY, BZ, "
+                                      "and on shell edges EDNORn, EDSHRn, EDTn){}",
                                       f[1].text, guess.empty() ? "" : fmt::format("; did you mean {}?", guess)));
       continue;
     }
@@ -378,7 +422,8 @@ void dload(KeywordContext& ctx) {
 }
 
 // *DSLOAD, OP=, AMPLITUDE=: `surface, P, p` — a pressure on the faces of an element-based
-// surface, stored like *DLOAD Pn with one face per element.
+// surface, stored like *DLOAD Pn with one face per element; `surface, EDNOR|EDSHR|EDT, q` — a
+// traction per unit length on the shell edges of an edge-based surface, stored like EDNORn.
 void dsload(KeywordContext& ctx) {
   if (!data_or_new(ctx)) return;
   model::DloadBlock b = dload_block(ctx);
@@ -387,10 +432,13 @@ void dsload(KeywordContext& ctx) {
   const auto& surfaces = ctx.mesh().surfaces;
   for (const Line& line : ctx.data) {
     split_fields(line, f);
-    if (!ctx.check_count(f, line, 3, 3, "surface, P, magnitude")) continue;
+    if (!ctx.check_count(f, line, 3, 3, "surface, load type, magnitude")) continue;
     auto magnitude = ctx.real(f[2], "magnitude");
-    if (normalize_name(f[1].text) != "P") {
-      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported on *DSLOAD (only P, a pressure)", f[1].text));
+    const std::string label = normalize_name(f[1].text);
+    const auto edge_traction = edge_traction_of(label);
+    if (label != "P" && !edge_traction) {
+      ctx.error(f[1].loc, fmt::format("load type '{}' is not supported on *DSLOAD (P, a pressure on faces; EDNOR, EDSHR, "
+                                      "EDT, a traction on shell edges)", f[1].text));
       continue;
     }
     const std::string key = normalize_label(f[0].text);
@@ -407,13 +455,21 @@ void dsload(KeywordContext& ctx) {
       ctx.error(f[0].loc, fmt::format("surface '{}' is node-based: a pressure needs element faces", f[0].text));
       continue;
     }
+    const auto& loaded = edge_traction ? it->second.edges : it->second.faces;
+    if (loaded.empty()) {
+      ctx.error(f[1].loc, fmt::format("surface '{}' is made of {}: {} loads {}", f[0].text,
+                                      edge_traction ? "element faces" : "shell edges", label,
+                                      edge_traction ? "shell edges (E1, E2, ...)" : "element faces"));
+      continue;
+    }
     if (!magnitude) continue;
     model::DloadEntry e;
-    e.kind = model::DloadEntry::Kind::Pressure;
+    e.kind = edge_traction ? model::DloadEntry::Kind::EdgeLoad : model::DloadEntry::Kind::Pressure;
+    if (edge_traction) e.edge_traction = *edge_traction;
     e.target = std::string(f[0].text);
     e.magnitude = *magnitude;
     e.loc = f[0].loc;
-    for (const model::Face& face : it->second.faces) {
+    for (const model::Face& face : loaded) {
       e.elements.push_back(face.element);
       e.faces.push_back(face.face);
     }

@@ -291,7 +291,10 @@ std::optional<std::uint8_t> face_of(KeywordContext& ctx, const Field& f, std::in
     ctx.error(f.loc, fmt::format("element {} ({}) is a {} element: its faces are SPOS and SNEG{}, not '{}'",
                                  ctx.mesh().elements.labels[element], info.name,
                                  model::is_rigid(info) ? "rigid" : "shell",
-                                 model::is_rigid(info) ? "" : " (CalculiX's S2 and S1; edges are not supported yet)",
+                                 model::is_rigid(info)
+                                     ? ""
+                                     : fmt::format(" (CalculiX's S2 and S1), its edges E1..E{} (CalculiX's S3..S{})",
+                                                   info.edges.size(), info.edges.size() + 2),
                                  f.text));
     return std::nullopt;
   }
@@ -309,6 +312,23 @@ std::optional<std::uint8_t> face_of(KeywordContext& ctx, const Field& f, std::in
   }
   ctx.error(f.loc, fmt::format("face identifier '{}' is not valid: expected S1..S{}", f.text, info.faces.size()));
   return std::nullopt;
+}
+
+/// The edge of a shell an identifier names: Abaqus's E1..En, or CalculiX's S3..S(n + 2) (its S1 and
+/// S2 are the faces); −1 when the element has no such edge (reported); nullopt for any other
+/// identifier or element (face_of reports those).
+std::optional<int> shell_edge_of(KeywordContext& ctx, const Field& f, std::int32_t element) {
+  const auto& info = model::element_type(ctx.mesh().elements.type[element]);
+  const std::string id = normalize_name(f.text);
+  if (!model::is_shell(info) || id.size() != 2 || (id[0] != 'E' && id[0] != 'S') || id[1] < '1' || id[1] > '9')
+    return std::nullopt;
+  const int edge = id[1] - (id[0] == 'E' ? '1' : '3');
+  if (edge < 0) return std::nullopt;
+  if (edge < static_cast<int>(info.edges.size())) return edge;
+  ctx.error(f.loc, fmt::format("element {} ({}) has no edge {}: its edges are E1..E{} (CalculiX's S3..S{})",
+                               ctx.mesh().elements.labels[element], info.name, id, info.edges.size(),
+                               info.edges.size() + 2));
+  return -1;
 }
 
 // *SURFACE, NAME=, TYPE=ELEMENT|NODE.
@@ -374,17 +394,29 @@ void surface(KeywordContext& ctx) {
       continue;
     }
     for (auto e : *rows) {
+      if (const auto edge = shell_edge_of(ctx, f[1], e)) {
+        if (*edge < 0) break;
+        surf.edges.push_back({e, static_cast<std::uint8_t>(*edge)});
+        continue;
+      }
       auto face = face_of(ctx, f[1], e);
       if (!face) break;
       surf.faces.push_back({e, *face});
     }
+    if (!surf.faces.empty() && !surf.edges.empty()) {
+      ctx.error(f[1].loc, fmt::format("surface '{}' has element faces and shell edges: a surface is made of one or the "
+                                      "other (define two surfaces)", surf.name));
+      return;
+    }
   }
-  if (surf.kind == model::Surface::Kind::Element && surf.faces.empty() && !ctx.diags.has_errors())
+  if (surf.kind == model::Surface::Kind::Element && surf.faces.empty() && surf.edges.empty() && !ctx.diags.has_errors())
     ctx.error(ctx.keyword.loc, fmt::format("surface '{}' has no faces", surf.name));
   // A surface is a set of faces (Abaqus, CalculiX): a face given twice (two overlapping element
   // sets, an element's free faces and one of them by name) is one face, loaded once.
   std::set<std::pair<std::int32_t, int>> seen;
   std::erase_if(surf.faces, [&](const model::Face& face) { return !seen.insert({face.element, face.face}).second; });
+  seen.clear();
+  std::erase_if(surf.edges, [&](const model::Face& edge) { return !seen.insert({edge.element, edge.face}).second; });
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ std::int32_t section_element(KeywordContext& ctx) {
 }
 
 // *PRE-TENSION SECTION, SURFACE=name | ELEMENT=, NODE=node or one-node set [, FOLLOWER=NO];
-// optional data line n1, n2, n3. A continuum is cut along the surface; a truss (ELEMENT=) at its
+// optional data line n1, n2, n3. A continuum is cut along the surface, a shell along an edge-based
+// surface (CalculiX's pret7; Abaqus cuts continua and trusses); a truss (ELEMENT=) at its
 // second node, its axis the normal (a data line must say the same: CalculiX's decks give it).
 // The normal stays fixed (FOLLOWER=NO, Abaqus's default).
 void pretension_section(KeywordContext& ctx) {

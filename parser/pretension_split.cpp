@@ -45,6 +45,57 @@ Vec face_area_vector(const model::Mesh& mesh, model::Face face) {
   return a;
 }
 
+/// A shell's thickness at element e (its section's; 1 when no section holds it, which the section
+/// check reports elsewhere).
+double shell_thickness_of(const model::Mesh& mesh, std::int32_t e) {
+  for (const model::ShellSection& sec : mesh.shell_sections)
+    if (auto set = mesh.elsets.find(sec.elset);
+        set != mesh.elsets.end() && std::binary_search(set->second.rows.begin(), set->second.rows.end(), e))
+      return model::shell_thickness(mesh, sec, static_cast<std::size_t>(e));
+  return 1.0;
+}
+
+/// The outward area vector of a shell edge: in the shell's plane, out of the element (the edge's
+/// chord × the shell normal), its size the chord's length times the thickness.
+Vec edge_area_vector(const model::Mesh& mesh, model::Face edge) {
+  const auto& x = mesh.nodes.coords;
+  const auto nodes = model::edge_nodes(mesh.elements, edge);
+  const auto corners = mesh.elements.nodes_of(static_cast<std::size_t>(edge.element));
+  const std::size_t n_corners = model::element_type(mesh.elements.type[edge.element]).edges.size();
+  const Vec normal = n_corners == 3 ? cross(sub(x[corners[1]], x[corners[0]]), sub(x[corners[2]], x[corners[0]]))
+                                    : cross(sub(x[corners[2]], x[corners[0]]), sub(x[corners[3]], x[corners[1]]));
+  const Vec chord = sub(x[nodes[1]], x[nodes[0]]);
+  const Vec out = cross(chord, normal);
+  const double scale = std::sqrt(dot(chord, chord)) * shell_thickness_of(mesh, edge.element) / std::sqrt(dot(out, out));
+  return {out[0] * scale, out[1] * scale, out[2] * scale};
+}
+
+/// The outward area vectors of a section's pieces: the surface's faces, or its shell edges.
+std::vector<Vec> area_vectors(const model::Mesh& mesh, const model::Surface& surface) {
+  std::vector<Vec> out;
+  for (const model::Face& f : surface.faces) out.push_back(face_area_vector(mesh, f));
+  for (const model::Face& e : surface.edges) out.push_back(edge_area_vector(mesh, e));
+  return out;
+}
+
+/// The nodes of a section's faces or shell edges.
+std::set<std::int32_t> section_nodes_of(const model::Mesh& mesh, const model::Surface& surface) {
+  std::set<std::int32_t> out;
+  for (const model::Face& f : surface.faces)
+    for (std::int32_t n : model::face_nodes(mesh.elements, f)) out.insert(n);
+  for (const model::Face& e : surface.edges)
+    for (std::int32_t n : model::edge_nodes(mesh.elements, e)) out.insert(n);
+  return out;
+}
+
+/// The elements a section's pieces belong to.
+std::set<std::int32_t> section_elements_of(const model::Surface& surface) {
+  std::set<std::int32_t> out;
+  for (const auto* pieces : {&surface.faces, &surface.edges})
+    for (const model::Face& f : *pieces) out.insert(f.element);
+  return out;
+}
+
 /// The surface and node checks; false (with the error reported) when the section cannot be cut.
 bool check_section(const model::Model& m, Diagnostics& diags, const model::PretensionSection& s,
                    const std::vector<std::uint8_t>& connected) {
@@ -57,9 +108,9 @@ bool check_section(const model::Model& m, Diagnostics& diags, const model::Prete
                                                      guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
     return false;
   }
-  if (it->second.kind != model::Surface::Kind::Element || it->second.faces.empty()) {
+  if (it->second.kind != model::Surface::Kind::Element || (it->second.faces.empty() && it->second.edges.empty())) {
     diags.error(s.surface_loc, kKeyword, fmt::format("surface '{}' is not element based (the section must be made of "
-                                                     "element faces, *SURFACE, TYPE=ELEMENT)", s.surface));
+                                                     "element faces or shell edges, *SURFACE, TYPE=ELEMENT)", s.surface));
     return false;
   }
   if (connected[s.node]) {
@@ -74,11 +125,9 @@ bool check_section(const model::Model& m, Diagnostics& diags, const model::Prete
 /// The unit normal (given, or the average of the faces' outward normals weighted by their
 /// areas) and the section's area normal to it; false when the normal is zero.
 bool resolve_normal(const model::Model& m, Diagnostics& diags, model::PretensionSection& s) {
-  const auto& faces = m.mesh.surfaces.at(s.surface).faces;
   Vec sum{0, 0, 0};
   double total = 0.0;
-  for (const model::Face& f : faces) {
-    const Vec a = face_area_vector(m.mesh, f);
+  for (const Vec& a : area_vectors(m.mesh, m.mesh.surfaces.at(s.surface))) {
     for (int k = 0; k < 3; ++k) sum[k] += a[k];
     total += std::sqrt(dot(a, a));
   }
@@ -101,8 +150,7 @@ bool resolve_normal(const model::Model& m, Diagnostics& diags, model::Pretension
 Vec outward_direction(const model::Model& m, const model::PretensionSection& s) {
   Vec sum{0, 0, 0};
   double total = 0.0;
-  for (const model::Face& f : m.mesh.surfaces.at(s.surface).faces) {
-    const Vec a = face_area_vector(m.mesh, f);
+  for (const Vec& a : area_vectors(m.mesh, m.mesh.surfaces.at(s.surface))) {
     for (int k = 0; k < 3; ++k) sum[k] += a[k];
     total += std::sqrt(dot(a, a));
   }
@@ -115,8 +163,7 @@ std::vector<std::int32_t> underlying_elements(const model::Model& m, const model
   const auto& elements = m.mesh.elements;
   const auto& x = m.mesh.nodes.coords;
   const Vec outward = outward_direction(m, s);
-  std::set<std::int32_t> out;
-  for (const model::Face& f : m.mesh.surfaces.at(s.surface).faces) out.insert(f.element);
+  std::set<std::int32_t> out = section_elements_of(m.mesh.surfaces.at(s.surface));
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const auto nodes = elements.nodes_of(e);
     Vec centroid{0, 0, 0}, on_section{0, 0, 0};
@@ -139,9 +186,7 @@ std::vector<std::int32_t> underlying_elements(const model::Model& m, const model
 /// False (the error reported, the mesh unchanged) when a section node has no element on the other side.
 bool split_section(model::Model& m, Diagnostics& diags, model::PretensionSection& s, bool cut) {
   model::Mesh& mesh = m.mesh;
-  std::set<std::int32_t> section_nodes;
-  for (const model::Face& f : mesh.surfaces.at(s.surface).faces)
-    for (std::int32_t n : model::face_nodes(mesh.elements, f)) section_nodes.insert(n);
+  const std::set<std::int32_t> section_nodes = section_nodes_of(mesh, mesh.surfaces.at(s.surface));
   const std::vector<std::int32_t> rewired = underlying_elements(m, s, section_nodes);
   std::set<std::int32_t> other_side;
   for (std::size_t e = 0; e < mesh.elements.size(); ++e)

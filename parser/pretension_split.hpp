@@ -6,7 +6,8 @@
 
 namespace inpact::parser {
 
-/// For each pre-tension section: the surface defined and made of element faces, the pre-tension
+/// For each pre-tension section: the surface defined and made of element faces (or a shell's
+/// edges: the cut then runs across the shell, its copies turning with their originals), the pre-tension
 /// node connected to no element, the normal not zero; then its normal (given, or the surface's
 /// area-weighted average outward normal), its area, and the split: every section node gets a copy
 /// (a new node at the same place, labelled after the instance's largest label) that replaces it

@@ -70,12 +70,11 @@ void add_rotation_nodes(model::Model& m) {
     auto& l = last_label[mesh.nodes.instance[n]];
     l = std::max(l, mesh.nodes.labels[n]);
   }
-  // A beam cut by a pre-tension section: the copy turns with the original (the cut opens along
-  // the axis only), which comes first by row.
+  // A beam or shell cut by a pre-tension section: the copy turns with the original (the cut opens
+  // along the normal only), which comes first by row.
   std::map<std::int32_t, std::int32_t> original_of;
   for (const model::PretensionSection& s : m.pretension_sections)
-    if (s.element >= 0)
-      for (const auto& [orig, copy] : s.node_pairs) original_of[copy] = orig;
+    for (const auto& [orig, copy] : s.node_pairs) original_of[copy] = orig;
   std::size_t added = 0;
   const std::size_t n_nodes = mesh.nodes.size();
   for (std::size_t n = 0; n < n_nodes; ++n) {

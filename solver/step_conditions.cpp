@@ -166,6 +166,18 @@ void StepConditions::apply_dloads(const std::vector<model::DloadBlock>& blocks) 
       }
 }
 
+namespace {
+
+/// The nodal forces of a unit load in a surface slot (below 100): a face pressure, or a traction on
+/// a shell edge (model::edge_load_slot).
+std::vector<double> unit_surface_load(const ElementSetup& setup, std::span<const elements::Vec3> coords, int slot) {
+  if (model::is_edge_load_slot(slot))
+    return elements::edge_traction_load(*setup.type, coords, model::slot_edge(slot), model::slot_edge_traction(slot), 1.0);
+  return elements::pressure_load(*setup.type, coords, slot, 1.0, setup.section);
+}
+
+}  // namespace
+
 void StepConditions::add_dload_shape(const Key& key) {
   if (dload_shape_.count(key) || rotation_moments_.count(key)) return;
   const ElementSetup& setup = am_.elements[key.element];
@@ -182,7 +194,7 @@ void StepConditions::add_dload_shape(const Key& key) {
   }
   std::vector<double> f;
   if (key.key < 100) {
-    f = elements::pressure_load(*setup.type, coords, key.key, 1.0, setup.section);
+    f = unit_surface_load(setup, coords, key.key);
   } else {
     // Body forces per unit magnitude: the direction is applied in external_force.
     elements::Vec3 unit{0, 0, 0};
@@ -270,7 +282,7 @@ std::vector<std::pair<std::int64_t, double>> StepConditions::follower_shape(cons
   const std::size_t dim = static_cast<std::size_t>(am_.dim);
   for (std::size_t a = 0; a < nodes.size(); ++a)
     for (std::size_t c = 0; c < dim; ++c) coords[a][c] += u[static_cast<std::size_t>(nodes[a]) * dim + c];
-  const auto f = elements::pressure_load(*setup.type, coords, key.key, 1.0, setup.section);
+  const auto f = unit_surface_load(setup, coords, key.key);
   std::vector<std::pair<std::int64_t, double>> shape;
   for (std::size_t a = 0; a < nodes.size(); ++a)
     for (std::size_t c = 0; c < dim; ++c)

@@ -68,6 +68,60 @@ std::vector<double> pressure_load(const model::ElementTypeInfo& type, std::span<
   return f;
 }
 
+namespace {
+
+Vec3 unit(const Vec3& v) {
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+/// The force per unit length of `traction` at an edge point with unit tangent t (the element's
+/// node order) and unit shell normal n: t × n points out of the element in its plane.
+Vec3 edge_traction_vector(model::EdgeTraction traction, const Vec3& t, const Vec3& n, double q) {
+  switch (traction) {
+    case model::EdgeTraction::Normal: {
+      const Vec3 out = cross(t, n);
+      return {-q * out[0], -q * out[1], -q * out[2]};
+    }
+    case model::EdgeTraction::Shear: return {q * t[0], q * t[1], q * t[2]};
+    case model::EdgeTraction::Transverse: return {-q * n[0], -q * n[1], -q * n[2]};
+  }
+  return {0, 0, 0};
+}
+
+}  // namespace
+
+std::vector<double> edge_traction_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int edge,
+                                       model::EdgeTraction traction, double q) {
+  if (edge < 0 || edge >= static_cast<int>(type.edges.size()))
+    throw std::invalid_argument("edge_traction_load: edge index out of range");
+  const model::FaceDef& ed = type.edges[static_cast<std::size_t>(edge)];
+  const Shape shape = element_shape(type);
+  const auto from = node_parametric_coords(shape, ed.nodes[0]);
+  const auto to = node_parametric_coords(shape, ed.nodes[1]);
+  std::vector<double> f(static_cast<std::size_t>(type.n_nodes) * 3, 0.0);
+  // The edge point at s ∈ [−1, 1] lies at ξ(s) = ((1 − s) from + (1 + s) to) / 2 of the element;
+  // the element's own shape functions vanish there for the nodes off the edge.
+  for (const auto& [s, w] : gauss_legendre(3)) {
+    std::array<double, 3> xi{};
+    for (int j = 0; j < 2; ++j) xi[j] = 0.5 * ((1 - s) * from[j] + (1 + s) * to[j]);
+    const ShapeValues sv = evaluate_shape(shape, xi);
+    Vec3 g1{0, 0, 0}, g2{0, 0, 0}, dx_ds{0, 0, 0};
+    for (int a = 0; a < type.n_nodes; ++a)
+      for (int i = 0; i < 3; ++i) {
+        g1[i] += sv.dN[a][0] * coords[a][i];
+        g2[i] += sv.dN[a][1] * coords[a][i];
+        dx_ds[i] += 0.5 * (sv.dN[a][0] * (to[0] - from[0]) + sv.dN[a][1] * (to[1] - from[1])) * coords[a][i];
+      }
+    const double length = std::sqrt(dx_ds[0] * dx_ds[0] + dx_ds[1] * dx_ds[1] + dx_ds[2] * dx_ds[2]);
+    const Vec3 traction_per_length = edge_traction_vector(traction, unit(dx_ds), unit(cross(g1, g2)), q);
+    for (int a = 0; a < type.n_nodes; ++a)
+      for (int i = 0; i < 3; ++i)
+        f[static_cast<std::size_t>(a) * 3 + i] += sv.N[a] * traction_per_length[i] * length * w;
+  }
+  return f;
+}
+
 double face_area(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int face,
                  const SectionData& section) {
   double area = 0.0;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "element_kernel.hpp"
+#include "model/loads.hpp"
 
 namespace inpact::solver::elements {
 
@@ -20,6 +21,12 @@ namespace inpact::solver::elements {
 /// `face` (0 = S1).
 std::vector<double> pressure_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int face,
                                   double p, const SectionData& section);
+
+/// Nodal forces (node-major, 3 per node, all element nodes) of a traction q, force per unit
+/// length, on edge `edge` (0 = E1) of a shell, in the direction `traction` names (model/loads.hpp)
+/// at each point of the edge: the in-plane normal and the shell normal are the element's there.
+std::vector<double> edge_traction_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords, int edge,
+                                       model::EdgeTraction traction, double q);
 
 /// Nodal forces of a body force b (per unit volume; 2D elements use b[0], b[1]).
 std::vector<double> body_force_load(const model::ElementTypeInfo& type, std::span<const Vec3> coords,

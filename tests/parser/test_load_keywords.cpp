@@ -187,14 +187,18 @@ TEST(Loads, DsloadPutsThePressureOnTheSurfaceFaces) {
 
 TEST(Loads, PressureLabelsAreCheckedAgainstTheElementFaces) {
   DeckDir dir;
-  auto r = dir.read(cube_step("", "*DLOAD\nCUBE, P, 1.\nCUBE, P7, 1.\nCUBE, GRV, 1.\n*DSLOAD\nTOPP, P, 1.\n"));
+  auto r = dir.read(
+      cube_step("", "*DLOAD\nCUBE, P, 1.\nCUBE, P7, 1.\nCUBE, GRV, 1.\n*DSLOAD\nTOPP, P, 1.\n*DLOAD\nCUBE, EDNOR1, 1.\n"));
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:23:7: error: *DLOAD: P (without a face number) is for shells: element 1 is "
                                 "not one; on solid and plane elements give the face, P1, P2, ..."))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:24:7: error: *DLOAD: element 1 (C3D8) has no face 7: its pressure labels are P1..P6"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:25:7: error: *DLOAD: load type 'GRV' is not supported (inpact supports Pn, "
-                                "GRAV, CENTRIF, ROTA, BX, BY, BZ); did you mean GRAV?"))
+                                "GRAV, CENTRIF, ROTA, BX, BY, BZ, and on shell edges EDNORn, EDSHRn, EDTn); did you mean GRAV?"))
+      << r.report();
+  EXPECT_TRUE(has_diagnostic(r, "deck.inp:29:7: error: *DLOAD: EDNOR1 is a load on a shell's edge; element 1 (C3D8) is "
+                                "not a shell"))
       << r.report();
   EXPECT_TRUE(has_diagnostic(r, "deck.inp:27:1: error: *DSLOAD: surface 'TOPP' is not defined (did you mean 'TOP'?)"))
       << r.report();

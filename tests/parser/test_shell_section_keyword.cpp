@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fixtures/deck_fixture.hpp"
+#include "model/mesh_queries.hpp"
 
 using namespace inpact;
 using inpact::test::DeckDir;
@@ -63,10 +64,14 @@ TEST(ShellSectionKeyword, DataThatContradictsTheMeshOrIsNotSupportedIsADeckError
       << nodal.report();
   auto solid = dir.read(kPlate + kMaterial + "*SOLID SECTION, ELSET=P, MATERIAL=M\n");
   EXPECT_TRUE(has_diagnostic(solid, "element 1 is a shell element: its section is a *SHELL SECTION")) << solid.report();
-  auto face = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=S\n1, S3\n");
-  EXPECT_TRUE(has_diagnostic(face, "element 1 (S4) is a shell element: its faces are SPOS and SNEG (CalculiX's S2 and "
-                                   "S1; edges are not supported yet), not 'S3'"))
+  auto face = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=S\n1, S9\n");
+  EXPECT_TRUE(has_diagnostic(face, "deck.inp:14:4: error: *SURFACE: element 1 (S4) has no edge S9: its edges are E1..E4 "
+                                   "(CalculiX's S3..S6)"))
       << face.report();
+  auto other = dir.read(kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=S\n1, TOP\n");
+  EXPECT_TRUE(has_diagnostic(other, "element 1 (S4) is a shell element: its faces are SPOS and SNEG (CalculiX's S2 and "
+                                    "S1), its edges E1..E4 (CalculiX's S3..S6), not 'TOP'"))
+      << other.report();
 }
 
 // COMPOSITE: a layer a line from SNEG up, `thickness, points, material, orientation or angle,
@@ -136,4 +141,69 @@ TEST(ShellSectionKeyword, CalculixShellFacesS1AndS2AreSnegAndSpos) {
   EXPECT_EQ(s.at("A").faces.at(0).face, 0);
   EXPECT_EQ(s.at("B").faces.at(0).face, 1);
   EXPECT_EQ(s.at("C").faces.at(0).face, 1);
+}
+
+// Edge-based surfaces: Abaqus's E1..E4 (S3: E1..E3), CalculiX's S3..S6; a surface is faces or
+// edges; only *DSLOAD and *PRE-TENSION SECTION take edges.
+TEST(ShellSectionKeyword, ShellEdgesMakeEdgeBasedSurfaces) {
+  DeckDir dir;
+  const std::string section = kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n";
+  auto r = dir.read(section + "*SURFACE, NAME=A\n1, E2\n1, E4\n*SURFACE, NAME=B\n1, S3\n1, S6\nP, E1\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& a = r.model.mesh.surfaces.at("A");
+  EXPECT_TRUE(a.faces.empty());
+  ASSERT_EQ(a.edges.size(), 2u);
+  EXPECT_EQ(a.edges[0].face, 1);
+  EXPECT_EQ(a.edges[1].face, 3);
+  const auto& b = r.model.mesh.surfaces.at("B");
+  ASSERT_EQ(b.edges.size(), 2u);  // S3 and E1 name the same edge: once
+  EXPECT_EQ(b.edges[0].face, 0);
+  EXPECT_EQ(b.edges[1].face, 3);
+  EXPECT_EQ(model::edge_nodes(r.model.mesh.elements, a.edges[1]), (std::vector<std::int32_t>{3, 0}));
+
+  auto mixed = dir.read(section + "*SURFACE, NAME=A\n1, E2\n1, SPOS\n");
+  EXPECT_TRUE(has_diagnostic(mixed, "deck.inp:15:4: error: *SURFACE: surface 'A' has element faces and shell edges: a "
+                                    "surface is made of one or the other (define two surfaces)"))
+      << mixed.report();
+  auto contact = dir.read(section + "*SURFACE, NAME=A\n1, E2\n*SURFACE, NAME=B\n1, SPOS\n*CONTACT PAIR, "
+                                    "INTERACTION=I\nA, B\n*SURFACE INTERACTION, NAME=I\n");
+  EXPECT_TRUE(has_diagnostic(contact, "*CONTACT PAIR: surface 'A' is made of shell edges; *CONTACT PAIR needs element "
+                                      "faces (SPOS, SNEG, S1, ...) or nodes"))
+      << contact.report();
+  auto tie = dir.read(section + "*SURFACE, NAME=A\n1, E2\n*SURFACE, NAME=B\n1, E4\n*TIE, NAME=T\nA, B\n");
+  EXPECT_TRUE(has_diagnostic(tie, "*TIE: surface 'B' is made of shell edges; *TIE needs element faces (SPOS, SNEG, "
+                                  "S1, ...) or nodes"))
+      << tie.report();
+  EXPECT_FALSE(has_diagnostic(tie, "surface 'A' is made of shell edges")) << "a tie's slave may be a shell edge";
+}
+
+// *DLOAD EDNORn, EDSHRn, EDTn on shells and *DSLOAD EDNOR, EDSHR, EDT on edge-based surfaces.
+TEST(ShellSectionKeyword, EdgeLoadsNameAShellEdge) {
+  DeckDir dir;
+  const std::string model = kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n*SURFACE, NAME=E\n1, E3\n"
+                                                 "*SURFACE, NAME=F\n1, SPOS\n*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n";
+  auto r = dir.read(model + "*DLOAD\nP, EDNOR2, 5.\n1, EDSHR4, 6.\n*DSLOAD\nE, EDT, 7.\n*END STEP\n");
+  ASSERT_TRUE(r.ok()) << r.report();
+  const auto& d = r.model.steps.at(0).dloads;
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].entries[0].kind, model::DloadEntry::Kind::EdgeLoad);
+  EXPECT_EQ(d[0].entries[0].edge_traction, model::EdgeTraction::Normal);
+  EXPECT_EQ(d[0].entries[0].faces, (std::vector<std::uint8_t>{1}));
+  EXPECT_EQ(d[0].entries[1].edge_traction, model::EdgeTraction::Shear);
+  EXPECT_EQ(model::dload_slot(d[0].entries[1], 0), model::edge_load_slot(3, model::EdgeTraction::Shear));
+  EXPECT_EQ(d[1].entries[0].edge_traction, model::EdgeTraction::Transverse);
+  EXPECT_EQ(d[1].entries[0].faces, (std::vector<std::uint8_t>{2}));
+  EXPECT_EQ(d[1].entries[0].magnitude, 7.0);
+
+  auto no_edge = dir.read(model + "*DLOAD\nP, EDNOR5, 5.\n*END STEP\n");
+  EXPECT_TRUE(has_diagnostic(no_edge, "deck.inp:22:4: error: *DLOAD: element 1 (S4) has no edge 5: its edges are 1..4"))
+      << no_edge.report();
+  auto pressure_on_edges = dir.read(model + "*DSLOAD\nE, P, 5.\n*END STEP\n");
+  EXPECT_TRUE(has_diagnostic(pressure_on_edges, "deck.inp:22:4: error: *DSLOAD: surface 'E' is made of shell edges: P "
+                                                "loads element faces"))
+      << pressure_on_edges.report();
+  auto edge_load_on_faces = dir.read(model + "*DSLOAD\nF, EDNOR, 5.\n*END STEP\n");
+  EXPECT_TRUE(has_diagnostic(edge_load_on_faces, "deck.inp:22:4: error: *DSLOAD: surface 'F' is made of element faces: "
+                                                 "EDNOR loads shell edges (E1, E2, ...)"))
+      << edge_load_on_faces.report();
 }

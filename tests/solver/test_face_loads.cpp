@@ -1,6 +1,7 @@
 // Element loads: a uniform pressure on every face of every element type sums to −p·A·n
 // (positive pressure pushes into the element, as in Abaqus), with the classical consistent
 // distributions; body forces sum to b·V.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -169,4 +170,59 @@ TEST(FaceLoads, BodyForceOfTheQuadraticTetrahedron) {
   const auto f = body_force_load(t, reference_coords(t), {0, 0, 6.0}, SectionData{});
   for (int a = 0; a < 4; ++a) EXPECT_NEAR(f[a * 3 + 2], -6.0 / 6 / 20, 1e-14);
   for (int a = 4; a < 10; ++a) EXPECT_NEAR(f[a * 3 + 2], 6.0 / 6 / 5, 1e-14);
+}
+
+// Tractions on shell edges (EDNOR, EDSHR, EDT): on a flat shell turned in space, each sums to q
+// times the edge's length along the in-plane inward normal, the edge direction (node order) and
+// the negative shell normal; a straight quadratic edge takes the classical 1/6, 2/3, 1/6.
+TEST(FaceLoads, ShellEdgeTractionsSumToQTimesLengthInTheirDirections) {
+  for (const char* name : {"S3", "S4", "S4R", "S6", "S8", "S8R"}) {
+    const auto& type = *model::find_element_type(name);
+    const std::vector<Vec3> x = rotated(reference_coords(type));
+    const Vec3 normal = [&] {
+      const Vec3 c = cross(sub(x[1], x[0]), sub(x[2], x[0]));
+      const double l = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      return Vec3{c[0] / l, c[1] / l, c[2] / l};
+    }();
+    Vec3 centroid{0, 0, 0};
+    for (std::size_t a = 0; a < type.edges.size(); ++a)
+      for (int i = 0; i < 3; ++i) centroid[i] += x[a][i] / static_cast<double>(type.edges.size());
+    for (int edge = 0; edge < static_cast<int>(type.edges.size()); ++edge) {
+      const model::FaceDef& ed = type.edges[static_cast<std::size_t>(edge)];
+      const Vec3 chord = sub(x[ed.nodes[1]], x[ed.nodes[0]]);
+      const double length = std::sqrt(chord[0] * chord[0] + chord[1] * chord[1] + chord[2] * chord[2]);
+      const Vec3 t{chord[0] / length, chord[1] / length, chord[2] / length};
+      Vec3 inward = cross(normal, t);  // in the plane, into the element (checked against the centroid)
+      const Vec3 to_centre = sub(centroid, x[ed.nodes[0]]);
+      ASSERT_GT(inward[0] * to_centre[0] + inward[1] * to_centre[1] + inward[2] * to_centre[2], 0) << name;
+      const double q = 7.0;
+      struct Case {
+        model::EdgeTraction traction;
+        Vec3 direction;
+      };
+      for (const Case& c : {Case{model::EdgeTraction::Normal, inward}, Case{model::EdgeTraction::Shear, t},
+                            Case{model::EdgeTraction::Transverse, {-normal[0], -normal[1], -normal[2]}}}) {
+        const auto f = edge_traction_load(type, x, edge, c.traction, q);
+        Vec3 sum{0, 0, 0};
+        for (int a = 0; a < type.n_nodes; ++a) {
+          const bool on_edge = std::find(ed.nodes, ed.nodes + ed.n_nodes, a) != ed.nodes + ed.n_nodes;
+          for (int i = 0; i < 3; ++i) {
+            sum[i] += f[static_cast<std::size_t>(a) * 3 + i];
+            if (!on_edge) {
+              EXPECT_EQ(f[static_cast<std::size_t>(a) * 3 + i], 0.0) << name << " node " << a;
+            }
+          }
+        }
+        for (int i = 0; i < 3; ++i)
+          EXPECT_NEAR(sum[i], q * length * c.direction[i], 1e-12 * q * length) << name << " edge " << edge;
+        if (ed.n_nodes != 3) continue;
+        for (int k = 0; k < 3; ++k)  // corner, corner, midside: 1/6, 1/6, 2/3 of q L
+          for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(f[static_cast<std::size_t>(ed.nodes[k]) * 3 + i],
+                        (k == 2 ? 2.0 / 3.0 : 1.0 / 6.0) * q * length * c.direction[i], 1e-12 * q * length)
+                << name;
+          }
+      }
+    }
+  }
 }
