@@ -206,9 +206,11 @@ void ResultsWriter::Impl::write_model(const std::vector<std::string>& pair_names
     for (const auto& [key, surf] : mesh.surfaces) {
       const std::string name = link_name(key);
       if (surf.kind == model::Surface::Kind::Element) {
+        // (element row, face) pairs; a surface of shell edges: (element row, edge), 0 = E1.
+        const auto& pieces = surf.edges.empty() ? surf.faces : surf.edges;
         std::vector<std::int64_t> faces;
-        faces.reserve(surf.faces.size() * 2);
-        for (const auto& f : surf.faces) {
+        faces.reserve(pieces.size() * 2);
+        for (const auto& f : pieces) {
           faces.push_back(f.element);
           faces.push_back(f.face);
         }
@@ -219,7 +221,8 @@ void ResultsWriter::Impl::write_model(const std::vector<std::string>& pair_names
       }
       Id ds = ctx.open_dataset(sg, name);
       ctx.attr_string(ds, "name", surf.name);
-      ctx.attr_string(ds, "kind", surf.kind == model::Surface::Kind::Element ? "ELEMENT"
+      ctx.attr_string(ds, "kind", !surf.edges.empty()                         ? "SHELL EDGES"
+                                 : surf.kind == model::Surface::Kind::Element ? "ELEMENT"
                                  : surf.kind == model::Surface::Kind::Node ? "NODE" : "ANALYTICAL");
     }
   }

@@ -102,7 +102,10 @@ void finalize_couplings(model::Model& m, Diagnostics& diags) {
       continue;
     }
     // An unknown reference node or surface is reported already.
-    if (c.ref_node < 0 || (!c.node_based() && !m.mesh.surfaces.count(c.surface))) continue;
+    // A surface that is missing or made of shell edges was reported by check_surface.
+    if (c.ref_node < 0 || (!c.node_based() && (!m.mesh.surfaces.count(c.surface) ||
+                                               !m.mesh.surfaces.at(c.surface).edges.empty())))
+      continue;
     if (!c.node_based()) c.nodes = coupling_nodes(m, c);
     else if (!resolve_weighted_lines(m, c, diags)) continue;
     if (std::find(c.nodes.begin(), c.nodes.end(), c.ref_node) != c.nodes.end())

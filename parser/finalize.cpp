@@ -163,8 +163,9 @@ void check_surface(const model::Model& m, Diagnostics& diags, const std::string&
   if (name.empty() || !check_defined(diags, m.mesh.surfaces, name, loc, keyword, "surface")) return;
   const model::Surface& s = m.mesh.surfaces.at(name);
   if (!s.edges.empty() && !shell_edges_allowed)
-    diags.error(loc, keyword, fmt::format("surface '{}' is made of shell edges; {} needs element faces (SPOS, SNEG, "
-                                          "S1, ...) or nodes", s.name, keyword));
+    diags.error(loc, keyword, fmt::format("surface '{}' is made of shell edges, which serve *DSLOAD, *PRE-TENSION "
+                                          "SECTION and a *TIE's slave only; {} needs element faces (SPOS, SNEG, S1, ...)",
+                                          s.name, keyword));
 }
 
 void check_contact(model::Model& m, Diagnostics& diags) {

@@ -243,6 +243,10 @@ std::optional<std::pair<model::EdgeTraction, int>> edge_load_label(KeywordContex
   if (!traction) return std::nullopt;
   const int edge = label[digits] - '1';
   const auto& el = ctx.mesh().elements;
+  if (edge < 0) {
+    ctx.error(label_field.loc, fmt::format("{} names no edge: a shell's edges are numbered from 1", label));
+    return std::pair{*traction, -1};
+  }
   for (std::int32_t e : elements) {
     const auto& info = model::element_type(el.type[static_cast<std::size_t>(e)]);
     if (!model::is_shell(info)) {
@@ -250,9 +254,10 @@ std::optional<std::pair<model::EdgeTraction, int>> edge_load_label(KeywordContex
                                              el.labels[static_cast<std::size_t>(e)], info.name));
       return std::pair{*traction, -1};
     }
-    if (edge < 0 || edge >= static_cast<int>(info.edges.size())) {
-      ctx.error(label_field.loc, fmt::format("element {} ({}) has no edge {}: its edges are 1..{}", el.labels[e],
-                                             info.name, label[digits], info.edges.size()));
+    if (edge >= static_cast<int>(info.edges.size())) {
+      const std::string stem = label.substr(0, digits);
+      ctx.error(label_field.loc, fmt::format("element {} ({}) has no edge {}: expected {}1..{}{}", el.labels[e],
+                                             info.name, label[digits], stem, stem, info.edges.size()));
       return std::pair{*traction, -1};
     }
   }
@@ -452,7 +457,8 @@ void dsload(KeywordContext& ctx) {
       continue;
     }
     if (it->second.kind != model::Surface::Kind::Element) {
-      ctx.error(f[0].loc, fmt::format("surface '{}' is node-based: a pressure needs element faces", f[0].text));
+      ctx.error(f[0].loc, fmt::format("surface '{}' is node-based: {} needs {}", f[0].text, label,
+                                      edge_traction ? "shell edges (E1, E2, ...)" : "element faces"));
       continue;
     }
     const auto& loaded = edge_traction ? it->second.edges : it->second.faces;

@@ -45,13 +45,18 @@ Vec face_area_vector(const model::Mesh& mesh, model::Face face) {
   return a;
 }
 
-/// A shell's thickness at element e (its section's; 1 when no section holds it, which the section
-/// check reports elsewhere).
+/// A shell's thickness at element e: its section's (1 when no section holds it or a node lacks its
+/// *NODAL THICKNESS, which the section checks report).
 double shell_thickness_of(const model::Mesh& mesh, std::int32_t e) {
-  for (const model::ShellSection& sec : mesh.shell_sections)
-    if (auto set = mesh.elsets.find(sec.elset);
-        set != mesh.elsets.end() && std::binary_search(set->second.rows.begin(), set->second.rows.end(), e))
-      return model::shell_thickness(mesh, sec, static_cast<std::size_t>(e));
+  for (const model::ShellSection& sec : mesh.shell_sections) {
+    const auto set = mesh.elsets.find(sec.elset);
+    if (set == mesh.elsets.end() || !std::binary_search(set->second.rows.begin(), set->second.rows.end(), e)) continue;
+    const auto nodes = mesh.elements.nodes_of(static_cast<std::size_t>(e));
+    const bool nodal_given = std::all_of(nodes.begin(), nodes.end(), [&](std::int32_t n) {
+      return mesh.nodal_thickness.count(n) > 0;
+    });
+    return !sec.nodal_thickness || nodal_given ? model::shell_thickness(mesh, sec, static_cast<std::size_t>(e)) : 1.0;
+  }
   return 1.0;
 }
 
@@ -217,6 +222,9 @@ bool split_section(model::Model& m, Diagnostics& diags, model::PretensionSection
     mesh.nodes.index.insert(inst, label, row);
     copy_of[n] = row;
     s.node_pairs.push_back({n, row});
+    // A shell's copy carries what the deck gave its original: *NODAL THICKNESS and a normal.
+    if (auto t = mesh.nodal_thickness.find(n); t != mesh.nodal_thickness.end()) mesh.nodal_thickness[row] = t->second;
+    if (auto g = mesh.node_normals.find(n); g != mesh.node_normals.end()) mesh.node_normals[row] = g->second;
   }
   for (std::int32_t e : rewired)
     for (std::int64_t k = mesh.elements.offsets[e]; k < mesh.elements.offsets[e + 1]; ++k)

@@ -27,6 +27,12 @@ struct NodeNormal {
 /// (degenerate: the kernel reports them) are left out.
 std::vector<std::vector<NodeNormal>> normals_by_node(const model::Model& m, const AnalysisModel& am) {
   std::vector<std::vector<NodeNormal>> by_node(m.mesh.nodes.size());
+  // A shell cut by a pre-tension section: a copy and its original turn together, so they average
+  // one director over both sides of the cut.
+  std::vector<std::int32_t> node_of(m.mesh.nodes.size());
+  for (std::size_t n = 0; n < node_of.size(); ++n) node_of[n] = static_cast<std::int32_t>(n);
+  for (const model::PretensionSection& s : m.pretension_sections)
+    for (const auto& [original, copy] : s.node_pairs) node_of[static_cast<std::size_t>(copy)] = original;
   for (std::size_t e = 0; e < am.elements.size(); ++e) {
     const ElementSetup& s = am.elements[e];
     if (!s.section.shell || s.rigid) continue;
@@ -34,7 +40,8 @@ std::vector<std::vector<NodeNormal>> normals_by_node(const model::Model& m, cons
     if (!elements::shell_nodal_normals(*s.type, am.coords(e), normals)) continue;
     const auto nodes = m.mesh.elements.nodes_of(e);
     for (std::size_t a = 0; a < nodes.size(); ++a)
-      by_node[static_cast<std::size_t>(nodes[a])].push_back({e, static_cast<int>(a), normals[a]});
+      by_node[static_cast<std::size_t>(node_of[static_cast<std::size_t>(nodes[a])])].push_back(
+          {e, static_cast<int>(a), normals[a]});
   }
   return by_node;
 }

@@ -144,7 +144,7 @@ TEST(ShellSectionKeyword, CalculixShellFacesS1AndS2AreSnegAndSpos) {
 }
 
 // Edge-based surfaces: Abaqus's E1..E4 (S3: E1..E3), CalculiX's S3..S6; a surface is faces or
-// edges; only *DSLOAD and *PRE-TENSION SECTION take edges.
+// edges; only *DSLOAD, *PRE-TENSION SECTION and a *TIE's slave take edges.
 TEST(ShellSectionKeyword, ShellEdgesMakeEdgeBasedSurfaces) {
   DeckDir dir;
   const std::string section = kPlate + kMaterial + "*SHELL SECTION, ELSET=P, MATERIAL=M\n0.2\n";
@@ -167,12 +167,13 @@ TEST(ShellSectionKeyword, ShellEdgesMakeEdgeBasedSurfaces) {
       << mixed.report();
   auto contact = dir.read(section + "*SURFACE, NAME=A\n1, E2\n*SURFACE, NAME=B\n1, SPOS\n*CONTACT PAIR, "
                                     "INTERACTION=I\nA, B\n*SURFACE INTERACTION, NAME=I\n");
-  EXPECT_TRUE(has_diagnostic(contact, "*CONTACT PAIR: surface 'A' is made of shell edges; *CONTACT PAIR needs element "
-                                      "faces (SPOS, SNEG, S1, ...) or nodes"))
+  EXPECT_TRUE(has_diagnostic(contact, "*CONTACT PAIR: surface 'A' is made of shell edges, which serve *DSLOAD, "
+                                      "*PRE-TENSION SECTION and a *TIE's slave only; *CONTACT PAIR needs element faces "
+                                      "(SPOS, SNEG, S1, ...)"))
       << contact.report();
   auto tie = dir.read(section + "*SURFACE, NAME=A\n1, E2\n*SURFACE, NAME=B\n1, E4\n*TIE, NAME=T\nA, B\n");
-  EXPECT_TRUE(has_diagnostic(tie, "*TIE: surface 'B' is made of shell edges; *TIE needs element faces (SPOS, SNEG, "
-                                  "S1, ...) or nodes"))
+  EXPECT_TRUE(has_diagnostic(tie, "*TIE: surface 'B' is made of shell edges, which serve *DSLOAD, *PRE-TENSION "
+                                  "SECTION and a *TIE's slave only; *TIE needs element faces (SPOS, SNEG, S1, ...)"))
       << tie.report();
   EXPECT_FALSE(has_diagnostic(tie, "surface 'A' is made of shell edges")) << "a tie's slave may be a shell edge";
 }
@@ -196,7 +197,8 @@ TEST(ShellSectionKeyword, EdgeLoadsNameAShellEdge) {
   EXPECT_EQ(d[1].entries[0].magnitude, 7.0);
 
   auto no_edge = dir.read(model + "*DLOAD\nP, EDNOR5, 5.\n*END STEP\n");
-  EXPECT_TRUE(has_diagnostic(no_edge, "deck.inp:22:4: error: *DLOAD: element 1 (S4) has no edge 5: its edges are 1..4"))
+  EXPECT_TRUE(has_diagnostic(no_edge, "deck.inp:22:4: error: *DLOAD: element 1 (S4) has no edge 5: expected "
+                                      "EDNOR1..EDNOR4"))
       << no_edge.report();
   auto pressure_on_edges = dir.read(model + "*DSLOAD\nE, P, 5.\n*END STEP\n");
   EXPECT_TRUE(has_diagnostic(pressure_on_edges, "deck.inp:22:4: error: *DSLOAD: surface 'E' is made of shell edges: P "

@@ -164,6 +164,13 @@ TEST_P(ShellPretension, CarriesTheBoltLoadAsUniformMembraneStress) {
   const auto& s = m.pretension_sections[0];
   EXPECT_NEAR(s.area, kWidth * kT, 1e-12);
   EXPECT_NEAR(s.normal[1], -1.0, 1e-12);  // out of the elements above the cut
+  // The cut opens along its normal only: each copy turns with its original (one rotation node).
+  std::map<std::int32_t, std::int32_t> rotation_of;
+  for (const auto& r_node : m.node_rotations) rotation_of[r_node.node] = r_node.rot_node;
+  for (const auto& [original, copy] : s.node_pairs) {
+    ASSERT_TRUE(rotation_of.count(original) && rotation_of.count(copy));
+    EXPECT_EQ(rotation_of.at(copy), rotation_of.at(original));
+  }
   const std::size_t pt = static_cast<std::size_t>(node_row(m, 100));
   const double area = kWidth * kT;
   struct Expect {
