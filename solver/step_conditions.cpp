@@ -250,6 +250,23 @@ double StepConditions::value_at(const V* prev, const V* target, double t) const 
   return start + (end - start) * ramp(t);
 }
 
+std::array<double, 3> StepConditions::gravity_at(const ConditionHistory::DloadValue* prev,
+                                                 const ConditionHistory::DloadValue* target, double t) const {
+  std::array<double, 3> g{0, 0, 0};
+  if (target && !target->amplitude.empty()) {
+    const double a = target->value * amplitude(target->amplitude, t);
+    for (int c = 0; c < 3; ++c) g[c] = a * target->direction[c];
+    return g;
+  }
+  const double r = ramp(t);
+  for (int c = 0; c < 3; ++c) {
+    const double start = prev ? prev->end_value * prev->direction[c] : 0.0;
+    const double end = target ? target->value * target->direction[c] : 0.0;
+    g[c] = start + (end - start) * r;
+  }
+  return g;
+}
+
 void StepConditions::apply_prescribed(double t, std::span<const double> u_start, std::span<double> u) const {
   for (const auto& [d, def] : target_.boundary) {
     if (def.fixed) {
@@ -306,6 +323,11 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
   each_key(previous_.dload, target_.dload, [&](const Key& k) {
     const auto* prev = find(previous_.dload, k);
     const auto* target = find(target_.dload, k);
+    if (k.key == 200) {  // gravity: one shape per axis, each scaled by its component
+      const auto g = gravity_at(prev, target, t);
+      for (const auto& [d, w] : dload_shape_.at(k)) f[d] += g[static_cast<std::size_t>(d % am_.dim)] * w;
+      return;
+    }
     const double v = value_at(prev, target, t);
     if (v == 0.0) return;
     const auto& dir = (target ? target : prev)->direction;
@@ -318,11 +340,7 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
       for (const auto& [d, w] : follower_shape(k, u)) f[d] += v * w;
       return;
     }
-    for (const auto& [d, w] : dload_shape_.at(k)) {
-      double scale = v;
-      if (k.key == 200) scale *= dir[d % am_.dim];  // gravity: the axis of this DOF
-      f[d] += scale * w;
-    }
+    for (const auto& [d, w] : dload_shape_.at(k)) f[d] += v * w;
   });
   for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
   if (!previous_.released_forces.empty()) {

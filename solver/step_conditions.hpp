@@ -118,6 +118,10 @@ class StepConditions {
   /// this step (either may be absent).
   template <class V>
   double value_at(const V* prev, const V* target, double t) const;
+  /// The gravity vector at step time t: from the step start's vector to the target's (a turned
+  /// GRAV turns as it ramps), or the target's times its amplitude.
+  std::array<double, 3> gravity_at(const ConditionHistory::DloadValue* prev, const ConditionHistory::DloadValue* target,
+                                   double t) const;
   void add_dload_shape(const ConditionHistory::DloadKey& key);
   /// The pressure load of `key` at unit magnitude on X + u (global DOF, force).
   std::vector<std::pair<std::int64_t, double>> follower_shape(const ConditionHistory::DloadKey& key,

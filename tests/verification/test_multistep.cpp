@@ -164,5 +164,29 @@ TEST(MultiStep, GravitiesAndPressuresInOneStepAdd) {
   EXPECT_NEAR(rf[2], 32.0, 1e-10);
 }
 
+// A held unit cube (density 2) under GRAV 10 along −z, turned to −y in step 2 (two increments):
+// the gravity vector ramps from (0, 0, −10) to (0, −10, 0), so Σ RF = −ρ V g(t) is (0, 10, 10) at
+// half the step and (0, 20, 0) at its end. Ramping the new direction from the old size would
+// give (0, 20, 0) at half the step.
+TEST(MultiStep, GravityTurnedInALaterStepTurnsAsItRamps) {
+  const std::string deck =
+      "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n"
+      "7, 1., 1., 1.\n8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
+      "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n"
+      "*BOUNDARY\nALL, 1, 3\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 10., 0., 0., -1.\n*END STEP\n"
+      "*STEP\n*STATIC\n0.5, 1.\n*DLOAD\nCUBE, GRAV, 10., 0., -1., 0.\n*END STEP\n";
+  const test::DeckDir dir;
+  const auto r = run_deck(dir.write("cube.inp", deck));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto frames = r->capture.of_step(2);
+  ASSERT_EQ(frames.size(), 2u);
+  for (const auto& [frame, expected] : {std::pair{r->capture.of_step(1).back(), std::array<double, 3>{0, 0, 20}},
+                                        std::pair{frames[0], std::array<double, 3>{0, 10, 10}},
+                                        std::pair{frames[1], std::array<double, 3>{0, 20, 0}}}) {
+    const auto rf = sum_rf(*r, *frame);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(rf[c], expected[c], 1e-10) << "component " << c;
+  }
+}
+
 }  // namespace
 }  // namespace inpact::verification
