@@ -28,10 +28,10 @@ const char* keyword_of(const model::ShellSection& sec) {
 elements::ShellLamina material_lamina(const model::Model& m, const model::ShellSection& sec,
                                       const std::string& material, model::SourceLoc loc) {
   const model::Material& mat = m.materials.at(material);
-  // Temperature tables go through the section points' law (shell_point_law); a layer, a general
-  // section and a directional lamina are integrated from constants.
-  if (!sec.layers.empty() || sec.general || (mat.elastic && mat.elastic->type != model::Elastic::Type::Isotropic))
-    refuse_temperature_tables(m, mat, "a COMPOSITE, general or directional shell section");
+  // Temperature tables go through the section points' law (point_law); a general section and a
+  // directional lamina are integrated from constants.
+  if (sec.general || (mat.elastic && mat.elastic->type != model::Elastic::Type::Isotropic))
+    refuse_temperature_tables(m, mat, "a general or directional shell section");
   const bool linear = mat.elastic && !mat.hyperelastic;
   if (!linear || mat.elastic->type == model::Elastic::Type::Anisotropic)
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' is not {}; shells take *ELASTIC, TYPE=ISOTROPIC, "
@@ -78,21 +78,16 @@ double section_density(const model::Model& m, const model::ShellSection& sec) {
   return sum / sec.thickness;
 }
 
-/// The law at the section points of a shell whose points need one, null for an elastic lamina
-/// of constants. *PLASTIC: Mises in plane stress (σ33 = 0 at each point) with any hardening
-/// *PLASTIC takes (plastic_law.hpp), at small strain; under NLGEOM the law sees the corotated
-/// strains (corotation.hpp), so the strains stay small while the shell turns. Temperature tables
-/// of an isotropic *ELASTIC or *EXPANSION: the plane stress elastic law at each point's
-/// temperature. The transverse shear stays elastic, as in Abaqus's shells.
-std::shared_ptr<const elements::Material> shell_point_law(const model::Model& m, const model::ShellSection& sec,
-                                                          std::vector<std::string>& warnings) {
-  for (const model::ShellLayer& layer : sec.layers)
-    if (m.materials.at(layer.material).plastic)
-      throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; the layers of a COMPOSITE section "
-                                      "are elastic so far", m.sources.describe(layer.loc), keyword_of(sec),
-                                      layer.material));
-  if (!sec.layers.empty()) return nullptr;
-  const model::Material& mat = m.materials.at(sec.material);
+/// The law at the section points of `mat` where they need one, null for an elastic lamina of
+/// constants. *PLASTIC: Mises in plane stress (σ33 = 0 at each point) with any hardening *PLASTIC
+/// takes (plastic_law.hpp), at small strain; under NLGEOM the law sees the corotated strains
+/// (corotation.hpp), so the strains stay small while the shell turns. Temperature tables of an
+/// isotropic *ELASTIC or *EXPANSION: the plane stress elastic law at each point's temperature.
+/// The transverse shear stays elastic, as in Abaqus's shells. `oriented`: the material's axes
+/// are turned (an ORIENTATION or a layer's angle), which a plastic law does not take so far.
+std::shared_ptr<const elements::Material> point_law(const model::Model& m, const model::ShellSection& sec,
+                                                    const model::Material& mat, model::SourceLoc loc, bool oriented,
+                                                    std::vector<std::string>& warnings) {
   const bool tables = (mat.elastic && mat.elastic->temperature_dependent()) ||
                       (mat.expansion && mat.expansion->temperature_dependent());
   if (!mat.plastic && !tables) return nullptr;
@@ -103,25 +98,59 @@ std::shared_ptr<const elements::Material> shell_point_law(const model::Model& m,
   if (!mat.plastic)  // (a general section's tables are refused with its lamina)
     return sec.general ? nullptr : isotropic_elastic_law(&mat, model::ElementFamily::PlaneStress, c);
   refuse_temperature_tables(m, mat, "*PLASTIC");
-  if (!sec.orientation.empty() || mat.elastic->type != model::Elastic::Type::Isotropic)
-    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a plastic shell takes isotropic "
-                                    "elasticity and no ORIENTATION so far", m.sources.describe(sec.loc),
+  if (oriented || mat.elastic->type != model::Elastic::Type::Isotropic)
+    throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a plastic shell or layer takes "
+                                    "isotropic elasticity and no ORIENTATION or angle so far", m.sources.describe(loc),
                                     keyword_of(sec), mat.name));
   if (sec.general)
     throw AnalysisError(fmt::format("{}: error: {}: material '{}' has *PLASTIC; a general shell section is "
                                     "integrated once, elastically (use *SHELL SECTION for a plastic shell)",
-                                    m.sources.describe(sec.loc), keyword_of(sec), mat.name));
+                                    m.sources.describe(loc), keyword_of(sec), mat.name));
   return plastic_law(m, mat, model::ElementFamily::PlaneStress, c, false, warnings);
+}
+
+/// The laws of a COMPOSITE's layers into `properties` (layer_laws when any layer has one), and
+/// the element's law: the one keeping the most state per point, which sizes and starts every
+/// point's history (a layer's law reads the first state_size() values of it). The plastic layers
+/// of one section keep the same state (one hardening form), so that the element's law starts
+/// each of them as its own law would.
+std::shared_ptr<const elements::Material> layer_laws(const model::Model& m, const model::ShellSection& sec,
+                                                     elements::ShellProperties& properties, AnalysisModel& am) {
+  std::shared_ptr<const elements::Material> element_law;
+  for (std::size_t k = 0; k < sec.layers.size(); ++k) {
+    const model::ShellLayer& layer = sec.layers[k];
+    const bool oriented = !sec.orientation.empty() || !layer.orientation.empty() || layer.angle != 0.0;
+    auto law = point_law(m, sec, m.materials.at(layer.material), layer.loc, oriented, am.warnings);
+    if (!law) continue;
+    if (element_law && law->state_size() > 0 && element_law->state_size() > 0 &&
+        law->state_size() != element_law->state_size())
+      throw AnalysisError(fmt::format("{}: error: {}: the plastic layers of a COMPOSITE section take one form of "
+                                      "hardening so far; material '{}' hardens otherwise than an earlier layer's",
+                                      m.sources.describe(layer.loc), keyword_of(sec), layer.material));
+    properties.layer_laws = true;
+    properties.layers[k].law = law.get();
+    if (!element_law || law->state_size() > element_law->state_size()) element_law = law;
+    am.materials.push_back(std::move(law));
+  }
+  return element_law;
+}
+
+/// The law of the section's points (null: elastic constants throughout).
+std::shared_ptr<const elements::Material> section_law(const model::Model& m, const model::ShellSection& sec,
+                                                      elements::ShellProperties& properties, AnalysisModel& am) {
+  if (!sec.layers.empty()) return layer_laws(m, sec, properties, am);
+  auto law = point_law(m, sec, m.materials.at(sec.material), sec.loc, !sec.orientation.empty(), am.warnings);
+  if (law) am.materials.push_back(law);
+  return law;
 }
 
 }  // namespace
 
 void setup_shell_elements(const model::Model& m, AnalysisModel& am) {
   for (const model::ShellSection& sec : m.mesh.shell_sections) {
-    const elements::ShellProperties* p =
-        am.shells.emplace_back(std::make_shared<elements::ShellProperties>(shell_section_properties(m, sec))).get();
-    const std::shared_ptr<const elements::Material> law = shell_point_law(m, sec, am.warnings);
-    if (law) am.materials.push_back(law);
+    auto properties = std::make_shared<elements::ShellProperties>(shell_section_properties(m, sec));
+    const std::shared_ptr<const elements::Material> law = section_law(m, sec, *properties, am);
+    const elements::ShellProperties* p = am.shells.emplace_back(std::move(properties)).get();
     for (std::int32_t row : m.mesh.elsets.at(sec.elset).rows) {
       const auto e = static_cast<std::size_t>(row);
       ElementSetup& s = am.elements[e];

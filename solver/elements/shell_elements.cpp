@@ -190,6 +190,14 @@ LaminaPoint material_lamina(const Material& law, const std::array<double, 5>& e,
   return l;
 }
 
+/// A point's history as its law keeps it: the first state_size() values of the element's slot
+/// (a COMPOSITE's elastic layer with temperature tables keeps none beside a plastic layer).
+PointHistory law_history(const ElementHistory& history, std::size_t point, const Material& law) {
+  const PointHistory all = history.at(point);
+  const std::size_t size = std::min(law.state_size(), all.committed.size());
+  return {all.committed.first(size), all.trial.first(size)};
+}
+
 /// D B: the lamina's tangent applied to each column of the strain rows.
 void lamina_tangent_rows(const LaminaPoint& l, const std::array<Row, 5>& b, int n_dof, std::array<Row, 5>& db) {
   for (int j = 0; j < n_dof; ++j) {
@@ -398,14 +406,14 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
         for (int j = 0; j < nd; ++j) strain[c] += b[c][j] * u[j];
       const std::size_t point = iq * section.zeta.size() + k;
       const ShellLayerProperties& layer = section.layer_at(k);
+      const Material* law = section.layer_laws ? layer.law : material.law;
       const double theta = material_angle(layer, axes, p.x);
       const ShellLamina here = turned_lamina(layer.lamina, theta);
-      const double thermal = material.law ? material.law->thermal_strain(temperature_here, at_point)
-                                          : here.expansion * at_point;
-      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here, material.law, temperature_here - at_point);
-      const LaminaPoint lamina = material.law ? material_lamina(*material.law, strain, thermal, temperature_here, p.x,
-                                                                shear, material.history.at(point))
-                                              : elastic_lamina(here, strain, thermal, shear);
+      const double thermal = law ? law->thermal_strain(temperature_here, at_point) : here.expansion * at_point;
+      const Matrix2x2 shear = transverse_shear_moduli(section, here, t_here, law, temperature_here - at_point);
+      const LaminaPoint lamina = law ? material_lamina(*law, strain, thermal, temperature_here, p.x, shear,
+                                                       law_history(material.history, point, *law))
+                                     : elastic_lamina(here, strain, thermal, shear);
       const std::array<double, 5>& stress = lamina.stress;
       const double dv = q.weight * section.weight[k] * p.det;
       for (int i = 0; i < nd && !out.internal_force.empty(); ++i)
@@ -432,7 +440,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
         const std::array<double, 5> e_m = strains_in_material_axes(strain, theta);
         r.stress = {s_m[0], s_m[1], 0.0, s_m[2], 0.0, 0.0};
         r.strain = {e_m[0], e_m[1], 0.0, e_m[2], 0.0, 0.0};
-        if (material.law) material.law->plastic_output(material.history.at(point).trial, r);
+        if (law) law->plastic_output(law_history(material.history, point, *law).trial, r);
       }
     }
     if (!request.point_output) continue;

@@ -52,6 +52,9 @@ struct ShellLayerProperties {
   /// point); none: the shell's local e1.
   std::optional<MaterialOrientation> orientation;
   double angle = 0.0;  ///< radians about the normal from the reference direction
+  /// A COMPOSITE layer's own law at its section points (plastic, or elastic with temperature
+  /// tables; ShellProperties::layer_laws); null: its lamina's constants.
+  const Material* law = nullptr;
 };
 
 /// θ of the layer at a point with local shell axes `axes` (e1, e2, normal) and reference

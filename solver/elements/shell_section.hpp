@@ -30,6 +30,9 @@ struct ShellProperties {
   /// The section's *ORIENTATION (ORIENTATION=): the axes SF and SM are reported in (Abaqus
   /// outputs a shell's element variables in its local directions); none: the shell's default.
   std::optional<MaterialOrientation> orientation;
+  /// Each layer's points take their layer's law (ShellLayerProperties::law; a COMPOSITE with a
+  /// plastic or tabulated layer); false: the element's material law, if any, at every point.
+  bool layer_laws = false;
 
   const ShellLayerProperties& layer_at(std::size_t point) const {
     return layers[static_cast<std::size_t>(layer_of[point])];

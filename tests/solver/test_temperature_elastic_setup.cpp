@@ -78,7 +78,7 @@ TEST(TemperatureElasticSetup, DirectionalElasticityWithAnExpansionTableIsRefused
       << setup_error(deck);
 }
 
-TEST(TemperatureElasticSetup, TrussesBeamsAndLayeredShellsRefuseTables) {
+TEST(TemperatureElasticSetup, TrussesBeamsAndGeneralShellSectionsRefuseTables) {
   const std::string truss = std::string(kNodes) + "*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n"
                             "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n" + kTable;
   EXPECT_NE(setup_error(truss).find("together with T3D2 elements is not supported yet"), std::string::npos)
@@ -88,15 +88,18 @@ TEST(TemperatureElasticSetup, TrussesBeamsAndLayeredShellsRefuseTables) {
                            "*MATERIAL, NAME=M\n" + kTable;
   EXPECT_NE(setup_error(beam).find("together with beam elements is not supported yet"), std::string::npos)
       << setup_error(beam);
-  // A shell of one isotropic material reads its tables at each section point
-  // (test_shell_temperature.cpp); a COMPOSITE's layers are integrated from constants.
+  // A shell of one isotropic material and a COMPOSITE's isotropic layers read their tables at
+  // each section point (test_shell_temperature.cpp); a general section is integrated once from
+  // constants.
   const std::string shell = std::string(kNodes) + "*ELEMENT, TYPE=S4, ELSET=S\n1, 1, 2, 3, 4\n"
                             "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n" + kTable;
   EXPECT_EQ(setup_error(shell), "");
   const std::string layered = std::string(kNodes) + "*ELEMENT, TYPE=S4, ELSET=S\n1, 1, 2, 3, 4\n"
                               "*SHELL SECTION, ELSET=S, COMPOSITE\n0.05, 3, M\n0.05, 3, M\n*MATERIAL, NAME=M\n" + kTable;
-  EXPECT_NE(setup_error(layered).find("together with a COMPOSITE, general or directional shell section is not "
-                                      "supported yet"),
+  EXPECT_EQ(setup_error(layered), "");
+  const std::string general = std::string(kNodes) + "*ELEMENT, TYPE=S4, ELSET=S\n1, 1, 2, 3, 4\n"
+                              "*SHELL GENERAL SECTION, ELSET=S, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n" + kTable;
+  EXPECT_NE(setup_error(general).find("together with a general or directional shell section is not supported yet"),
             std::string::npos)
-      << setup_error(layered);
+      << setup_error(general);
 }

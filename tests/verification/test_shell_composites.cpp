@@ -12,6 +12,7 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -230,6 +231,75 @@ TEST(ShellComposites, SectionMomentsTurnWithTheSectionOrientation) {
     EXPECT_NEAR(sm[1][i + 1], s * s * m11 + c * c * m22 - 2 * c * s * m12, 1e-10 * largest) << i;
     EXPECT_NEAR(sm[1][i + 2], c * s * (m22 - m11) + (c * c - s * s) * m12, 1e-10 * largest) << i;
   }
+}
+
+}  // namespace
+}  // namespace inpact::verification
+
+namespace inpact::verification {
+namespace {
+
+// A COMPOSITE of an elastic layer (SNEG side) and a plastic one (E = 2e5, ν = 0.3; σ_y = 200,
+// H = 2000), one S4 stretched equibiaxially, ε11 = ε22 = ε = 3e-3, through displacements held at
+// every node (u = ε x, v = ε y, no w, no turn): each section point's strain is (ε, ε, 0), so each
+// layer answers by its own law alone. Elastic: σ11 = σ22 = E ε/(1 − ν). Plastic, equibiaxial
+// σ with Mises σ̄ = σ and flow ε̇ᵖ11 = ε̇ᵖ22 = ε̄̇ᵖ/2: ε = σ(1 − ν)/E + ε̄ᵖ/2, σ = σ_y + H ε̄ᵖ, so
+// ε̄ᵖ = (ε − σ_y(1 − ν)/E) / ((1 − ν) H/E + 1/2). Exact for this proportional path (1e-9).
+TEST(ShellComposites, AnElasticAndAPlasticLayerEachFollowTheirOwnLaw) {
+  constexpr double kStrain = 3e-3, kE = 2e5, kNu = 0.3, kYield = 200.0, kH = 2000.0;
+  std::string deck = "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n"
+                     "*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n"
+                     "*SHELL SECTION, ELSET=PLATE, COMPOSITE\n0.05, 3, ELASTIC\n0.05, 3, METAL\n"
+                     "*MATERIAL, NAME=ELASTIC\n*ELASTIC\n2e5, 0.3\n"
+                     "*MATERIAL, NAME=METAL\n*ELASTIC\n2e5, 0.3\n*PLASTIC\n200., 0.\n400., 0.1\n"
+                     "*BOUNDARY\nALL, 3, 6\n1, 1, 2\n*STEP\n*STATIC\n0.5, 1.\n*BOUNDARY\n";
+  for (const auto& [node, x, y] : {std::tuple{2, 1, 0}, std::tuple{3, 1, 1}, std::tuple{4, 0, 1}})
+    deck += fmt::format("{}, 1, 1, {}\n{}, 2, 2, {}\n", node, kStrain * x, node, kStrain * y);
+  deck += "*OUTPUT, FIELD\n*ELEMENT OUTPUT\n1, 2, 3, 4, 5, 6\nS, PEEQ\n*END STEP\n";
+  const test::DeckDir dir;
+  const auto r = run_deck(dir.write("deck.inp", deck));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto* s = field(r->capture.last(), "S");
+  const auto* peeq = field(r->capture.last(), "PEEQ");
+  ASSERT_TRUE(s && peeq);
+  const double elastic = kE * kStrain / (1 - kNu);
+  const double plastic_strain = (kStrain - kYield * (1 - kNu) / kE) / ((1 - kNu) * kH / kE + 0.5);
+  const double plastic = kYield + kH * plastic_strain;
+  const std::size_t n = s->component_labels.size();
+  ASSERT_EQ(s->elements.size(), 4u * 6);
+  for (std::size_t i = 0; i < s->elements.size(); ++i) {
+    const bool in_metal = s->section_point[i] > 3;
+    const double sigma = in_metal ? plastic : elastic;
+    EXPECT_NEAR(s->values[n * i], sigma, 1e-9 * sigma) << "section point " << s->section_point[i];
+    EXPECT_NEAR(s->values[n * i + 1], sigma, 1e-9 * sigma) << "section point " << s->section_point[i];
+    EXPECT_NEAR(peeq->values[i], in_metal ? plastic_strain : 0.0, 1e-9 * plastic_strain)
+        << "section point " << s->section_point[i];
+  }
+}
+
+// The plastic layers of one COMPOSITE take one form of hardening (one law starts every point's
+// state); a plastic layer turned by an angle is refused (its plastic strain would be reported in
+// other axes than its stress).
+TEST(ShellComposites, PlasticLayersOfTwoHardeningFormsOrTurnedAreRefused) {
+  const std::string model = "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n"
+                            "*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n"
+                            "*MATERIAL, NAME=ISO\n*ELASTIC\n2e5, 0.3\n*PLASTIC\n200., 0.\n"
+                            "*MATERIAL, NAME=KIN\n*ELASTIC\n2e5, 0.3\n*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n"
+                            "200., 1e4, 50.\n"
+                            "*BOUNDARY\nALL, 1, 6\n*STEP\n*STATIC\n*END STEP\n";
+  const test::DeckDir dir;
+  const std::string mixed = stop_message(dir.write("mixed.inp", "*SHELL SECTION, ELSET=PLATE, COMPOSITE\n"
+                                                                "0.05, 3, ISO\n0.05, 3, KIN\n" + model));
+  EXPECT_NE(mixed.find("the plastic layers of a COMPOSITE section take one form of hardening so far; material 'KIN' "
+                       "hardens otherwise than an earlier layer's"),
+            std::string::npos)
+      << mixed;
+  const std::string turned = stop_message(dir.write("turned.inp", "*SHELL SECTION, ELSET=PLATE, COMPOSITE\n"
+                                                                  "0.05, 3, ISO, 30.\n0.05, 3, ISO\n" + model));
+  EXPECT_NE(turned.find("material 'ISO' has *PLASTIC; a plastic shell or layer takes isotropic elasticity and no "
+                        "ORIENTATION or angle so far"),
+            std::string::npos)
+      << turned;
 }
 
 }  // namespace

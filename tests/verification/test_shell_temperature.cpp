@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "fixtures/deck_fixture.hpp"
 #include "solver/analysis.hpp"
@@ -123,16 +124,21 @@ TEST(ShellTemperature, AHeldStripCarriesTheThermalStressThroughItsThickness) {
 // The held strip of a material whose E and α depend on temperature (E = 2e5 − 1e3 T, α = 1e-5 +
 // 1e-7 T from rows at 0 and 100, reference temperature 0): S11 = −E(T) ε_th/(1 − ν) with ε_th =
 // α(T) T − α(Tᴵ) Tᴵ at each section point's own T = 50 + 100 z, from an initial 0 and from an
-// initial 20 + 40 z (the gradient of *INITIAL CONDITIONS), to 1e-9.
+// initial 20 + 40 z (the gradient of *INITIAL CONDITIONS), to 1e-9. A COMPOSITE of two layers of
+// the material reads them alike (its SNEG and SPOS are section points 1 and 6).
 TEST(ShellTemperature, TemperatureTablesAreReadAtEachSectionPoint) {
   const std::string constant = fmt::format("*ELASTIC\n{}, {}\n*EXPANSION\n{}\n", kE, kNu, kAlpha);
   const std::string tables = "*ELASTIC\n2e5, 0.3, 0.\n1e5, 0.3, 100.\n*EXPANSION\n1e-5, 0.\n2e-5, 100.\n";
   const auto E = [](double T) { return 2e5 - 1e3 * T; };
   const auto alpha = [](double T) { return 1e-5 + 1e-7 * T; };
+  const std::string single = fmt::format("*SHELL SECTION, ELSET=STRIP, MATERIAL=M, OFFSET={}\n{}\n", 0.0, kT);
+  const std::string layered = "*SHELL SECTION, ELSET=STRIP, COMPOSITE\n0.05, 3, M\n0.05, 3, M\n";
   for (const std::string type : {"S4", "S8R"})
-    for (const auto& [t0, g0] : {std::pair{0.0, 0.0}, std::pair{20.0, 40.0}}) {
+    for (const auto& [t0, g0, composite] : {std::tuple{0.0, 0.0, false}, std::tuple{20.0, 40.0, false},
+                                            std::tuple{0.0, 0.0, true}}) {
       std::string deck = strip(type, "ALL, ENCASTRE\n", "50., 100.", 0.0);
       deck.replace(deck.find(constant), constant.size(), tables);
+      if (composite) deck.replace(deck.find(single), single.size(), layered);
       const std::string initial = "TYPE=TEMPERATURE\nALL, 0.\n";
       deck.replace(deck.find(initial), initial.size(), fmt::format("TYPE=TEMPERATURE\nALL, {}, {}\n", t0, g0));
       const auto r = run_text(deck);
@@ -143,7 +149,7 @@ TEST(ShellTemperature, TemperatureTablesAreReadAtEachSectionPoint) {
         const double z = s.section_point[i] == 1 ? -kT / 2 : kT / 2;
         const double T = 50 + 100 * z, Ti = t0 + g0 * z;
         const double expected = -E(T) * (alpha(T) * T - alpha(Ti) * Ti) / (1 - kNu);
-        EXPECT_NEAR(s.values[i * n], expected, 1e-9 * std::abs(expected)) << type << " T0 " << t0 << " z " << z;
+        EXPECT_NEAR(s.values[i * n], expected, 1e-9 * std::abs(expected)) << type << " T0 " << t0 << " z " << z << (composite ? " composite" : "");
       }
     }
 }
