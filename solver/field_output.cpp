@@ -201,14 +201,18 @@ bool model_has_beams_without_section_points(const AnalysisModel& am) {
                      [](const ElementSetup& s) { return s.section.beam && s.section.beam->output_points.empty(); });
 }
 
-/// Some shell section has `number` section points or more, or some beam reports that point.
-bool model_has_section_point(const AnalysisModel& am, int number) {
-  return std::any_of(am.elements.begin(), am.elements.end(), [&](const ElementSetup& s) {
+/// An element of the request's set (the model's without one) has section point `number`: its
+/// shell section has that many points or more, or its beam reports that point.
+bool request_has_section_point(const AnalysisModel& am, bool whole_model, std::span<const std::int32_t> rows,
+                               int number) {
+  const auto has = [&](const ElementSetup& s) {
     if (s.section.shell) return static_cast<int>(s.section.shell->zeta.size()) >= number;
     if (!s.section.beam) return false;
     const auto& points = s.section.beam->output_points;
     return std::any_of(points.begin(), points.end(), [&](const auto& q) { return q.number == number; });
-  });
+  };
+  if (whole_model) return std::any_of(am.elements.begin(), am.elements.end(), has);
+  return std::any_of(rows.begin(), rows.end(), [&](std::int32_t e) { return has(am.elements[static_cast<std::size_t>(e)]); });
 }
 
 /// Beams and shells make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
@@ -357,8 +361,12 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (std::find(v.begin(), v.end(), "RF") != v.end()) add_unique(a.variables, "RM");
       }
       for (int number : r.section_points)
-        if (!model_has_section_point(am, number))
-          add_unique(not_computed_, fmt::format("element output at section point {} (no shell or beam section has it)", number));
+        if (!request_has_section_point(am, a.whole_model, a.rows, number))
+          add_unique(not_computed_, a.whole_model ? fmt::format("element output at section point {} (no shell or beam "
+                                                                "section has it)", number)
+                                                  : fmt::format("element output at section point {} of element set {} "
+                                                                "(none of its shell or beam sections has it)",
+                                                                number, r.set));
       field_timing_.emplace_back(r, period);
       field_.push_back(std::move(a));
     } else {

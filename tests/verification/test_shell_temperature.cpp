@@ -178,8 +178,8 @@ TEST(ShellTemperature, SectionPointsAskedForAreReportedThroughTheThickness) {
     // A point no section has (7 of 5) is said once, not silently dropped.
     EXPECT_EQ(std::count_if(r->capture.messages.begin(), r->capture.messages.end(),
                             [](const std::string& m) {
-                              return m.find("element output at section point 7 (no shell or beam section has it)") !=
-                                     std::string::npos;
+                              return m.find("element output at section point 7 of element set STRIP (none of its "
+                                            "shell or beam sections has it)") != std::string::npos;
                             }),
               1);
     // The .dat table: SNEG and SPOS at each in-plane point, S11 of the closed form.
@@ -194,6 +194,32 @@ TEST(ShellTemperature, SectionPointsAskedForAreReportedThroughTheThickness) {
       const double expected = -kE * kAlpha * (50 + (sp == 1 ? -kT / 2 : kT / 2) * 100) / (1 - kNu);
       EXPECT_NEAR(table->values[row * table->columns.size()], expected, 1e-9 * std::abs(expected)) << type;
     }
+  }
+}
+
+// A section point is looked for in the request's element set: two held S4, element 1 (set A) of
+// seven section points, element 2 (set B) of five; point 7 asked of B is said to be missing,
+// asked of A it is reported.
+TEST(ShellTemperature, ASectionPointIsLookedForInTheRequestsSet) {
+  const std::string deck =
+      "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n4, 0., 1., 0.\n5, 1., 1., 0.\n6, 2., 1., 0.\n"
+      "*ELEMENT, TYPE=S4, ELSET=A\n1, 1, 2, 5, 4\n*ELEMENT, TYPE=S4, ELSET=B\n2, 2, 3, 6, 5\n"
+      "*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*SHELL SECTION, ELSET=A, MATERIAL=M\n0.1, 7\n"
+      "*SHELL SECTION, ELSET=B, MATERIAL=M\n0.1, 5\n*BOUNDARY\nALL, 1, 6\n*STEP\n*STATIC\n*OUTPUT, FIELD\n"
+      "*ELEMENT OUTPUT, ELSET=A\n7\nS\n*ELEMENT OUTPUT, ELSET=B\n7\nS\n*END STEP\n";
+  const auto r = run_text(deck);
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  const auto said = [&](const std::string& set) {
+    return std::count_if(r->capture.messages.begin(), r->capture.messages.end(), [&](const std::string& m) {
+      return m.find("element output at section point 7 of element set " + set) != std::string::npos;
+    });
+  };
+  EXPECT_EQ(said("B"), 1);
+  EXPECT_EQ(said("A"), 0);
+  const solver::FieldData& s = *field(r->capture.last(), "S");
+  for (std::size_t i = 0; i < s.elements.size(); ++i) {
+    EXPECT_EQ(s.elements[i], 1) << "location " << i;
+    EXPECT_EQ(s.section_point[i], 7) << "location " << i;
   }
 }
 
