@@ -15,6 +15,7 @@
 #include "contact/step_changes.hpp"
 #include "contact_problem.hpp"
 #include "dof_map.hpp"
+#include "dof_names.hpp"
 #include "element_activity.hpp"
 #include "field_output.hpp"
 #include "increment_controller.hpp"
@@ -29,16 +30,6 @@
 namespace inpact::solver {
 
 namespace {
-
-/// "node 262 DOF 5" for a global DOF; a rotation node's DOFs are its reference node's 4–6 (6 in 2D).
-std::string node_dof(const AnalysisModel& am, std::int64_t d) {
-  const auto node = static_cast<std::int32_t>(d / am.dim);
-  const int c = static_cast<int>(d % am.dim);
-  const auto& labels = am.model->mesh.nodes.labels;
-  for (std::size_t ref = 0; ref < am.rotation_node_of.size(); ++ref)
-    if (am.rotation_node_of[ref] == node) return fmt::format("node {} DOF {}", labels[ref], am.dim == 3 ? 4 + c : 6);
-  return fmt::format("node {} DOF {}", labels[static_cast<std::size_t>(node)], c + 1);
-}
 
 /// The deck line of the last *CLOAD up to step `index` that loads global DOF d.
 model::SourceLoc cload_line(const AnalysisModel& am, std::size_t index, std::int64_t d) {

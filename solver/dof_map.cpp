@@ -7,6 +7,7 @@
 
 #include "analysis_error.hpp"
 #include "distributing_coupling.hpp"
+#include "dof_names.hpp"
 #include "oriented_coupling.hpp"
 #include "model/rigid_motion.hpp"
 
@@ -234,11 +235,13 @@ void mark_distributing_reference_dofs(const AnalysisModel& am, bool finite_rotat
 
 /// Substitutes dependents into each other until every term is independent (a tie's master node
 /// that is itself tied elsewhere, an equation on a tied node: chains resolve here).
-void substitute_chains(Dependents& dependent) {
+void substitute_chains(const AnalysisModel& am, Dependents& dependent) {
   for (auto& [d, terms] : dependent) {
     for (int pass = 0;; ++pass) {
       if (pass > static_cast<int>(dependent.size()))
-        throw AnalysisError("*EQUATION / *TIE: the constraints eliminate each other's degrees of freedom in a cycle");
+        throw AnalysisError(fmt::format("error: *EQUATION / *TIE / *MPC / coupling: the constraints on {} eliminate "
+                                        "each other's degrees of freedom in a cycle (expected each dependent DOF to "
+                                        "lead to independent ones)", node_dof(am, d)));
       std::vector<MasterTerm> next;
       bool substituted = false;
       for (const auto& t : terms) {
@@ -255,7 +258,8 @@ void substitute_chains(Dependents& dependent) {
     }
     // A chain that leads back to d would leave u_d a master of itself, which no equation holds.
     if (std::any_of(terms.begin(), terms.end(), [&](const MasterTerm& t) { return t.dof == d; }))
-      throw AnalysisError("*EQUATION / *TIE / coupling: the constraints make a degree of freedom depend on itself");
+      throw AnalysisError(fmt::format("error: *EQUATION / *TIE / *MPC / coupling: the constraints make {} depend on "
+                                      "itself (a chain of them leads back to it)", node_dof(am, d)));
   }
 }
 
@@ -346,7 +350,7 @@ DofMap::Dependents DofMap::dependents(const AnalysisModel& am, const std::vector
   if (has_finite_rotations()) check_no_chain_through_rigid_nodes(am, rigid_, dependent);
   add_oriented_kinematic_dependents(am, kind_, dependent);
   add_distributing_dependents(am, kind_, dependent);
-  substitute_chains(dependent);
+  substitute_chains(am, dependent);
   return dependent;
 }
 
