@@ -122,11 +122,7 @@ std::vector<double> reactions(const DofMap& dofs, const IncrementState& s) {
 
 std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
   if (d < 0) return "";
-  const auto& nodes = am.model->mesh.nodes;
-  const std::size_t node = static_cast<std::size_t>(d / am.dim);
-  const std::string inst = am.model->instances[nodes.instance[node]];
-  return fmt::format(", largest residual at node {}{} DOF {}", inst.empty() ? "" : inst + ".", nodes.labels[node],
-                     d % am.dim + 1);
+  return ", largest residual at " + node_dof(am, d);
 }
 
 /// The assembler's element points at u (its forces are discarded).

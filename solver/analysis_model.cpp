@@ -20,6 +20,7 @@
 #include "elements/material.hpp"
 #include "elements/material_orientation.hpp"
 #include "elements/quadrature.hpp"
+#include "elements/shell_section.hpp"
 #include "hyperelastic_material.hpp"
 #include "line_element_setup.hpp"
 #include "plastic_law.hpp"
@@ -37,6 +38,11 @@ std::size_t AnalysisModel::element_temperature_changes(std::size_t e, std::span<
   if (delta_t.size() == n_nodes() || !model::is_shell(*elements[e].type)) return n;
   for (std::size_t a = 0; a < n; ++a) out[n + a] = delta_t[n_nodes() + static_cast<std::size_t>(nodes[a])];
   return 2 * n;
+}
+
+bool AnalysisModel::reads_temperatures(std::size_t e) const {
+  const ElementSetup& s = elements[e];
+  return (s.material && s.material->temperature_dependent()) || (s.section.shell && s.section.shell->layer_temperatures);
 }
 
 std::size_t AnalysisModel::element_temperatures(std::size_t e, std::span<const double> delta_t,

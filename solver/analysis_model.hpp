@@ -112,6 +112,9 @@ struct AnalysisModel {
   /// initial one plus its change in `delta_t`). Writes into `out` (room for twice the nodes) and
   /// returns the count.
   std::size_t element_temperatures(std::size_t e, std::span<const double> delta_t, std::span<double> out) const;
+  /// Whether element e's laws read its temperatures (element_temperatures): its material's, or a
+  /// COMPOSITE layer's.
+  bool reads_temperatures(std::size_t e) const;
   /// Element e's temperature changes from the nodal `delta_t` (StepConditions::
   /// temperature_change: ΔT of every node, then, when the model has shell temperature
   /// gradients, the change of the gradient of every node): ΔT at its nodes, and for a shell the

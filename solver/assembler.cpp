@@ -172,7 +172,7 @@ void Assembler::compute(std::size_t e, std::span<const double> u, const Assembly
   const std::size_t dim = static_cast<std::size_t>(am_.dim);
   for (std::size_t a = 0; a < nodes.size(); ++a) x[a] = mesh.nodes.coords[static_cast<std::size_t>(nodes[a])];
   const std::size_t n_dt = am_.element_temperature_changes(e, request.delta_t, dt_el);
-  if (setup.material->temperature_dependent())
+  if (am_.reads_temperatures(e))
     er.temperature = std::span(temperature_el).first(am_.element_temperatures(e, request.delta_t, temperature_el));
   for (std::size_t a = 0; a < n_rows; ++a)
     for (std::size_t c = 0; c < dim; ++c) u_el[a * dim + c] = u[static_cast<std::size_t>(rows[a]) * dim + c];

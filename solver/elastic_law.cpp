@@ -22,7 +22,8 @@ void refuse_temperature_tables(const model::Model& m, const model::Material& mat
   const bool expansion = mat.expansion && mat.expansion->temperature_dependent();
   if (!elastic && !expansion) return;
   throw AnalysisError(fmt::format("{}: error: {}: temperature-dependent {} (material '{}') together with {} is not "
-                                  "supported yet; continuum elements and shells of one isotropic material take it",
+                                  "supported yet; continuum elements, shells of one isotropic material and a COMPOSITE's "
+                                  "isotropic layers take it",
                                   m.sources.describe(elastic ? mat.elastic->loc : mat.expansion->loc),
                                   elastic ? "*ELASTIC" : "*EXPANSION", elastic ? "elastic constants" : "expansion",
                                   mat.name, with));

@@ -507,7 +507,7 @@ class PointCache {
     dt_el.resize(2 * am_.model->mesh.elements.nodes_of(el).size());
     dt_el.resize(am_.element_temperature_changes(el, delta_t_, dt_el));
     elements::ElementRequest request = request_;
-    if (setup.material->temperature_dependent()) {
+    if (am_.reads_temperatures(el)) {
       temperature_el.resize(2 * am_.model->mesh.elements.nodes_of(el).size());
       temperature_el.resize(am_.element_temperatures(el, delta_t_, temperature_el));
       request.temperature = temperature_el;

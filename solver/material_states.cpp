@@ -4,6 +4,7 @@
 
 #include "elements/material.hpp"
 #include "elements/quadrature.hpp"
+#include "elements/shell_section.hpp"
 
 namespace inpact::solver {
 
@@ -81,10 +82,15 @@ std::size_t MaterialStates::points_with_too_large_increments(const AnalysisModel
   for (std::size_t e = 0; e < per_point_.size(); ++e) {
     const std::size_t size = per_point_[e];
     if (size == 0) continue;
-    for (std::size_t p = offset_[e]; p < offset_[e + 1]; p += size)
-      if (am.elements[e].material->increment_too_large(std::span(committed_).subspan(p, size),
-                                                       std::span(trial_).subspan(p, size)))
+    const ElementSetup& s = am.elements[e];
+    for (std::size_t p = offset_[e], point = 0; p < offset_[e + 1]; p += size, ++point) {
+      // A COMPOSITE's point answers to its layer's law, which keeps the first part of the slot.
+      const elements::Material* law =
+          s.section.shell ? s.section.shell->law_at(point % s.section.shell->zeta.size(), s.material) : s.material;
+      const std::size_t own = law ? std::min(size, law->state_size()) : 0;
+      if (own > 0 && law->increment_too_large(std::span(committed_).subspan(p, own), std::span(trial_).subspan(p, own)))
         ++count;
+    }
   }
   return count;
 }

@@ -112,11 +112,12 @@ std::shared_ptr<const elements::Material> point_law(const model::Model& m, const
 /// The laws of a COMPOSITE's layers into `properties` (layer_laws when any layer has one), and
 /// the element's law: the one keeping the most state per point, which sizes and starts every
 /// point's history (a layer's law reads the first state_size() values of it). The plastic layers
-/// of one section keep the same state (one hardening form), so that the element's law starts
-/// each of them as its own law would.
+/// of one section keep the same layout of state (one form of hardening), so that the element's
+/// law starts each of them as its own law would.
 std::shared_ptr<const elements::Material> layer_laws(const model::Model& m, const model::ShellSection& sec,
                                                      elements::ShellProperties& properties, AnalysisModel& am) {
   std::shared_ptr<const elements::Material> element_law;
+  std::string plastic_material;  // the first layer's with state
   for (std::size_t k = 0; k < sec.layers.size(); ++k) {
     const model::ShellLayer& layer = sec.layers[k];
     const bool oriented = !sec.orientation.empty() || !layer.orientation.empty() || layer.angle != 0.0;
@@ -124,11 +125,15 @@ std::shared_ptr<const elements::Material> layer_laws(const model::Model& m, cons
     if (!law) continue;
     if (element_law && law->state_size() > 0 && element_law->state_size() > 0 &&
         law->state_size() != element_law->state_size())
-      throw AnalysisError(fmt::format("{}: error: {}: the plastic layers of a COMPOSITE section take one form of "
-                                      "hardening so far; material '{}' hardens otherwise than an earlier layer's",
-                                      m.sources.describe(layer.loc), keyword_of(sec), layer.material));
+      throw AnalysisError(fmt::format("{}: error: {}: the plastic layers of a COMPOSITE section keep one layout of "
+                                      "state so far; material '{}' keeps {} values a point where material '{}' of an "
+                                      "earlier layer keeps {} (expected the same form of hardening)",
+                                      m.sources.describe(layer.loc), keyword_of(sec), layer.material,
+                                      law->state_size(), plastic_material, element_law->state_size()));
     properties.layer_laws = true;
+    properties.layer_temperatures = properties.layer_temperatures || law->temperature_dependent();
     properties.layers[k].law = law.get();
+    if (law->state_size() > 0 && plastic_material.empty()) plastic_material = layer.material;
     if (!element_law || law->state_size() > element_law->state_size()) element_law = law;
     am.materials.push_back(std::move(law));
   }

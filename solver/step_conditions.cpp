@@ -324,8 +324,10 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
     const auto* prev = find(previous_.dload, k);
     const auto* target = find(target_.dload, k);
     if (k.key == 200) {  // gravity: one shape per axis, each scaled by its component
+      const auto shape = dload_shape_.find(k);
+      if (shape == dload_shape_.end()) return;  // springs and rigid elements have no mass
       const auto g = gravity_at(prev, target, t);
-      for (const auto& [d, w] : dload_shape_.at(k)) f[d] += g[static_cast<std::size_t>(d % am_.dim)] * w;
+      for (const auto& [d, w] : shape->second) f[d] += g[static_cast<std::size_t>(d % am_.dim)] * w;
       return;
     }
     const double v = value_at(prev, target, t);

@@ -406,7 +406,7 @@ void compute_shell_small(const model::ElementTypeInfo& type, std::span<const Vec
         for (int j = 0; j < nd; ++j) strain[c] += b[c][j] * u[j];
       const std::size_t point = iq * section.zeta.size() + k;
       const ShellLayerProperties& layer = section.layer_at(k);
-      const Material* law = section.layer_laws ? layer.law : material.law;
+      const Material* law = section.law_at(k, material.law);
       const double theta = material_angle(layer, axes, p.x);
       const ShellLamina here = turned_lamina(layer.lamina, theta);
       const double thermal = law ? law->thermal_strain(temperature_here, at_point) : here.expansion * at_point;

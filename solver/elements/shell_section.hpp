@@ -33,9 +33,16 @@ struct ShellProperties {
   /// Each layer's points take their layer's law (ShellLayerProperties::law; a COMPOSITE with a
   /// plastic or tabulated layer); false: the element's material law, if any, at every point.
   bool layer_laws = false;
+  /// Some layer's law reads temperatures (a table), whatever the element's law does.
+  bool layer_temperatures = false;
 
   const ShellLayerProperties& layer_at(std::size_t point) const {
     return layers[static_cast<std::size_t>(layer_of[point])];
+  }
+  /// The law at section point k: its layer's with layer_laws, else the element's (null: the
+  /// layer's elastic constants).
+  const Material* law_at(std::size_t point, const Material* element_law) const {
+    return layer_laws ? layer_at(point).law : element_law;
   }
 };
 

@@ -164,6 +164,20 @@ TEST(MultiStep, GravitiesAndPressuresInOneStepAdd) {
   EXPECT_NEAR(rf[2], 32.0, 1e-10);
 }
 
+// A whole-model GRAV in a model with a spring (which has no mass) loads the cube alone.
+TEST(MultiStep, GravityOverAModelWithASpringLoadsTheMassOnly) {
+  const std::string deck =
+      "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n"
+      "7, 1., 1., 1.\n8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
+      "*ELEMENT, TYPE=SPRING1, ELSET=SP\n2, 7\n*SPRING, ELSET=SP\n1\n100.\n"
+      "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n"
+      "*BOUNDARY\nALL, 1, 3\n*STEP\n*STATIC\n*DLOAD\n, GRAV, 10., 0., 0., -1.\n*END STEP\n";
+  const test::DeckDir dir;
+  const auto r = run_deck(dir.write("cube.inp", deck));
+  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+  EXPECT_NEAR(sum_rf(*r, r->capture.last())[2], 20.0, 1e-10);
+}
+
 // A held unit cube (density 2) under GRAV 10 along −z, turned to −y in step 2 (two increments):
 // the gravity vector ramps from (0, 0, −10) to (0, −10, 0), so Σ RF = −ρ V g(t) is (0, 10, 10) at
 // half the step and (0, 20, 0) at its end. Ramping the new direction from the old size would

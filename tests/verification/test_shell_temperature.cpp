@@ -135,7 +135,7 @@ TEST(ShellTemperature, TemperatureTablesAreReadAtEachSectionPoint) {
   const std::string layered = "*SHELL SECTION, ELSET=STRIP, COMPOSITE\n0.05, 3, M\n0.05, 3, M\n";
   for (const std::string type : {"S4", "S8R"})
     for (const auto& [t0, g0, composite] : {std::tuple{0.0, 0.0, false}, std::tuple{20.0, 40.0, false},
-                                            std::tuple{0.0, 0.0, true}}) {
+                                            std::tuple{0.0, 0.0, true}, std::tuple{20.0, 40.0, true}}) {
       std::string deck = strip(type, "ALL, ENCASTRE\n", "50., 100.", 0.0);
       deck.replace(deck.find(constant), constant.size(), tables);
       if (composite) deck.replace(deck.find(single), single.size(), layered);
@@ -145,7 +145,9 @@ TEST(ShellTemperature, TemperatureTablesAreReadAtEachSectionPoint) {
       ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
       const solver::FieldData& s = *field(*r->capture.of_step(1).back(), "S");
       const std::size_t n = s.component_labels.size();
+      ASSERT_FALSE(s.elements.empty()) << type;
       for (std::size_t i = 0; i < s.elements.size(); ++i) {
+        ASSERT_TRUE(s.section_point[i] == 1 || s.section_point[i] == (composite ? 6 : 5)) << s.section_point[i];
         const double z = s.section_point[i] == 1 ? -kT / 2 : kT / 2;
         const double T = 50 + 100 * z, Ti = t0 + g0 * z;
         const double expected = -E(T) * (alpha(T) * T - alpha(Ti) * Ti) / (1 - kNu);
