@@ -61,6 +61,27 @@ def fmt_elems(elems):
     return "\n".join(f"{k}, " + ", ".join(map(str, c)) for k, c in elems)
 E, NU, T = 210000.0, 0.3, 0.1
 
+
+def shell_model(nodes, elems, etype, elset, top_elems, bottom, top):
+    """The mesh, a steel shell section of thickness T, the elements at the edge y = max
+    (TOP_ELEMS) and the node sets BOTTOM and TOP of a strip or plate."""
+    return f"""*NODE, NSET=ALL
+{fmt_nodes(nodes)}
+*ELEMENT, TYPE={etype}, ELSET={elset}
+{fmt_elems(elems)}
+*ELSET, ELSET=TOP_ELEMS
+{", ".join(map(str, top_elems))}
+*MATERIAL, NAME=STEEL
+*ELASTIC
+{E:g}, {NU:g}
+*SHELL SECTION, ELSET={elset}, MATERIAL=STEEL
+{T:g}
+*NSET, NSET=BOTTOM
+{", ".join(map(str, bottom))}
+*NSET, NSET=TOP
+{", ".join(map(str, top))}"""
+
+
 def pretension(kind):
     if kind == "s8":
         nodes, elems, bottom, top = strip_s8()
@@ -138,21 +159,7 @@ def edge_loads(kind):
  edge traction of {q:g} per unit length (EDNOR = -{q:g}: a positive EDNOR pushes into the shell)
 ** Reference: S22 = q/t = {q / T:g} at every point, U2(y = 2) = q L/(E t) = {q * 2 / (E * T):.8g},
 ** U1(x = 1) = -nu q b/(E t) = {-NU * q * 1 / (E * T):.8g}; the reactions sum to -q b = -{q:g}.
-*NODE, NSET=ALL
-{fmt_nodes(nodes)}
-*ELEMENT, TYPE={etype}, ELSET=STRIP
-{fmt_elems(elems)}
-*ELSET, ELSET=TOP_ELEMS
-{", ".join(map(str, top_elems))}
-*MATERIAL, NAME=STEEL
-*ELASTIC
-{E:g}, {NU:g}
-*SHELL SECTION, ELSET=STRIP, MATERIAL=STEEL
-{T:g}
-*NSET, NSET=BOTTOM
-{", ".join(map(str, bottom))}
-*NSET, NSET=TOP
-{", ".join(map(str, top))}{surface}
+{shell_model(nodes, elems, etype, "STRIP", top_elems, bottom, top)}{surface}
 *BOUNDARY
 BOTTOM, 2
 1, 1
@@ -180,21 +187,7 @@ def edge_cantilever():
 ** and the free edge deflects between the narrow beam's P L^3/(3 E I) + P L/(k G A) and the wide plate's
 ** (1 - nu^2) P L^3/(3 E I), P = q b; step 2, EDSHR = {q:g} runs along the edge in the node order of
 ** E3 (from x = 1 to x = 0): the reactions sum to (q b, 0, 0).
-*NODE, NSET=ALL
-{fmt_nodes(nodes)}
-*ELEMENT, TYPE=S4, ELSET=PLATE
-{fmt_elems(elems)}
-*ELSET, ELSET=TOP_ELEMS
-{", ".join(map(str, top_elems))}
-*MATERIAL, NAME=STEEL
-*ELASTIC
-{E:g}, {NU:g}
-*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL
-{T:g}
-*NSET, NSET=BOTTOM
-{", ".join(map(str, bottom))}
-*NSET, NSET=TOP
-{", ".join(map(str, top))}
+{shell_model(nodes, elems, "S4", "PLATE", top_elems, bottom, top)}
 *BOUNDARY
 BOTTOM, ENCASTRE
 *STEP

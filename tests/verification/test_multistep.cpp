@@ -142,16 +142,19 @@ TEST(MultiStep, LoadsAtOneDofInOneStepWithTwoAmplitudesAreRefused) {
       << message;
 }
 
+/// A unit cube of one C3D8 (node set ALL, element set CUBE), E = 1000, ν = 0.3, density 2.
+const std::string kUnitCube =
+    "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n"
+    "7, 1., 1., 1.\n8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
+    "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n";
+
 // Two gravities and two pressures on one cube in one step (1 × 1 × 1 C3D8, density 2, its base
 // held): GRAV 10 along −z and 5 along +x, P 3 and 4 on its top. And a *DSLOAD of 5 on a surface
 // that names the top face twice: a surface is a set of faces, loaded once. The base carries
 // −(ρ V g) and the pressures' 7 + 5: ΣRF = (−10, 0, 20 + 12), to 1e-10.
 TEST(MultiStep, GravitiesAndPressuresInOneStepAdd) {
   const std::string deck =
-      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n7, 1., 1., 1.\n"
-      "8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=BASE\n1, 2, 3, 4\n"
-      "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n"
-      "*SURFACE, NAME=TOP\nCUBE, S2\nCUBE, S2\n"
+      kUnitCube + "*NSET, NSET=BASE\n1, 2, 3, 4\n*SURFACE, NAME=TOP\nCUBE, S2\nCUBE, S2\n"
       "*BOUNDARY\nBASE, ENCASTRE\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 10., 0., 0., -1.\nCUBE, P2, 3.\n"
       "*DLOAD\nCUBE, GRAV, 5., 1., 0., 0.\nCUBE, P2, 4.\n*DSLOAD\nTOP, P, 5.\n*OUTPUT, FIELD\n*NODE OUTPUT\nRF\n"
       "*END STEP\n";
@@ -167,11 +170,8 @@ TEST(MultiStep, GravitiesAndPressuresInOneStepAdd) {
 // A whole-model GRAV in a model with a spring (which has no mass) loads the cube alone.
 TEST(MultiStep, GravityOverAModelWithASpringLoadsTheMassOnly) {
   const std::string deck =
-      "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n"
-      "7, 1., 1., 1.\n8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
-      "*ELEMENT, TYPE=SPRING1, ELSET=SP\n2, 7\n*SPRING, ELSET=SP\n1\n100.\n"
-      "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n"
-      "*BOUNDARY\nALL, 1, 3\n*STEP\n*STATIC\n*DLOAD\n, GRAV, 10., 0., 0., -1.\n*END STEP\n";
+      kUnitCube + "*ELEMENT, TYPE=SPRING1, ELSET=SP\n2, 7\n*SPRING, ELSET=SP\n1\n100.\n*BOUNDARY\nALL, 1, 3\n"
+                  "*STEP\n*STATIC\n*DLOAD\n, GRAV, 10., 0., 0., -1.\n*END STEP\n";
   const test::DeckDir dir;
   const auto r = run_deck(dir.write("cube.inp", deck));
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
@@ -184,10 +184,7 @@ TEST(MultiStep, GravityOverAModelWithASpringLoadsTheMassOnly) {
 // give (0, 20, 0) at half the step.
 TEST(MultiStep, GravityTurnedInALaterStepTurnsAsItRamps) {
   const std::string deck =
-      "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 0., 0., 1.\n6, 1., 0., 1.\n"
-      "7, 1., 1., 1.\n8, 0., 1., 1.\n*ELEMENT, TYPE=C3D8, ELSET=CUBE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
-      "*SOLID SECTION, ELSET=CUBE, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n"
-      "*BOUNDARY\nALL, 1, 3\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 10., 0., 0., -1.\n*END STEP\n"
+      kUnitCube + "*BOUNDARY\nALL, 1, 3\n*STEP\n*STATIC\n*DLOAD\nCUBE, GRAV, 10., 0., 0., -1.\n*END STEP\n"
       "*STEP\n*STATIC\n0.5, 1.\n*DLOAD\nCUBE, GRAV, 10., 0., -1., 0.\n*END STEP\n";
   const test::DeckDir dir;
   const auto r = run_deck(dir.write("cube.inp", deck));

@@ -233,11 +233,23 @@ TEST(ShellComposites, SectionMomentsTurnWithTheSectionOrientation) {
   }
 }
 
-}  // namespace
-}  // namespace inpact::verification
+constexpr double kStretch = 3e-3;
 
-namespace inpact::verification {
-namespace {
+/// One S4 (1 × 1) of `section_and_materials`, held against w and turning at every node and moved
+/// to u = ε x, v = ε y (ε = kStretch) over two increments, after `model_lines` and with
+/// `step_lines` first in the step; `variables` output at its six section points.
+std::unique_ptr<Run> run_stretched_plate(const std::string& section_and_materials, const std::string& model_lines,
+                                         const std::string& step_lines, const std::string& variables) {
+  std::string deck = "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n"
+                     "*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n" +
+                     section_and_materials + model_lines + "*BOUNDARY\nALL, 3, 6\n1, 1, 2\n*STEP\n*STATIC\n0.5, 1.\n" +
+                     step_lines + "*BOUNDARY\n";
+  for (const auto& [node, x, y] : {std::tuple{2, 1, 0}, std::tuple{3, 1, 1}, std::tuple{4, 0, 1}})
+    deck += fmt::format("{}, 1, 1, {}\n{}, 2, 2, {}\n", node, kStretch * x, node, kStretch * y);
+  deck += "*OUTPUT, FIELD\n*ELEMENT OUTPUT\n1, 2, 3, 4, 5, 6\n" + variables + "\n*END STEP\n";
+  const test::DeckDir dir;
+  return run_deck(dir.write("deck.inp", deck));
+}
 
 // A COMPOSITE of an elastic layer (SNEG side) and a plastic one (E = 2e5, ν = 0.3; σ_y = 200,
 // H = 2000), one S4 stretched equibiaxially, ε11 = ε22 = ε = 3e-3, through displacements held at
@@ -246,18 +258,11 @@ namespace {
 // σ with Mises σ̄ = σ and flow ε̇ᵖ11 = ε̇ᵖ22 = ε̄̇ᵖ/2: ε = σ(1 − ν)/E + ε̄ᵖ/2, σ = σ_y + H ε̄ᵖ, so
 // ε̄ᵖ = (ε − σ_y(1 − ν)/E) / ((1 − ν) H/E + 1/2). Exact for this proportional path (1e-9).
 TEST(ShellComposites, AnElasticAndAPlasticLayerEachFollowTheirOwnLaw) {
-  constexpr double kStrain = 3e-3, kE = 2e5, kNu = 0.3, kYield = 200.0, kH = 2000.0;
-  std::string deck = "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n"
-                     "*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n"
-                     "*SHELL SECTION, ELSET=PLATE, COMPOSITE\n0.05, 3, ELASTIC\n0.05, 3, METAL\n"
-                     "*MATERIAL, NAME=ELASTIC\n*ELASTIC\n2e5, 0.3\n"
-                     "*MATERIAL, NAME=METAL\n*ELASTIC\n2e5, 0.3\n*PLASTIC\n200., 0.\n400., 0.1\n"
-                     "*BOUNDARY\nALL, 3, 6\n1, 1, 2\n*STEP\n*STATIC\n0.5, 1.\n*BOUNDARY\n";
-  for (const auto& [node, x, y] : {std::tuple{2, 1, 0}, std::tuple{3, 1, 1}, std::tuple{4, 0, 1}})
-    deck += fmt::format("{}, 1, 1, {}\n{}, 2, 2, {}\n", node, kStrain * x, node, kStrain * y);
-  deck += "*OUTPUT, FIELD\n*ELEMENT OUTPUT\n1, 2, 3, 4, 5, 6\nS, PEEQ\n*END STEP\n";
-  const test::DeckDir dir;
-  const auto r = run_deck(dir.write("deck.inp", deck));
+  constexpr double kStrain = kStretch, kE = 2e5, kNu = 0.3, kYield = 200.0, kH = 2000.0;
+  const auto r = run_stretched_plate("*SHELL SECTION, ELSET=PLATE, COMPOSITE\n0.05, 3, ELASTIC\n0.05, 3, METAL\n"
+                                     "*MATERIAL, NAME=ELASTIC\n*ELASTIC\n2e5, 0.3\n"
+                                     "*MATERIAL, NAME=METAL\n*ELASTIC\n2e5, 0.3\n*PLASTIC\n200., 0.\n400., 0.1\n",
+                                     "", "", "S, PEEQ");
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
   const auto* s = field(r->capture.last(), "S");
   const auto* peeq = field(r->capture.last(), "PEEQ");
@@ -283,19 +288,11 @@ TEST(ShellComposites, AnElasticAndAPlasticLayerEachFollowTheirOwnLaw) {
 // before. (The element's law, the plastic one, reads no temperature: the table layer must get
 // its T all the same.)
 TEST(ShellComposites, ATableLayerBesideAPlasticLayerReadsItsTemperature) {
-  constexpr double kStrain = 3e-3;
-  std::string deck = "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n"
-                     "*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n"
-                     "*SHELL SECTION, ELSET=PLATE, COMPOSITE\n0.05, 3, TABLE\n0.05, 3, METAL\n"
-                     "*MATERIAL, NAME=TABLE\n*ELASTIC\n2e5, 0.3, 0.\n1e5, 0.3, 100.\n"
-                     "*MATERIAL, NAME=METAL\n*ELASTIC\n2e5, 0.3\n*PLASTIC\n200., 0.\n400., 0.1\n"
-                     "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALL, 0.\n"
-                     "*BOUNDARY\nALL, 3, 6\n1, 1, 2\n*STEP\n*STATIC\n0.5, 1.\n*TEMPERATURE\nALL, 50.\n*BOUNDARY\n";
-  for (const auto& [node, x, y] : {std::tuple{2, 1, 0}, std::tuple{3, 1, 1}, std::tuple{4, 0, 1}})
-    deck += fmt::format("{}, 1, 1, {}\n{}, 2, 2, {}\n", node, kStrain * x, node, kStrain * y);
-  deck += "*OUTPUT, FIELD\n*ELEMENT OUTPUT\n1, 2, 3, 4, 5, 6\nS\n*END STEP\n";
-  const test::DeckDir dir;
-  const auto r = run_deck(dir.write("deck.inp", deck));
+  constexpr double kStrain = kStretch;
+  const auto r = run_stretched_plate("*SHELL SECTION, ELSET=PLATE, COMPOSITE\n0.05, 3, TABLE\n0.05, 3, METAL\n"
+                                     "*MATERIAL, NAME=TABLE\n*ELASTIC\n2e5, 0.3, 0.\n1e5, 0.3, 100.\n"
+                                     "*MATERIAL, NAME=METAL\n*ELASTIC\n2e5, 0.3\n*PLASTIC\n200., 0.\n400., 0.1\n",
+                                     "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALL, 0.\n", "*TEMPERATURE\nALL, 50.\n", "S");
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
   const auto* s = field(r->capture.last(), "S");
   ASSERT_TRUE(s);
