@@ -23,6 +23,7 @@
 #include "material_states.hpp"
 #include "newton.hpp"
 #include "pretension.hpp"
+#include "rotation_moments.hpp"
 #include "solution_controls.hpp"
 #include "stabilization.hpp"
 #include "step_conditions.hpp"
@@ -120,6 +121,21 @@ std::vector<double> reactions(const DofMap& dofs, const IncrementState& s) {
   return rf;
 }
 
+/// Under NLGEOM in 3D a turning node's reactions are conjugate to its rotation vector; RM reports
+/// the spatial moment T⁻ᵀ(ψ) f_ψ (rotation_moments.hpp) where all three of its rotations are
+/// held (with some free, the conjugate reaction stays as it is).
+void spatial_reaction_moments(const AnalysisModel& am, const DofMap& dofs, std::span<const double> u,
+                              std::vector<double>& rf) {
+  std::vector<std::int32_t> held;
+  for (std::int32_t node : rotation_nodes(am)) {
+    const std::int64_t first = static_cast<std::int64_t>(node) * am.dim;
+    if (dofs.kind(first) == DofMap::Kind::Prescribed && dofs.kind(first + 1) == DofMap::Kind::Prescribed &&
+        dofs.kind(first + 2) == DofMap::Kind::Prescribed)
+      held.push_back(node);
+  }
+  conjugate_to_moments(u, held, rf);
+}
+
 std::string describe_dof(const AnalysisModel& am, std::int64_t d) {
   if (d < 0) return "";
   return ", largest residual at " + node_dof(am, d);
@@ -150,6 +166,7 @@ void write_output(const AnalysisModel& am, StepRun& run, const IncrementState& s
   const ElementPoints* points = run.assembler.points_at(s.u, delta_t, run.step.nlgeom);
   if (!points && !run.elements.active.empty()) points = assemble_points(run, s.u, delta_t);
   std::vector<double> rf = reactions(run.dofs, s);
+  if (run.step.nlgeom && am.dim == 3) spatial_reaction_moments(am, run.dofs, s.u, rf);
   report_pretension_forces(am, s.f_int, s.f_ext, rf);  // RF1 of a pre-tension node: the bolt force
   OutputValues values = compute_output(am, run.output, due, s.u, rf, run.step.nlgeom, delta_t,
                                        run.contact ? &contact : nullptr, points, &run.states);

@@ -168,8 +168,9 @@ Residual NewtonIterations::assemble_residual(int k) {
       }
   }
   if (ctx_.stabilization) ctx_.stabilization->add_force(state_.u, state_.f_int);
-  // NLGEOM: pressure follows the surface, f_ext(u) (without its load stiffness in the tangent).
-  if (ctx_.conditions.has_follower_pressure()) ctx_.conditions.external_force(t_, state_.u, state_.f_ext);
+  // NLGEOM: pressure follows the surface and moments act on turning nodes, f_ext(u) (without
+  // their load stiffness in the tangent).
+  if (ctx_.conditions.depends_on_displacement()) ctx_.conditions.external_force(t_, state_.u, state_.f_ext);
   for (std::size_t d = 0; d < n_; ++d) r_full_[d] = state_.f_ext[d] - state_.f_int[d];
   ctx_.assembler.reduce(r_full_, std::span(r_).first(n_eq_));
   if (ctx_.contact) ctx_.contact->constraint_residual(state_.contact, std::span(r_).subspan(n_eq_));

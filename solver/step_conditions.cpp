@@ -8,6 +8,7 @@
 
 #include "analysis_error.hpp"
 #include "elements/face_loads.hpp"
+#include "rotation_moments.hpp"
 
 namespace inpact::solver {
 
@@ -283,6 +284,18 @@ void StepConditions::apply_prescribed(double t, std::span<const double> u_start,
 
 void StepConditions::external_force(double t, std::span<double> f) const { external_force(t, {}, f); }
 
+bool StepConditions::has_turning_moments() const {
+  if (!step_.nlgeom || am_.dim != 3) return false;
+  const std::vector<std::int32_t> turning = rotation_nodes(am_);
+  const auto at_rotation_node = [&](std::int64_t d) {
+    return std::binary_search(turning.begin(), turning.end(), static_cast<std::int32_t>(d / am_.dim));
+  };
+  for (const auto* loads : {&previous_.cload, &target_.cload})
+    for (const auto& [d, v] : *loads)
+      if (at_rotation_node(d)) return true;
+  return false;
+}
+
 bool StepConditions::has_follower_pressure() const {
   if (!step_.nlgeom) return false;
   for (const auto* loads : {&previous_.dload, &target_.dload})
@@ -320,6 +333,8 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
   };
   each_key(previous_.cload, target_.cload,
            [&](std::int64_t d) { f[d] += value_at(find(previous_.cload, d), find(target_.cload, d), t); });
+  // (f holds the concentrated loads alone so far: the moments at the rotation nodes)
+  if (!u.empty() && has_turning_moments()) moments_to_conjugate(am_, u, f);
   each_key(previous_.dload, target_.dload, [&](const Key& k) {
     const auto* prev = find(previous_.dload, k);
     const auto* target = find(target_.dload, k);

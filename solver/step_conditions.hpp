@@ -12,9 +12,11 @@
 ///    loads ramp down to zero, and a removed boundary condition leaves its reaction as a load
 ///    that ramps down to zero;
 ///  - a load given twice in one step (a DOF, an element face, a body load) carries the sum.
-/// Loads act on the reference geometry, except pressure (*DLOAD Pn, *DSLOAD P) in an NLGEOM step:
-/// it follows the surface (Abaqus's default), evaluated on X + u each iteration; its load
-/// stiffness is not in the tangent (Newton then converges linearly on that part).
+/// Loads act on the reference geometry, except pressure (*DLOAD Pn, *DSLOAD P) and shell edge
+/// tractions in an NLGEOM step: they follow the surface (Abaqus's default), evaluated on X + u
+/// each iteration. A *CLOAD moment keeps its global direction; under NLGEOM in 3D it reaches a
+/// turning node's rotation vector as Tᵀ(ψ) m (rotation_moments.hpp). Neither's load stiffness is
+/// in the tangent (Newton then converges linearly on that part).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -93,6 +95,11 @@ class StepConditions {
   void external_force(double t, std::span<const double> u, std::span<double> f) const;
   /// NLGEOM and a pressure load in force: the external force depends on u.
   bool has_follower_pressure() const;
+  /// NLGEOM in 3D and a *CLOAD moment in force at a node that turns finitely: its force
+  /// conjugate to the node's rotation vector depends on u (rotation_moments.hpp).
+  bool has_turning_moments() const;
+  /// The external force depends on u: external_force(t, u, f) each iteration.
+  bool depends_on_displacement() const { return has_follower_pressure() || has_turning_moments(); }
   /// Nodal temperature change T(t) − T_initial, or empty when the model has no temperatures;
   /// when some node has a shell temperature gradient, the gradient's change g(t) − g_initial of
   /// every node follows (2 × nodes values; AnalysisModel::element_temperature_changes).

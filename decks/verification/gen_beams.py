@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the beam decks of tests/verification/test_beams.cpp: the cantilevers (beam_cantilever_*.inp),
-the roll-up (beam_rollup_*.inp) and the 45-degree bend (beam_bend45_b31_8.inp) under NLGEOM.
+the roll-up (beam_rollup_*.inp), the 45-degree bend (beam_bend45_b31_8.inp) and a moment on a turned
+end (beam_turned_moment_b32_20.inp) under NLGEOM.
 
 A cantilever along x, L = 10, built in at x = 0 (ENCASTRE), RECT 0.3 (along n1 = y) x 0.2 (along
 n2 = z), E = 2e5, nu = 0.3; at the tip P2 = 1 along y, P3 = 2 along z and a torque T = 5 about x,
@@ -79,6 +80,30 @@ def bend45(n):
     return "\n".join(lines) + "\n"
 
 
+def turned_moment(n):
+    """A cantilever of n B32 along x, L = 10, CIRC r = 0.1, E = 1e7, nu = 0 (EI = GJ). Step 1, NLGEOM:
+    its root turned by pi/2 about z (rotation prescribed, the free beam follows rigidly: now along y);
+    step 2: an end moment M = EI/L about the global x-axis, which keeps its direction: the beam,
+    along y, bends in the y-z plane into an arc of angle 1 rad, radius EI/M = L. The tip ends at
+    L (0, sin 1, 1 - cos 1) from the root, its rotation R = R_x(1) R_z(pi/2), and the root's
+    reaction moment is (-M, 0, 0). The end node has turned about z before the moment about x acts,
+    so the moment is not its own conjugate to the node's rotation vector."""
+    ei = 1e7 * math.pi * 0.1 ** 4 / 4
+    lines = [f"*HEADING\nA cantilever of {n} B32 turned by pi/2 about z, then bent by an end moment EI/L about the global x-axis"
+             "\n** (NLGEOM): the arc of 1 rad and radius L in the y-z plane (tests/verification/test_beams.cpp).",
+             "*NODE, NSET=ALL"]
+    lines += [f"{i + 1}, {10.0 * i / (2 * n):.15g}, 0., 0." for i in range(2 * n + 1)]
+    lines.append("*ELEMENT, TYPE=B32, ELSET=BEAM")
+    lines += [f"{e + 1}, {2 * e + 1}, {2 * e + 2}, {2 * e + 3}" for e in range(n)]
+    lines += [f"*NSET, NSET=TIP\n{2 * n + 1}", "*NSET, NSET=ROOT\n1", "*MATERIAL, NAME=M", "*ELASTIC", "1e7, 0.",
+              "*BEAM SECTION, ELSET=BEAM, MATERIAL=M, SECTION=CIRC", "0.1", "0., 1., 0.",
+              "*BOUNDARY", "ROOT, 1, 5", "*STEP, NLGEOM, INC=100", "*STATIC", "0.25, 1.", "*BOUNDARY",
+              f"ROOT, 6, 6, {math.pi / 2:.15g}", "*END STEP", "*STEP, NLGEOM, INC=100", "*STATIC", "0.1, 1.",
+              "*CLOAD", f"TIP, 4, {ei / 10:.15g}", "*NODE PRINT, NSET=TIP", "U, UR", "*NODE PRINT, NSET=ROOT", "RF, RM",
+              "*END STEP"]
+    return "\n".join(lines) + "\n"
+
+
 for etype, n in (("B31", 10), ("B31", 40), ("B32", 5), ("B33", 2)):
     with open(f"beam_cantilever_{etype.lower()}_{n}.inp", "w") as f:
         f.write(deck(etype, n))
@@ -87,3 +112,5 @@ for etype, n in (("B31", 50), ("B33", 50), ("B32", 50)):
         f.write(rollup(etype, n))
 with open("beam_bend45_b31_8.inp", "w") as f:
     f.write(bend45(8))
+with open("beam_turned_moment_b32_20.inp", "w") as f:
+    f.write(turned_moment(20))

@@ -8,9 +8,9 @@
 /// the nodes, then their total rotation vectors ψ_a, R_a = exp([ψ_a]×) (Rodrigues), the same
 /// convention as a rigid body's rotation node (model/rigid_motion.hpp). ψ is updated additively,
 /// so the forces are conjugate to ψ and the tangent is their exact derivative; a node's ψ is
-/// singular only where |ψ| reaches 2π about an axis that is free to tilt. A *CLOAD moment and the
-/// reported RM are conjugate to ψ too: the physical moment where the axis of turn stays fixed
-/// (planar turns, every verification deck), Tᵀ(ψ) of it where the axis itself turns.
+/// singular only where |ψ| reaches 2π about an axis that is free to tilt. A *CLOAD moment reaches
+/// ψ as Tᵀ(ψ) m, and RM reports T⁻ᵀ(ψ) of the reaction conjugate to ψ at a node whose rotations
+/// are all held (solver/rotation_moments.hpp): both the spatial moment, as Abaqus's.
 ///
 /// The frame R_r = [e1 e2 e3] of the current configuration (E0 of the reference one):
 ///  - beams: e1 along the chord of the end nodes, e3 = e1 × q / |e1 × q| with q = ½(R_1 + R_2) n1⁰,
