@@ -412,7 +412,10 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
       outcome.iteration_seconds = iteration_seconds;
       return outcome;
     }
-    history = run.conditions.end_state(reactions(run.dofs, state));
+    // (a turning node's reaction moments carried as spatial moments, StepConditions::external_force)
+    std::vector<double> rf_end = reactions(run.dofs, state);
+    if (run.step.nlgeom && am.dim == 3) conjugate_to_moments(state.u, rotation_nodes(am), rf_end);
+    history = run.conditions.end_state(rf_end);
     // *MODEL CHANGE, REMOVE in the next step releases the forces of the pairs and elements it removes.
     const std::vector<std::size_t> removed = contact::rows_removed_in(model, *am.contact, s + 1);
     if (run.contact && !removed.empty() && s + 1 < model.steps.size())

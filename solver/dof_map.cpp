@@ -239,9 +239,9 @@ void substitute_chains(const AnalysisModel& am, Dependents& dependent) {
   for (auto& [d, terms] : dependent) {
     for (int pass = 0;; ++pass) {
       if (pass > static_cast<int>(dependent.size()))
-        throw AnalysisError(fmt::format("error: *EQUATION / *TIE / *MPC / coupling: the constraints on {} eliminate "
-                                        "each other's degrees of freedom in a cycle (expected each dependent DOF to "
-                                        "lead to independent ones)", node_dof(am, d)));
+        throw AnalysisError(fmt::format("error: *EQUATION / *TIE / *MPC / coupling: the constraints on {} lead into "
+                                        "a cycle of degrees of freedom eliminating each other (expected each dependent "
+                                        "DOF to lead to independent ones)", node_dof(am, d)));
       std::vector<MasterTerm> next;
       bool substituted = false;
       for (const auto& t : terms) {

@@ -20,6 +20,8 @@ std::string node_dof(const AnalysisModel& am, std::int64_t d) {
   const int c = static_cast<int>(d % am.dim);
   for (std::size_t ref = 0; ref < am.rotation_node_of.size(); ++ref)
     if (am.rotation_node_of[ref] == node) return fmt::format("node {} DOF {}", node_label(am, ref), am.dim == 3 ? 4 + c : 6);
+  for (std::size_t ref = 0; ref < am.local_node_of.size(); ++ref)
+    if (am.local_node_of[ref] == node) return fmt::format("node {} DOF {} (in its *TRANSFORM axes)", node_label(am, ref), c + 1);
   return fmt::format("node {} DOF {}", node_label(am, static_cast<std::size_t>(node)), c + 1);
 }
 

@@ -95,7 +95,9 @@ NewtonIterations::NewtonIterations(NewtonContext& ctx, double t, IncrementState&
   dofs_.update_dependent(state.u);
   if (ctx.rotating_dofs) ctx.rotating_dofs->relinearize(ctx.am, state.u);
   state.f_ext.assign(n_, 0.0);
-  ctx.conditions.external_force(t, state.f_ext);
+  // (on the increment's start, u with its prescribed values, where the load follows u)
+  if (ctx.conditions.depends_on_displacement()) ctx.conditions.external_force(t, state.u, state.f_ext);
+  else ctx.conditions.external_force(t, state.f_ext);
   state.f_int.assign(n_, 0.0);
 }
 

@@ -14,18 +14,19 @@ Vec3 at(std::span<const double> v, std::int32_t node) {
   return {v[i], v[i + 1], v[i + 2]};
 }
 
-/// The solution x of A x = b by Cramer's rule (A = Tᵀ is never singular below φ = 2π).
+double determinant(const Mat3& m) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/// The solution x of A x = b by Cramer's rule (det A checked by the caller).
 Vec3 solve(const Mat3& a, const Vec3& b) {
-  const auto det = [](const Mat3& m) {
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  };
-  const double d = det(a);
+  const double d = determinant(a);
   Vec3 x{};
   for (int k = 0; k < 3; ++k) {
     Mat3 ak = a;
     for (int i = 0; i < 3; ++i) ak[i][k] = b[i];
-    x[k] = det(ak) / d;
+    x[k] = determinant(ak) / d;
   }
   return x;
 }
@@ -77,7 +78,9 @@ void moments_to_conjugate(const AnalysisModel& am, std::span<const double> u, st
 
 void conjugate_to_moments(std::span<const double> u, std::span<const std::int32_t> nodes, std::span<double> f) {
   for (std::int32_t node : nodes) {
-    const Vec3 m = solve(transposed(rotation_tangent(at(u, node))), at(f, node));
+    const Mat3 tt = transposed(rotation_tangent(at(u, node)));
+    if (std::abs(determinant(tt)) < 1e-12) continue;  // |ψ| at a whole turn 2πk: T is singular there
+    const Vec3 m = solve(tt, at(f, node));
     for (int i = 0; i < 3; ++i) f[static_cast<std::size_t>(node) * 3 + i] = m[i];
   }
 }

@@ -23,7 +23,7 @@ Mat3 rotation_tangent(const std::array<double, 3>& psi);
 void moments_to_conjugate(const AnalysisModel& am, std::span<const double> u, std::span<double> f);
 
 /// m = T⁻ᵀ(ψ) f_ψ at the rotation nodes `nodes` (rows): `f` holds forces conjugate to ψ there on
-/// entry, spatial moments on return.
+/// entry, spatial moments on return (left as they are where |ψ| is a whole turn, T singular).
 void conjugate_to_moments(std::span<const double> u, std::span<const std::int32_t> nodes, std::span<double> f);
 
 /// The rotation nodes (rows) of the model: the nodes whose DOFs are another node's rotations.

@@ -98,6 +98,20 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
   for (const auto& [d, v] : target_.boundary) prescribed_[d] = 1;
   for (const auto& [k, v] : previous_.dload) add_dload_shape(k);
   for (const auto& [k, v] : target_.dload) add_dload_shape(k);
+  turning_moments_ = moments_at_turning_nodes();
+}
+
+bool StepConditions::moments_at_turning_nodes() const {
+  if (!step_.nlgeom || am_.dim != 3) return false;
+  const std::vector<std::int32_t> turning = rotation_nodes(am_);
+  const auto at_rotation_node = [&](std::int64_t d) {
+    return std::binary_search(turning.begin(), turning.end(), static_cast<std::int32_t>(d / am_.dim));
+  };
+  for (const auto* loads : {&previous_.cload, &target_.cload})
+    for (const auto& [d, v] : *loads)
+      if (at_rotation_node(d)) return true;
+  return std::any_of(released_reaction_.begin(), released_reaction_.end(),
+                     [&](const auto& kv) { return at_rotation_node(kv.first); });
 }
 
 /// A step's *CLOAD blocks: a DOF they load replaces its load of earlier steps; a DOF loaded
@@ -284,18 +298,6 @@ void StepConditions::apply_prescribed(double t, std::span<const double> u_start,
 
 void StepConditions::external_force(double t, std::span<double> f) const { external_force(t, {}, f); }
 
-bool StepConditions::has_turning_moments() const {
-  if (!step_.nlgeom || am_.dim != 3) return false;
-  const std::vector<std::int32_t> turning = rotation_nodes(am_);
-  const auto at_rotation_node = [&](std::int64_t d) {
-    return std::binary_search(turning.begin(), turning.end(), static_cast<std::int32_t>(d / am_.dim));
-  };
-  for (const auto* loads : {&previous_.cload, &target_.cload})
-    for (const auto& [d, v] : *loads)
-      if (at_rotation_node(d)) return true;
-  return false;
-}
-
 bool StepConditions::has_follower_pressure() const {
   if (!step_.nlgeom) return false;
   for (const auto* loads : {&previous_.dload, &target_.dload})
@@ -333,7 +335,11 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
   };
   each_key(previous_.cload, target_.cload,
            [&](std::int64_t d) { f[d] += value_at(find(previous_.cload, d), find(target_.cload, d), t); });
-  // (f holds the concentrated loads alone so far: the moments at the rotation nodes)
+  // A removed boundary condition's reaction ramps down to zero; at a turning node it is a spatial
+  // moment (end_state's reactions are, under NLGEOM in 3D), turned with the loads below.
+  for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
+  // (f holds the concentrated loads and released reactions alone so far: the moments at the
+  // rotation nodes)
   if (!u.empty() && has_turning_moments()) moments_to_conjugate(am_, u, f);
   each_key(previous_.dload, target_.dload, [&](const Key& k) {
     const auto* prev = find(previous_.dload, k);
@@ -359,7 +365,6 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
     }
     for (const auto& [d, w] : dload_shape_.at(k)) f[d] += v * w;
   });
-  for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
   if (!previous_.released_forces.empty()) {
     // The removed pairs' and elements' forces, linearly to zero whatever the step's amplitude
     // [IG]: as loads they act against f_int's part they were, f_ext = −(1 − t/T) f_r.

@@ -95,9 +95,10 @@ class StepConditions {
   void external_force(double t, std::span<const double> u, std::span<double> f) const;
   /// NLGEOM and a pressure load in force: the external force depends on u.
   bool has_follower_pressure() const;
-  /// NLGEOM in 3D and a *CLOAD moment in force at a node that turns finitely: its force
-  /// conjugate to the node's rotation vector depends on u (rotation_moments.hpp).
-  bool has_turning_moments() const;
+  /// NLGEOM in 3D and a *CLOAD moment (or a released reaction moment) in force at a node that
+  /// turns finitely: its force conjugate to the node's rotation vector depends on u
+  /// (rotation_moments.hpp).
+  bool has_turning_moments() const { return turning_moments_; }
   /// The external force depends on u: external_force(t, u, f) each iteration.
   bool depends_on_displacement() const { return has_follower_pressure() || has_turning_moments(); }
   /// Nodal temperature change T(t) − T_initial, or empty when the model has no temperatures;
@@ -141,6 +142,10 @@ class StepConditions {
   ConditionHistory target_;    ///< definitions in force in this step (values = targets)
   std::vector<std::uint8_t> prescribed_;
   std::map<std::int64_t, double> released_reaction_;  ///< BCs removed by OP=NEW: ramp to 0
+  /// NLGEOM in 3D: concentrated loads or released reactions at turning nodes, which reach their
+  /// rotation vectors as Tᵀ(ψ) m (has_turning_moments).
+  bool turning_moments_ = false;
+  bool moments_at_turning_nodes() const;
   /// u at the step start of the prescribed DOFs without amplitude (recorded on first use).
   mutable std::map<std::int64_t, double> step_start_value_;
   /// Global nodal forces of each distributed load at unit magnitude (reference geometry).

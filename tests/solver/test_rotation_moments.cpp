@@ -1,4 +1,4 @@
-// T(ψ) of rotation_moments.hpp: the spatial turn of R = exp([ψ]×) when ψ changes,
+// T(ψ) of rotation_moments.hpp: the spatial turn of the elements' R = exp([ψ]×) when ψ changes,
 // R(ψ + ε e_j) R(ψ)ᵀ = I + ε [T e_j]× + O(ε²), checked by central differences at several ψ (up
 // to 3 rad, beyond the series branch), and Tᵀ ψ = ψ (a moment about the turn's own axis is its
 // own conjugate).
@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/elements/corotation.hpp"
 #include "solver/rotation_moments.hpp"
 
 namespace inpact::solver {
@@ -14,17 +15,12 @@ namespace {
 
 using Vec3 = std::array<double, 3>;
 
+/// The elements' own exp([ψ]×) (corotation.hpp), as a row-major matrix.
 Mat3 exp_map(const Vec3& psi) {
-  const double phi = std::sqrt(psi[0] * psi[0] + psi[1] * psi[1] + psi[2] * psi[2]);
-  const Mat3 w{{{0, -psi[2], psi[1]}, {psi[2], 0, -psi[0]}, {-psi[1], psi[0], 0}}};
-  const double a = phi < 1e-8 ? 1.0 : std::sin(phi) / phi, b = phi < 1e-8 ? 0.5 : (1 - std::cos(phi)) / (phi * phi);
+  const auto rows = elements::rotation_exp(psi);
   Mat3 r{};
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double w2 = 0;
-      for (int k = 0; k < 3; ++k) w2 += w[i][k] * w[k][j];
-      r[i][j] = (i == j ? 1.0 : 0.0) + a * w[i][j] + b * w2;
-    }
+    for (int j = 0; j < 3; ++j) r[i][j] = rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
   return r;
 }
 

@@ -389,28 +389,53 @@ TEST(Beams, TheFortyFiveDegreeBendMatchesThePublishedTip) {
   report("45-degree bend: tip distance from Simo and Vu-Quoc / tip travel", std::sqrt(distance / travel));
 }
 
+/// beam_turned_moment_b32_20.inp, or (`rigid`) the same with the tip held by a *RIGID BODY whose
+/// reference node, one unit beyond it, carries the moment.
+std::unique_ptr<Run> run_turned_moment(bool rigid) {
+  if (!rigid) return run_deck(deck_path("beam_turned_moment_b32_20.inp"));
+  bool in_model = true;
+  const auto path = edited_deck("beam_turned_moment_b32_20.inp", "turned-rigid", [&](const std::string& line) {
+    if (line == "*NSET, NSET=ROOT") return std::vector<std::string>{"*NODE, NSET=REF", "100, 11., 0., 0.", line};
+    if (line == "*BOUNDARY" && in_model) {
+      in_model = false;
+      return std::vector<std::string>{"*RIGID BODY, REF NODE=REF, TIE NSET=TIP", line};
+    }
+    if (line.rfind("TIP, 4,", 0) == 0) return std::vector<std::string>{"REF" + line.substr(3)};
+    return std::vector<std::string>{line};
+  });
+  auto r = run_deck(path.string());
+  std::filesystem::remove(path);
+  return r;
+}
+
 // A moment on an end that has turned about another axis (gen_beams.py turned_moment): 20 B32, L =
 // 10, EI = GJ, root turned by π/2 about z (the free beam follows, now along y), then M = EI/L about
 // the fixed global x-axis. The moment's conjugate to the end's rotation vector ψ is Tᵀ(ψ) M, not
 // M, since ψ is not along x: the beam bends in the y-z plane into an arc of 1 rad, radius L. The
 // tip ends at L (0, sin 1, 1 − cos 1) from the root, turned by R_x(1) R_z(π/2) (rotation vector
 // (0.779333, −0.779333, 1.426560)), and the root's reaction moment is (−M, 0, 0). To 2e-4 (the
-// B32 arc; measured 1.3e-4). Taking M as its own conjugate put the tip at (−9.83, 9.00, 3.73)
-// from (0, 0, 0) + U, 20 % off, and a reaction RM3 of −13.7 where there is none.
+// B32 arc; measured 1.0e-4). Taking M as its own conjugate put the tip at (−9.83, 9.00, 3.73)
+// from (0, 0, 0) + U, 20 % off, and a reaction RM3 of −13.7 where there is none. The same with the
+// moment on a rigid body's reference node that holds the tip (a rigid body's rotation node holds
+// a total rotation vector too).
 TEST(Beams, AMomentOnATurnedEndKeepsItsGlobalDirection) {
-  const auto r = run_deck(deck_path("beam_turned_moment_b32_20.inp"));
-  ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
-  const solver::Frame& f = r->capture.last();
-  const std::size_t tip = row_of(*r, 41), root = row_of(*r, 1);
-  const double L = 10.0, moment = 1e7 * std::numbers::pi * 1e-4 / 4 / L;
-  const std::array<double, 3> u_exact{-L, L * std::sin(1.0), L * (1 - std::cos(1.0))};
-  const std::array<double, 3> psi_exact{0.77933334, -0.77933334, 1.42656012};
-  for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(nodal(f, "U", tip, c), u_exact[c], 2e-4 * L) << "U" << c + 1;
-    EXPECT_NEAR(nodal(f, "UR", tip, c), psi_exact[c], 2e-4) << "UR" << c + 1;
-    EXPECT_NEAR(nodal(f, "RM", root, c), c == 0 ? -moment : 0.0, 2e-4 * moment) << "RM" << c + 1;
+  for (const bool rigid : {false, true}) {
+    const auto r = run_turned_moment(rigid);
+    ASSERT_TRUE(r->outcome.completed) << r->outcome.message;
+    const solver::Frame& f = r->capture.last();
+    const std::size_t tip = row_of(*r, 41), root = row_of(*r, 1);
+    const double L = 10.0, moment = 1e7 * std::numbers::pi * 1e-4 / 4 / L;
+    const std::array<double, 3> u_exact{-L, L * std::sin(1.0), L * (1 - std::cos(1.0))};
+    const std::array<double, 3> psi_exact{0.77933334, -0.77933334, 1.42656012};
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(nodal(f, "U", tip, c), u_exact[c], 2e-4 * L) << "U" << c + 1 << (rigid ? " rigid" : "");
+      EXPECT_NEAR(nodal(f, "UR", tip, c), psi_exact[c], 2e-4) << "UR" << c + 1 << (rigid ? " rigid" : "");
+      EXPECT_NEAR(nodal(f, "RM", root, c), c == 0 ? -moment : 0.0, 2e-4 * moment) << "RM" << c + 1;
+    }
+    report(std::string("turned end under a fixed-axis moment") + (rigid ? " (rigid body)" : "") +
+               ": tip U2 relative error",
+           nodal(f, "U", tip, 1) / u_exact[1] - 1);
   }
-  report("turned end under a fixed-axis moment: tip U2 relative error", nodal(f, "U", tip, 1) / u_exact[1] - 1);
 }
 
 }  // namespace

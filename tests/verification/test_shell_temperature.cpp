@@ -219,6 +219,7 @@ TEST(ShellTemperature, ASectionPointIsLookedForInTheRequestsSet) {
   EXPECT_EQ(said("B"), 1);
   EXPECT_EQ(said("A"), 0);
   const solver::FieldData& s = *field(r->capture.last(), "S");
+  ASSERT_FALSE(s.elements.empty());
   for (std::size_t i = 0; i < s.elements.size(); ++i) {
     EXPECT_EQ(s.elements[i], 1) << "location " << i;
     EXPECT_EQ(s.section_point[i], 7) << "location " << i;
