@@ -182,10 +182,18 @@ bool point_key(const std::string& key) {
 /// Plastic strain keys and print variables: PE (PE11, ...), PEEQ, PEMAG.
 bool plastic_key(const std::string& key) { return key.rfind("PE", 0) == 0; }
 
+/// Some element a request reports (its ELSET's, or the model's) satisfies `pred`.
+template <class Pred>
+bool any_reported(const AnalysisModel& am, const ActiveRequest& a, Pred&& pred) {
+  if (a.whole_model || domain_of(a.request.kind) != Domain::Element)  // (a node set's rows are nodes)
+    return std::any_of(am.elements.begin(), am.elements.end(), pred);
+  return std::any_of(a.rows.begin(), a.rows.end(), [&](std::int32_t e) { return pred(am.elements[static_cast<std::size_t>(e)]); });
+}
+
 /// Beams are elastic: their plastic strains are noted as not computed (their S and E are at
 /// their section points, SF and SM at their integration points).
-bool model_has_beams(const AnalysisModel& am) {
-  return std::any_of(am.elements.begin(), am.elements.end(), [](const ElementSetup& s) { return model::is_beam(*s.type); });
+bool reports_beams(const AnalysisModel& am, const ActiveRequest& a) {
+  return any_reported(am, a, [](const ElementSetup& s) { return model::is_beam(*s.type); });
 }
 
 /// Whether a field key is reported at a beam's section points (S, E or LE; MISES comes with S).
@@ -196,23 +204,19 @@ bool at_section_points(const std::string& key) { return key == "S" || key == "E"
 bool beam_section_point_column(const std::string& variable);
 
 /// A beam whose general section has no *SECTION POINTS has nowhere to report S and E.
-bool model_has_beams_without_section_points(const AnalysisModel& am) {
-  return std::any_of(am.elements.begin(), am.elements.end(),
-                     [](const ElementSetup& s) { return s.section.beam && s.section.beam->output_points.empty(); });
+bool reports_beams_without_section_points(const AnalysisModel& am, const ActiveRequest& a) {
+  return any_reported(am, a, [](const ElementSetup& s) { return s.section.beam && s.section.beam->output_points.empty(); });
 }
 
-/// An element of the request's set (the model's without one) has section point `number`: its
-/// shell section has that many points or more, or its beam reports that point.
-bool request_has_section_point(const AnalysisModel& am, bool whole_model, std::span<const std::int32_t> rows,
-                               int number) {
-  const auto has = [&](const ElementSetup& s) {
+/// An element the request reports has section point `number`: its shell section has that many
+/// points or more, or its beam reports that point.
+bool reports_section_point(const AnalysisModel& am, const ActiveRequest& a, int number) {
+  return any_reported(am, a, [&](const ElementSetup& s) {
     if (s.section.shell) return static_cast<int>(s.section.shell->zeta.size()) >= number;
     if (!s.section.beam) return false;
     const auto& points = s.section.beam->output_points;
     return std::any_of(points.begin(), points.end(), [&](const auto& q) { return q.number == number; });
-  };
-  if (whole_model) return std::any_of(am.elements.begin(), am.elements.end(), has);
-  return std::any_of(rows.begin(), rows.end(), [&](std::int32_t e) { return has(am.elements[static_cast<std::size_t>(e)]); });
+  });
 }
 
 /// Beams and shells make SF a vector (SF1..SF3); with trusses alone it stays their axial force SF1.
@@ -344,9 +348,9 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         const std::string key = field_key(v, d);
         if (key.empty()) add_unique(not_computed_, v);
         else add_unique(a.variables, key);
-        if (plastic_key(key) && model_has_beams(am))
+        if (plastic_key(key) && reports_beams(am, a))
           add_unique(not_computed_, key + " of beam elements (their sections are elastic)");
-        if (at_section_points(key) && model_has_beams_without_section_points(am))
+        if (at_section_points(key) && reports_beams_without_section_points(am, a))
           add_unique(not_computed_, key + " of beams with a general section without *SECTION POINTS");
         // CSTRESS = CPRESS + CSHEAR1/2, CDISP = COPEN + CSLIP1/2 (with friction).
         const bool stress = v == "CSTRESS" || v == "CSTR", disp = v == "CDISP" || v == "CDIS";
@@ -361,7 +365,7 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
         if (std::find(v.begin(), v.end(), "RF") != v.end()) add_unique(a.variables, "RM");
       }
       for (int number : r.section_points)
-        if (!request_has_section_point(am, a.whole_model, a.rows, number))
+        if (!reports_section_point(am, a, number))
           add_unique(not_computed_, a.whole_model ? fmt::format("element output at section point {} (no shell or beam "
                                                                 "section has it)", number)
                                                   : fmt::format("element output at section point {} of element set {} "
@@ -373,9 +377,9 @@ StepOutput::StepOutput(const AnalysisModel& am, std::size_t step_index) {
       for (const std::string& v : r.variables) {
         const auto columns = print_columns(v, d, am.dim);
         if (columns.empty()) add_unique(not_computed_, v);
-        if (d == Domain::Element && !columns.empty() && plastic_key(v) && model_has_beams(am))
+        if (d == Domain::Element && !columns.empty() && plastic_key(v) && reports_beams(am, a))
           add_unique(not_computed_, v + " of beam elements (their sections are elastic)");
-        if (d == Domain::Element && model_has_beams_without_section_points(am) &&
+        if (d == Domain::Element && reports_beams_without_section_points(am, a) &&
             std::any_of(columns.begin(), columns.end(), beam_section_point_column))
           add_unique(not_computed_, v + " of beams with a general section without *SECTION POINTS");
         for (const auto& c : columns) add_unique(a.variables, c);

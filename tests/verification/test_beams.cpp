@@ -15,6 +15,7 @@
 //   B33: δ = PL³/(3EI)                 (cubic Euler–Bernoulli: nodally exact)
 // The tip rotation PL²/(2EI) and the twist TL/(GJ) are exact for all. Round-off: 1e-9.
 #include "solver/elements/beam_section.hpp"
+#include "fixtures/deck_fixture.hpp"
 #include "verification_fixture.hpp"
 
 namespace inpact::verification {
@@ -436,6 +437,28 @@ TEST(Beams, AMomentOnATurnedEndKeepsItsGlobalDirection) {
                ": tip U2 relative error",
            nodal(f, "U", tip, 1) / u_exact[1] - 1);
   }
+}
+
+// S of a beam whose general section has no *SECTION POINTS is noted as not computed for the
+// requests that report such a beam: two B31, element 1 (set A) of a general section, element 2
+// (set B) of a RECT; S asked of B is written without a note, asked of A it is noted once.
+TEST(Beams, ANoteOnBeamsWithoutSectionPointsConcernsTheRequestsSet) {
+  const auto notes = [](const std::string& set) {
+    const std::string deck =
+        "*NODE, NSET=ALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n*ELEMENT, TYPE=B31, ELSET=A\n1, 1, 2\n"
+        "*ELEMENT, TYPE=B31, ELSET=B\n2, 2, 3\n*BEAM GENERAL SECTION, ELSET=A, SECTION=GENERAL\n"
+        "0.06, 2e-4, 0., 4.5e-4, 5e-4\n0., 1., 0.\n2e5, 8e4\n*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.25\n"
+        "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n0.3, 0.2\n0., 1., 0.\n*BOUNDARY\n1, ENCASTRE\n"
+        "*STEP\n*STATIC\n*CLOAD\n3, 2, 1.\n*OUTPUT, FIELD\n*ELEMENT OUTPUT, ELSET=" + set + "\nS\n*END STEP\n";
+    const test::DeckDir dir;
+    const auto r = run_deck(dir.write("deck.inp", deck));
+    EXPECT_TRUE(r->outcome.completed) << r->outcome.message;
+    return std::count_if(r->capture.messages.begin(), r->capture.messages.end(), [](const std::string& m) {
+      return m.find("S of beams with a general section without *SECTION POINTS") != std::string::npos;
+    });
+  };
+  EXPECT_EQ(notes("B"), 0);
+  EXPECT_EQ(notes("A"), 1);
 }
 
 }  // namespace
