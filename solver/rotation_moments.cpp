@@ -66,8 +66,8 @@ std::vector<std::int32_t> rotation_nodes(const AnalysisModel& am) {
   return out;
 }
 
-void moments_to_conjugate(const AnalysisModel& am, std::span<const double> u, std::span<double> f) {
-  for (std::int32_t node : rotation_nodes(am)) {
+void moments_to_conjugate(std::span<const double> u, std::span<const std::int32_t> nodes, std::span<double> f) {
+  for (std::int32_t node : nodes) {
     const Vec3 m = at(f, node);
     if (m[0] == 0 && m[1] == 0 && m[2] == 0) continue;
     const Mat3 t = rotation_tangent(at(u, node));

@@ -19,8 +19,8 @@ using Mat3 = std::array<std::array<double, 3>, 3>;
 /// T(ψ) above (its series near ψ = 0).
 Mat3 rotation_tangent(const std::array<double, 3>& psi);
 
-/// f_ψ = Tᵀ(ψ) m at every rotation node: `f` holds spatial moments there on entry.
-void moments_to_conjugate(const AnalysisModel& am, std::span<const double> u, std::span<double> f);
+/// f_ψ = Tᵀ(ψ) m at the rotation nodes `nodes` (rows): `f` holds spatial moments there on entry.
+void moments_to_conjugate(std::span<const double> u, std::span<const std::int32_t> nodes, std::span<double> f);
 
 /// m = T⁻ᵀ(ψ) f_ψ at the rotation nodes `nodes` (rows): `f` holds forces conjugate to ψ there on
 /// entry, spatial moments on return (left as they are where |ψ| is a whole turn, T singular).

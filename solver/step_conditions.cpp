@@ -98,14 +98,13 @@ StepConditions::StepConditions(const AnalysisModel& am, const model::Step& step,
   for (const auto& [d, v] : target_.boundary) prescribed_[d] = 1;
   for (const auto& [k, v] : previous_.dload) add_dload_shape(k);
   for (const auto& [k, v] : target_.dload) add_dload_shape(k);
+  if (step_.nlgeom && am_.dim == 3) turning_nodes_ = rotation_nodes(am_);
   turning_moments_ = moments_at_turning_nodes();
 }
 
 bool StepConditions::moments_at_turning_nodes() const {
-  if (!step_.nlgeom || am_.dim != 3) return false;
-  const std::vector<std::int32_t> turning = rotation_nodes(am_);
   const auto at_rotation_node = [&](std::int64_t d) {
-    return std::binary_search(turning.begin(), turning.end(), static_cast<std::int32_t>(d / am_.dim));
+    return std::binary_search(turning_nodes_.begin(), turning_nodes_.end(), static_cast<std::int32_t>(d / am_.dim));
   };
   for (const auto* loads : {&previous_.cload, &target_.cload})
     for (const auto& [d, v] : *loads)
@@ -340,7 +339,7 @@ void StepConditions::external_force(double t, std::span<const double> u, std::sp
   for (const auto& [d, r] : released_reaction_) f[d] += r * (1.0 - ramp(t));
   // (f holds the concentrated loads and released reactions alone so far: the moments at the
   // rotation nodes)
-  if (!u.empty() && has_turning_moments()) moments_to_conjugate(am_, u, f);
+  if (!u.empty() && has_turning_moments()) moments_to_conjugate(u, turning_nodes_, f);
   each_key(previous_.dload, target_.dload, [&](const Key& k) {
     const auto* prev = find(previous_.dload, k);
     const auto* target = find(target_.dload, k);

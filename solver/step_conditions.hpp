@@ -145,6 +145,8 @@ class StepConditions {
   /// NLGEOM in 3D: concentrated loads or released reactions at turning nodes, which reach their
   /// rotation vectors as Tᵀ(ψ) m (has_turning_moments).
   bool turning_moments_ = false;
+  /// NLGEOM in 3D: the rotation nodes (rows), whose DOFs are total rotation vectors.
+  std::vector<std::int32_t> turning_nodes_;
   bool moments_at_turning_nodes() const;
   /// u at the step start of the prescribed DOFs without amplitude (recorded on first use).
   mutable std::map<std::int64_t, double> step_start_value_;

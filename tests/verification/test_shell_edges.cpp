@@ -67,30 +67,6 @@ TEST_P(EdnorStrip, PullsTheStripWithUniformMembraneStress) {
 INSTANTIATE_TEST_SUITE_P(ShellEdges, EdnorStrip,
                          ::testing::Values("edge_load_ednor_s4.inp", "edge_load_ednor_s8r.inp"));
 
-/// The displacements of a CalculiX .dat's table for set `set` (the last one): label → u.
-std::map<std::int64_t, std::array<double, 3>> ccx_table(const std::string& path, const std::string& set) {
-  std::map<std::int64_t, std::array<double, 3>> u;
-  std::FILE* f = std::fopen(path.c_str(), "r");
-  if (!f) return u;
-  char line[512];
-  bool in_table = false;
-  const std::string header = "displacements (vx,vy,vz) for set " + set;
-  while (std::fgets(line, sizeof line, f)) {
-    const std::string text(line);
-    if (text.find(header) != std::string::npos) {
-      in_table = true;
-      u.clear();
-      continue;
-    }
-    long long label;
-    double a, b, c;
-    if (in_table && std::sscanf(line, "%lld %lf %lf %lf", &label, &a, &b, &c) == 4) u[label] = {a, b, c};
-    else if (in_table && !u.empty()) in_table = false;
-  }
-  std::fclose(f);
-  return u;
-}
-
 TEST(ShellEdges, CalculixAgreesOnEdnor) {
   if (std::system("command -v ccx > /dev/null 2>&1") != 0) GTEST_SKIP() << "ccx is not installed";
   const auto dir = generated_dir() / "ccx_edge_load_ednor";
@@ -99,7 +75,7 @@ TEST(ShellEdges, CalculixAgreesOnEdnor) {
                              std::filesystem::copy_options::overwrite_existing);
   const std::string cmd = "cd '" + dir.string() + "' && ccx strip > ccx.log 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const auto ccx = ccx_table((dir / "strip.dat").string(), "TOP");
+  const auto ccx = ccx_displacements((dir / "strip.dat").string(), "TOP");
   ASSERT_EQ(ccx.size(), 3u);
   const auto r = run_deck(deck_path("edge_load_ednor_s4.inp"));
   ASSERT_TRUE(r->outcome.completed) << r->outcome.message;

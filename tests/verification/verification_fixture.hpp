@@ -117,6 +117,32 @@ inline std::unique_ptr<Run> run_deck(const std::string& path) {
 
 /// What a run of the deck at `path` stops with: "completed", the outcome's message, or the deck
 /// error the analysis throws (for tests of refusals); the deck file is removed afterwards.
+/// The last "displacements (vx,vy,vz) for set `set`" table of a CalculiX .dat: label → u (empty
+/// when the file or the table is missing).
+inline std::map<std::int64_t, std::array<double, 3>> ccx_displacements(const std::string& path, const std::string& set) {
+  std::map<std::int64_t, std::array<double, 3>> u;
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  if (!f) return u;
+  char line[512];
+  bool in_table = false;
+  const std::string header = "displacements (vx,vy,vz) for set " + set + " ";
+  while (std::fgets(line, sizeof line, f)) {
+    if (std::string(line).find(header) != std::string::npos) {
+      u.clear();
+      in_table = true;
+      continue;
+    }
+    long long label = 0;
+    double v[3];
+    if (in_table && std::sscanf(line, "%lld %lf %lf %lf", &label, &v[0], &v[1], &v[2]) == 4)
+      u[label] = {v[0], v[1], v[2]};
+    else if (in_table && !u.empty())
+      in_table = false;
+  }
+  std::fclose(f);
+  return u;
+}
+
 inline std::string stop_message(const std::filesystem::path& path) {
   std::string message;
   try {
