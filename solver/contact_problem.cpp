@@ -824,8 +824,8 @@ namespace {
 
 /// The smallest fraction of a correction overshoot_fraction() keeps: Newton must still move.
 constexpr double kMinOvershootFraction = 1e-2;
-/// The penetration, as a fraction of the pair's tolerance, a node may always reach in one
-/// correction: a pair that has no closed node yet must be able to close one.
+/// The penetration, as a fraction of the pair's tolerance, a node may reach in one correction
+/// while no node of its pair penetrates: such a pair must be able to close one.
 constexpr double kFreePenetrationFraction = 1e-2;
 
 }  // namespace
@@ -840,8 +840,13 @@ double ContactProblem::overshoot_fraction(const AugmentedPenetrations& before) c
     const auto& b = before.pairs[row];
     const auto& a = after.pairs[row++];
     if (a.size() != b.size()) continue;
-    double deepest = kFreePenetrationFraction * p->resolved->tolerance;
+    // A node that closes may go as deep as the deepest one of its pair was: no deeper pressure
+    // than the pair already carries (at 1000 k_e, 1 % of the tolerance is tens of times the
+    // depth of a pressure like p0: a body held by a force alternated between sinking into a
+    // ring of such nodes and being thrown off by them).
+    double deepest = 0.0;
     for (double h : b) deepest = std::max(deepest, h);
+    if (deepest == 0.0) deepest = kFreePenetrationFraction * p->resolved->tolerance;
     // Only nodes that were open overshoot: their stiffness was not in the tangent. Gaps change
     // nearly linearly along one correction: interpolate where such a node reaches the depth.
     for (std::size_t i = 0; i < a.size(); ++i)

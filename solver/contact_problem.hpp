@@ -199,7 +199,8 @@ class ContactProblem {
   AugmentedPenetrations augmented_penetrations() const;
   /// The fraction of the last Newton correction that takes no node of an augmented-Lagrange
   /// pair that was open `before` it deeper into its master than the deepest node of the pair
-  /// was (or 1 % of the pair's penetration tolerance); 1 when the whole correction does not.
+  /// was (1 % of the pair's penetration tolerance while no node of it penetrates); 1 when the
+  /// whole correction does not.
   double overshoot_fraction(const AugmentedPenetrations& before) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
   void augment(ContactState& state) const;

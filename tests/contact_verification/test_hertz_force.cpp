@@ -37,6 +37,7 @@ struct ForceFigures {
   double foundation = 0.0;  ///< Σ RF₂ over the block's bottom
   int first_increment_iterations = 0;
   bool first_increment_cut_back = false;
+  int cut_backs = 0;  ///< attempts of the whole run that were cut back
 };
 
 /// Least squares of p² = A − B x² over the closed slave nodes whose support (x ± h) lies inside
@@ -81,32 +82,37 @@ ForceFigures force_figures(const Run& r) {
   const std::size_t ncomp = cfn ? cfn->component_labels.size() : 0;
   for (std::size_t i = 0; cfn && i < cfn->nodes.size(); ++i) out.cfn += cfn->values[i * ncomp + 1];
   for (auto row : verification::nset(r.deck.model, "BLOCK_BOTTOM")) out.foundation += verification::nodal(f, "RF", row, 1);
-  for (const auto& row : r.capture.rows)
+  for (const auto& row : r.capture.rows) {
+    out.cut_backs += row.cut_back ? 1 : 0;
     if (row.increment == 1) {
       out.first_increment_cut_back = out.first_increment_cut_back || row.cut_back;
       out.first_increment_iterations += row.total_iters;
     }
+  }
   return out;
 }
 
-// Each method on the deck, with its first increment (a fraction of the load): augmented Lagrange
-// at its default 1000 k_e does not converge a first increment of 25 % of a Hertz load, whether
-// the load is a force or a displacement (hertz_2d cuts back there too), and converges one of
-// 1 %; penalty also from 1 % (where the start force matters most: the law's stiffness alone
-// would let the touching node close by P/(kA) = 1.6e-5 of its weighted gap of 1.3e-4).
-// Measured (p0, a by the fit; Σ CFN₂ / (P/2) − 1; iterations of increment 1, in all; seconds):
-//   direct                 +1.02 %  −0.58 %   −1.2e-6   5, 15   0.3 s
-//   penalty                +0.88 %  −0.40 %   −1.1e-6   8, 18   0.3 s
-//   penalty, first 1 %     +0.88 %  −0.39 %   +1.1e-6   2, 33   0.3 s
-//   augmented Lagrange     +1.01 %  −0.58 %   +2.0e-6   3, 160  4.0 s (4 cutbacks later on: the
-//                          cylinder thrown off the block by an iterate, a singular system)
+// Each method on the deck, with the deck's first increment (25 % of the load) and with 1 %
+// (where the start force matters most: the law's stiffness alone would let the touching node
+// close by P/(kA) = 1.6e-5 of its weighted gap of 1.3e-4).
+// Measured (p0, a by the fit; Σ CFN₂ / (P/2) − 1; iterations of increment 1, in all):
+//   direct                          +1.02 %  −0.58 %   −1.1e-6   5, 15
+//   penalty                         +0.88 %  −0.39 %   −1.0e-6   8, 18
+//   penalty, first 1 %              +0.88 %  −0.39 %   +1.1e-6   2, 33
+//   augmented Lagrange              +1.01 %  −0.58 %   +5.8e-6   9, 20
+//   augmented Lagrange, first 1 %   +1.01 %  −0.58 %   +2.4e-6   3, 34
+// Augmented Lagrange took 281 iterations and 7 cutbacks at 25 % (160 and 4 from 1 %) while a
+// node that closed in one correction could go to 1 % of the penetration tolerance: at 1000 k_e
+// tens of times p0's depth, so the cylinder was thrown off the block (ContactProblem::
+// overshoot_fraction now stops such a node at the deepest depth its pair has).
 // Before the initial contact status every one stopped in increment 1: iteration 0 singular at
 // 0.25, 0.0625, 0.0156 and 0.0039, then 4 iterations diverging at 0.00098 and 0.00024.
 const std::map<std::string, Params> kForceRuns = {
     {"direct", {{"method", "DIRECT"}}},
     {"penalty", {{"method", "PENALTY"}}},
     {"penalty, first increment 1 %", {{"method", "PENALTY"}, {"inc0", "0.01"}}},
-    {"augmented Lagrange", {{"method", "AUGMENTED LAGRANGE"}, {"inc0", "0.01"}}},
+    {"augmented Lagrange", {{"method", "AUGMENTED LAGRANGE"}}},
+    {"augmented Lagrange, first increment 1 %", {{"method", "AUGMENTED LAGRANGE"}, {"inc0", "0.01"}}},
 };
 
 TEST(HertzUnderAForce, EveryMethodStartsFromTheTouchingNodeAndGivesHertz) {
@@ -122,9 +128,11 @@ TEST(HertzUnderAForce, EveryMethodStartsFromTheTouchingNodeAndGivesHertz) {
     report(label + ": iterations of increment 1", f.first_increment_iterations);
     report(label + ": Newton iterations", r->iterations);
     report(label + ": seconds", r->seconds);
-    // The first increment converges in its first attempt: its first system is regular.
+    // The first increment converges in its first attempt: its first system is regular. No
+    // later increment is cut back either: no iterate throws the cylinder off the block.
     EXPECT_FALSE(f.first_increment_cut_back) << label;
     EXPECT_EQ(r->capture.rows.front().attempt, 1) << label;
+    EXPECT_EQ(f.cut_backs, 0) << label;
     // Hertz at a/h = 8: p0 and a within 2 %, and the edge between the last closed node and
     // the next (a falls on a node here: a = 8 h, and that node is open, p(a) = 0).
     EXPECT_NEAR(f.p0, kPeakPressure, 0.02 * kPeakPressure) << label;
@@ -132,13 +140,14 @@ TEST(HertzUnderAForce, EveryMethodStartsFromTheTouchingNodeAndGivesHertz) {
     EXPECT_LT(f.a_closed, kHalfWidth) << label;
     EXPECT_GE(f.a_open, kHalfWidth - 1e-12) << label;
     // Balance. The foundation carries the deck's load (to round-off: the reactions include the
-    // residual). The slave CFN carry it to 3e-6: Newton's tolerance (5e-3 q̃; node to surface,
-    // whose CFN is the nodal force itself, gives 1.1e-6) and CFN's own definition on a surface
+    // residual). The slave CFN carry it to 1e-5: the residual Newton leaves on the cylinder's
+    // contact nodes (its criterion, 5e-3 q̃ a DOF, allows 5e-4 of P/2 over the 8 closed nodes;
+    // these runs end at 8.5e-3 on one DOF, 3.8e-6 of P/2) and CFN's own definition on a surface
     // to surface pair, p A n̂ with n̂ the normalised weighted normal, which exceeds the nodal
     // resultant p ∫W n dA by the spread of the master normal over a node's support, about
     // h²/(48 R_interface²) with R_interface = 2R: 8e-7 (1.15e-6 measured with the tolerance at 1e-9).
     EXPECT_NEAR(f.foundation, 0.5 * kLoad, 1e-9 * kLoad) << label;
-    EXPECT_NEAR(f.cfn, 0.5 * kLoad, 3e-6 * 0.5 * kLoad) << label;
+    EXPECT_NEAR(f.cfn, 0.5 * kLoad, 1e-5 * 0.5 * kLoad) << label;
   }
 }
 
