@@ -263,6 +263,7 @@ FrictionPoint friction_point(const FrictionLaw& law, const Facet& facet, const P
   const Mat3 PT = tangent_projector(p);
   const TangentialMotion t = tangential_motion(PT, dx, e0, D, n);
   out.slip_increment = t.slip_increment;
+  out.trial_slip = t.e_tr;
   const TractionDerivatives d = return_mapping(law, pressure, t.e_tr, out);
   // E = ∂e_tr/∂u = P_T ∂Δx/∂u + ∂P_T (e₀ + Δx), ∂P_T v = −(∂n (n·v) + n (∂n·v)); on the anchor's
   // own facet ∂Δx/∂x_a = −N_a(ξ₀) (elsewhere the current facet's −N_a(ξ) stands for it).
@@ -295,6 +296,7 @@ FrictionPoint friction_point(const FrictionLaw& law, const Projection& p, const 
   const std::vector<double> jacobian(D.begin(), D.end());
   const TangentialMotion t = tangential_motion(tangent_projector(p), dx, e0, jacobian, n);
   out.slip_increment = t.slip_increment;
+  out.trial_slip = t.e_tr;
   const TractionDerivatives d = return_mapping(law, pressure, t.e_tr, out);
   assemble_friction(t.B, jacobian, t.B, std::vector<double>(n * n, 0.0), d, n, out);
   return out;

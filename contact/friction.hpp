@@ -98,6 +98,7 @@ struct FrictionAnchor {
 /// The return mapping of one slave node at one iteration.
 struct FrictionPoint {
   bool slipping = false;
+  Vec3 trial_slip{};       ///< e_tr, the elastic predictor
   Vec3 slip_increment{};   ///< Δs, tangential motion relative to the master since the anchor
   Vec3 elastic_slip{};     ///< e after the return mapping
   Vec3 traction{};         ///< τ, on the master (the slave carries −τ)

@@ -169,7 +169,7 @@ struct ContactProblem::Pair {
   void clear_friction(std::size_t i, FrictionNodeState& f) {
     f.active = f.slipping = false;
     f.facet = -1;
-    f.e = f.tau = {0, 0, 0};
+    f.e = f.tau = f.trial = {0, 0, 0};
     f.slip = f.slip0;
     fric[i] = {};
   }
@@ -235,6 +235,7 @@ struct ContactProblem::Pair {
     f.xi = pr.xi;
     f.e = fp.elastic_slip;
     f.tau = fp.traction;
+    f.trial = fp.trial_slip;
     const auto& ds = fp.slip_increment;
     f.slip[0] = f.slip0[0] + pr.t1[0] * ds[0] + pr.t1[1] * ds[1] + pr.t1[2] * ds[2];
     f.slip[1] = f.slip0[1] + pr.t2[0] * ds[0] + pr.t2[1] * ds[1] + pr.t2[2] * ds[2];
@@ -822,8 +823,9 @@ AugmentedPenetrations ContactProblem::augmented_penetrations() const {
 
 namespace {
 
-/// The smallest fraction of a correction overshoot_fraction() keeps: Newton must still move.
-constexpr double kMinOvershootFraction = 1e-2;
+/// The smallest fraction of a correction overshoot_fraction() and slip_reversal_fraction() keep:
+/// Newton must still move.
+constexpr double kMinCorrectionFraction = 1e-2;
 /// The penetration, as a fraction of the pair's tolerance, a node may reach in one correction
 /// while no node of its pair penetrates: such a pair must be able to close one.
 constexpr double kFreePenetrationFraction = 1e-2;
@@ -853,7 +855,41 @@ double ContactProblem::overshoot_fraction(const AugmentedPenetrations& before) c
       if (a[i] > deepest && b[i] < 0.0 && std::isfinite(b[i]))
         fraction = std::min(fraction, (deepest - b[i]) / (a[i] - b[i]));
   }
-  return std::max(fraction, kMinOvershootFraction);
+  return std::max(fraction, kMinCorrectionFraction);
+}
+
+SlippingTrials ContactProblem::slipping_trials(const ContactState& state) const {
+  SlippingTrials out;
+  for (const auto& p : pairs_) {
+    if (!p->friction) continue;
+    const auto& nodes = state.friction[p->row];
+    auto& trials = out.emplace_back(nodes.size(), std::array<double, 3>{});
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      if (nodes[i].active && nodes[i].slipping) trials[i] = nodes[i].trial;
+  }
+  return out;
+}
+
+double ContactProblem::slip_reversal_fraction(const SlippingTrials& before, const ContactState& state) const {
+  double fraction = 1.0;
+  std::size_t row = 0;
+  for (const auto& p : pairs_) {
+    if (!p->friction) continue;
+    if (row >= before.size()) return 1.0;
+    const auto& trials = before[row++];
+    const auto& nodes = state.friction[p->row];
+    if (trials.size() != nodes.size()) continue;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (!nodes[i].active || !nodes[i].slipping) continue;
+      const auto& b = trials[i];
+      const auto& a = nodes[i].trial;
+      const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+      const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      // e_tr(f) = b + f (a − b) is perpendicular to b at f = b·b / (b·b − a·b).
+      if (bb > 0.0 && ab < 0.0) fraction = std::min(fraction, bb / (bb - ab));
+    }
+  }
+  return std::max(fraction, kMinCorrectionFraction);
 }
 
 void ContactProblem::augment(ContactState& state) const {

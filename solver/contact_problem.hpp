@@ -66,6 +66,7 @@ struct FrictionNodeState {
   std::array<double, 2> xi{};
   std::array<double, 3> e{};          ///< elastic slip after the return mapping
   std::array<double, 3> tau{};        ///< frictional stress on the master (slave carries −τ)
+  std::array<double, 3> trial{};      ///< e_tr, the elastic predictor of the return mapping
   std::array<double, 2> slip{};       ///< accumulated slip including this increment
   /// An analytical master (facet 0 stands for the whole surface): the zero-shear point and the
   /// contact point at the last update, body-frame material points (contact/analytical_pair.hpp).
@@ -80,6 +81,10 @@ struct ContactState {
   /// (step, increment) whose start the friction history holds.
   std::array<int, 2> friction_increment{-1, -1};
 };
+
+/// Per pair with friction (in pair order), per slave node: the trial slip e_tr of a node that
+/// slipped at one update, zero for the others.
+using SlippingTrials = std::vector<std::vector<std::array<double, 3>>>;
 
 /// What one update of the contact geometry and status found.
 struct ContactIteration {
@@ -202,6 +207,12 @@ class ContactProblem {
   /// was (1 % of the pair's penetration tolerance while no node of it penetrates); 1 when the
   /// whole correction does not.
   double overshoot_fraction(const AugmentedPenetrations& before) const;
+  /// The trial slips of the last update: ContactProblem::slip_reversal_fraction's "before".
+  SlippingTrials slipping_trials(const ContactState& state) const;
+  /// The fraction of the last Newton correction at which no node that slipped `before` it and
+  /// slips after it has turned its slip around: where its trial slip e_tr becomes perpendicular
+  /// to the one before (e_tr moves nearly linearly along a correction); 1 when none turns.
+  double slip_reversal_fraction(const SlippingTrials& before, const ContactState& state) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
   void augment(ContactState& state) const;
 

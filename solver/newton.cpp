@@ -51,7 +51,7 @@ class NewtonIterations {
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
   bool solve_correction(Residual& res);
   void apply_correction();
-  void limit_overshoot(int k, ContactIteration& contact, Residual& res);
+  void limit_correction(int k, ContactIteration& contact, Residual& res);
   void scale_last_correction(double factor);
   bool predict();
 
@@ -70,6 +70,7 @@ class NewtonIterations {
   IncrementForce increment_force_;
   bool status_changed_at_start_ = false;
   AugmentedPenetrations penetrations_;  ///< augmented-Lagrange pairs: before the last correction
+  SlippingTrials slipping_trials_;      ///< pairs with friction: before the last correction
   NewtonOutcome out_;
 };
 
@@ -107,7 +108,7 @@ NewtonOutcome NewtonIterations::run() {
   for (int k = predict() ? 1 : 0;; ++k) {
     ContactIteration contact = update_contact(k);
     Residual res = assemble_residual(k);
-    limit_overshoot(k, contact, res);
+    limit_correction(k, contact, res);
     const PerField max_correction = largest_correction(k);
     ctx_.observer.iteration({ctx_.at.step, ctx_.at.increment, ctx_.at.attempt, k, res.max, res.ratio,
                              *std::max_element(max_correction.begin(), max_correction.end()), res.worst});
@@ -320,15 +321,27 @@ bool NewtonIterations::predict() {
   return true;
 }
 
-/// Augmented Lagrange at its 1000 k_e: a correction computed while nodes were open can drive
-/// them deep into the master (a body held by a force sinks into a ring of open nodes), and the
-/// force of that penetration throws the next iterate off again: Newton cycles. A correction that
-/// takes a node that was open deeper than the deepest node of its pair was is cut back to the
-/// fraction where none is (ContactProblem::overshoot_fraction), and the iterate evaluated again.
-void NewtonIterations::limit_overshoot(int k, ContactIteration& contact, Residual& res) {
-  if (!ctx_.contact || !ctx_.contact->has_augmented_lagrange()) return;
+/// Two contact laws whose kinks the tangent cannot see across, so that Newton cycles over them:
+///  - augmented Lagrange at its 1000 k_e: a correction computed while nodes were open can drive
+///    them deep into the master (a body held by a force sinks into a ring of open nodes), and
+///    the force of that penetration throws the next iterate off again. A correction that takes
+///    a node that was open deeper than the deepest node of its pair was is cut back to where
+///    none is (ContactProblem::overshoot_fraction);
+///  - friction: a slipping node's tangent has no stiffness along its slip, so a correction may
+///    carry it across the stick zone to slip the other way, and the next one back: the slip
+///    force flips each iteration. A correction that turns a slipping node's slip around is cut
+///    back to where the node's trial slip is perpendicular to its slip before (its middle of the
+///    stick zone: ContactProblem::slip_reversal_fraction), where the next tangent is the stick
+///    one. A slip reversed in earnest then follows in the next correction.
+/// The iterate is then evaluated again.
+void NewtonIterations::limit_correction(int k, ContactIteration& contact, Residual& res) {
+  if (!ctx_.contact) return;
+  const bool augmented = ctx_.contact->has_augmented_lagrange(), friction = ctx_.contact->has_friction();
+  if (!augmented && !friction) return;
   if (k > 0) {
-    const double fraction = ctx_.contact->overshoot_fraction(penetrations_);
+    double fraction = 1.0;
+    if (augmented) fraction = ctx_.contact->overshoot_fraction(penetrations_);
+    if (friction) fraction = std::min(fraction, ctx_.contact->slip_reversal_fraction(slipping_trials_, state_.contact));
     if (fraction < 1.0) {
       scale_last_correction(fraction);
       const bool changed_before = contact.status_changes > 0;
@@ -342,7 +355,8 @@ void NewtonIterations::limit_overshoot(int k, ContactIteration& contact, Residua
       res = assemble_residual(k);
     }
   }
-  penetrations_ = ctx_.contact->augmented_penetrations();
+  if (augmented) penetrations_ = ctx_.contact->augmented_penetrations();
+  if (friction) slipping_trials_ = ctx_.contact->slipping_trials(state_.contact);
 }
 
 /// u_k = u_{k−1} + factor Δu instead of u_{k−1} + Δu on the free DOFs. Contact multipliers

@@ -20,7 +20,7 @@ StatusUpdate PenaltyLaw::update_status(SlaveState& s, const NodeGap& g, const St
   const PressureValue pv = law_pressure(s, g);
   // The tangent is the law's exact one, which Newton's quadratic convergence needs; at
   // augmented Lagrange's 1000 k_e the Newton loop keeps nodes from bouncing across the kink
-  // instead (solver/newton.cpp, limit_overshoot).
+  // instead (solver/newton.cpp, limit_correction).
   // A node touching within round-off brings the law's first slope too: a penalty law acts only
   // from h + c0 ≥ 0, and a body resting on its contact at a gap of +1e-12 would otherwise have
   // no stiffness at all. So does a node that starts closed (it touched when the pair came into

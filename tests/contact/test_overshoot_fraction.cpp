@@ -1,8 +1,12 @@
-// ContactProblem::overshoot_fraction (solver/newton.cpp's limit_overshoot for augmented
-// Lagrange): the fraction of a Newton correction that takes no node that was open deeper into
-// the master than the deepest node of its pair was, by hand on the 2D patch of
-// change_surface_behavior_2d.inp in its augmented-Lagrange step (slave nodes 101 … 105 on the
-// lower block's top y = 1; a node moved down by d penetrates d).
+// The limits solver/newton.cpp's limit_correction puts on a Newton correction, by hand:
+//  - ContactProblem::overshoot_fraction (augmented Lagrange): the fraction of a correction that
+//    takes no node that was open deeper into the master than the deepest node of its pair was,
+//    on the 2D patch of change_surface_behavior_2d.inp in its augmented-Lagrange step (slave
+//    nodes 101 … 105 on the lower block's top y = 1; a node moved down by d penetrates d);
+//  - ContactProblem::slip_reversal_fraction (friction): the fraction at which no slipping node
+//    has turned its slip around, on friction_slide_2d_penalty.inp (slave nodes 101 … 103 on
+//    the base's top y = 0.5, penalty k = 2.692e4, μ = 0.3, elastic slip 0.0025: a node moved
+//    down by 1e-3 slips beyond 0.0025 of x motion from where it first touched).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,28 +24,27 @@
 namespace inpact::test {
 namespace {
 
-constexpr std::size_t kAugmentedStep = 3;
-
-/// The patch deck's augmented-Lagrange step, with slave nodes placed by their y displacement.
-struct AugmentedPatch {
-  AugmentedPatch()
-      : deck(parser::read_deck(std::string(INPACT_SOURCE_DIR) + "/decks/contact/change_surface_behavior_2d.inp")),
+/// A contact deck's step (its index), with slave nodes placed by their displacement.
+struct Patch {
+  Patch(const std::string& deck_name, std::size_t step)
+      : deck(parser::read_deck(std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + deck_name)),
         am(solver::build_analysis_model(deck.model)),
-        conditions(am, deck.model.steps[kAugmentedStep], solver::initial_history(am), 0.0),
+        conditions(am, deck.model.steps[step], solver::initial_history(am), 0.0),
         dofs(solver::DofMap::build(am, conditions.prescribed())),
         assembler(am, dofs),
-        contact(am, kAugmentedStep) {
-    contact.begin_attempt(state, static_cast<int>(kAugmentedStep) + 1, 1, std::vector<double>(am.n_dof(), 0.0));
+        contact(am, step) {
+    contact.begin_attempt(state, static_cast<int>(step) + 1, 1, std::vector<double>(am.n_dof(), 0.0));
   }
 
   /// The contact update with each listed slave node moved by `uy` (the others at rest).
-  void place(const std::map<int, double>& uy) {
+  void place(const std::map<int, double>& uy) { place({}, uy); }
+  /// The same with x displacements `ux` too.
+  void place(const std::map<int, double>& ux, const std::map<int, double>& uy) {
     std::vector<double> u(am.n_dof(), 0.0);
     const auto& labels = am.model->mesh.nodes.labels;
-    for (const auto& [label, v] : uy) {
-      const auto row = std::find(labels.begin(), labels.end(), label) - labels.begin();
-      u[static_cast<std::size_t>(row) * am.dim + 1] = v;
-    }
+    const auto row = [&](int label) { return static_cast<std::size_t>(std::find(labels.begin(), labels.end(), label) - labels.begin()); };
+    for (const auto& [label, v] : ux) u[row(label) * am.dim] = v;
+    for (const auto& [label, v] : uy) u[row(label) * am.dim + 1] = v;
     contact.update(u, state, assembler);
   }
 
@@ -55,7 +58,7 @@ struct AugmentedPatch {
 };
 
 TEST(OvershootFraction, AnOpenNodeStopsAtTheDeepestClosedOne) {
-  AugmentedPatch patch;
+  Patch patch("change_surface_behavior_2d.inp", 3);  // its augmented-Lagrange step
   ASSERT_TRUE(patch.contact.has_augmented_lagrange());
   // Before: 103 penetrates 0.002 (the deepest), the others are open by 0.001.
   patch.place({{101, 0.001}, {102, 0.001}, {103, -0.002}, {104, 0.001}, {105, 0.001}});
@@ -70,6 +73,26 @@ TEST(OvershootFraction, AnOpenNodeStopsAtTheDeepestClosedOne) {
   // Far beyond: at least 1 % of the correction, so that Newton still moves.
   patch.place({{101, 0.001}, {102, -0.4}, {103, -0.01}, {104, 0.001}, {105, 0.001}});
   EXPECT_EQ(patch.contact.overshoot_fraction(before), 1e-2);
+}
+
+TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
+  Patch patch("friction_slide_2d_penalty.inp", 0);
+  ASSERT_TRUE(patch.contact.has_friction());
+  const std::map<int, double> pressed{{101, -1e-3}, {102, -1e-3}, {103, -1e-3}};
+  patch.place({}, pressed);  // where each node touched: its zero-shear point
+  // Before: 101 and 102 slip to +x (e_tr = 0.01), 103 sticks (0.001 < 0.0025).
+  patch.place({{101, 0.01}, {102, 0.01}, {103, 0.001}}, pressed);
+  const solver::SlippingTrials before = patch.contact.slipping_trials(patch.state);
+  // After: 101 slips to −x, e_tr = −0.03: e_tr(f) = 0.01 − 0.04 f turns at f = 1/4. 102 slips on
+  // (+0.02), 103 now slips to −x but did not slip before: neither limits.
+  patch.place({{101, -0.03}, {102, 0.02}, {103, -0.05}}, pressed);
+  EXPECT_NEAR(patch.contact.slip_reversal_fraction(before, patch.state), 0.25, 1e-12);
+  // 101 back to a stick (|e_tr| = 0.001 on the other side): no slip turned around.
+  patch.place({{101, -0.001}, {102, 0.02}, {103, -0.05}}, pressed);
+  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1.0);
+  // Far beyond: at least 1 % of the correction.
+  patch.place({{101, -1.0}, {102, 0.02}, {103, -0.05}}, pressed);  // f = 1e-4 / (1e-4 + 1e-2)
+  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1e-2);
 }
 
 }  // namespace

@@ -311,7 +311,7 @@ void sphere_force_within(const std::string& path, const std::string& level, cons
 // 1 % of the tolerance). Where a ring of nodes closes, the sphere, pushed by a force, sinks
 // into the ring's open nodes in one correction, and their penetration's force throws it off
 // again. Newton cuts such corrections back to where no such node goes deeper than the pair's
-// deepest (limit_overshoot in solver/newton.cpp); surface to surface took 144 iterations and 3
+// deepest (limit_correction in solver/newton.cpp); surface to surface took 144 iterations and 3
 // cutbacks from a first increment of 25 % before it did, and 60 and 1 while the limit was 1 %
 // of the tolerance (tens of times the depth of p0 at 1000 k_e). At a/h = 3 (sphere_3d's mesh) surface to surface closes the
 // zone a node short: direct +9.7 % on p0, −6.7 % on a.

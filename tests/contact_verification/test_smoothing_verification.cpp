@@ -368,7 +368,7 @@ TEST(SmoothedToroidalSurface, FineReferenceHasConvergedAndAgreesWithTheUnsmoothe
 // Augmented Lagrange at its default stiffness (1000 k_e = 2.13e9 per unit area) on the O-ring,
 // smoothed or not. Measured: the first increment in 4 iterations smoothed (8 unsmoothed), the
 // second in 1. Before Newton took the law's exact tangent at every node (solver/newton.cpp,
-// limit_overshoot), nodes at the edges of the contact zone that had crossed the law's kink kept
+// limit_correction), nodes at the edges of the contact zone that had crossed the law's kink kept
 // its stiffness while open: the residual then stalled at 1.4e3 (1.9 times the average force)
 // with corrections below a micrometre, and the step stopped after 5 cutbacks.
 TEST(SmoothedToroidalSurface, AugmentedLagrangeAtItsDefaultStiffnessEndsInEquilibrium) {
