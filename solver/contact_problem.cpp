@@ -846,9 +846,10 @@ double ContactProblem::overshoot_fraction(const AugmentedPenetrations& before) c
     // than the pair already carries (at 1000 k_e, 1 % of the tolerance is tens of times the
     // depth of a pressure like p0: a body held by a force alternated between sinking into a
     // ring of such nodes and being thrown off by them).
+    // (A penetration within round-off of touching is none.)
     double deepest = 0.0;
     for (double h : b) deepest = std::max(deepest, h);
-    if (deepest == 0.0) deepest = kFreePenetrationFraction * p->resolved->tolerance;
+    if (deepest <= kTouchingTolerance * p->l_char) deepest = kFreePenetrationFraction * p->resolved->tolerance;
     // Only nodes that were open overshoot: their stiffness was not in the tangent. Gaps change
     // nearly linearly along one correction: interpolate where such a node reaches the depth.
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -858,6 +859,16 @@ double ContactProblem::overshoot_fraction(const AugmentedPenetrations& before) c
   return std::max(fraction, kMinCorrectionFraction);
 }
 
+namespace {
+
+/// A node whose slip carries a force: with μ p = 0 (a pair's friction ramped to nothing, a
+/// closed node without pressure) no force flips when its slip turns.
+bool slips_with_force(const FrictionNodeState& f) {
+  return f.active && f.slipping && f.tau[0] * f.tau[0] + f.tau[1] * f.tau[1] + f.tau[2] * f.tau[2] > 0.0;
+}
+
+}  // namespace
+
 SlippingTrials ContactProblem::slipping_trials(const ContactState& state) const {
   SlippingTrials out;
   for (const auto& p : pairs_) {
@@ -865,7 +876,7 @@ SlippingTrials ContactProblem::slipping_trials(const ContactState& state) const 
     const auto& nodes = state.friction[p->row];
     auto& trials = out.emplace_back(nodes.size(), std::array<double, 3>{});
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      if (nodes[i].active && nodes[i].slipping) trials[i] = nodes[i].trial;
+      if (slips_with_force(nodes[i])) trials[i] = nodes[i].trial;
   }
   return out;
 }
@@ -880,16 +891,20 @@ double ContactProblem::slip_reversal_fraction(const SlippingTrials& before, cons
     const auto& nodes = state.friction[p->row];
     if (trials.size() != nodes.size()) continue;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
-      if (!nodes[i].active || !nodes[i].slipping) continue;
+      if (!slips_with_force(nodes[i])) continue;
       const auto& b = trials[i];
       const auto& a = nodes[i].trial;
       const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
       const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-      // e_tr(f) = b + f (a − b) is perpendicular to b at f = b·b / (b·b − a·b).
-      if (bb > 0.0 && ab < 0.0) fraction = std::min(fraction, bb / (bb - ab));
+      if (!(bb > 0.0 && ab < 0.0)) continue;
+      // e_tr(f) = b + f (a − b) is perpendicular to b at f = b·b / (b·b − a·b). A node that
+      // turns within the floor (one that slipped barely beyond its stick zone, b small) would
+      // slip the other way there too: cutting gains nothing, so it does not limit.
+      const double f = bb / (bb - ab);
+      if (f >= kMinCorrectionFraction) fraction = std::min(fraction, f);
     }
   }
-  return std::max(fraction, kMinCorrectionFraction);
+  return fraction;
 }
 
 void ContactProblem::augment(ContactState& state) const {

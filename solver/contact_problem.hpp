@@ -204,14 +204,15 @@ class ContactProblem {
   AugmentedPenetrations augmented_penetrations() const;
   /// The fraction of the last Newton correction that takes no node of an augmented-Lagrange
   /// pair that was open `before` it deeper into its master than the deepest node of the pair
-  /// was (1 % of the pair's penetration tolerance while no node of it penetrates); 1 when the
-  /// whole correction does not.
+  /// was (1 % of the pair's penetration tolerance while no node of it penetrates beyond
+  /// round-off); 1 when the whole correction does not.
   double overshoot_fraction(const AugmentedPenetrations& before) const;
   /// The trial slips of the last update: ContactProblem::slip_reversal_fraction's "before".
   SlippingTrials slipping_trials(const ContactState& state) const;
   /// The fraction of the last Newton correction at which no node that slipped `before` it and
-  /// slips after it has turned its slip around: where its trial slip e_tr becomes perpendicular
-  /// to the one before (e_tr moves nearly linearly along a correction); 1 when none turns.
+  /// slips after it (with a force) has turned its slip around: where its trial slip e_tr becomes
+  /// perpendicular to the one before (e_tr moves nearly linearly along a correction). A node
+  /// that would turn within 1 % of the correction does not limit it; 1 when none limits.
   double slip_reversal_fraction(const SlippingTrials& before, const ContactState& state) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
   void augment(ContactState& state) const;

@@ -51,6 +51,7 @@ class NewtonIterations {
   bool gives_up(int k, const Residual& res, const ContactIteration& contact);
   bool solve_correction(Residual& res);
   void apply_correction();
+  bool limits_correction() const;
   void limit_correction(int k, ContactIteration& contact, Residual& res);
   void scale_last_correction(double factor);
   bool predict();
@@ -71,6 +72,7 @@ class NewtonIterations {
   bool status_changed_at_start_ = false;
   AugmentedPenetrations penetrations_;  ///< augmented-Lagrange pairs: before the last correction
   SlippingTrials slipping_trials_;      ///< pairs with friction: before the last correction
+  ContactState contact_before_;         ///< the contact state before this iteration's update
   NewtonOutcome out_;
 };
 
@@ -106,6 +108,8 @@ NewtonOutcome NewtonIterations::run() {
   // A new increment commits the friction history of the converged state it starts from.
   if (ctx_.contact) ctx_.contact->begin_attempt(state_.contact, ctx_.at.step, ctx_.at.increment, u_start_);
   for (int k = predict() ? 1 : 0;; ++k) {
+    // (the contact state the iterate starts from: limit_correction evaluates a cut iterate from it)
+    if (k > 0 && limits_correction()) contact_before_ = state_.contact;
     ContactIteration contact = update_contact(k);
     Residual res = assemble_residual(k);
     limit_correction(k, contact, res);
@@ -321,6 +325,10 @@ bool NewtonIterations::predict() {
   return true;
 }
 
+bool NewtonIterations::limits_correction() const {
+  return ctx_.contact && (ctx_.contact->has_augmented_lagrange() || ctx_.contact->has_friction());
+}
+
 /// Two contact laws whose kinks the tangent cannot see across, so that Newton cycles over them:
 ///  - augmented Lagrange at its 1000 k_e: a correction computed while nodes were open can drive
 ///    them deep into the master (a body held by a force sinks into a ring of open nodes), and
@@ -330,28 +338,28 @@ bool NewtonIterations::predict() {
 ///  - friction: a slipping node's tangent has no stiffness along its slip, so a correction may
 ///    carry it across the stick zone to slip the other way, and the next one back: the slip
 ///    force flips each iteration. A correction that turns a slipping node's slip around is cut
-///    back to where the node's trial slip is perpendicular to its slip before (its middle of the
-///    stick zone: ContactProblem::slip_reversal_fraction), where the next tangent is the stick
-///    one. A slip reversed in earnest then follows in the next correction.
-/// The iterate is then evaluated again.
+///    back to where the node's trial slip is perpendicular to its slip before
+///    (ContactProblem::slip_reversal_fraction): in 2D the middle of its stick zone, where the
+///    next tangent is the stick one; in 3D the trial slip keeps its part across the old slip. A
+///    slip reversed in earnest then follows in the next correction.
+/// Neither cuts below 1 % of the correction. The cut iterate is evaluated again from the contact
+/// state the iteration started from: the discarded one's status changes, flips and failures
+/// never happened.
 void NewtonIterations::limit_correction(int k, ContactIteration& contact, Residual& res) {
-  if (!ctx_.contact) return;
+  if (!limits_correction()) return;
   const bool augmented = ctx_.contact->has_augmented_lagrange(), friction = ctx_.contact->has_friction();
-  if (!augmented && !friction) return;
   if (k > 0) {
     double fraction = 1.0;
     if (augmented) fraction = ctx_.contact->overshoot_fraction(penetrations_);
     if (friction) fraction = std::min(fraction, ctx_.contact->slip_reversal_fraction(slipping_trials_, state_.contact));
     if (fraction < 1.0) {
       scale_last_correction(fraction);
-      const bool changed_before = contact.status_changes > 0;
-      ContactIteration again = ctx_.contact->update(state_.u, state_.contact, ctx_.assembler);
-      // One iteration: a status change in either evaluation makes it a severe one, once.
-      if (again.status_changes > 0 && !changed_before && !(k == 1 && status_changed_at_start_))
-        ++out_.severe_iterations;
-      again.status_changes += contact.status_changes;
-      again.blocks_convergence = again.blocks_convergence || contact.blocks_convergence;
-      contact = std::move(again);
+      // update_contact(k)'s count of severe iterations, for the evaluation that stands
+      const auto severe = [&](const ContactIteration& c) { return c.status_changes > 0 || (k == 1 && status_changed_at_start_); };
+      const bool counted = severe(contact);
+      state_.contact = contact_before_;
+      contact = ctx_.contact->update(state_.u, state_.contact, ctx_.assembler);
+      out_.severe_iterations += (severe(contact) ? 1 : 0) - (counted ? 1 : 0);
       res = assemble_residual(k);
     }
   }

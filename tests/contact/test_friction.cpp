@@ -164,7 +164,7 @@ void check_sliding(const std::string& deck, const std::string& label) {
   // No attempt is cut back. The push turns the outer nodes' slip around (the press spread them
   // outwards); before Newton stopped such a turn at the stick zone (newton.cpp's
   // limit_correction), LAGRANGE's first push increment cycled between slipping either way and
-  // was cut back five times (162 iterations; 28 now).
+  // was cut back five times (162 iterations; 25 now).
   int cut_backs = 0;
   for (const auto& row : r->capture.rows) cut_backs += row.cut_back ? 1 : 0;
   EXPECT_EQ(cut_backs, 0) << label;

@@ -90,9 +90,13 @@ TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
   // 101 back to a stick (|e_tr| = 0.001 on the other side): no slip turned around.
   patch.place({{101, -0.001}, {102, 0.02}, {103, -0.05}}, pressed);
   EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1.0);
-  // Far beyond: at least 1 % of the correction.
-  patch.place({{101, -1.0}, {102, 0.02}, {103, -0.05}}, pressed);  // f = 1e-4 / (1e-4 + 1e-2)
-  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1e-2);
+  // Far beyond, turning within 1 % of the correction (f = 1e-4 / (1e-4 + 1e-2)): at 1 % it
+  // would slip the other way already, so it does not limit.
+  patch.place({{101, -1.0}, {102, 0.02}, {103, -0.05}}, pressed);
+  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1.0);
+  // A node that turns later than another does not change the fraction: 102 turns at 1/3.
+  patch.place({{101, -0.03}, {102, -0.02}, {103, -0.05}}, pressed);
+  EXPECT_NEAR(patch.contact.slip_reversal_fraction(before, patch.state), 0.25, 1e-12);
 }
 
 }  // namespace
