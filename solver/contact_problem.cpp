@@ -897,11 +897,21 @@ double ContactProblem::slip_reversal_fraction(const SlippingTrials& before, cons
       const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
       const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       if (!(bb > 0.0 && ab < 0.0)) continue;
-      // e_tr(f) = b + f (a − b) is perpendicular to b at f = b·b / (b·b − a·b). A node that
-      // turns within the floor (one that slipped barely beyond its stick zone, b small) would
-      // slip the other way there too: cutting gains nothing, so it does not limit.
+      // e_tr(f) = b + f (a − b) is perpendicular to b at f = b·b / (b·b − a·b). Below the floor
+      // the cut stops at the floor; a node already as far out the other way there as it was
+      // (|e_tr| ≥ |b|, beyond its stick zone) slips the other way at the floor too: cutting
+      // gains nothing, so it does not limit.
       const double f = bb / (bb - ab);
-      if (f >= kMinCorrectionFraction) fraction = std::min(fraction, f);
+      if (f >= kMinCorrectionFraction) {
+        fraction = std::min(fraction, f);
+        continue;
+      }
+      double at_floor = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const double e = b[c] + kMinCorrectionFraction * (a[c] - b[c]);
+        at_floor += e * e;
+      }
+      if (at_floor < bb) fraction = std::min(fraction, kMinCorrectionFraction);
     }
   }
   return fraction;

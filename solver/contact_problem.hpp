@@ -211,8 +211,9 @@ class ContactProblem {
   SlippingTrials slipping_trials(const ContactState& state) const;
   /// The fraction of the last Newton correction at which no node that slipped `before` it and
   /// slips after it (with a force) has turned its slip around: where its trial slip e_tr becomes
-  /// perpendicular to the one before (e_tr moves nearly linearly along a correction). A node
-  /// that would turn within 1 % of the correction does not limit it; 1 when none limits.
+  /// perpendicular to the one before (e_tr moves nearly linearly along a correction), at least
+  /// 1 %. A node that at 1 % already slips the other way as far as it slipped before does not
+  /// limit; 1 when none limits.
   double slip_reversal_fraction(const SlippingTrials& before, const ContactState& state) const;
   /// λ ← ⟨λ + k (h + c0)⟩ for every slave node of an augmented-Lagrange pair.
   void augment(ContactState& state) const;

@@ -90,13 +90,19 @@ TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
   // 101 back to a stick (|e_tr| = 0.001 on the other side): no slip turned around.
   patch.place({{101, -0.001}, {102, 0.02}, {103, -0.05}}, pressed);
   EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1.0);
-  // Far beyond, turning within 1 % of the correction (f = 1e-4 / (1e-4 + 1e-2)): at 1 % it
-  // would slip the other way already, so it does not limit.
+  // Far beyond, turning within 1 % of the correction (f = 1e-4 / (1e-4 + 1e-2)): at 1 %, e_tr =
+  // −1e-4 lies in the stick zone, so the cut stops there.
   patch.place({{101, -1.0}, {102, 0.02}, {103, -0.05}}, pressed);
-  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1.0);
+  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1e-2);
   // A node that turns later than another does not change the fraction: 102 turns at 1/3.
   patch.place({{101, -0.03}, {102, -0.02}, {103, -0.05}}, pressed);
   EXPECT_NEAR(patch.contact.slip_reversal_fraction(before, patch.state), 0.25, 1e-12);
+  // A node that slipped barely beyond its stick zone (0.003 > 0.0025) and turns to −1: at 1 % of
+  // the correction e_tr = −0.00703 slips the other way already, so it does not limit.
+  patch.place({{101, 0.003}, {102, 0.0}, {103, 0.0}}, pressed);
+  const solver::SlippingTrials barely = patch.contact.slipping_trials(patch.state);
+  patch.place({{101, -1.0}, {102, 0.0}, {103, 0.0}}, pressed);
+  EXPECT_EQ(patch.contact.slip_reversal_fraction(barely, patch.state), 1.0);
 }
 
 }  // namespace
