@@ -827,7 +827,7 @@ namespace {
 /// Newton must still move.
 constexpr double kMinCorrectionFraction = 1e-2;
 /// The penetration, as a fraction of the pair's tolerance, a node may reach in one correction
-/// while no node of its pair penetrates: such a pair must be able to close one.
+/// while no node of its pair penetrates beyond round-off: such a pair must be able to close one.
 constexpr double kFreePenetrationFraction = 1e-2;
 
 }  // namespace
