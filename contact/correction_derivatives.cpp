@@ -62,23 +62,23 @@ CorrectedPoint SurfaceCorrection::node_derivatives(std::size_t i, std::array<dou
   const int pd = facet_param_dim(f.shape);
   d.n_nodes = f.n_nodes;
   d.param_dim = pd;
-  FacetGeometry gx;
-  const CorrectedPoint p = correct_at(i, xi, x, gx);
-  facet_node_derivatives(gx, sh, pd, d);
-  if (!p.corrected || mode_ == Mode::Identity) return p;
-  Vec3 off, nref;
-  FacetGeometry gX;
-  std::array<Vec3, 3> qX, qx;
-  if (!reference_ideal(i, sh, off, nref, gX) || !facet_frame(gX, qX) || !facet_frame(gx, qx)) return p;
-  // x̃ = x_f + Q d, ñ = unit(Q ñ_ref): Q moves with the current frame.
+  Parts c;
+  const CorrectedPoint p = correct_at(i, sh, x, c);
+  // x̃ = x_f + Q d, ñ = unit(Q ñ_ref): Q moves with the current frame (uncorrected: x_f and n).
   for (int a = 0; a < sh.n; ++a)
     for (int j = 0; j < 3; ++j) {
+      d.x_node[a][j] = {0, 0, 0};
+      d.x_node[a][j][j] = sh.N[a];
+      d.n_node[a][j] = {0, 0, 0};
+      if (!c.framed) continue;
       std::array<Vec3, 2> da{};
       da[0][j] = sh.dN[a][0];
       da[1][j] = sh.dN[a][1];
-      const std::array<Vec3, 3> dq = frame_change(gx, qx, pd, da);
-      d.x_node[a][j] = add(d.x_node[a][j], rotated_change(qX, dq, off));
-      const Vec3 dn = rotated_change(qX, dq, nref);
+      const std::array<Vec3, 3> dq = frame_change(c.gx, c.qx, pd, da);
+      d.n_node[a][j] = dq[2];
+      if (!c.rotated) continue;
+      d.x_node[a][j] = add(d.x_node[a][j], rotated_change(c.qX, dq, c.offset));
+      const Vec3 dn = rotated_change(c.qX, dq, c.normal);
       d.n_node[a][j] = axpy(-dot(p.normal, dn), p.normal, dn);
     }
   return p;

@@ -348,21 +348,26 @@ CorrectedPoint SurfaceCorrection::correct(std::int32_t facet, std::array<double,
 
 CorrectedPoint SurfaceCorrection::correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
                                              FacetGeometry& gx) const {
-  const ShapeEval sh = eval_shape(facets_[i].shape, xi[0], xi[1]);
-  gx = facet_geometry(facets_[i], x, sh);
-  CorrectedPoint out{gx.x, gx.n, false};
-  Vec3 d, n;
-  FacetGeometry gX;
-  if (!reference_ideal(i, sh, d, n, gX)) return out;
+  Parts parts;
+  const CorrectedPoint p = correct_at(i, eval_shape(facets_[i].shape, xi[0], xi[1]), x, parts);
+  gx = parts.gx;
+  return p;
+}
+
+CorrectedPoint SurfaceCorrection::correct_at(std::size_t i, const ShapeEval& sh, std::span<const Vec3> x,
+                                             Parts& parts) const {
+  parts.gx = facet_geometry(facets_[i], x, sh);
+  parts.framed = facet_frame(parts.gx, parts.qx);
+  CorrectedPoint out{parts.gx.x, parts.gx.n, false};
+  if (!reference_ideal(i, sh, parts.offset, parts.normal, parts.gX)) return out;
   if (mode_ == Mode::Identity) {
     out.corrected = true;
     return out;
   }
-  std::array<Vec3, 3> qX, qx;
-  if (!facet_frame(gX, qX) || !facet_frame(gx, qx)) return out;
-  out.x = add(gx.x, rotate(qX, qx, d));
-  out.normal = unit(rotate(qX, qx, n));
-  out.corrected = true;
+  if (!facet_frame(parts.gX, parts.qX) || !parts.framed) return out;
+  out.x = add(parts.gx.x, rotate(parts.qX, parts.qx, parts.offset));
+  out.normal = unit(rotate(parts.qX, parts.qx, parts.normal));
+  out.corrected = parts.rotated = true;
   return out;
 }
 
@@ -444,11 +449,12 @@ CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>&
     throw std::invalid_argument(fmt::format("SurfaceCorrection::project: the facet is not a face of surface {}", data_.surface));
   const std::size_t fi = static_cast<std::size_t>(i);
   const int pd = facet_param_dim(f.shape);
-  FacetGeometry g;  // the facet's geometry at ξ (f has facets_[i]'s node rows, facet_key)
-  CorrectedPoint p = correct_at(fi, xi, x, g);
+  Parts parts;  // (f has facets_[i]'s node rows, facet_key)
+  auto correct_here = [&] { return correct_at(fi, eval_shape(f.shape, xi[0], xi[1]), x, parts); };
+  CorrectedPoint p = correct_here();
   if (!p.corrected) return p;
   RayIteration ray;
-  ray.start(g, p.normal, pd);
+  ray.start(parts.gx, p.normal, pd);
   double gap = dot(sub(xs, p.x), p.normal);
   Vec3 residual = sub(add(p.x, scale(gap, p.normal)), xs);  // F = x̃ + g ñ − x_s
   bool was_clamped = false;
@@ -460,7 +466,7 @@ CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>&
     const double moved = std::hypot(next[0] - xi[0], next[1] - xi[1]);
     const std::array<double, 3> taken{next[0] - xi[0], pd == 2 ? next[1] - xi[1] : step[1], pd == 2 ? step[2] : 0.0};
     xi = next;
-    const CorrectedPoint q = correct_at(fi, xi, x, g);
+    const CorrectedPoint q = correct_here();
     if (!q.corrected) break;
     p = q;
     // On the domain's boundary the ray misses the facet (it belongs to a neighbour, or to no

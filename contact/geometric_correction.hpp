@@ -180,8 +180,19 @@ class SurfaceCorrection {
   bool reference_ideal(std::size_t i, std::array<double, 2> xi, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
   /// The same from the shape functions at ξ, sh = eval_shape(facet's shape, ξ).
   bool reference_ideal(std::size_t i, const ShapeEval& sh, Vec3& offset, Vec3& normal, FacetGeometry& gX) const;
+  /// What correct_at() computes on the way, which node_derivatives() differentiates: the current
+  /// and reference geometry at ξ, their frames, and the reference offset d and normal ñ.
+  struct Parts {
+    FacetGeometry gx, gX;
+    std::array<Vec3, 3> qx{}, qX{};
+    Vec3 offset{}, normal{};
+    bool framed = false;   ///< qx is the current frame (the facet is not degenerate there)
+    bool rotated = false;  ///< the point is x_f + Q d, ñ = Q ñ_ref (a correction other than Identity)
+  };
   /// correct(facet, xi, x), with the facet's current geometry at ξ in `gx`.
   CorrectedPoint correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x, FacetGeometry& gx) const;
+  /// The same from sh = eval_shape(facet's shape, ξ), with everything it computed in `parts`.
+  CorrectedPoint correct_at(std::size_t i, const ShapeEval& sh, std::span<const Vec3> x, Parts& parts) const;
   /// correct_at() with the node derivatives of CorrectionDerivatives (correction_derivatives.cpp).
   CorrectedPoint node_derivatives(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
                                   CorrectionDerivatives& d) const;

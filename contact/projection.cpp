@@ -95,11 +95,45 @@ struct LineMin {
   double t = 0, phi = std::numeric_limits<double>::infinity();
 };
 
+/// Minimum of φ(t) = ½|x_s − x(P0 + t (P1 − P0))|² over t ∈ [0, 1] on a linear facet, whose
+/// domain edges are straight in space (x is linear along them): φ is a convex quadratic, least at
+/// the end points or at the foot of x_s on the segment. As minimize_on_segment() below, the end
+/// points first and the foot when it is lower, φ evaluated alike (ties between facets at a shared
+/// corner compare the same bits).
+LineMin minimize_on_straight_edge(const FacetNodes& fn, const Vec3& xs, const std::array<double, 2>& P0,
+                                  const std::array<double, 2>& P1) {
+  auto point = [&](double t) { return std::array<double, 2>{P0[0] + t * (P1[0] - P0[0]), P0[1] + t * (P1[1] - P0[1])}; };
+  auto x_at = [&](double t) {
+    const auto p = point(t);
+    std::array<double, 8> N;
+    shape_values(fn.shape, p[0], p[1], N);
+    Vec3 x{};
+    for (int a = 0; a < fn.n; ++a) x = axpy(N[a], fn.X[a], x);
+    return x;
+  };
+  LineMin best;
+  auto consider = [&](double t) {
+    const auto p = point(t);
+    const double v = fn.phi(xs, p[0], p[1]);
+    if (v < best.phi) best = {t, v};
+  };
+  consider(0.0);
+  consider(1.0);
+  const Vec3 A = x_at(0.0), e = sub(x_at(1.0), A);
+  const double ee = dot(e, e);
+  if (ee > 0) {
+    const double t = dot(sub(xs, A), e) / ee;
+    if (t > 0 && t < 1) consider(t);
+  }
+  return best;
+}
+
 /// Minimum of φ(t) = ½|x_s − x(P0 + t (P1 − P0))|² over t ∈ [0, 1]: the end points and every
 /// local minimum bracketed by a sign change of φ' on `samples` intervals, each refined by
 /// Newton safeguarded with bisection.
 LineMin minimize_on_segment(const FacetNodes& fn, const Vec3& xs, const std::array<double, 2>& P0,
                             const std::array<double, 2>& P1, int samples) {
+  if (facet_param_dim(fn.shape) == 2 && !facet_is_quadratic(fn.shape)) return minimize_on_straight_edge(fn, xs, P0, P1);
   const double e0 = P1[0] - P0[0], e1 = P1[1] - P0[1];
   auto point = [&](double t) { return std::array<double, 2>{P0[0] + t * e0, P0[1] + t * e1}; };
   auto derivs = [&](double t, double& d1, double& d2) {
