@@ -4,8 +4,10 @@
 /// all say the same:
 ///  - direct: CHOLMOD (symmetric positive definite), UMFPACK (multipliers, friction);
 ///  - petsc:  CG / GMRES with algebraic multigrid (GAMG), MUMPS for multipliers (linear/petsc_solver.cpp);
-///  - auto:   direct below kPetscFromDofs DOFs of the model, petsc from there (when built with
-///            PETSc) — the crossover measured on a C3D8 cube (bench/petsc_solver);
+///  - auto:   petsc from the model's crossover size (petsc_from_dofs: by dimension, measured on
+///            the C3D8 cube and the CPE4 square, bench/petsc_solver), or below it when the direct
+///            solver's estimated memory (direct_memory_estimate) would not fit in half the memory
+///            available; direct otherwise, and always when built without PETSc;
 ///  - none given: direct on one process, petsc on several MPI ranks (`mpirun -np N`), where the
 ///    direct solvers cannot go (they are one process's).
 #include <cstdint>
@@ -20,13 +22,29 @@ namespace inpact::solver {
 enum class SolverRequest { Direct, Petsc, Auto, Default };
 enum class SolverKind { Direct, Petsc };
 
-/// `auto` takes petsc from this many DOFs (nodes × DOFs per node) of the model.
+/// `auto` takes petsc from this many DOFs (nodes × DOFs per node) of a 3D model: the cube's
+/// crossover (petsc 1.5× faster at 28k DOF, a tie at 15k).
 inline constexpr std::int64_t kPetscFromDofs = 25'000;
+/// ... of a 2D model: the square's crossover (a tie at 200k DOF; direct 1.1× faster at 100k).
+inline constexpr std::int64_t kPetscFromDofs2d = 200'000;
+
+/// The crossover of `auto` for a model of `dim` (2 or 3) dimensions.
+std::int64_t petsc_from_dofs(int dim);
+/// The direct solver's peak memory (bytes) estimated for `dofs` DOFs in `dim` dimensions: the
+/// power laws through the measured peaks of the whole run (bench/petsc_solver: the cube 1.07 GB
+/// at 98k DOF growing like DOF^1.33, the square 0.90 GB at 500k like DOF^1.0).
+double direct_memory_estimate(std::int64_t dofs, int dim);
+/// The memory this process may still take (bytes): MemAvailable, within the cgroup's limit when
+/// there is one; 0 when neither can be read (auto then decides by size alone).
+double available_memory();
 
 struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
   SolverKind kind = SolverKind::Direct;
   std::int64_t model_dofs = 0;
+  int dim = 3;                    ///< the model's dimension (its first element's)
+  double direct_memory = 0.0;     ///< auto: direct_memory_estimate (bytes)
+  double available_memory = 0.0;  ///< auto: available_memory() when it decided (bytes; 0 unknown)
   int ranks = 1;  ///< MPI ranks of the run (mpi_launch.hpp); petsc whenever more than one
 };
 
@@ -38,6 +56,9 @@ const char* request_name(SolverRequest request);
 /// when petsc is requested from a build without PETSc (auto then takes direct on one rank), and
 /// when direct is requested on several ranks.
 SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks);
+/// The same with the memory available given (bytes; 0: unknown).
+SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks,
+                                   double available_bytes);
 /// The same for the text of `--solver` on the ranks this process was launched among; throws
 /// std::invalid_argument for an unknown request too.
 SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model);
@@ -45,7 +66,7 @@ SolverChoice resolve_linear_solver(std::string_view request, const model::Model&
 /// "petsc" or "direct": the name the results file records.
 const char* kind_name(SolverKind kind);
 /// One line for `check`, the .dat header and the log, e.g.
-/// "LINEAR SOLVER: petsc (CG/GMRES + GAMG, MUMPS for multipliers; auto: 250000 DOF >= 200000)".
+/// "LINEAR SOLVER: petsc (CG or GMRES with GAMG; MUMPS for contact multipliers); auto: 3D, 250000 DOF >= 25000".
 std::string describe(const SolverChoice& choice);
 
 /// Starts what the choice needs, once per process: for petsc, loads the PETSc module and calls

@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """cube_bench.py: CHOLMOD (`--solver direct`) against PETSc (`--solver petsc`: CG + GAMG) on the
 solver benchmark cube (bench/solver_gen_cube.py: N³ C3D8, clamped bottom, pressure on top, one
-linear static step), whole `inpact run` processes under /usr/bin/time -v.
+linear static step), or with --dim 2 its plane-strain square (bench/solver_gen_square.py: N²
+CPE4), whole `inpact run` processes under /usr/bin/time -v.
 
   /usr/bin/python3 bench/petsc_solver/cube_bench.py --inpact build/apps/inpact --sizes 31 45 \
-      [--runs 3] [--direct-max-n 45] [--work DIR] [--threads 1] [--solvers direct petsc petsc:2]
+      [--dim 3] [--runs 3] [--direct-max-n 45] [--work DIR] [--threads 1] [--solvers direct petsc petsc:2]
 
 A solver `petsc:N` is a distributed run, `mpirun -np N inpact run ...`; its peak RSS is that
 of the largest rank (what /usr/bin/time reports for the process tree), its CPU time that of
@@ -25,11 +26,14 @@ sys.path.insert(0, HERE)
 import compare_solvers  # noqa: E402  (its mpirun launcher)
 
 
-def deck(n, work):
-    path = os.path.join(work, f"cube{n}.inp")
+def deck(n, work, dim=3):
+    path = os.path.join(work, f"cube{n}.inp" if dim == 3 else f"square{n}.inp")
     if not os.path.exists(path):
-        subprocess.run([sys.executable, os.path.join(ROOT, "bench/solver_gen_cube.py"), str(n), path,
-                        os.path.join(work, f"cube{n}_ccx.inp")], check=True)
+        if dim == 3:
+            subprocess.run([sys.executable, os.path.join(ROOT, "bench/solver_gen_cube.py"), str(n), path,
+                            os.path.join(work, f"cube{n}_ccx.inp")], check=True)
+        else:
+            subprocess.run([sys.executable, os.path.join(ROOT, "bench/solver_gen_square.py"), str(n), path], check=True)
     return path
 
 
@@ -56,7 +60,8 @@ def one_run(inpact, path, solver, work, threads):
     with h5py.File(os.path.join(work, job + ".h5")) as f:
         r["newton"] = int(np.sum(f["status"]["total_iters"]))
         u = f["steps"]["Step-1" if "Step-1" in f["steps"] else list(f["steps"])[0]]["fieldOutputs"]["U"]["data"][-1]
-        r["tip_u3"] = float(u[np.argmax(np.abs(u[:, 2])), 2])
+        c = 2 if u.shape[1] > 2 else 1  # the load's direction: z in the cube, y in the square
+        r["tip_u3"] = float(u[np.argmax(np.abs(u[:, c])), c])
         fields = f["steps"][list(f["steps"])[-1]]["fieldOutputs"]
         if "CPRESS" in fields:  # contact decks (blocks_bench.py): the pressure's range
             p = fields["CPRESS"]["data"][-1]
@@ -74,6 +79,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--inpact", required=True)
     ap.add_argument("--sizes", type=int, nargs="+", default=[31, 45])
+    ap.add_argument("--dim", type=int, choices=[2, 3], default=3, help="2: the CPE4 square instead of the cube")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--direct-max-n", type=int, default=45, help="larger cubes: petsc only (CHOLMOD's memory)")
     ap.add_argument("--solvers", nargs="+", default=["direct", "petsc"])
@@ -84,8 +90,8 @@ def main():
     rows = ["| N | DOF | solver | runs | wall s | CPU s | analysis s | linear solve s | peak RSS GB | Newton | Krylov | tip U3 | load |",
             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for n in a.sizes:
-        path = deck(n, a.work)
-        dof = 3 * (n + 1) ** 3
+        path = deck(n, a.work, a.dim)
+        dof = a.dim * (n + 1) ** a.dim
         for solver in a.solvers:
             if solver == "direct" and n > a.direct_max_n:
                 continue
@@ -104,7 +110,7 @@ def main():
                         f"{median_spread([r['load'] for r in ok], '{:.1f}')} |")
             print(rows[-1], flush=True)
     text = "\n".join(rows) + "\n"
-    with open(os.path.join(a.work, "cube.md"), "w") as f:
+    with open(os.path.join(a.work, "cube.md" if a.dim == 3 else "square.md"), "w") as f:
         f.write(text)
     print(text)
 

@@ -55,23 +55,64 @@ std::string read_file(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// The 25,000-DOF rule of auto on a small deck (thick_cylinder: far below): direct; petsc only
-// when asked, or when the model is large and PETSc is built.
+// auto's size rule on a small deck (thick_cylinder, CPE8R: far below): direct; petsc only when
+// asked, or when the model reaches its dimension's crossover and PETSc is built. 2D models keep
+// the direct solver longer (the square ties from 200k DOF, the cube from 15k).
 TEST(SolverChoice, AutoTakesDirectBelowTheCrossoverAndPetscAbove) {
   const auto deck = parser::read_deck(kDeck);
   ASSERT_TRUE(deck.ok());
-  const auto small = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1);
-  EXPECT_LT(small.model_dofs, solver::kPetscFromDofs);
+  const double plenty = 1e12;  // bytes available: the size alone decides
+  const auto small = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, plenty);
+  EXPECT_EQ(small.dim, 2);
+  EXPECT_LT(small.model_dofs, solver::petsc_from_dofs(2));
   EXPECT_EQ(small.kind, solver::SolverKind::Direct);
+  EXPECT_EQ(solver::petsc_from_dofs(2), solver::kPetscFromDofs2d);
+  EXPECT_EQ(solver::petsc_from_dofs(3), solver::kPetscFromDofs);
   model::Model large = deck.model;
-  const std::size_t nodes = static_cast<std::size_t>(solver::kPetscFromDofs);  // × 2 DOF per node (CPE8R)
-  large.mesh.nodes.labels.resize(nodes);
-  const auto big = solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1);
-  EXPECT_GE(big.model_dofs, solver::kPetscFromDofs);
+  // A 2D model of the 3D crossover's size stays direct; of its own crossover's, petsc.
+  large.mesh.nodes.labels.resize(static_cast<std::size_t>(solver::kPetscFromDofs));  // × 2 DOF per node
+  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1, plenty).kind, solver::SolverKind::Direct);
+  large.mesh.nodes.labels.resize(static_cast<std::size_t>(solver::kPetscFromDofs2d / 2));
+  const auto big = solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1, plenty);
+  EXPECT_EQ(big.model_dofs, solver::kPetscFromDofs2d);
   EXPECT_EQ(big.kind, solver::petsc_built() ? solver::SolverKind::Petsc : solver::SolverKind::Direct);
+  if (solver::petsc_built()) {
+    EXPECT_NE(solver::describe(big).find("auto: 2D, 200000 DOF >= 200000"), std::string::npos) << solver::describe(big);
+  }
   EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Direct, large, 1).kind, solver::SolverKind::Direct);
   EXPECT_EQ(solver::parse_solver_request("auto"), solver::SolverRequest::Auto);
   EXPECT_FALSE(solver::parse_solver_request("cholmod"));
+}
+
+// auto's memory rule: below the crossover, petsc when the direct solver's estimated peak would
+// take more than half the memory available; never when that memory is unknown (0).
+TEST(SolverChoice, AutoTakesPetscWhereTheDirectFactorWouldNotFit) {
+  // The estimate passes through the measured peaks (bench/petsc_solver/README.md).
+  constexpr double GiB = 1024.0 * 1024.0 * 1024.0;
+  EXPECT_NEAR(solver::direct_memory_estimate(98'304, 3), 1.07 * GiB, 1e-6 * GiB);
+  EXPECT_NEAR(solver::direct_memory_estimate(292'008, 3), 4.57 * GiB, 0.1 * GiB);  // (the fit's other end)
+  EXPECT_NEAR(solver::direct_memory_estimate(500'000, 2), 0.90 * GiB, 1e-6 * GiB);
+  EXPECT_NEAR(solver::direct_memory_estimate(999'698, 2), 1.86 * GiB, 0.1 * GiB);
+  EXPECT_GT(solver::available_memory(), 0.0);  // /proc/meminfo is there on Linux
+  const auto deck = parser::read_deck(kDeck);
+  ASSERT_TRUE(deck.ok());
+  const auto dofs = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 0.0).model_dofs;
+  const double need = solver::direct_memory_estimate(dofs, 2);
+  const auto tight = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 1.9 * need);
+  const auto roomy = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 2.1 * need);
+  const auto unknown = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 0.0);
+  EXPECT_EQ(roomy.kind, solver::SolverKind::Direct);
+  EXPECT_EQ(unknown.kind, solver::SolverKind::Direct);
+  EXPECT_EQ(solver::describe(roomy), solver::describe(unknown));  // no memory figures where they did not decide
+  if (!solver::petsc_built()) {
+    EXPECT_EQ(tight.kind, solver::SolverKind::Direct);
+    return;
+  }
+  EXPECT_EQ(tight.kind, solver::SolverKind::Petsc);
+  EXPECT_NE(solver::describe(tight).find("but direct would take about"), std::string::npos) << solver::describe(tight);
+  // Asked for, each solver is used whatever the memory.
+  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Direct, deck.model, 1, 1.0).kind,
+            solver::SolverKind::Direct);
 }
 
 // Under mpirun (its environment says how many ranks) the run is PETSc's: without --solver, and
