@@ -9,8 +9,13 @@
 //    down by 1e-3 slips beyond 0.0025 of x motion from where it first touched).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,7 +32,9 @@ namespace {
 /// A contact deck's step (its index), with slave nodes placed by their displacement.
 struct Patch {
   Patch(const std::string& deck_name, std::size_t step)
-      : deck(parser::read_deck(std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + deck_name)),
+      : Patch(parser::read_deck(std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + deck_name), step) {}
+  Patch(parser::ReadResult read, std::size_t step)
+      : deck(std::move(read)),
         am(solver::build_analysis_model(deck.model)),
         conditions(am, deck.model.steps[step], solver::initial_history(am), 0.0),
         dofs(solver::DofMap::build(am, conditions.prescribed())),
@@ -103,6 +110,44 @@ TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
   const solver::SlippingTrials barely = patch.contact.slipping_trials(patch.state);
   patch.place({{101, -1.0}, {102, 0.0}, {103, 0.0}}, pressed);
   EXPECT_EQ(patch.contact.slip_reversal_fraction(barely, patch.state), 1.0);
+}
+
+/// friction_slide_2d_penalty.inp with a frictionless pair listed before its frictional one: the
+/// block's top against the base, open by the block's height throughout.
+parser::ReadResult slide_after_a_frictionless_pair() {
+  std::ifstream in(std::string(INPACT_SOURCE_DIR) + "/decks/contact/friction_slide_2d_penalty.inp");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  const std::string pair = "*CONTACT PAIR, INTERACTION=ROUGHISH";
+  const auto at = deck.find(pair);
+  EXPECT_NE(at, std::string::npos);
+  deck.insert(at, "*SURFACE INTERACTION, NAME=SMOOTH\n*SURFACE BEHAVIOR, PENALTY\n"
+                  "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=NODE TO SURFACE\nTOP_S, MASTER_S\n");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("inpact_slide_after_frictionless_" + std::to_string(::getpid()) + ".inp");
+  std::ofstream(path) << deck;
+  parser::ReadResult read = parser::read_deck(path.string());
+  std::filesystem::remove(path);
+  return read;
+}
+
+// The fraction reads each frictional pair's trials, whatever pairs come before it: the same
+// figures as above with a frictionless pair listed first.
+TEST(SlipReversalFraction, AFrictionlessPairBeforeTheFrictionalOneChangesNothing) {
+  Patch patch(slide_after_a_frictionless_pair(), 0);
+  ASSERT_TRUE(patch.deck.ok());
+  ASSERT_TRUE(patch.contact.has_friction());
+  ASSERT_EQ(patch.contact.describe().size(), 2u);  // both pairs in force
+  const std::map<int, double> pressed{{101, -1e-3}, {102, -1e-3}, {103, -1e-3}};
+  patch.place({}, pressed);
+  patch.place({{101, 0.01}, {102, 0.01}, {103, 0.001}}, pressed);
+  const solver::SlippingTrials before = patch.contact.slipping_trials(patch.state);
+  ASSERT_EQ(before.size(), 1u);  // the frictional pair's trials only
+  patch.place({{101, -0.03}, {102, 0.02}, {103, -0.05}}, pressed);
+  EXPECT_NEAR(patch.contact.slip_reversal_fraction(before, patch.state), 0.25, 1e-12);
+  patch.place({{101, -0.001}, {102, 0.02}, {103, -0.05}}, pressed);
+  EXPECT_EQ(patch.contact.slip_reversal_fraction(before, patch.state), 1.0);
 }
 
 }  // namespace
