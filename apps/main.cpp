@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print nothing but errors");
   run_cmd->add_flag("-v,--verbose", run.verbose, "Print every Newton iteration");
   run_cmd->add_option("--solver", run.solver,
-                      "Linear solver: direct (CHOLMOD/UMFPACK), petsc (CG/GMRES + GAMG, MUMPS), auto (by size)")
+                      "Linear solver: direct (CHOLMOD/UMFPACK), petsc (CG/GMRES + GAMG, MUMPS), auto (by size and dimension)")
       ->check(CLI::IsMember({"direct", "petsc", "auto"}));
   run_cmd->add_option("--timings", run.timings,
                       "Write the wall time of each phase (read, create, solve, output, finish) and of the Newton "

@@ -36,10 +36,13 @@ Vec3 rotated_change(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& 
   return out;
 }
 
-/// The facet's own point and normal with their node derivatives (no correction: x̃ = x_f, ñ = n).
-void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, CorrectionDerivatives& d) {
-  std::array<Vec3, 3> q{};
-  const bool framed = facet_frame(g, q);
+/// The facet's own point and normal with their node derivatives (no correction: x̃ = x_f, ñ = n),
+/// with the facet's frame q at g (`framed`: not degenerate); then, when `rotate` is given, the
+/// change of each through the frame: rotate(a, j, dq) for node a, component j and the frame's
+/// change dq.
+template <class Rotate>
+void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, bool framed,
+                            const std::array<Vec3, 3>& q, CorrectionDerivatives& d, Rotate&& rotate) {
   for (int a = 0; a < sh.n; ++a)
     for (int j = 0; j < 3; ++j) {
       d.x_node[a][j] = {0, 0, 0};
@@ -49,8 +52,16 @@ void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd,
       std::array<Vec3, 2> da{};
       da[0][j] = sh.dN[a][0];
       da[1][j] = sh.dN[a][1];
-      d.n_node[a][j] = frame_change(g, q, pd, da)[2];
+      const std::array<Vec3, 3> dq = frame_change(g, q, pd, da);
+      d.n_node[a][j] = dq[2];
+      rotate(a, j, dq);
     }
+}
+
+void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, CorrectionDerivatives& d) {
+  std::array<Vec3, 3> q{};
+  const bool framed = facet_frame(g, q);
+  facet_node_derivatives(g, sh, pd, framed, q, d, [](int, int, const std::array<Vec3, 3>&) {});
 }
 
 }  // namespace
@@ -65,22 +76,12 @@ CorrectedPoint SurfaceCorrection::node_derivatives(std::size_t i, std::array<dou
   Parts c;
   const CorrectedPoint p = correct_at(i, sh, x, c);
   // x̃ = x_f + Q d, ñ = unit(Q ñ_ref): Q moves with the current frame (uncorrected: x_f and n).
-  for (int a = 0; a < sh.n; ++a)
-    for (int j = 0; j < 3; ++j) {
-      d.x_node[a][j] = {0, 0, 0};
-      d.x_node[a][j][j] = sh.N[a];
-      d.n_node[a][j] = {0, 0, 0};
-      if (!c.framed) continue;
-      std::array<Vec3, 2> da{};
-      da[0][j] = sh.dN[a][0];
-      da[1][j] = sh.dN[a][1];
-      const std::array<Vec3, 3> dq = frame_change(c.gx, c.qx, pd, da);
-      d.n_node[a][j] = dq[2];
-      if (!c.rotated) continue;
-      d.x_node[a][j] = add(d.x_node[a][j], rotated_change(c.qX, dq, c.offset));
-      const Vec3 dn = rotated_change(c.qX, dq, c.normal);
-      d.n_node[a][j] = axpy(-dot(p.normal, dn), p.normal, dn);
-    }
+  facet_node_derivatives(c.gx, sh, pd, c.framed, c.qx, d, [&](int a, int j, const std::array<Vec3, 3>& dq) {
+    if (!c.rotated) return;
+    d.x_node[a][j] = add(d.x_node[a][j], rotated_change(c.qX, dq, c.offset));
+    const Vec3 dn = rotated_change(c.qX, dq, c.normal);
+    d.n_node[a][j] = axpy(-dot(p.normal, dn), p.normal, dn);
+  });
   return p;
 }
 

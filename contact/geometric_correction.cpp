@@ -358,6 +358,7 @@ CorrectedPoint SurfaceCorrection::correct_at(std::size_t i, const ShapeEval& sh,
                                              Parts& parts) const {
   parts.gx = facet_geometry(facets_[i], x, sh);
   parts.framed = facet_frame(parts.gx, parts.qx);
+  parts.rotated = false;
   CorrectedPoint out{parts.gx.x, parts.gx.n, false};
   if (!reference_ideal(i, sh, parts.offset, parts.normal, parts.gX)) return out;
   if (mode_ == Mode::Identity) {

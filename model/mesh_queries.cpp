@@ -14,6 +14,19 @@ int spatial_dimension(const Elements& elements) {
   return 2;
 }
 
+std::size_t kind_element(const Elements& elements) {
+  const auto takes_the_models = [](const ElementTypeInfo& t) { return t.family == ElementFamily::Spring || is_rigid(t); };
+  std::size_t first = 0;
+  while (first + 1 < elements.size() && takes_the_models(element_type(elements.type[first]))) ++first;
+  return first;
+}
+
+int model_dimension(const Elements& elements) {
+  if (elements.size() == 0) return 3;
+  const int dim = element_type(elements.type[kind_element(elements)]).dim;
+  return dim ? dim : 3;
+}
+
 std::vector<std::int32_t> face_nodes(const Elements& elements, Face face) {
   const ElementTypeInfo& info = element_type(elements.type[face.element]);
   const FaceDef& def = info.faces[face.face];

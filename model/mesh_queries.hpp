@@ -11,6 +11,14 @@ namespace inpact::model {
 /// 3 when any element is a 3D one, else 2 (plane and axisymmetric models).
 int spatial_dimension(const Elements& elements);
 
+/// The element that sets a model's kind (its dimension, and whether it is axisymmetric): the first
+/// one that is neither a spring nor a rigid element, which take the model's kind; the last one
+/// when all are. (elements must not be empty)
+std::size_t kind_element(const Elements& elements);
+
+/// The dimension of the model's displacements: kind_element's, 3 in a model of springs.
+int model_dimension(const Elements& elements);
+
 /// Node rows of one face (corners first, then midside nodes).
 std::vector<std::int32_t> face_nodes(const Elements& elements, Face face);
 

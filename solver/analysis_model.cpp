@@ -25,6 +25,7 @@
 #include "line_element_setup.hpp"
 #include "plastic_law.hpp"
 #include "shell_element_setup.hpp"
+#include "model/mesh_queries.hpp"
 #include "model/reference_nodes.hpp"
 
 namespace inpact::solver {
@@ -251,13 +252,8 @@ AnalysisModel build_analysis_model(const model::Model& m) {
   // One kind of model at a time: the DOFs per node and the axisymmetric ring integration
   // apply to the whole model. Springs take the dimension of the rest (3 in a model of springs).
   // Rigid elements take the model's kind too, as long as their dimension is its.
-  std::size_t first_row = 0;
-  auto takes_the_models = [](const model::ElementTypeInfo& t) {
-    return t.family == model::ElementFamily::Spring || model::is_rigid(t);
-  };
-  while (first_row + 1 < el.size() && takes_the_models(model::element_type(el.type[first_row]))) ++first_row;
-  const auto& first = model::element_type(el.type[first_row]);
-  am.dim = first.dim ? first.dim : 3;
+  const auto& first = model::element_type(el.type[model::kind_element(el)]);
+  am.dim = model::model_dimension(el);
   am.axisymmetric = model::is_axisymmetric(first);
   for (std::size_t e = 0; e < el.size(); ++e) {
     const auto& t = model::element_type(el.type[e]);

@@ -5,9 +5,9 @@
 ///  - direct: CHOLMOD (symmetric positive definite), UMFPACK (multipliers, friction);
 ///  - petsc:  CG / GMRES with algebraic multigrid (GAMG), MUMPS for multipliers (linear/petsc_solver.cpp);
 ///  - auto:   petsc from the model's crossover size (petsc_from_dofs: by dimension, measured on
-///            the C3D8 cube and the CPE4 square, bench/petsc_solver), or below it when the direct
-///            solver's estimated memory (direct_memory_estimate) would not fit in half the memory
-///            available; direct otherwise, and always when built without PETSc;
+///            the C3D8 cube and the CPE4 square, bench/petsc_solver), direct below it and always
+///            when built without PETSc. No memory rule: below the crossovers the direct run's
+///            peak is no larger than petsc's (the same runs), above them petsc is taken anyway;
 ///  - none given: direct on one process, petsc on several MPI ranks (`mpirun -np N`), where the
 ///    direct solvers cannot go (they are one process's).
 #include <cstdint>
@@ -30,21 +30,14 @@ inline constexpr std::int64_t kPetscFromDofs2d = 200'000;
 
 /// The crossover of `auto` for a model of `dim` (2 or 3) dimensions.
 std::int64_t petsc_from_dofs(int dim);
-/// The direct solver's peak memory (bytes) estimated for `dofs` DOFs in `dim` dimensions: the
-/// power laws through the measured peaks of the whole run (bench/petsc_solver: the cube 1.07 GB
-/// at 98k DOF growing like DOF^1.33, the square 0.90 GB at 500k like DOF^1.0).
-double direct_memory_estimate(std::int64_t dofs, int dim);
-/// The memory this process may still take (bytes): MemAvailable, within the cgroup's limit when
-/// there is one; 0 when neither can be read (auto then decides by size alone).
-double available_memory();
 
 struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
   SolverKind kind = SolverKind::Direct;
+  /// The model's translational DOFs (nodes × dimension; a shell's or beam's rotations are not
+  /// counted, and its crossover is the solids')
   std::int64_t model_dofs = 0;
-  int dim = 3;                    ///< the model's dimension (its first element's)
-  double direct_memory = 0.0;     ///< auto: direct_memory_estimate (bytes)
-  double available_memory = 0.0;  ///< auto: available_memory() when it decided (bytes; 0 unknown)
+  int dim = 3;  ///< model::model_dimension, as the analysis takes it
   int ranks = 1;  ///< MPI ranks of the run (mpi_launch.hpp); petsc whenever more than one
 };
 
@@ -56,9 +49,6 @@ const char* request_name(SolverRequest request);
 /// when petsc is requested from a build without PETSc (auto then takes direct on one rank), and
 /// when direct is requested on several ranks.
 SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks);
-/// The same with the memory available given (bytes; 0: unknown).
-SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks,
-                                   double available_bytes);
 /// The same for the text of `--solver` on the ranks this process was launched among; throws
 /// std::invalid_argument for an unknown request too.
 SolverChoice resolve_linear_solver(std::string_view request, const model::Model& model);

@@ -61,8 +61,7 @@ std::string read_file(const fs::path& p) {
 TEST(SolverChoice, AutoTakesDirectBelowTheCrossoverAndPetscAbove) {
   const auto deck = parser::read_deck(kDeck);
   ASSERT_TRUE(deck.ok());
-  const double plenty = 1e12;  // bytes available: the size alone decides
-  const auto small = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, plenty);
+  const auto small = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1);
   EXPECT_EQ(small.dim, 2);
   EXPECT_LT(small.model_dofs, solver::petsc_from_dofs(2));
   EXPECT_EQ(small.kind, solver::SolverKind::Direct);
@@ -71,9 +70,9 @@ TEST(SolverChoice, AutoTakesDirectBelowTheCrossoverAndPetscAbove) {
   model::Model large = deck.model;
   // A 2D model of the 3D crossover's size stays direct; of its own crossover's, petsc.
   large.mesh.nodes.labels.resize(static_cast<std::size_t>(solver::kPetscFromDofs));  // × 2 DOF per node
-  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1, plenty).kind, solver::SolverKind::Direct);
+  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1).kind, solver::SolverKind::Direct);
   large.mesh.nodes.labels.resize(static_cast<std::size_t>(solver::kPetscFromDofs2d / 2));
-  const auto big = solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1, plenty);
+  const auto big = solver::resolve_linear_solver(solver::SolverRequest::Auto, large, 1);
   EXPECT_EQ(big.model_dofs, solver::kPetscFromDofs2d);
   EXPECT_EQ(big.kind, solver::petsc_built() ? solver::SolverKind::Petsc : solver::SolverKind::Direct);
   if (solver::petsc_built()) {
@@ -84,35 +83,14 @@ TEST(SolverChoice, AutoTakesDirectBelowTheCrossoverAndPetscAbove) {
   EXPECT_FALSE(solver::parse_solver_request("cholmod"));
 }
 
-// auto's memory rule: below the crossover, petsc when the direct solver's estimated peak would
-// take more than half the memory available; never when that memory is unknown (0).
-TEST(SolverChoice, AutoTakesPetscWhereTheDirectFactorWouldNotFit) {
-  // The estimate passes through the measured peaks (bench/petsc_solver/README.md).
-  constexpr double GiB = 1024.0 * 1024.0 * 1024.0;
-  EXPECT_NEAR(solver::direct_memory_estimate(98'304, 3), 1.07 * GiB, 1e-6 * GiB);
-  EXPECT_NEAR(solver::direct_memory_estimate(292'008, 3), 4.57 * GiB, 0.1 * GiB);  // (the fit's other end)
-  EXPECT_NEAR(solver::direct_memory_estimate(500'000, 2), 0.90 * GiB, 1e-6 * GiB);
-  EXPECT_NEAR(solver::direct_memory_estimate(999'698, 2), 1.86 * GiB, 0.1 * GiB);
-  EXPECT_GT(solver::available_memory(), 0.0);  // /proc/meminfo is there on Linux
-  const auto deck = parser::read_deck(kDeck);
+// The dimension is the analysis's (model::model_dimension): a model of springs is a 3D one, as
+// build_analysis_model takes it, not a 0D one of no DOFs.
+TEST(SolverChoice, AModelOfSpringsCountsThreeDofsPerNode) {
+  const auto deck = parser::read_deck(std::string(INPACT_SOURCE_DIR) + "/decks/verification/spring_chain.inp");
   ASSERT_TRUE(deck.ok());
-  const auto dofs = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 0.0).model_dofs;
-  const double need = solver::direct_memory_estimate(dofs, 2);
-  const auto tight = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 1.9 * need);
-  const auto roomy = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 2.1 * need);
-  const auto unknown = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1, 0.0);
-  EXPECT_EQ(roomy.kind, solver::SolverKind::Direct);
-  EXPECT_EQ(unknown.kind, solver::SolverKind::Direct);
-  EXPECT_EQ(solver::describe(roomy), solver::describe(unknown));  // no memory figures where they did not decide
-  if (!solver::petsc_built()) {
-    EXPECT_EQ(tight.kind, solver::SolverKind::Direct);
-    return;
-  }
-  EXPECT_EQ(tight.kind, solver::SolverKind::Petsc);
-  EXPECT_NE(solver::describe(tight).find("but direct would take about"), std::string::npos) << solver::describe(tight);
-  // Asked for, each solver is used whatever the memory.
-  EXPECT_EQ(solver::resolve_linear_solver(solver::SolverRequest::Direct, deck.model, 1, 1.0).kind,
-            solver::SolverKind::Direct);
+  const auto choice = solver::resolve_linear_solver(solver::SolverRequest::Auto, deck.model, 1);
+  EXPECT_EQ(choice.dim, 3);
+  EXPECT_EQ(choice.model_dofs, static_cast<std::int64_t>(deck.model.mesh.nodes.size()) * 3);
 }
 
 // Under mpirun (its environment says how many ranks) the run is PETSc's: without --solver, and
