@@ -37,9 +37,9 @@ Vec3 rotated_change(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& 
 }
 
 /// The facet's own point and normal with their node derivatives (no correction: x̃ = x_f, ñ = n),
-/// with the facet's frame q at g (`framed`: not degenerate); then, when `rotate` is given, the
-/// change of each through the frame: rotate(a, j, dq) for node a, component j and the frame's
-/// change dq.
+/// with the facet's frame q at g (`framed`: not degenerate); then rotate(a, j, dq) for node a,
+/// component j and the frame's change dq, which adds what the frame carries (a correction's
+/// offset and normal; nothing for the plain facet).
 template <class Rotate>
 void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, bool framed,
                             const std::array<Vec3, 3>& q, CorrectionDerivatives& d, Rotate&& rotate) {

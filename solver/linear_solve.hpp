@@ -39,8 +39,8 @@ EquationPoints equation_points(const AnalysisModel& am, const DofMap& dofs);
 /// R_n: 5e-3 unless *CONTROLS says otherwise). The correction then leaves a linear residual of
 /// about rtol·ρ·q̃; the rule holds that at kKrylovTarget·R_n·q̃ (1e-8 q̃ at the default R_n) —
 /// far under Newton's criterion, so that the converged state is the direct solver's to about
-/// 1e-7 (at 2e-5 the rubber O-rings' stresses differed by 1.2e-6 of their largest; at 2e-6 by
-/// 1.4e-7, for 6-18 % more Krylov iterations on the contact decks and none on the cube:
+/// 1e-7 (at 2e-5 the smoothed rubber O-ring's stresses differed by 1.2e-6 of their largest; at
+/// 2e-6 by 1.5e-7, for 10 % more Krylov iterations over the contact decks and none on the cube:
 /// bench/petsc_solver/README.md), and Newton keeps its rate down to a deck's own strict R_n —
 /// within [1e-10, 1e-2]:
 ///   rtol = clamp(kKrylovTarget·R_n / ρ, 1e-10, 1e-2).

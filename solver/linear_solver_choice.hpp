@@ -7,7 +7,8 @@
 ///  - auto:   petsc from the model's crossover size (petsc_from_dofs: by dimension, measured on
 ///            the C3D8 cube and the CPE4 square, bench/petsc_solver), direct below it and always
 ///            when built without PETSc. No memory rule: below the crossovers the direct run's
-///            peak is no larger than petsc's (the same runs), above them petsc is taken anyway;
+///            peak is below petsc's or at most 10 % above it (the same runs), and from them on
+///            petsc is taken anyway;
 ///  - none given: direct on one process, petsc on several MPI ranks (`mpirun -np N`), where the
 ///    direct solvers cannot go (they are one process's).
 #include <cstdint>

@@ -9,16 +9,14 @@
 //    down by 1e-3 slips beyond 0.0025 of x motion from where it first touched).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "fixtures/deck_fixture.hpp"
 #include "parser/read_deck.hpp"
 #include "solver/analysis_model.hpp"
 #include "solver/assembler.hpp"
@@ -113,30 +111,28 @@ TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
 }
 
 /// friction_slide_2d_penalty.inp with a frictionless pair listed before its frictional one: the
-/// block's top against the base, open by the block's height throughout.
-parser::ReadResult slide_after_a_frictionless_pair() {
+/// block's top against the base, open by the block's height throughout. (Empty when the deck
+/// has no such pair to insert before.)
+std::string slide_after_a_frictionless_pair() {
   std::ifstream in(std::string(INPACT_SOURCE_DIR) + "/decks/contact/friction_slide_2d_penalty.inp");
   std::stringstream text;
   text << in.rdbuf();
   std::string deck = text.str();
-  const std::string pair = "*CONTACT PAIR, INTERACTION=ROUGHISH";
-  const auto at = deck.find(pair);
-  EXPECT_NE(at, std::string::npos);
+  const auto at = deck.find("*CONTACT PAIR, INTERACTION=ROUGHISH");
+  if (at == std::string::npos) return {};
   deck.insert(at, "*SURFACE INTERACTION, NAME=SMOOTH\n*SURFACE BEHAVIOR, PENALTY\n"
                   "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=NODE TO SURFACE\nTOP_S, MASTER_S\n");
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("inpact_slide_after_frictionless_" + std::to_string(::getpid()) + ".inp");
-  std::ofstream(path) << deck;
-  parser::ReadResult read = parser::read_deck(path.string());
-  std::filesystem::remove(path);
-  return read;
+  return deck;
 }
 
 // The fraction reads each frictional pair's trials, whatever pairs come before it: the same
 // figures as above with a frictionless pair listed first.
 TEST(SlipReversalFraction, AFrictionlessPairBeforeTheFrictionalOneChangesNothing) {
-  Patch patch(slide_after_a_frictionless_pair(), 0);
-  ASSERT_TRUE(patch.deck.ok());
+  const std::string deck = slide_after_a_frictionless_pair();
+  ASSERT_FALSE(deck.empty());
+  parser::ReadResult read = DeckDir().read(deck);
+  ASSERT_TRUE(read.ok());
+  Patch patch(std::move(read), 0);
   ASSERT_TRUE(patch.contact.has_friction());
   ASSERT_EQ(patch.contact.describe().size(), 2u);  // both pairs in force
   const std::map<int, double> pressed{{101, -1e-3}, {102, -1e-3}, {103, -1e-3}};
