@@ -35,8 +35,9 @@ std::int64_t petsc_from_dofs(int dim);
 struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
   SolverKind kind = SolverKind::Direct;
-  /// The model's translational DOFs (nodes × dimension; a shell's or beam's rotations are not
-  /// counted, and its crossover is the solids')
+  /// The model's DOFs, nodes × dimension: the rotations of beam, shell and reference nodes are
+  /// the translations of their rotation nodes (model/reference_nodes.hpp), counted with them.
+  /// (A shell or beam model takes the solids' crossover of its dimension: not measured apart.)
   std::int64_t model_dofs = 0;
   int dim = 3;  ///< model::model_dimension, as the analysis takes it
   int ranks = 1;  ///< MPI ranks of the run (mpi_launch.hpp); petsc whenever more than one
