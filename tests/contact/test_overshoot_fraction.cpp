@@ -62,6 +62,21 @@ struct Patch {
   solver::ContactState state;
 };
 
+/// A deck of decks/contact with `pair` inserted before its line `anchor` (a pair listed before
+/// the deck's own); empty when the deck has no such line.
+std::string with_a_pair_before(const std::string& deck_name, const std::string& anchor, const std::string& pair) {
+  std::ifstream in(std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + deck_name);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  const auto at = deck.find(anchor);
+  if (at == std::string::npos) return {};
+  return deck.insert(at, pair);
+}
+
+/// The block's top against the base, listed first: open by the block's height throughout.
+const std::string kTopAgainstBase = "*CONTACT PAIR, INTERACTION=OTHER, TYPE=NODE TO SURFACE\nTOP_S, MASTER_S\n";
+
 TEST(OvershootFraction, AnOpenNodeStopsAtTheDeepestClosedOne) {
   Patch patch("change_surface_behavior_2d.inp", 3);  // its augmented-Lagrange step
   ASSERT_TRUE(patch.contact.has_augmented_lagrange());
@@ -78,6 +93,26 @@ TEST(OvershootFraction, AnOpenNodeStopsAtTheDeepestClosedOne) {
   // Far beyond: at least 1 % of the correction, so that Newton still moves.
   patch.place({{101, 0.001}, {102, -0.4}, {103, -0.01}, {104, 0.001}, {105, 0.001}});
   EXPECT_EQ(patch.contact.overshoot_fraction(before), 1e-2);
+}
+
+// The fraction reads each augmented pair's penetrations, whatever pairs come before it: the
+// same figures with a penalty pair listed first.
+TEST(OvershootFraction, APenaltyPairBeforeTheAugmentedOneChangesNothing) {
+  const std::string deck =
+      with_a_pair_before("change_surface_behavior_2d.inp", "*CONTACT PAIR, INTERACTION=SMOOTH",
+                         "*SURFACE INTERACTION, NAME=OTHER\n*SURFACE BEHAVIOR, PENALTY\n" + kTopAgainstBase);
+  ASSERT_FALSE(deck.empty());
+  parser::ReadResult read = DeckDir().read(deck);
+  ASSERT_TRUE(read.ok());
+  Patch patch(std::move(read), 3);  // its augmented-Lagrange step
+  ASSERT_EQ(patch.contact.describe().size(), 2u);  // both pairs in force
+  patch.place({{101, 0.001}, {102, 0.001}, {103, -0.002}, {104, 0.001}, {105, 0.001}});
+  const solver::AugmentedPenetrations before = patch.contact.augmented_penetrations();
+  ASSERT_EQ(before.pairs.size(), 1u);  // the augmented pair's penetrations only
+  patch.place({{101, 0.001}, {102, -0.005}, {103, -0.01}, {104, -0.001}, {105, 0.001}});
+  EXPECT_NEAR(patch.contact.overshoot_fraction(before), 0.5, 1e-12);
+  patch.place({{101, 0.001}, {102, -0.0015}, {103, -0.01}, {104, -0.001}, {105, 0.001}});
+  EXPECT_EQ(patch.contact.overshoot_fraction(before), 1.0);
 }
 
 TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
@@ -110,25 +145,12 @@ TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
   EXPECT_EQ(patch.contact.slip_reversal_fraction(barely, patch.state), 1.0);
 }
 
-/// friction_slide_2d_penalty.inp with a frictionless pair listed before its frictional one: the
-/// block's top against the base, open by the block's height throughout. (Empty when the deck
-/// has no such pair to insert before.)
-std::string slide_after_a_frictionless_pair() {
-  std::ifstream in(std::string(INPACT_SOURCE_DIR) + "/decks/contact/friction_slide_2d_penalty.inp");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string deck = text.str();
-  const auto at = deck.find("*CONTACT PAIR, INTERACTION=ROUGHISH");
-  if (at == std::string::npos) return {};
-  deck.insert(at, "*SURFACE INTERACTION, NAME=SMOOTH\n*SURFACE BEHAVIOR, PENALTY\n"
-                  "*CONTACT PAIR, INTERACTION=SMOOTH, TYPE=NODE TO SURFACE\nTOP_S, MASTER_S\n");
-  return deck;
-}
-
 // The fraction reads each frictional pair's trials, whatever pairs come before it: the same
 // figures as above with a frictionless pair listed first.
 TEST(SlipReversalFraction, AFrictionlessPairBeforeTheFrictionalOneChangesNothing) {
-  const std::string deck = slide_after_a_frictionless_pair();
+  const std::string deck =
+      with_a_pair_before("friction_slide_2d_penalty.inp", "*CONTACT PAIR, INTERACTION=ROUGHISH",
+                         "*SURFACE INTERACTION, NAME=OTHER\n*SURFACE BEHAVIOR, PENALTY\n" + kTopAgainstBase);
   ASSERT_FALSE(deck.empty());
   parser::ReadResult read = DeckDir().read(deck);
   ASSERT_TRUE(read.ok());
