@@ -62,20 +62,22 @@ struct Patch {
   solver::ContactState state;
 };
 
-/// A deck of decks/contact with `pair` inserted before its line `anchor` (a pair listed before
-/// the deck's own); empty when the deck has no such line.
-std::string with_a_pair_before(const std::string& deck_name, const std::string& anchor, const std::string& pair) {
+/// A penalty pair of the block's top against the base, open by the block's height throughout.
+const std::string kOpenPenaltyPair =
+    "*SURFACE INTERACTION, NAME=OTHER\n*SURFACE BEHAVIOR, PENALTY\n"
+    "*CONTACT PAIR, INTERACTION=OTHER, TYPE=NODE TO SURFACE\nTOP_S, MASTER_S\n";
+
+/// A deck of decks/contact with kOpenPenaltyPair inserted before its line `anchor` (listed before
+/// the deck's own pair); empty when the deck has no such line.
+std::string with_an_open_pair_before(const std::string& deck_name, const std::string& anchor) {
   std::ifstream in(std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + deck_name);
   std::stringstream text;
   text << in.rdbuf();
   std::string deck = text.str();
   const auto at = deck.find(anchor);
   if (at == std::string::npos) return {};
-  return deck.insert(at, pair);
+  return deck.insert(at, kOpenPenaltyPair);
 }
-
-/// The block's top against the base, listed first: open by the block's height throughout.
-const std::string kTopAgainstBase = "*CONTACT PAIR, INTERACTION=OTHER, TYPE=NODE TO SURFACE\nTOP_S, MASTER_S\n";
 
 TEST(OvershootFraction, AnOpenNodeStopsAtTheDeepestClosedOne) {
   Patch patch("change_surface_behavior_2d.inp", 3);  // its augmented-Lagrange step
@@ -98,9 +100,7 @@ TEST(OvershootFraction, AnOpenNodeStopsAtTheDeepestClosedOne) {
 // The fraction reads each augmented pair's penetrations, whatever pairs come before it: the
 // same figures with a penalty pair listed first.
 TEST(OvershootFraction, APenaltyPairBeforeTheAugmentedOneChangesNothing) {
-  const std::string deck =
-      with_a_pair_before("change_surface_behavior_2d.inp", "*CONTACT PAIR, INTERACTION=SMOOTH",
-                         "*SURFACE INTERACTION, NAME=OTHER\n*SURFACE BEHAVIOR, PENALTY\n" + kTopAgainstBase);
+  const std::string deck = with_an_open_pair_before("change_surface_behavior_2d.inp", "*CONTACT PAIR, INTERACTION=SMOOTH");
   ASSERT_FALSE(deck.empty());
   parser::ReadResult read = DeckDir().read(deck);
   ASSERT_TRUE(read.ok());
@@ -148,9 +148,7 @@ TEST(SlipReversalFraction, ASlippingNodeStopsWhereItsSlipTurns) {
 // The fraction reads each frictional pair's trials, whatever pairs come before it: the same
 // figures as above with a frictionless pair listed first.
 TEST(SlipReversalFraction, AFrictionlessPairBeforeTheFrictionalOneChangesNothing) {
-  const std::string deck =
-      with_a_pair_before("friction_slide_2d_penalty.inp", "*CONTACT PAIR, INTERACTION=ROUGHISH",
-                         "*SURFACE INTERACTION, NAME=OTHER\n*SURFACE BEHAVIOR, PENALTY\n" + kTopAgainstBase);
+  const std::string deck = with_an_open_pair_before("friction_slide_2d_penalty.inp", "*CONTACT PAIR, INTERACTION=ROUGHISH");
   ASSERT_FALSE(deck.empty());
   parser::ReadResult read = DeckDir().read(deck);
   ASSERT_TRUE(read.ok());
