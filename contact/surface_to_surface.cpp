@@ -66,6 +66,8 @@ void add_point_hessian(const ExpandedTerms& terms, double c, const GapLinearizat
 
 }  // namespace
 
+int plain_rule_points(FacetShape shape) { return facet_param_dim(shape) == 1 ? 6 : 4; }
+
 std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N) {
   if (shape != FacetShape::Tri6 && shape != FacetShape::Quad8) return N;
   const int nc = facet_n_corners(shape);
@@ -140,8 +142,9 @@ std::span<const QuadPoint> SurfaceToSurfacePair::facet_points(std::span<const Ve
   near.clear();
   search_.query_box(box.lo, box.hi, near);
   if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), near);
-  if (mortar_rule(f, master_.facets(), near, x, kRulePoints, layout, master_normals_)) return layout;
-  return facet_rule(f.shape, kRulePoints);
+  const int plain = plain_rule_points(f.shape);
+  if (mortar_rule(f, master_.facets(), near, x, plain, layout, master_normals_)) return layout;
+  return facet_rule(f.shape, plain);
 }
 
 void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi) {
