@@ -133,7 +133,16 @@ class CandidateSet {
     slack_ = tol_ + 1e-12 * magnitude;
   }
   double tol() const { return tol_; }
+  double slack() const { return slack_; }
   std::size_t size() const { return all_.size(); }
+  /// No candidate but `chosen` is closer to the point than this: the distances of the projected
+  /// ones, the bounds of the rest (+∞ when there is no other).
+  double others_bound(std::int32_t chosen) const {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const Candidate& c : all_)
+      if (c.index != chosen) lowest = std::min(lowest, c.projected ? c.p.distance : c.bound);
+    return lowest;
+  }
 
   const Projection& projected(std::size_t i) {
     Candidate& c = all_[i];
@@ -227,17 +236,13 @@ Vec3 CandidateSet::shared_normal(const Projection& best) {
 
 }  // namespace
 
-Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint,
-                              std::span<const FacetBox> boxes) {
-  if (candidates.empty()) return {};
-  thread_local std::vector<Candidate> storage;  // (no allocation per point)
-  CandidateSet set(facets, candidates, x, xs, hint, boxes, storage);
-  Projection best = set.projected(set.select());
-  const double tol = set.tol();
-  const Vec3 nbar = set.shared_normal(best);
+namespace {
+
+/// The chosen projection `best` finished: its shared normal from n̄ (the facet normals of the
+/// candidates sharing its point), and on an edge or vertex the normal and gap of the distance.
+Projection finish(Projection best, const Vec3& nbar, double tol, const Vec3& xs, const Facet& f) {
   const double len = norm(nbar);
-  const int dim = facet_param_dim(facets[static_cast<std::size_t>(best.facet)].shape) == 1 ? 2 : 3;
+  const int dim = facet_param_dim(f.shape) == 1 ? 2 : 3;
   const Vec3 r = sub(xs, best.x_master);
   best.shared_normal = len > 0 ? scale(1.0 / len, nbar) : best.facet_normal;
   if (best.distance <= tol) {
@@ -253,6 +258,27 @@ Projection closest_projection(std::span<const Facet> facets, std::span<const std
   }
   tangent_basis(best.normal, dim, best.t1, best.t2);
   return best;
+}
+
+}  // namespace
+
+Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
+                              std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint,
+                              std::span<const FacetBox> boxes, ClosestMargin* margin) {
+  if (candidates.empty()) return {};
+  thread_local std::vector<Candidate> storage;  // (no allocation per point)
+  CandidateSet set(facets, candidates, x, xs, hint, boxes, storage);
+  const Projection best = set.projected(set.select());
+  const Vec3 nbar = set.shared_normal(best);
+  if (margin) *margin = {set.others_bound(best.facet), set.tol(), set.slack()};
+  return finish(best, nbar, set.tol(), xs, facets[static_cast<std::size_t>(best.facet)]);
+}
+
+Projection sole_projection(std::span<const Facet> facets, std::int32_t index, std::span<const Vec3> x, const Vec3& xs,
+                           const ProjectionHint* hint, double tol) {
+  const Facet& f = facets[static_cast<std::size_t>(index)];
+  const Projection best = project_to_facet(f, x, xs, index, hint && hint->facet == index ? &hint->xi : nullptr);
+  return finish(best, add(Vec3{}, best.facet_normal), tol, xs, f);
 }
 
 }  // namespace inpact::contact

@@ -71,7 +71,8 @@ bool edge_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
 
 /// Each facing master facet's projected corner polygon, clipped against the slave face.
 bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-               std::span<const Vec3> x, std::span<const Vec3> normals, int base_points, std::vector<QuadPoint>& out) {
+               std::span<const Vec3> x, std::span<const Vec3> normals, int base_points, std::vector<QuadPoint>& out,
+               bool& ambiguous) {
   const Vec3 ns = centre_normal(slave, x);
   const double domain_area = polygon_area(domain_polygon(slave.shape));
   thread_local std::vector<std::pair<std::int32_t, std::array<double, 2>>> projected;  // node row → ξ
@@ -90,7 +91,7 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
       auto it = std::find_if(projected.begin(), projected.end(), [&](const auto& e) { return e.first == row; });
       if (it == projected.end()) {
         std::array<double, 2> xi{};
-        if (!extended_param(slave, x, x[static_cast<std::size_t>(row)], xi)) return false;
+        if (!extended_param(slave, x, x[static_cast<std::size_t>(row)], xi)) return ambiguous = true, false;
         projected.emplace_back(row, xi);
         it = projected.end() - 1;
       }
@@ -105,18 +106,19 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
     quadratic = quadratic || facet_is_quadratic(m.shape);
     cells.push_back(std::move(cell));
   }
-  if (cells.empty() || covered > domain_area * (1 + 1e-9)) return false;  // nothing, or two layers
+  if (cells.empty()) return false;
+  if (covered > domain_area * (1 + 1e-9)) return ambiguous = true, false;  // two layers
   if (cells.size() == 1 && largest >= domain_area * (1 - kMinSegment)) return false;  // one master facet
   // W_a N_m: degree 4 on linear faces (bilinear × bilinear), up to 6 with quadratic ones: 3 or 4
-  // points per direction at least; more when few cells share the facet (about the plain rule's
-  // base² points in all: the same work, and the curved cases keep their accuracy).
+  // points per direction at least; more when few cells share the facet, about the plain rule's
+  // base² points in all (base 4: one cell 4 × 4, two cells 3 × 3 each on linear faces).
   // A sliver (under kSliverFraction of the facet: a master edge just inside it) gets one point
   // per direction fewer: over its width the integrand is nearly linear.
   const int n_min = quadratic ? 4 : 3;
   const int n = std::max(n_min, static_cast<int>(std::lround(base_points / std::sqrt(static_cast<double>(cells.size())))));
   for (const Polygon& cell : cells) {
     const int nc = polygon_area(cell) < kSliverFraction * domain_area ? n_min - 1 : n;
-    if (!(cell.size() == 4 && quad_rule(cell, nc, out)) && !polygon_rule(cell, nc, out)) return false;
+    if (!(cell.size() == 4 && quad_rule(cell, nc, out)) && !polygon_rule(cell, nc, out)) return ambiguous = true, false;
   }
   return true;
 }
@@ -252,11 +254,15 @@ void centre_normals(std::span<const Facet> facets, std::span<const Vec3> x, std:
 }
 
 bool mortar_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
-                 std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out, std::span<const Vec3> normals) {
+                 std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out, std::span<const Vec3> normals,
+                 bool* ambiguous) {
   out.clear();
-  const bool ok = facet_param_dim(slave.shape) == 1 ? edge_rule(slave, facets, candidates, x, normals, base_points, out)
-                                                    : face_rule(slave, facets, candidates, x, normals, base_points, out);
+  bool unclear = false;
+  const bool ok = facet_param_dim(slave.shape) == 1
+                      ? edge_rule(slave, facets, candidates, x, normals, base_points, out)
+                      : face_rule(slave, facets, candidates, x, normals, base_points, out, unclear);
   if (!ok) out.clear();
+  if (ambiguous) *ambiguous = !ok && unclear;
   return ok;
 }
 

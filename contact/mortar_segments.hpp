@@ -22,8 +22,9 @@
 ///     slave facet no master facet covers (beyond the master's free edge) gets no point.
 /// Where no master edge crosses the slave facet, or the cells are ambiguous (they overlap: two
 /// master layers facing the same slave facet; a folded cell; a degenerate facet), mortar_rule()
-/// returns false and the caller keeps its plain rule over the whole facet: then the points are
-/// those of before, to the bit. Every test that decides the layout compares a continuous
+/// returns false and the caller keeps a plain rule over the whole facet (surface to surface:
+/// plain_rule_points(), and more where the cells were ambiguous: master edges cross the facet
+/// then, and the plain rule integrates across the kinks of N_m). Every test that decides the layout compares a continuous
 /// function of the coordinates with a fixed bound, so the layout — and the residual — changes
 /// only where such a function crosses its bound, not with round-off in between.
 ///
@@ -79,10 +80,11 @@ bool quad_rule(const Polygon& p, int n, std::vector<QuadPoint>& out);
 /// (those the slave facet may touch), in the slave's parametric space with weights of the
 /// parametric measure (like facet_rule()). `base_points`: the plain rule's points per direction.
 /// False: keep the plain rule (see the header comment). `normals`: centre_normals() of `facets`
-/// on x when the caller has them (many slave facets against the same master).
+/// on x when the caller has them (many slave facets against the same master). `ambiguous`, when
+/// given: set to whether a false came from ambiguous cells (rather than from no cut at all).
 bool mortar_rule(const Facet& slave, std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                  std::span<const Vec3> x, int base_points, std::vector<QuadPoint>& out,
-                 std::span<const Vec3> normals = {});
+                 std::span<const Vec3> normals = {}, bool* ambiguous = nullptr);
 /// The unit normal of every facet at its parametric centre, into `out` (resized).
 void centre_normals(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<Vec3>& out);
 

@@ -92,11 +92,24 @@ FacetBox facet_box(const Facet& f, std::span<const Vec3> x);
 /// facet_box() of every facet, into `out` (resized).
 void facet_boxes(std::span<const Facet> facets, std::span<const Vec3> x, std::vector<FacetBox>& out);
 
+/// What closest_projection() saw of the candidates besides the one it chose.
+struct ClosestMargin {
+  double others = 0.0;  ///< none of them is closer to the point than this (+∞: there is none)
+  double tol = 0.0;     ///< the tie tolerance it compared distances with (on_surface_tol)
+  double slack = 0.0;   ///< tol and the round-off of the coordinates' size in its bounds
+};
+
 /// `boxes`: facet_boxes() of `facets` on `x`, when the caller has them (many points against the
-/// same facets); otherwise each candidate's box is computed here.
+/// same facets); otherwise each candidate's box is computed here. `margin`: filled when given.
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                               std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr,
-                              std::span<const FacetBox> boxes = {});
+                              std::span<const FacetBox> boxes = {}, ClosestMargin* margin = nullptr);
+
+/// closest_projection()'s result when facet `index` is its only candidate within `tol` of the
+/// closest distance (tol: the one it would compare with): the same numbers, to the bit, without
+/// the other candidates. The caller must know that no other facet comes that close.
+Projection sole_projection(std::span<const Facet> facets, std::int32_t index, std::span<const Vec3> x, const Vec3& xs,
+                           const ProjectionHint* hint, double tol);
 
 /// The tangent basis for a unit normal `n` (dim 3: Abaqus's surface convention; dim 2: t1 = n
 /// rotated counter-clockwise, t2 = 0).

@@ -6,6 +6,7 @@
 
 #include "mortar_segments.hpp"
 #include "parallel_for.hpp"
+#include "projection_tolerance.hpp"
 #include "smoothed_gap.hpp"
 #include "vec3.hpp"
 
@@ -99,6 +100,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   out.assign(nodes.size(), {});
   facet_boxes(master_.facets(), x, master_boxes_);
   centre_normals(master_.facets(), x, master_normals_);
+  track_master_motion(x);
   parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
   // The sums over each node's points, facet after facet and point after point: the same order
   // whatever the thread count, so the same bits.
@@ -143,8 +145,9 @@ std::span<const QuadPoint> SurfaceToSurfacePair::facet_points(std::span<const Ve
   search_.query_box(box.lo, box.hi, near);
   if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), near);
   const int plain = plain_rule_points(f.shape);
-  if (mortar_rule(f, master_.facets(), near, x, plain, layout, master_normals_)) return layout;
-  return facet_rule(f.shape, plain);
+  bool ambiguous = false;
+  if (mortar_rule(f, master_.facets(), near, x, plain, layout, master_normals_, &ambiguous)) return layout;
+  return facet_rule(f.shape, ambiguous ? kAmbiguousRulePoints : plain);
 }
 
 void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi) {
@@ -171,13 +174,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     }
     pt.x = g.x;
     pt.lin_valid = pt.smoothed_valid = false;
-    candidates.clear();
-    search_.query(g.x, candidates);
-    if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
-    pt.projection =
-        closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, master_boxes_);
-    if (pt.projection.facet >= 0 && dot(g.n, pt.projection.normal) > -kOverlapCosine)
-      project_onto_facing(x, g, candidates, pt.projection);
+    pt.projection = search_point(x, f, g, pt, candidates);
     const Projection& pr = pt.projection;
     pt.hint = {pr.region == ProjectionRegion::Interior && pr.converged ? pr.facet : -1, pr.xi};
     // (judged on the faceted projection: beyond the master's free edge the idealised one
@@ -188,6 +185,81 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
     pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
   }
+}
+
+Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
+                                              std::vector<std::int32_t>& candidates) const {
+  if (reproject(x, g, pt)) return pt.projection;
+  candidates.clear();
+  search_.query(g.x, candidates);
+  if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
+  ClosestMargin margin;
+  Projection p = closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr,
+                                    master_boxes_, &margin);
+  // (a facet left out of the candidates lies beyond the search radius, or is the point's own
+  // neighbour in self contact, which never competes)
+  pt.memo = {p.facet, std::min(margin.others, search_radius()) - margin.slack, g.x, master_shift_, master_motion_};
+  if (p.facet >= 0 && dot(g.n, p.normal) > -kOverlapCosine) {
+    project_onto_facing(x, g, candidates, p);
+    pt.memo.facet = -1;  // (p is no longer the closest facet's)
+  }
+  return p;
+}
+
+/// Since the memo, the point moved |x − memo.x| and no master facet point more than the motion
+/// added to master_motion_, so no other facet is closer than memo.others less both. When that
+/// still exceeds the memo facet's distance now by the search's tolerances (bounded above by
+/// those of the largest master facet and coordinate), the search would choose the memo facet
+/// alone, and project onto it just as sole_projection() does. A point whose projection does not
+/// face it is searched again (project_onto_facing() needs the candidates).
+bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const FacetGeometry& g, Point& pt) const {
+  const Point::SearchMemo& m = pt.memo;
+  if (m.facet < 0) return false;
+  const double moved = norm(sub(sub(g.x, m.x), sub(master_shift_, m.shift))) + (master_motion_ - m.motion);
+  const double tol = on_surface_tol(master_size_);
+  const double slack = tol + 1e-12 * std::max({master_magnitude_, std::abs(g.x[0]), std::abs(g.x[1]), std::abs(g.x[2])});
+  const double others = m.others - moved - slack;
+  if (!(others > 2 * tol)) return false;
+  const Projection p =
+      sole_projection(master_.facets(), m.facet, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, tol);
+  // (beyond tol the search's own tolerance, whatever it is now, leaves the normal unaveraged)
+  if (!(p.distance > tol && others > p.distance + tol) || dot(g.n, p.normal) > -kOverlapCosine) return false;
+  pt.projection = p;
+  return true;
+}
+
+void SurfaceToSurfacePair::track_master_motion(std::span<const Vec3> x) {
+  const auto rows = master_.nodes();
+  const bool first = master_x_.size() != rows.size();
+  master_x_.resize(rows.size());
+  // The shift: the middle of the nodes' displacements, component by component; the motion
+  // beyond it, the largest distance of a node's displacement from it.
+  Vec3 lo{}, hi{};
+  for (std::size_t i = 0; i < rows.size() && !first; ++i) {
+    const Vec3 d = sub(x[static_cast<std::size_t>(rows[i])], master_x_[i]);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = i == 0 ? d[k] : std::min(lo[k], d[k]);
+      hi[k] = i == 0 ? d[k] : std::max(hi[k], d[k]);
+    }
+  }
+  const Vec3 shift = scale(0.5, add(lo, hi));
+  double largest = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Vec3& now = x[static_cast<std::size_t>(rows[i])];
+    const double d = norm(sub(sub(now, master_x_[i]), shift));
+    if (!(d <= largest)) largest = d;  // (a NaN stays: no memo is trusted after it)
+    master_x_[i] = now;
+  }
+  if (!first) master_shift_ = add(master_shift_, shift);
+  bool quadratic = false;
+  master_size_ = master_magnitude_ = 0.0;
+  for (std::size_t i = 0; i < master_boxes_.size(); ++i) {
+    quadratic = quadratic || facet_is_quadratic(master_.facets()[i].shape);
+    master_size_ = std::max(master_size_, std::sqrt(master_boxes_[i].size2));
+    for (int k = 0; k < 3; ++k)
+      master_magnitude_ = std::max({master_magnitude_, std::abs(master_boxes_[i].lo[k]), std::abs(master_boxes_[i].hi[k])});
+  }
+  if (!first) master_motion_ += (quadratic ? 3.0 : 1.0) * largest;
 }
 
 /// A point that has gone into the other body near one of its edges can lie closer to a side

@@ -5,8 +5,8 @@
 ///
 /// inpact's discretisation (a mortar-type weighted gap, integrated on the slave faces):
 ///   every slave facet carries integration points (segment-based, contact/mortar_segments.hpp: its
-///   parametric domain cut where master facets begin and end, a Gauss rule per piece; the plain
-///   plain_rule_points() rule where no master facet edge crosses it); each point x_q is projected onto
+///   parametric domain cut where master facets begin and end, a Gauss rule per piece;
+///   plain_rule_points() per direction where no master facet edge crosses it); each point x_q is projected onto
 ///   the master (closest point, projection.hpp) giving g_q, n_q. A point
 ///   overlaps the master when it projects orthogonally (or nearly: the distance direction within
 ///   45° of the master facet's normal, so that points beyond the master's free edge drop out)
@@ -76,14 +76,20 @@
 namespace inpact::contact {
 
 /// Gauss points per parametric direction of a slave facet's plain rule (no master facet edge
-/// crosses it); the pieces of a segmented facet get their own rules (contact/mortar_segments.hpp).
-/// Edges (2D): 6, which an edge's segments then share. Faces: 4, the rule of a quadratic face's
-/// mortar cell (a face no master edge crosses is one cell; W_a × N_m is of degree 6 with a
-/// quadratic side, 4 between linear faces). A 6 × 6 rule over faces, as before, gave the same
-/// contact verification figures to 1e-6 of their value (smoothed and curved masters too), for
-/// 2.25 times the points where no master edge crosses. On 2D edges a 4-point rule did not
-/// (spherical_seat_axi: its worst node 2.13 % from the thick sphere, against 2.0 %).
+/// crosses it), and the budget mortar_rule() shares out among a cut facet's cells (one cell of a
+/// face: this many; two: 3 or 4 each; contact/mortar_segments.hpp).
+/// Edges (2D): 6. Faces: 4, which integrates W_a × N_m exactly on flat faces (degree 6 with a
+/// quadratic side, 4 between linear faces). Smoothed and curved faces make the integrand no
+/// polynomial, so the choice is measured: 4 × 4 gave the contact verification figures of a 6 × 6
+/// rule to 1e-6 of their value with the same Newton counts (C3D8 decks; the 3D sphere meshed
+/// with C3D20 agreed to 2.6e-5 of its largest CPRESS), nodal values to 4e-5; on 2D edges a
+/// 4-point rule did not (spherical_seat_axi_smoothed: its worst node 2.13 % from the thick
+/// sphere, over the test's 2 % bound).
 int plain_rule_points(FacetShape shape);
+/// A face's plain rule where mortar_rule() found its cells ambiguous (master edges do cross it,
+/// and N_m's kinks fall between the points: 6 per direction is 2 % off over a hat function, 4 is
+/// 4.3 % off).
+inline constexpr int kAmbiguousRulePoints = 6;
 
 /// The weighting function values W_a at a point of a facet of `shape`, from its shape
 /// functions N (see the header comment: W = N except on Tri6 and Quad8).
@@ -111,6 +117,15 @@ class SurfaceToSurfacePair final : public PairKinematics {
     Projection projection;
     ProjectionHint hint;  ///< the faceted projection's facet and ξ when inside it: the next start
     ProjectionHint corrected_hint;  ///< the corrected projection's facet and ξ: the next correction's start
+    /// The last full search: its closest facet, how close any other facet then came (less the
+    /// round-off of those bounds), where the point was and the master's motion then.
+    struct SearchMemo {
+      std::int32_t facet = -1;  ///< −1: none to reuse
+      double others = 0.0;
+      Vec3 x{};
+      Vec3 shift{};
+      double motion = 0.0;
+    } memo;
     bool overlaps = false;
     bool master_corrected = false;  ///< the projection was moved onto the master's idealised surface
     /// The point's gap linearised against its master facet: computed by the first linearize()
@@ -132,6 +147,15 @@ class SurfaceToSurfacePair final : public PairKinematics {
   /// it, or the plain rule (mortar_segments.hpp). Valid until the thread's next call.
   std::span<const QuadPoint> facet_points(std::span<const Vec3> x, const Facet& f) const;
   void project_node(std::span<const Vec3> x, SlaveKinematics& k) const;
+  /// The point's faceted projection onto the closest master facet, from its memo when no other
+  /// facet can have come within the tie tolerance of the one it found last (the same numbers
+  /// as the full search: sole_projection()), else by the search (`candidates` then filled).
+  Projection search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
+                          std::vector<std::int32_t>& candidates) const;
+  /// Projects onto pt.memo's facet alone when that gives the search's result; false otherwise.
+  bool reproject(std::span<const Vec3> x, const FacetGeometry& g, Point& pt) const;
+  /// Adds to master_motion_ how far the master moved since the last update (master_x_, updated).
+  void track_master_motion(std::span<const Vec3> x);
   /// Replaces a point's projection `p` that does not face it by the closest facing one.
   void project_onto_facing(std::span<const Vec3> x, const FacetGeometry& g, std::span<const std::int32_t> candidates,
                            Projection& p) const;
@@ -139,6 +163,18 @@ class SurfaceToSurfacePair final : public PairKinematics {
   std::vector<double> node_area_;           ///< per slave node: its nodal area on the reference coordinates
   std::vector<FacetBox> master_boxes_;      ///< of the master facets, at the last update
   std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
+  /// How far a point of any master facet can have moved beyond master_shift_ since the first
+  /// update, summed over the updates: each update's largest node displacement less its shift,
+  /// × 3 on quadratic facets (their points are convex combinations of control points that
+  /// move up to 3 times as far as the nodes).
+  double master_motion_ = 0.0;
+  /// The master's common translation, summed over the updates (of each: the middle of its
+  /// nodes' displacements, component by component). A master that moves as a body (a pushed
+  /// pin) then keeps its points' memos: only the motion relative to the point counts.
+  Vec3 master_shift_{};
+  std::vector<Vec3> master_x_;  ///< the master nodes' coordinates at the last update
+  double master_size_ = 0.0;       ///< the largest master facet's facet_size() at the last update
+  double master_magnitude_ = 0.0;  ///< the largest coordinate of the master's boxes then
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs; whether it was corrected.
   bool correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,

@@ -193,3 +193,51 @@ TEST(ProjectionHint, AStartNearTheLastPointConvergesToTheSamePointToRoundOff) {
     }
   }
 }
+
+// A surface-to-surface point keeps its last closest facet without a search while no other facet
+// can have come within the search's tolerance of it (SurfaceToSurfacePair::reproject): the
+// margin closest_projection() reports, less how far the point and the facets moved, must then
+// exceed the distance to the kept facet, and sole_projection() must give the search's numbers to
+// the bit. Checked on curved meshes of every face shape, with the point and the nodes moved.
+TEST(SoleProjection, IsTheSearchsResultWhenNoOtherFacetCanHaveComeClose) {
+  std::mt19937 rng(17);
+  for (FacetShape shape : {FacetShape::Tri3, FacetShape::Tri6, FacetShape::Quad4, FacetShape::Quad8}) {
+    const Mesh mesh = make_mesh(shape, 4);
+    std::vector<std::int32_t> candidates(mesh.facets.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i) candidates[i] = static_cast<std::int32_t>(i);
+    std::uniform_real_distribution<double> along(0.2, 3.8), height(-0.4, 0.4), step(-0.02, 0.02);
+    int kept = 0, checked = 0;
+    for (int k = 0; k < 300; ++k) {
+      Vec3 p = surface(along(rng), along(rng), false);
+      p[2] += height(rng);
+      contact::ClosestMargin margin;
+      const Projection then = contact::closest_projection(mesh.facets, candidates, mesh.x, p, nullptr, {}, &margin);
+      // The point and every node move by up to 0.035 (the nodes less).
+      const Vec3 moved_p = contact::add(p, {step(rng), step(rng), step(rng)});
+      std::vector<Vec3> x = mesh.x;
+      double node_motion = 0.0;
+      for (Vec3& xi : x) {
+        const Vec3 d{0.3 * step(rng), 0.3 * step(rng), 0.3 * step(rng)};
+        xi = contact::add(xi, d);
+        node_motion = std::max(node_motion, contact::norm(d));
+      }
+      const double facet_motion = (contact::facet_is_quadratic(shape) ? 3.0 : 1.0) * node_motion;
+      double size = 0.0, magnitude = 0.0;
+      for (const Facet& f : mesh.facets) size = std::max(size, contact::facet_box(f, x).size2);
+      for (const Vec3& xi : x)
+        for (double c : xi) magnitude = std::max(magnitude, std::abs(c));
+      for (double c : moved_p) magnitude = std::max(magnitude, std::abs(c));
+      const double tol = 1e-8 * std::sqrt(size), slack = tol + 1e-12 * magnitude;
+      const double others = margin.others - margin.slack - contact::norm(contact::sub(moved_p, p)) - facet_motion - slack;
+      const contact::ProjectionHint hint{then.facet, then.xi};
+      const Projection now = contact::closest_projection(mesh.facets, candidates, x, moved_p, &hint);
+      ++checked;
+      const Projection sole = contact::sole_projection(mesh.facets, then.facet, x, moved_p, &hint, tol);
+      if (!(sole.distance > tol && others > sole.distance + tol)) continue;
+      ++kept;
+      EXPECT_TRUE(same_bits(sole, now)) << "shape " << int(shape) << " point " << k << ": facet " << sole.facet
+                                        << " vs " << now.facet << ", gap " << sole.gap << " vs " << now.gap;
+    }
+    EXPECT_GT(kept, checked / 5) << "shape " << int(shape);  // (the test is not vacuous)
+  }
+}

@@ -176,7 +176,8 @@ TEST(MortarSegments, FaceOverAGridOfMasterFacesIsTiledByTheClippedCells) {
       candidates.push_back(static_cast<std::int32_t>(masters.size() - 1));
     }
   std::vector<QuadPoint> rule;
-  ASSERT_TRUE(contact::mortar_rule(slave, masters, candidates, x, 6, rule));
+  const int base = contact::plain_rule_points(FacetShape::Quad4);
+  ASSERT_TRUE(contact::mortar_rule(slave, masters, candidates, x, base, rule));
   EXPECT_EQ(rule.size(), 9u * 9u);  // 9 quadrilateral cells, 3 × 3 points each
   EXPECT_NEAR(weight_sum(rule), 4.0, 1e-13);  // the slave's parametric area
   // ∫ x² y² dA = (2³/3)² = 64/9 (degree 4 in ξ, η: exact on every triangle).
@@ -196,7 +197,40 @@ TEST(MortarSegments, FaceOverAGridOfMasterFacesIsTiledByTheClippedCells) {
     masters.push_back(copy);
     candidates.push_back(static_cast<std::int32_t>(masters.size() - 1));
   }
-  EXPECT_FALSE(contact::mortar_rule(slave, masters, candidates, x, 6, rule));
+  bool ambiguous = false;
+  EXPECT_FALSE(contact::mortar_rule(slave, masters, candidates, x, base, rule, {}, &ambiguous));
+  EXPECT_TRUE(ambiguous);  // (the caller's plain rule then takes kAmbiguousRulePoints)
+}
+
+// The point budget of surface-to-surface slave faces: 4 × 4 where no master edge crosses the
+// face, 4 × 4 in a lone cell that covers part of it (a master's free edge), 3 × 3 in each of two
+// cells; 6 on 2D edges. A face entirely inside one master facet is not cut (not ambiguous).
+TEST(MortarSegments, FacePointBudgetFollowsTheCellCount) {
+  EXPECT_EQ(contact::plain_rule_points(FacetShape::Line2), 6);
+  EXPECT_EQ(contact::plain_rule_points(FacetShape::Quad4), 4);
+  EXPECT_EQ(contact::plain_rule_points(FacetShape::Quad8), 4);
+  const int base = contact::plain_rule_points(FacetShape::Quad4);
+  // The slave [0, 2]² facing down; masters facing up, 0.1 below.
+  std::vector<Vec3> x{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  const Facet slave = make_facet(FacetShape::Quad4, {0, 1, 2, 3});
+  auto master = [&](double x0, double x1) {  // covering x0 ≤ x ≤ x1, −1 ≤ y ≤ 3
+    const auto n = static_cast<std::int32_t>(x.size());
+    for (const auto& [px, py] : {std::pair{x0, -1.0}, {x0, 3.0}, {x1, 3.0}, {x1, -1.0}}) x.push_back({px, py, -0.1});
+    return make_facet(FacetShape::Quad4, {n, n + 1, n + 2, n + 3});
+  };
+  std::vector<QuadPoint> rule;
+  bool ambiguous = true;
+  const std::vector<Facet> whole{master(-1.0, 3.0)};
+  EXPECT_FALSE(contact::mortar_rule(slave, whole, std::vector<std::int32_t>{0}, x, base, rule, {}, &ambiguous));
+  EXPECT_FALSE(ambiguous);
+  const std::vector<Facet> part{master(-1.0, 1.2)};  // its free edge at x = 1.2
+  ASSERT_TRUE(contact::mortar_rule(slave, part, std::vector<std::int32_t>{0}, x, base, rule));
+  EXPECT_EQ(rule.size(), 16u);
+  EXPECT_NEAR(weight_sum(rule), 4.0 * 1.2 / 2.0, 1e-13);
+  const std::vector<Facet> two{master(-1.0, 1.2), master(1.2, 3.0)};
+  ASSERT_TRUE(contact::mortar_rule(slave, two, std::vector<std::int32_t>{0, 1}, x, base, rule));
+  EXPECT_EQ(rule.size(), 2u * 9u);
+  EXPECT_NEAR(weight_sum(rule), 4.0, 1e-13);
 }
 
 // The points depend on the configuration now; the slave facets are still laid out and projected
