@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "element_partition.hpp"
+#include "model/reference_nodes.hpp"
 
 namespace inpact::solver {
 
@@ -20,6 +21,10 @@ EquationPoints equation_points(const AnalysisModel& am, const DofMap& dofs) {
       p.component[eq] = static_cast<int>(d % am.dim);
     }
   for (const auto& x : am.model->mesh.nodes.coords) p.coordinates.insert(p.coordinates.end(), x.begin(), x.end());
+  for (const model::RotatingNode& r : model::rotating_nodes(*am.model, am.dim)) {
+    if (p.rotation.empty()) p.rotation.assign(am.model->mesh.nodes.size(), 0);
+    p.rotation[static_cast<std::size_t>(r.rot_node)] = 1;
+  }
   if (const RankWorld world = rank_world(); world.distributed()) p.node_rank = element_partition(am, world).rank_of_node;
   return p;
 }

@@ -50,6 +50,10 @@ struct EquationPoints {
   std::vector<std::int64_t> node;    ///< per equation: its node (a row of the mesh's nodes)
   std::vector<int> component;        ///< per equation: 0 .. dim-1
   std::vector<double> coordinates;   ///< per node row: x, y, z (3 per node, every node)
+  /// Per node row: 1 for a rotation node (a beam's, shell's, rigid body's or coupling's: its
+  /// components are the rotation θ; θ3 in component 0 in 2D), which a rigid-body motion turns
+  /// rather than moves. Empty: the model has none.
+  std::vector<char> rotation;
   /// A distributed run: per node row, the rank whose elements it belongs to (the lowest of
   /// them), which owns its rows of the system. Empty: the rows are shared evenly in order.
   std::vector<int> node_rank;

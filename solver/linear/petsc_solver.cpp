@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@
 #include "linear_solver.hpp"
 #include "petsc_error.hpp"
 #include "petsc_module.hpp"
+#include "rigid_body_modes.hpp"
 
 namespace inpact::solver {
 
@@ -46,6 +48,7 @@ struct SlotLayout {
   std::vector<PetscInt> slot_of_eq;    ///< per inpact equation
   std::vector<PetscInt> fixed_slots;   ///< identity rows
   std::vector<double> block_coords;    ///< per node block: dim coordinates
+  std::vector<char> block_rotation;    ///< per node block: 1 for a rotation node (empty: none)
   PetscInt n_displacement_slots = 0;
 
   std::vector<PetscInt> blocks_of_rank;  ///< node blocks per rank, in slot order (node_rank given)
@@ -83,6 +86,8 @@ struct SlotLayout {
       if (!used[s]) fixed_slots.push_back(s);
     for (std::int64_t node : node_of_block)
       for (int c = 0; c < p.dim; ++c) block_coords.push_back(p.coordinates[3 * node + c]);
+    if (!p.rotation.empty())
+      for (std::int64_t node : node_of_block) block_rotation.push_back(p.rotation[static_cast<std::size_t>(node)]);
   }
   PetscInt size(std::int64_t n_equations, std::int64_t n_disp) const {
     return n_displacement_slots + static_cast<PetscInt>(n_equations - n_disp);
@@ -182,6 +187,8 @@ class PetscSolver final : public LinearSolver {
  private:
   void build(const SparseMatrix& a);
   void preallocate_from_every_rank(PetscInt m, PetscInt n);
+  /// GAMG's near null space for this rank's m of the n rows: the mesh's rigid-body modes.
+  MatNullSpace rigid_body_modes(PetscInt m, PetscInt n) const;
   void set_fixed_diagonals();
   void fill_values(const SparseMatrix& a);
   void configure_krylov(KSPType type);
@@ -245,14 +252,9 @@ void PetscSolver::build(const SparseMatrix& a) {
   else preallocate_from_every_rank(m, n);
   check(MatSetOption(a_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
   if (!saddle_point_) {
-    Vec coords;
-    check(VecCreateMPIWithArray(comm_, points_.dim, m, n, layout_->block_coords.data() + rows_->begin, &coords),
-          "coords");
-    MatNullSpace rigid;
-    check(MatNullSpaceCreateRigidBody(coords, &rigid), "MatNullSpaceCreateRigidBody");
+    MatNullSpace rigid = rigid_body_modes(m, n);
     check(MatSetNearNullSpace(a_, rigid), "MatSetNearNullSpace");
     MatNullSpaceDestroy(&rigid);
-    VecDestroy(&coords);
   }
   check(MatCreateVecs(a_, &x_, &b_), "MatCreateVecs");
   check(VecScatterCreateToAll(x_, &to_everywhere_, &x_everywhere_), "VecScatterCreateToAll");
@@ -276,6 +278,44 @@ void PetscSolver::build(const SparseMatrix& a) {
 
 /// Several ranks: each holds the entries of its own elements, in rows other ranks may own
 /// (Assembler). PETSc's preallocator gathers each row's columns from every rank at its owner.
+/// Without rotation nodes, PETSc's own modes from the coordinates; with them, those of
+/// rigid_body_modes.hpp, orthonormalised as PETSc's are.
+MatNullSpace PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
+  const PetscInt dim = points_.dim;
+  const double* coords = layout_->block_coords.data() + rows_->begin;
+  MatNullSpace rigid;
+  if (layout_->block_rotation.empty()) {
+    Vec c;
+    check(VecCreateMPIWithArray(comm_, dim, m, n, coords, &c), "coords");
+    check(MatNullSpaceCreateRigidBody(c, &rigid), "MatNullSpaceCreateRigidBody");
+    VecDestroy(&c);
+    return rigid;
+  }
+  const auto values = solver::rigid_body_modes(
+      static_cast<int>(dim), std::span<const double>(coords, static_cast<std::size_t>(m)),
+      std::span<const char>(layout_->block_rotation.data() + rows_->begin / dim, static_cast<std::size_t>(m / dim)));
+  std::vector<Vec> modes(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    Vec& v = modes[k];
+    check(VecCreateMPI(comm_, m, n, &v), "VecCreateMPI");
+    check(VecSetBlockSize(v, dim), "VecSetBlockSize");
+    PetscScalar* a;
+    check(VecGetArray(v, &a), "VecGetArray");
+    std::copy(values[k].begin(), values[k].end(), a);
+    check(VecRestoreArray(v, &a), "VecRestoreArray");
+    for (std::size_t i = 0; i < k; ++i) {  // Gram–Schmidt against the modes before it
+      PetscScalar d;
+      check(VecDot(v, modes[i], &d), "VecDot");
+      check(VecAXPY(v, -d, modes[i]), "VecAXPY");
+    }
+    check(VecNormalize(v, nullptr), "VecNormalize");
+  }
+  check(MatNullSpaceCreate(comm_, PETSC_FALSE, static_cast<PetscInt>(modes.size()), modes.data(), &rigid),
+        "MatNullSpaceCreate");
+  for (Vec& v : modes) VecDestroy(&v);
+  return rigid;
+}
+
 void PetscSolver::preallocate_from_every_rank(PetscInt m, PetscInt n) {
   Mat counter;
   check(MatCreate(comm_, &counter), "MatCreate");
