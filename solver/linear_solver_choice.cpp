@@ -6,6 +6,7 @@
 
 #include "linear/mpi_launch.hpp"
 #include "linear/petsc_module.hpp"
+#include "model/element_types.hpp"
 #include "model/mesh_queries.hpp"
 
 namespace inpact::solver {
@@ -30,13 +31,30 @@ const char* request_name(SolverRequest request) {
 
 const char* kind_name(SolverKind kind) { return kind == SolverKind::Petsc ? "petsc" : "direct"; }
 
-std::int64_t petsc_from_dofs(int dim) { return dim == 2 ? kPetscFromDofs2d : kPetscFromDofs; }
+std::int64_t petsc_from_dofs(int dim, bool solids) {
+  if (dim == 2) return kPetscFromDofs2d;
+  return solids ? kPetscFromDofs : kPetscFromDofsShells;
+}
+
+namespace {
+
+/// Whether the mesh has a 3D continuum element (a solid: its matrix has a volume's sparsity).
+bool has_solid_elements(const model::Elements& elements) {
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const model::ElementTypeInfo& t = model::element_type(elements.type[e]);
+    if (model::is_continuum(t) && t.dim == 3) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& model, int ranks) {
   SolverChoice choice;
   choice.requested = request;
   choice.dim = model::model_dimension(model.mesh.elements);
   choice.model_dofs = static_cast<std::int64_t>(model.mesh.nodes.size()) * choice.dim;
+  choice.solids = choice.dim == 3 && has_solid_elements(model.mesh.elements);
   choice.ranks = ranks;
   const bool distributed = ranks > 1;
   if (distributed && !petsc_built())
@@ -50,7 +68,8 @@ SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& mo
     throw std::invalid_argument("--solver petsc: this inpact was built without PETSc "
                                 "(PETSc, pkg-config PETSc, was not found when it was configured, or INPACT_PETSC=OFF)");
   const bool petsc = distributed || request == SolverRequest::Petsc ||
-                     (request == SolverRequest::Auto && petsc_built() && choice.model_dofs >= petsc_from_dofs(choice.dim));
+                     (request == SolverRequest::Auto && petsc_built() &&
+                      choice.model_dofs >= petsc_from_dofs(choice.dim, choice.solids));
   choice.kind = petsc ? SolverKind::Petsc : SolverKind::Direct;
   return choice;
 }
@@ -69,9 +88,10 @@ std::string describe(const SolverChoice& c) {
   if (c.ranks > 1) {
     why = fmt::format("{} MPI ranks", c.ranks);
   } else if (c.requested == SolverRequest::Auto) {
-    const std::int64_t from = petsc_from_dofs(c.dim);
+    const std::int64_t from = petsc_from_dofs(c.dim, c.solids);
+    const char* kind = c.dim == 2 ? "2D" : c.solids ? "3D" : "3D without solids";
     why = !petsc_built() ? "auto: built without PETSc"
-                         : fmt::format("auto: {}D, {} DOF {} {}", c.dim, c.model_dofs, c.model_dofs >= from ? ">=" : "<", from);
+                         : fmt::format("auto: {}, {} DOF {} {}", kind, c.model_dofs, c.model_dofs >= from ? ">=" : "<", from);
   }
   return fmt::format("LINEAR SOLVER: {}; {}", what, why);
 }

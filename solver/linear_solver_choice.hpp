@@ -4,11 +4,12 @@
 /// all say the same:
 ///  - direct: CHOLMOD (symmetric positive definite), UMFPACK (multipliers, friction);
 ///  - petsc:  CG / GMRES with algebraic multigrid (GAMG), MUMPS for multipliers (linear/petsc_solver.cpp);
-///  - auto:   petsc from the model's crossover size (petsc_from_dofs: by dimension, measured on
-///            the C3D8 cube and the CPE4 square, bench/petsc_solver), direct below it and always
-///            when built without PETSc. No memory rule: below the crossovers the direct run's
-///            peak is below petsc's or at most 10 % above it (the same runs), and from them on
-///            petsc is taken anyway;
+///  - auto:   petsc from the model's crossover size (petsc_from_dofs: by dimension and, in 3D,
+///            whether the model has solid elements; measured on the C3D8 cube, the CPE4 square and
+///            the S4 plate, bench/petsc_solver), direct below it and always when built without
+///            PETSc. No memory rule: below the crossovers the direct run's peak is below petsc's
+///            or at most 10 % above it on solids (the same runs), 1.4× on the plate at 800k DOF
+///            (3.1 against 2.4 GB), and from them on petsc is taken anyway;
 ///  - none given: direct on one process, petsc on several MPI ranks (`mpirun -np N`), where the
 ///    direct solvers cannot go (they are one process's).
 #include <cstdint>
@@ -28,18 +29,23 @@ enum class SolverKind { Direct, Petsc };
 inline constexpr std::int64_t kPetscFromDofs = 25'000;
 /// ... of a 2D model: the square's crossover (a tie at 200k DOF; direct 1.1× faster at 100k).
 inline constexpr std::int64_t kPetscFromDofs2d = 200'000;
+/// ... of a 3D model without solid elements (shells, beams, trusses: a surface's sparsity): the
+/// S4 plate's, where direct was 1.7× faster at 100k DOF, 1.4× at 400k and 1.2× at 800k (the
+/// largest measured) and took 1.4× petsc's memory there; from 1.5M, petsc (extrapolated).
+inline constexpr std::int64_t kPetscFromDofsShells = 1'500'000;
 
-/// The crossover of `auto` for a model of `dim` (2 or 3) dimensions.
-std::int64_t petsc_from_dofs(int dim);
+/// The crossover of `auto` for a model of `dim` (2 or 3) dimensions; `solids`: a 3D model has
+/// solid (3D continuum) elements.
+std::int64_t petsc_from_dofs(int dim, bool solids = true);
 
 struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
   SolverKind kind = SolverKind::Direct;
   /// The model's DOFs, nodes × dimension: the rotations of beam, shell and reference nodes are
   /// the translations of their rotation nodes (model/reference_nodes.hpp), counted with them.
-  /// (A shell or beam model takes the solids' crossover of its dimension: not measured apart.)
   std::int64_t model_dofs = 0;
   int dim = 3;  ///< model::model_dimension, as the analysis takes it
+  bool solids = true;  ///< a 3D model with solid elements (false: shells, beams, trusses only)
   int ranks = 1;  ///< MPI ranks of the run (mpi_launch.hpp); petsc whenever more than one
 };
 
