@@ -135,13 +135,28 @@ class CandidateSet {
   double tol() const { return tol_; }
   double slack() const { return slack_; }
   std::size_t size() const { return all_.size(); }
-  /// No candidate but `chosen` is closer to the point than this: the distances of the projected
-  /// ones, the bounds of the rest (+∞ when there is no other).
-  double others_bound(std::int32_t chosen) const {
-    double lowest = std::numeric_limits<double>::infinity();
-    for (const Candidate& c : all_)
-      if (c.index != chosen) lowest = std::min(lowest, c.projected ? c.p.distance : c.bound);
-    return lowest;
+  /// No candidate but `chosen` is closer to the point than this (+∞ when there is no other; NaN
+  /// when a distance is): the distance bounds, refined by the separating axes, and the projected
+  /// distance where it is the facet's least for certain (a straight edge or a flat triangle: a
+  /// curved facet's Newton finds a local least, which a later start may undercut).
+  /// The separating axes refine only the candidates whose box bound is the lowest so far, until
+  /// the lowest is final.
+  double others_bound(std::int32_t chosen) {
+    for (;;) {
+      double lowest = std::numeric_limits<double>::infinity();
+      std::size_t at = all_.size();
+      for (std::size_t i = 0; i < all_.size(); ++i) {
+        const Candidate& c = all_[i];
+        if (c.index == chosen) continue;
+        const FacetShape shape = facets_[static_cast<std::size_t>(c.index)].shape;
+        const bool exact = c.projected && (shape == FacetShape::Tri3 || shape == FacetShape::Line2);
+        const double d = exact ? c.p.distance : c.bound;
+        if (std::isnan(d)) return d;
+        if (d < lowest) lowest = d, at = exact ? all_.size() : i;
+      }
+      if (at == all_.size() || all_[at].refined) return lowest;
+      refine(at);
+    }
   }
 
   const Projection& projected(std::size_t i) {
@@ -158,12 +173,18 @@ class CandidateSet {
     Candidate& c = all_[i];
     if (c.bound - slack_ > d + tol_) return true;
     if (c.refined) return false;
+    refine(i);
+    return c.bound - slack_ > d + tol_;
+  }
+  /// Candidate i's bound with the separating axes' (once).
+  void refine(std::size_t i) {
+    Candidate& c = all_[i];
+    if (c.refined) return;
     c.refined = true;
     std::array<Vec3, 9> cp;
     const Facet& f = facets_[static_cast<std::size_t>(c.index)];
     const std::size_t m = static_cast<std::size_t>(facet_control_points(f, x_, cp));
     c.bound = std::max(c.bound, usable(axis_bound(f, std::span<const Vec3>(cp.data(), m), xs_)));
-    return c.bound - slack_ > d + tol_;
   }
   /// Closest facet; among ties at the same point: interior before edge before vertex, then the
   /// lowest facet index.
@@ -270,7 +291,7 @@ Projection closest_projection(std::span<const Facet> facets, std::span<const std
   CandidateSet set(facets, candidates, x, xs, hint, boxes, storage);
   const Projection best = set.projected(set.select());
   const Vec3 nbar = set.shared_normal(best);
-  if (margin) *margin = {set.others_bound(best.facet), set.tol(), set.slack()};
+  if (margin) *margin = {set.others_bound(best.facet), set.slack()};
   return finish(best, nbar, set.tol(), xs, facets[static_cast<std::size_t>(best.facet)]);
 }
 

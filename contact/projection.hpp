@@ -95,8 +95,7 @@ void facet_boxes(std::span<const Facet> facets, std::span<const Vec3> x, std::ve
 /// What closest_projection() saw of the candidates besides the one it chose.
 struct ClosestMargin {
   double others = 0.0;  ///< none of them is closer to the point than this (+∞: there is none)
-  double tol = 0.0;     ///< the tie tolerance it compared distances with (on_surface_tol)
-  double slack = 0.0;   ///< tol and the round-off of the coordinates' size in its bounds
+  double slack = 0.0;   ///< its tie tolerance and the round-off of the coordinates' size in its bounds
 };
 
 /// `boxes`: facet_boxes() of `facets` on `x`, when the caller has them (many points against the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "mortar_segments.hpp"
@@ -189,7 +190,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
 
 Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
                                               std::vector<std::int32_t>& candidates) const {
-  if (reproject(x, g, pt)) return pt.projection;
+  if (reproject(x, f, g, pt)) return pt.projection;
   candidates.clear();
   search_.query(g.x, candidates);
   if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
@@ -198,7 +199,8 @@ Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Fac
                                     master_boxes_, &margin);
   // (a facet left out of the candidates lies beyond the search radius, or is the point's own
   // neighbour in self contact, which never competes)
-  pt.memo = {p.facet, std::min(margin.others, search_radius()) - margin.slack, g.x, master_shift_, master_motion_};
+  pt.memo = {p.facet, std::min(margin.others, search_radius()) - margin.slack, g.x, master_shift_, master_motion_,
+             memo_generation_};
   if (p.facet >= 0 && dot(g.n, p.normal) > -kOverlapCosine) {
     project_onto_facing(x, g, candidates, p);
     pt.memo.facet = -1;  // (p is no longer the closest facet's)
@@ -212,18 +214,33 @@ Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Fac
 /// those of the largest master facet and coordinate), the search would choose the memo facet
 /// alone, and project onto it just as sole_projection() does. A point whose projection does not
 /// face it is searched again (project_onto_facing() needs the candidates).
-bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const FacetGeometry& g, Point& pt) const {
+bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt) const {
   const Point::SearchMemo& m = pt.memo;
   if (m.facet < 0) return false;
-  const double moved = norm(sub(sub(g.x, m.x), sub(master_shift_, m.shift))) + (master_motion_ - m.motion);
-  const double tol = on_surface_tol(master_size_);
+  if (m.generation != memo_generation_) return false;
+  const double drift = norm(sub(sub(g.x, m.x), sub(master_shift_, m.shift))) + (master_motion_ - m.motion);
+  const double tol = on_surface_tol(largest_master_facet_);
   const double slack = tol + 1e-12 * std::max({master_magnitude_, std::abs(g.x[0]), std::abs(g.x[1]), std::abs(g.x[2])});
-  const double others = m.others - moved - slack;
+  const double others = m.others - drift - slack;
   if (!(others > 2 * tol)) return false;
   const Projection p =
       sole_projection(master_.facets(), m.facet, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, tol);
   // (beyond tol the search's own tolerance, whatever it is now, leaves the normal unaveraged)
   if (!(p.distance > tol && others > p.distance + tol) || dot(g.n, p.normal) > -kOverlapCosine) return false;
+  if (projection_self_check) {  // (tests: the search's own answer, to the bit)
+    Point searched = pt;
+    searched.memo.facet = -1;
+    std::vector<std::int32_t> candidates;
+    const Projection full = search_point(x, f, g, searched, candidates);
+    auto same = [](const auto& a, const auto& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    const bool equal = full.facet == p.facet && same(full.xi, p.xi) && full.region == p.region &&
+                       same(full.x_master, p.x_master) && same(full.distance, p.distance) && same(full.gap, p.gap) &&
+                       same(full.normal, p.normal) && same(full.facet_normal, p.facet_normal) &&
+                       same(full.shared_normal, p.shared_normal) && same(full.t1, p.t1) && same(full.t2, p.t2) &&
+                       full.converged == p.converged && full.extended == p.extended;
+    if (!equal)
+      throw std::logic_error("surface to surface: a kept projection differs from the search's");
+  }
   pt.projection = p;
   return true;
 }
@@ -250,16 +267,23 @@ void SurfaceToSurfacePair::track_master_motion(std::span<const Vec3> x) {
     if (!(d <= largest)) largest = d;  // (a NaN stays: no memo is trusted after it)
     master_x_[i] = now;
   }
-  if (!first) master_shift_ = add(master_shift_, shift);
+  master_shift_ = add(master_shift_, shift);
   bool quadratic = false;
-  master_size_ = master_magnitude_ = 0.0;
+  largest_master_facet_ = master_magnitude_ = 0.0;
   for (std::size_t i = 0; i < master_boxes_.size(); ++i) {
     quadratic = quadratic || facet_is_quadratic(master_.facets()[i].shape);
-    master_size_ = std::max(master_size_, std::sqrt(master_boxes_[i].size2));
+    largest_master_facet_ = std::max(largest_master_facet_, std::sqrt(master_boxes_[i].size2));
     for (int k = 0; k < 3; ++k)
       master_magnitude_ = std::max({master_magnitude_, std::abs(master_boxes_[i].lo[k]), std::abs(master_boxes_[i].hi[k])});
   }
-  if (!first) master_motion_ += (quadratic ? 3.0 : 1.0) * largest;
+  if (first) return;
+  if (!std::isfinite(largest) || !std::isfinite(norm(shift))) {  // (NaN coordinates: no memo holds)
+    master_motion_ = 0.0;
+    master_shift_ = {};
+    ++memo_generation_;
+    return;
+  }
+  master_motion_ += (quadratic ? 3.0 : 1.0) * largest;
 }
 
 /// A point that has gone into the other body near one of its edges can lie closer to a side

@@ -86,10 +86,14 @@ namespace inpact::contact {
 /// 4-point rule did not (spherical_seat_axi_smoothed: its worst node 2.13 % from the thick
 /// sphere, over the test's 2 % bound).
 int plain_rule_points(FacetShape shape);
-/// A face's plain rule where mortar_rule() found its cells ambiguous (master edges do cross it,
-/// and N_m's kinks fall between the points: 6 per direction is 2 % off over a hat function, 4 is
-/// 4.3 % off).
+/// A face's plain rule where mortar_rule() found its cells ambiguous (two master layers, a folded
+/// cell: master edges cross the face, and N_m's kinks fall between the points; 6 per direction
+/// is 2 % off over a hat function, 4 is 4.3 % off), or the slave facet degenerate.
 inline constexpr int kAmbiguousRulePoints = 6;
+
+/// Tests: every projection a point keeps without a search (SurfaceToSurfacePair) is checked
+/// against the search's own, to the bit; a difference throws std::logic_error.
+inline bool projection_self_check = false;
 
 /// The weighting function values W_a at a point of a facet of `shape`, from its shape
 /// functions N (see the header comment: W = N except on Tri6 and Quad8).
@@ -125,6 +129,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
       Vec3 x{};
       Vec3 shift{};
       double motion = 0.0;
+      unsigned generation = 0;  ///< memo_generation_ then
     } memo;
     bool overlaps = false;
     bool master_corrected = false;  ///< the projection was moved onto the master's idealised surface
@@ -153,7 +158,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
   Projection search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
                           std::vector<std::int32_t>& candidates) const;
   /// Projects onto pt.memo's facet alone when that gives the search's result; false otherwise.
-  bool reproject(std::span<const Vec3> x, const FacetGeometry& g, Point& pt) const;
+  bool reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt) const;
   /// Adds to master_motion_ how far the master moved since the last update (master_x_, updated).
   void track_master_motion(std::span<const Vec3> x);
   /// Replaces a point's projection `p` that does not face it by the closest facing one.
@@ -165,15 +170,17 @@ class SurfaceToSurfacePair final : public PairKinematics {
   std::vector<Vec3> master_normals_;        ///< their centre normals (mortar_segments.hpp), then
   /// How far a point of any master facet can have moved beyond master_shift_ since the first
   /// update, summed over the updates: each update's largest node displacement less its shift,
-  /// × 3 on quadratic facets (their points are convex combinations of control points that
-  /// move up to 3 times as far as the nodes).
+  /// × 3 on quadratic facets (a facet point moves Σ N_a δ_a, and Σ |N_a| is at most 3 on Quad8,
+  /// 5/3 on Tri6, 1 on linear facets; Σ N_a = 1 carries the shift unchanged).
   double master_motion_ = 0.0;
+  /// Bumped when a motion is not finite (NaN coordinates): every memo of before is dropped.
+  unsigned memo_generation_ = 0;
   /// The master's common translation, summed over the updates (of each: the middle of its
   /// nodes' displacements, component by component). A master that moves as a body (a pushed
   /// pin) then keeps its points' memos: only the motion relative to the point counts.
   Vec3 master_shift_{};
   std::vector<Vec3> master_x_;  ///< the master nodes' coordinates at the last update
-  double master_size_ = 0.0;       ///< the largest master facet's facet_size() at the last update
+  double largest_master_facet_ = 0.0;       ///< the largest master facet's facet_size() at the last update
   double master_magnitude_ = 0.0;  ///< the largest coordinate of the master's boxes then
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs; whether it was corrected.

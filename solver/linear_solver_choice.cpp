@@ -1,6 +1,8 @@
 #include "linear_solver_choice.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -38,13 +40,19 @@ std::int64_t petsc_from_dofs(int dim, bool solids) {
 
 namespace {
 
-/// Whether the mesh has a 3D continuum element (a solid: its matrix has a volume's sparsity).
-bool has_solid_elements(const model::Elements& elements) {
+/// Whether at least half the model's nodes (rotation nodes counted: their DOFs are the model's
+/// too) belong to 3D continuum elements, whose matrix has a volume's sparsity. A shell model with
+/// a few solid bolts keeps the shells' crossover.
+bool mostly_solid(const model::Model& model) {
+  const auto& elements = model.mesh.elements;
+  std::vector<char> on_solid(model.mesh.nodes.size(), 0);
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const model::ElementTypeInfo& t = model::element_type(elements.type[e]);
-    if (model::is_continuum(t) && t.dim == 3) return true;
+    if (!(model::is_continuum(t) && t.dim == 3)) continue;
+    for (std::int32_t node : elements.nodes_of(e)) on_solid[static_cast<std::size_t>(node)] = 1;
   }
-  return false;
+  const auto solid_nodes = static_cast<std::size_t>(std::count(on_solid.begin(), on_solid.end(), 1));
+  return 2 * solid_nodes >= on_solid.size() && solid_nodes > 0;
 }
 
 }  // namespace
@@ -54,7 +62,7 @@ SolverChoice resolve_linear_solver(SolverRequest request, const model::Model& mo
   choice.requested = request;
   choice.dim = model::model_dimension(model.mesh.elements);
   choice.model_dofs = static_cast<std::int64_t>(model.mesh.nodes.size()) * choice.dim;
-  choice.solids = choice.dim == 3 && has_solid_elements(model.mesh.elements);
+  choice.solids = choice.dim == 3 && mostly_solid(model);
   choice.ranks = ranks;
   const bool distributed = ranks > 1;
   if (distributed && !petsc_built())
@@ -89,7 +97,7 @@ std::string describe(const SolverChoice& c) {
     why = fmt::format("{} MPI ranks", c.ranks);
   } else if (c.requested == SolverRequest::Auto) {
     const std::int64_t from = petsc_from_dofs(c.dim, c.solids);
-    const char* kind = c.dim == 2 ? "2D" : c.solids ? "3D" : "3D without solids";
+    const char* kind = c.dim == 2 ? "2D" : c.solids ? "3D" : "3D, mostly shells or beams";
     why = !petsc_built() ? "auto: built without PETSc"
                          : fmt::format("auto: {}, {} DOF {} {}", kind, c.model_dofs, c.model_dofs >= from ? ">=" : "<", from);
   }

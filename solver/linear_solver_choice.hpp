@@ -24,19 +24,20 @@ namespace inpact::solver {
 enum class SolverRequest { Direct, Petsc, Auto, Default };
 enum class SolverKind { Direct, Petsc };
 
-/// `auto` takes petsc from this many DOFs (nodes × DOFs per node) of a 3D model: the cube's
-/// crossover (petsc 1.5× faster at 28k DOF, a tie at 15k).
+/// `auto` takes petsc from this many DOFs (nodes × DOFs per node) of a 3D model of solid
+/// elements: the cube's crossover (petsc 1.5× faster at 28k DOF, a tie at 15k).
 inline constexpr std::int64_t kPetscFromDofs = 25'000;
 /// ... of a 2D model: the square's crossover (a tie at 200k DOF; direct 1.1× faster at 100k).
 inline constexpr std::int64_t kPetscFromDofs2d = 200'000;
-/// ... of a 3D model without solid elements (shells, beams, trusses: a surface's sparsity): the
-/// S4 plate's, where direct was 1.7× faster at 100k DOF, 1.4× at 400k and 1.2× at 800k (the
-/// largest measured) and took 1.4× petsc's memory there; from 1.5M, petsc (extrapolated).
+/// ... of a 3D model mostly of shells (under half its DOFs on solid elements; measured on the
+/// S4 plate, whose factor fills like a surface's): direct was 1.7× faster at 100k DOF, 1.2× at
+/// 800k, and they tie at 1.6M (direct 1.1× less CPU, petsc 0.69× the memory). Beams and
+/// trusses take it too (not measured apart).
 inline constexpr std::int64_t kPetscFromDofsShells = 1'500'000;
 
-/// The crossover of `auto` for a model of `dim` (2 or 3) dimensions; `solids`: a 3D model has
-/// solid (3D continuum) elements.
-std::int64_t petsc_from_dofs(int dim, bool solids = true);
+/// The crossover of `auto` for a model of `dim` (2 or 3) dimensions; `solids`: a 3D model with
+/// at least half its DOFs on solid (3D continuum) elements.
+std::int64_t petsc_from_dofs(int dim, bool solids);
 
 struct SolverChoice {
   SolverRequest requested = SolverRequest::Direct;
@@ -45,7 +46,7 @@ struct SolverChoice {
   /// the translations of their rotation nodes (model/reference_nodes.hpp), counted with them.
   std::int64_t model_dofs = 0;
   int dim = 3;  ///< model::model_dimension, as the analysis takes it
-  bool solids = true;  ///< a 3D model with solid elements (false: shells, beams, trusses only)
+  bool solids = true;  ///< a 3D model with at least half its DOFs on solid elements (3D continuum)
   int ranks = 1;  ///< MPI ranks of the run (mpi_launch.hpp); petsc whenever more than one
 };
 

@@ -276,10 +276,8 @@ void PetscSolver::build(const SparseMatrix& a) {
   ++analyses_;
 }
 
-/// Several ranks: each holds the entries of its own elements, in rows other ranks may own
-/// (Assembler). PETSc's preallocator gathers each row's columns from every rank at its owner.
 /// Without rotation nodes, PETSc's own modes from the coordinates; with them, those of
-/// rigid_body_modes.hpp, orthonormalised as PETSc's are.
+/// rigid_body_modes.hpp, orthonormalised (Gram–Schmidt).
 MatNullSpace PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
   const PetscInt dim = points_.dim;
   const double* coords = layout_->block_coords.data() + rows_->begin;
@@ -298,7 +296,6 @@ MatNullSpace PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
   for (std::size_t k = 0; k < values.size(); ++k) {
     Vec& v = modes[k];
     check(VecCreateMPI(comm_, m, n, &v), "VecCreateMPI");
-    check(VecSetBlockSize(v, dim), "VecSetBlockSize");
     PetscScalar* a;
     check(VecGetArray(v, &a), "VecGetArray");
     std::copy(values[k].begin(), values[k].end(), a);
@@ -316,6 +313,8 @@ MatNullSpace PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
   return rigid;
 }
 
+/// Several ranks: each holds the entries of its own elements, in rows other ranks may own
+/// (Assembler). PETSc's preallocator gathers each row's columns from every rank at its owner.
 void PetscSolver::preallocate_from_every_rank(PetscInt m, PetscInt n) {
   Mat counter;
   check(MatCreate(comm_, &counter), "MatCreate");

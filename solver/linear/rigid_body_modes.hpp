@@ -4,8 +4,8 @@
 /// components hold the rotation θ, θ3 alone in component 0 in 2D) are turned, not moved: a
 /// translation moves every other node and leaves θ; a rotation ω turns the other nodes by
 /// ω × x and sets θ = ω. (PETSc's MatNullSpaceCreateRigidBody takes every node for a
-/// displacement one; on a shell model GAMG then needed 380 to 695 CG iterations a solve, growing
-/// with the mesh, against about 150 with these modes.)
+/// displacement one: a rotation of a shell model is then no mode of its matrix, and GAMG's
+/// iterations grow with the mesh; bench/petsc_solver/README.md, shells.)
 #include <span>
 #include <vector>
 
