@@ -264,7 +264,7 @@ void SurfaceToSurfacePair::track_master_motion(std::span<const Vec3> x) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Vec3& now = x[static_cast<std::size_t>(rows[i])];
     const double d = norm(sub(sub(now, master_x_[i]), shift));
-    if (!(d <= largest)) largest = d;  // (a NaN stays: no memo is trusted after it)
+    if (!(d <= largest)) largest = d;  // (a NaN stays, and drops every memo below)
     master_x_[i] = now;
   }
   master_shift_ = add(master_shift_, shift);
