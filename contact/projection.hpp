@@ -104,9 +104,11 @@ Projection closest_projection(std::span<const Facet> facets, std::span<const std
                               std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr,
                               std::span<const FacetBox> boxes = {}, ClosestMargin* margin = nullptr);
 
-/// closest_projection()'s result when facet `index` is its only candidate within `tol` of the
-/// closest distance (tol: the one it would compare with): the same numbers, to the bit, without
-/// the other candidates. The caller must know that no other facet comes that close.
+/// closest_projection()'s result when facet `index` is its only candidate within its tie
+/// tolerance of the closest distance: the same numbers, to the bit, without the other
+/// candidates. The caller must know that no other facet comes that close, and pass a `tol` at
+/// least that tolerance and below the distance (so that, as in the search, the normal is the
+/// facet's own, not an average over facets sharing the point).
 Projection sole_projection(std::span<const Facet> facets, std::int32_t index, std::span<const Vec3> x, const Vec3& xs,
                            const ProjectionHint* hint, double tol);
 
