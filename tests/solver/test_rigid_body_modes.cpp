@@ -2,7 +2,7 @@
 // resists with no force. On free models (no boundary condition) of shells, beams and solids,
 // the internal force of a small displacement along each mode is under 1e-7 of that of a
 // deformation of the same size (round-off on the beam and the solid; 3e-9 on the warped S4
-// plate, its drilling stiffness); with the rotation nodes moved like displacement nodes
+// plate, whose source was not traced); with the rotation nodes moved like displacement nodes
 // (PETSc's own modes) a rotation strains the model: over 1e-3.
 #include <gtest/gtest.h>
 
