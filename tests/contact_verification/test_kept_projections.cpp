@@ -8,13 +8,10 @@
 #include <map>
 #include <string>
 
-#include "contact/initial_adjustment.hpp"
 #include "contact/surface_to_surface.hpp"
-#include "parser/read_deck.hpp"
-#include "solver/analysis.hpp"
-#include "verification/verification_fixture.hpp"
+#include "contact_verification/contact_verification.hpp"
 
-namespace inpact {
+namespace inpact::contact_verification {
 namespace {
 
 struct SelfCheck {
@@ -24,34 +21,24 @@ struct SelfCheck {
 
 void expect_kept_projections_are_the_searchs(const std::string& path, const std::map<std::string, std::string>& params) {
   const SelfCheck on;
-  parser::ReadOptions options;
-  options.parameters = params;
-  auto deck = parser::read_deck(path, options);
-  ASSERT_TRUE(deck.ok()) << deck.report();
-  contact::apply_adjust(deck.model);
-  verification::Capture capture;
-  const auto outcome = solver::run_analysis(deck.model, capture, {});
-  EXPECT_TRUE(outcome.completed) << outcome.message;  // (a differing projection stops the run)
+  const auto r = run(path, params);  // (a differing projection throws out of it)
+  EXPECT_TRUE(r->outcome.completed) << r->outcome.message;
 }
 
-std::string deck(const std::string& folder, const std::string& name) {
-  return std::string(INPACT_SOURCE_DIR) + "/decks/" + folder + name + ".inp";
-}
+std::string contact_deck(const std::string& name) { return std::string(INPACT_SOURCE_DIR) + "/decks/contact/" + name + ".inp"; }
 
 const std::map<std::string, std::string> kSurfaceToSurface{{"type", "SURFACE TO SURFACE"}};
 
-TEST(KeptProjections, PinPushedIntoItsHoleSmoothedWithFriction) { expect_kept_projections_are_the_searchs(deck("", "pin_in_hole"), {}); }
-TEST(KeptProjections, Sphere3d) {
-  expect_kept_projections_are_the_searchs(deck("contact_verification/", "sphere_3d"), kSurfaceToSurface);
+TEST(KeptProjections, PinPushedIntoItsHoleSmoothedWithFriction) {
+  expect_kept_projections_are_the_searchs(std::string(INPACT_SOURCE_DIR) + "/decks/pin_in_hole.inp", {});
 }
-TEST(KeptProjections, Hertz2d) {
-  expect_kept_projections_are_the_searchs(deck("contact_verification/", "hertz_2d"), kSurfaceToSurface);
-}
+TEST(KeptProjections, Sphere3d) { expect_kept_projections_are_the_searchs(deck_path("sphere_3d"), kSurfaceToSurface); }
+TEST(KeptProjections, Hertz2d) { expect_kept_projections_are_the_searchs(deck_path("hertz_2d"), kSurfaceToSurface); }
 TEST(KeptProjections, InterferenceSmoothed2d) {
-  expect_kept_projections_are_the_searchs(deck("contact_verification/", "interference_2d_smoothed"), kSurfaceToSurface);
+  expect_kept_projections_are_the_searchs(deck_path("interference_2d_smoothed"), kSurfaceToSurface);
 }
-TEST(KeptProjections, FrictionSlide3d) { expect_kept_projections_are_the_searchs(deck("contact/", "friction_slide_3d_direct"), {}); }
-TEST(KeptProjections, SelfContact2d) { expect_kept_projections_are_the_searchs(deck("contact/", "patch_2d_self_s2s"), {}); }
+TEST(KeptProjections, FrictionSlide3d) { expect_kept_projections_are_the_searchs(contact_deck("friction_slide_3d_direct"), {}); }
+TEST(KeptProjections, SelfContact2d) { expect_kept_projections_are_the_searchs(contact_deck("patch_2d_self_s2s"), {}); }
 
 }  // namespace
-}  // namespace inpact
+}  // namespace inpact::contact_verification

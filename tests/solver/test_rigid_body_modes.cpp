@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "fixtures/deck_fixture.hpp"
-#include "model/reference_nodes.hpp"
 #include "solver/analysis_model.hpp"
 #include "solver/assembler.hpp"
 #include "solver/dof_map.hpp"
 #include "solver/linear/rigid_body_modes.hpp"
+#include "solver/linear_solve.hpp"
 #include "solver/step_conditions.hpp"
 
 namespace inpact {
@@ -101,29 +101,17 @@ struct FreeModel {
     for (double v : f) sum += v * v;
     return std::sqrt(sum);
   }
-  std::vector<double> coords() const {
-    std::vector<double> c;
-    for (const auto& x : am.model->mesh.nodes.coords)
-      for (int k = 0; k < am.dim; ++k) c.push_back(x[static_cast<std::size_t>(k)]);
-    return c;
-  }
-  std::vector<char> rotation() const {
-    std::vector<char> r;
-    for (const auto& n : model::rotating_nodes(*am.model, am.dim)) {
-      if (r.empty()) r.assign(am.model->mesh.nodes.size(), 0);
-      r[static_cast<std::size_t>(n.rot_node)] = 1;
-    }
-    return r;
-  }
+  /// What the PETSc path is given (3 coordinates a node: these models are 3D).
+  solver::EquationPoints points() const { return solver::equation_points(am, dofs); }
 };
 
 /// Every mode's force, against a deformation's (every unknown 1e-6 × its index) of the same norm.
 void expect_force_free(const std::string& deck, bool with_rotation_nodes) {
   FreeModel m(deck);
   ASSERT_TRUE(m.read.ok()) << m.read.report();
-  const std::vector<char> rotation = m.rotation();
-  EXPECT_EQ(!rotation.empty(), with_rotation_nodes);
-  const auto modes = solver::rigid_body_modes(m.am.dim, m.coords(), rotation);
+  const solver::EquationPoints p = m.points();
+  EXPECT_EQ(!p.rotation.empty(), with_rotation_nodes);
+  const auto modes = solver::rigid_body_modes(m.am.dim, p.coordinates, p.rotation);
   ASSERT_EQ(modes.size(), 6u);
   for (std::size_t k = 0; k < modes.size(); ++k) {
     double size = 0.0;
@@ -137,7 +125,7 @@ void expect_force_free(const std::string& deck, bool with_rotation_nodes) {
   }
   if (!with_rotation_nodes) return;
   // Rotation nodes moved like the others (PETSc's own modes): a rotation then strains the model.
-  const auto as_displacements = solver::rigid_body_modes(m.am.dim, m.coords(), {});
+  const auto as_displacements = solver::rigid_body_modes(m.am.dim, p.coordinates, {});
   for (std::size_t k = 3; k < 6; ++k) {
     double size = 0.0;
     for (double v : as_displacements[k]) size += v * v;
