@@ -45,6 +45,10 @@ struct FacetNodes {
   double phi(const Vec3& xs, double xi, double eta) const {
     std::array<double, 8> N;
     shape_values(shape, xi, eta, N);
+    return phi(xs, N);
+  }
+  /// φ where the shape values are N.
+  double phi(const Vec3& xs, const std::array<double, 8>& N) const {
     Vec3 x{};
     for (int a = 0; a < n; ++a) x = axpy(N[a], X[a], x);
     const Vec3 r = sub(xs, x);
@@ -53,6 +57,36 @@ struct FacetNodes {
 };
 
 bool is_tri(FacetShape s) { return s == FacetShape::Tri3 || s == FacetShape::Tri6; }
+
+/// Where a face's Newton iteration may start: a 5 × 5 grid over the domain (triangles: its points
+/// inside), with the shape values there, computed once (shape_values(), so φ on it has the bits
+/// of φ evaluated point by point).
+struct StartGrid {
+  int n = 0;
+  std::array<std::array<double, 2>, 25> xi{};
+  std::array<std::array<double, 8>, 25> N{};
+};
+StartGrid make_start_grid(FacetShape s) {
+  StartGrid g;
+  const bool tri = is_tri(s);
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      if (tri && i + j > 4) continue;
+      const std::array<double, 2> p = tri ? std::array<double, 2>{i / 4.0, j / 4.0}
+                                          : std::array<double, 2>{-1 + i / 2.0, -1 + j / 2.0};
+      g.xi[static_cast<std::size_t>(g.n)] = p;
+      shape_values(s, p[0], p[1], g.N[static_cast<std::size_t>(g.n)]);
+      ++g.n;
+    }
+  return g;
+}
+const StartGrid& start_grid(FacetShape s) {
+  static const std::array<StartGrid, 6> grids = {
+      StartGrid{},          StartGrid{},  // (edges: no grid)
+      make_start_grid(FacetShape::Tri3),  make_start_grid(FacetShape::Tri6),
+      make_start_grid(FacetShape::Quad4), make_start_grid(FacetShape::Quad8)};
+  return grids[static_cast<std::size_t>(s)];
+}
 
 constexpr double kInside = 1e-12;  // parametric tolerance of "inside the facet"
 
@@ -204,15 +238,13 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
   // Start: the given point, or the best point of a 5 × 5 grid (triangles: the grid points inside).
   double best = std::numeric_limits<double>::infinity();
   std::array<double, 2> xi = start ? *start : std::array<double, 2>{0, 0};
-  const bool tri = is_tri(fn.shape);
-  for (int i = 0; i <= (start ? -1 : 4); ++i)
-    for (int j = 0; j <= 4; ++j) {
-      const std::array<double, 2> p = tri ? std::array<double, 2>{i / 4.0, j / 4.0}
-                                          : std::array<double, 2>{-1 + i / 2.0, -1 + j / 2.0};
-      if (tri && i + j > 4) continue;
-      const double v = fn.phi(xs, p[0], p[1]);
-      if (v < best) best = v, xi = p;
+  if (!start) {
+    const StartGrid& grid = start_grid(fn.shape);
+    for (int k = 0; k < grid.n; ++k) {
+      const double v = fn.phi(xs, grid.N[static_cast<std::size_t>(k)]);
+      if (v < best) best = v, xi = grid.xi[static_cast<std::size_t>(k)];
     }
+  }
   for (int it = 0; it < 60; ++it) {
     const Local l = fn.eval(xi[0], xi[1]);
     const Vec3 r = sub(xs, l.x);
