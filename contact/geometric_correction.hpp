@@ -103,6 +103,16 @@ struct CorrectedPoint {
   bool corrected = false; ///< false: no correction applies here; x and normal are the facet's own
 };
 
+/// Where a point's ray projection onto the idealised surface (SurfaceCorrection::project) ended
+/// last: its master facet, ξ, and the Jacobian of the ray that Broyden's iteration had learned
+/// there. Started from it, the next projection of the same point takes near-Newton steps at once.
+struct RayMemo {
+  std::int32_t facet = -1;                     ///< −1: none (a cold start)
+  std::array<double, 2> xi{0, 0};
+  std::array<std::array<double, 3>, 3> jacobian{};  ///< rows: components; columns: ξ_α…, g
+  bool learned = false;                        ///< jacobian holds a learned one
+};
+
 /// Derivatives of the idealised point x̃ and normal ñ at ξ of one facet (what the gap's
 /// linearisation and the ray's Newton iteration need).
 ///   x_node[a][j], n_node[a][j]: ∂x̃/∂x_aj and ∂ñ/∂x_aj at fixed ξ, for facet node a (facet order)
@@ -137,12 +147,16 @@ class SurfaceCorrection {
   /// The same for this correction's own facet number `facet`.
   CorrectedPoint correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x) const;
   /// The point of the idealised surface over facet `f` whose normal passes through `xs`: `xi`,
-  /// on entry a start (the closest point of the faceted surface), is refined by Newton on
-  /// x̃(ξ) + g ñ(ξ) = x_s for (ξ, g) (the Jacobian from CorrectionDerivatives' ξ derivatives, at
-  /// most 10 iterations), kept inside the facet's domain, and returned. On a circle this puts x̃ on the ray from the centre through x_s, so the
-  /// gap (x_s − x̃)·ñ is the difference of radii; at the faceted closest point it would be off by
-  /// about half the square of the angle between the two rays.
-  CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs) const;
+  /// on entry a start (the closest point of the faceted surface), is refined by Broyden's
+  /// iteration on x̃(ξ) + g ñ(ξ) = x_s for (ξ, g) (at most 10 + 10 iterations), kept inside the
+  /// facet's domain, and returned. On a circle this puts x̃ on the ray from the centre through
+  /// x_s, so the gap (x_s − x̃)·ñ is the difference of radii; at the faceted closest point it
+  /// would be off by about half the square of the angle between the two rays.
+  /// `memo`, when given: its Jacobian, when `learned`, starts the iteration (else the facet's
+  /// tangents and the normal do); on return it holds the one learned (facet and ξ are the
+  /// caller's to set).
+  CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs,
+                         RayMemo* memo = nullptr) const;
   /// correct(f, xi, x) with its derivatives in `d` (the ξ derivatives only when `with_xi`).
   CorrectedPoint derivatives(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
                              CorrectionDerivatives& d, bool with_xi = true) const;
@@ -232,7 +246,8 @@ class SurfaceCorrections {
   CorrectedPoint correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x) const;
   /// SurfaceCorrection::project() with the correction that applies to `f`; where none does, the
   /// facet's own point and normal at `xi` (unchanged).
-  CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs) const;
+  CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs,
+                         RayMemo* memo = nullptr) const;
   /// SurfaceCorrection::derivatives() with the correction that applies to `f`; where none does,
   /// the facet's own point, normal and their derivatives.
   CorrectedPoint derivatives(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
@@ -246,10 +261,11 @@ class SurfaceCorrections {
 /// `facets[p.facet]`) onto the master's idealised surface: ξ refined by `master.project()`, the
 /// idealised point, normal and tangents, gap = (xs − x̃_m)·ñ. Unchanged where no correction
 /// applies. `dim`: 2 or 3 (the tangent basis). Both discretisations measure this way.
-/// `start`: where the refinement of ξ starts instead of p.xi (the corrected ξ of the last update).
+/// `memo`: the point's last ray projection; when it was onto p.facet, the refinement starts from
+/// its ξ and Jacobian instead of p.xi. Updated to this one.
 /// Returns whether it was corrected.
 bool correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
-                        const Vec3& xs, int dim, Projection& p, const std::array<double, 2>* start = nullptr);
+                        const Vec3& xs, int dim, Projection& p, RayMemo* memo = nullptr);
 
 /// Solves J (Δξ, Δg) = rhs for the ray x̃(ξ) + g ñ(ξ) through a point, J its Jacobian at gap g
 /// from `d`'s ξ derivatives (columns x̃_,α + g ñ_,α and ñ; an edge: the x–y rows). out = (Δξ…, Δg);

@@ -182,9 +182,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     // would look orthogonal too)
     pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine && projects_orthogonally(pr);
     if (!pt.overlaps) continue;
-    const bool warm = pt.corrected_hint.facet == pt.projection.facet;
-    pt.master_corrected = correct_master(x, g.x, pt.projection, warm ? &pt.corrected_hint.xi : nullptr);
-    pt.corrected_hint = {pt.projection.facet, pt.projection.xi};
+    pt.master_corrected = correct_master(x, g.x, pt.projection, &pt.corrected_hint);
   }
 }
 
@@ -327,9 +325,8 @@ void SurfaceToSurfacePair::set_geometric_correction(SurfaceCorrections master, S
   slave_correction_ = std::move(slave);
 }
 
-bool SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
-                                          const std::array<double, 2>* start) const {
-  return correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, start);
+bool SurfaceToSurfacePair::correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p, RayMemo* memo) const {
+  return correct_projection(master_correction_, master_.facets(), x, xs, dim_, p, memo);
 }
 
 const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<const Vec3> x, const Point& pt,

@@ -120,7 +120,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
     Vec3 x{};
     Projection projection;
     ProjectionHint hint;  ///< the faceted projection's facet and ξ when inside it: the next start
-    ProjectionHint corrected_hint;  ///< the corrected projection's facet and ξ: the next correction's start
+    RayMemo corrected_hint;  ///< the corrected projection's facet, ξ and ray Jacobian: the next one's start
     /// The last full search: its closest facet, how close any other facet then came (less the
     /// round-off of those bounds), where the point was and the master's motion then.
     struct SearchMemo {
@@ -184,8 +184,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
   double master_magnitude_ = 0.0;  ///< the largest coordinate of the master's boxes then
   SurfaceCorrections master_correction_, slave_correction_;
   /// Moves p onto the master's idealised surface for the slave point xs; whether it was corrected.
-  bool correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p,
-                      const std::array<double, 2>* start = nullptr) const;
+  /// `memo`: the point's last ray projection (correct_projection()), updated.
+  bool correct_master(std::span<const Vec3> x, const Vec3& xs, Projection& p, RayMemo* memo = nullptr) const;
   /// linearize()'s gradient for a smoothed pair: every point's exact gap gradient
   /// (smoothed_gap.hpp) and the change of its weight W da / Σ W da, into k.lin.
   void linearize_smoothed(std::span<const Vec3> x, SlaveKinematics& k) const;

@@ -663,6 +663,42 @@ TEST(GeometricCorrection, ProjectionPutsTheCorrectedPointOnTheRayOfThePoint) {
   EXPECT_GT(std::abs(dot(sub(xs, q.x), q.normal) - 0.02), 1e-5);
 }
 
+// A point's ray projection started from its last one (the RayMemo: ξ and the Jacobian Broyden's
+// iteration learned) lands where a cold start does; a memo whose Jacobian is no use (singular,
+// or pointing the wrong way) falls back to the cold start and still lands there.
+TEST(GeometricCorrection, RayMemoStartsFromTheLearnedJacobianAndLandsWhereAColdStartDoes) {
+  const int N = 8;
+  MeshBuilder b;
+  add_arc(b, "CPE4", N, 0.0, 2 * pi, true, ring({0, 0, 0}, 0.5, 1.0), "OUTER", "INNER");
+  const auto X = b.X();
+  const SurfaceCorrection sc = make(b, correction(Kind::Circumferential, "OUTER", {0, 0, 0}, {0, 0, 1}));
+  const Facet f = facets_of(b, "OUTER")[0];  // from 0 to 45°
+  auto point = [](double th, double r) { return Vec3{r * std::cos(th), r * std::sin(th), 0.0}; };
+  auto cold = [&](const Vec3& xs) {
+    std::array<double, 2> xi = contact::project_to_facet(f, X, xs).xi;
+    return sc.project(f, xi, X, xs);
+  };
+  contact::RayMemo memo;
+  std::array<double, 2> xi = contact::project_to_facet(f, X, point(0.3, 1.02)).xi;
+  sc.project(f, xi, X, point(0.3, 1.02), &memo);
+  ASSERT_TRUE(memo.learned);
+  // The next iterate of the point: a little along the surface and into it.
+  const Vec3 xs = point(0.31, 0.995);
+  const CorrectedPoint reference = cold(xs);
+  expect_near(reference.x, point(0.31, 1.0), kTol, "cold: on the ray");
+  contact::RayMemo warm = memo;
+  std::array<double, 2> from = xi;
+  expect_near(sc.project(f, from, X, xs, &warm).x, reference.x, kTol, "warm");
+  for (auto& row : memo.jacobian) row = {0, 0, 0};  // singular
+  contact::RayMemo singular = memo;
+  from = xi;
+  expect_near(sc.project(f, from, X, xs, &singular).x, reference.x, kTol, "singular memo");
+  memo.jacobian = {{{0, 5, 0}, {-5, 0, 0}, {0, 0, 1}}};  // the columns turned: steps the wrong way
+  from = xi;
+  expect_near(sc.project(f, from, X, xs, &memo).x, reference.x, kTol, "wrong memo");
+  EXPECT_TRUE(memo.learned);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The node-to-surface hook.
 
