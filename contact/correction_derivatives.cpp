@@ -1,5 +1,5 @@
 // Derivatives of the geometric correction's idealised point and normal (geometric_correction.hpp,
-// CorrectionDerivatives): what the smoothed gap's linearisation and the ray's Newton iteration use.
+// CorrectionDerivatives): what the smoothed gap's linearisation uses.
 #include <cmath>
 
 #include <fmt/format.h>

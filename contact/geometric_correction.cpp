@@ -381,18 +381,19 @@ CorrectedPoint SurfaceCorrection::correct(const Facet& f, std::array<double, 2> 
 
 namespace {
 
-/// Broyden's iteration on the ray x̃(ξ) + g ñ(ξ) = x_s for (ξ, g): the Jacobian J (columns ∂/∂ξ_α,
-/// then ∂/∂g; an edge: 2 × 2 on the x–y components, a face 3 × 3) starts from the facet's own
-/// tangents and the normal, [a_α, ñ], and learns the turn of ñ along the surface (g ñ_,ξ) and the
-/// idealised surface's own tangents from the steps taken (rank-one updates): superlinear at
-/// the cost of one correction per iteration. The facet's tangents alone (Gauss–Newton) converge
-/// linearly, at a rate of about the gap over the radius: far from the master, not in 10 steps.
 constexpr double kNegligibleStep = 1e-15;  ///< a ray step of ξ below this is not taken
 /// Iterations of the ray from the last Jacobian, then from the facet's tangents. (With 30 from
 /// the tangents the smoothed O-ring's tests fail: their fine reference mesh, 4 × finer, moves by
 /// up to 10 %, so some of its rays do not converge in 10 and where they stop matters. Not
 /// understood yet.)
 constexpr int kWarmRayIterations = 10, kColdRayIterations = 10;
+
+/// Broyden's iteration on the ray x̃(ξ) + g ñ(ξ) = x_s for (ξ, g): the Jacobian J (columns ∂/∂ξ_α,
+/// then ∂/∂g; an edge: 2 × 2 on the x–y components, a face 3 × 3) starts from the facet's own
+/// tangents and the normal, [a_α, ñ], and learns the turn of ñ along the surface (g ñ_,ξ) and the
+/// idealised surface's own tangents from the steps taken (rank-one updates): superlinear at
+/// the cost of one correction per iteration. The facet's tangents alone (Gauss–Newton) converge
+/// linearly, at a rate of about the gap over the radius: far from the master, not in 10 steps.
 
 struct RayIteration {
   int n = 3;                        ///< unknowns: param_dim + 1
@@ -482,9 +483,9 @@ bool iterate_ray(RayIteration& ray, FacetShape shape, const Vec3& xs, std::array
     // (a step of a few units in the last place of ξ changes no point worth evaluating)
     if (moved < kNegligibleStep) return true;
     const std::array<double, 3> taken{next[0] - xi[0], pd == 2 ? next[1] - xi[1] : step[1], pd == 2 ? step[2] : 0.0};
+    const CorrectedPoint q = correct(next);
+    if (!q.corrected) return false;  // (ξ and p stay the last corrected point)
     xi = next;
-    const CorrectedPoint q = correct(xi);
-    if (!q.corrected) return false;
     p = q;
     // On the domain's boundary the ray misses the facet (it belongs to a neighbour, or to no
     // facet): ξ there needs no more than 1e-8.
@@ -509,7 +510,11 @@ CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>&
   const std::size_t fi = static_cast<std::size_t>(i);
   const int pd = facet_param_dim(f.shape);
   Parts parts;  // (f has facets_[i]'s node rows, facet_key)
-  auto correct = [&](const std::array<double, 2>& at) { return correct_at(fi, eval_shape(f.shape, at[0], at[1]), x, parts); };
+  int corrections = 0;
+  auto correct = [&](const std::array<double, 2>& at) {
+    ++corrections;
+    return correct_at(fi, eval_shape(f.shape, at[0], at[1]), x, parts);
+  };
   const std::array<double, 2> xi0 = xi;
   const CorrectedPoint p0 = correct(xi0);
   if (!p0.corrected) return p0;
@@ -522,13 +527,17 @@ CorrectedPoint SurfaceCorrection::project(const Facet& f, std::array<double, 2>&
     ray.start(*memo, pd);
     if (iterate_ray(ray, f.shape, xs, xi, p, kWarmRayIterations, correct)) {
       ray.keep(*memo);
+      memo->corrections = corrections;
       return p;
     }
     xi = xi0, p = p0;
   }
   ray.start(g0, p0.normal, pd);
   iterate_ray(ray, f.shape, xs, xi, p, kColdRayIterations, correct);
-  if (memo) ray.keep(*memo);
+  if (memo) {
+    ray.keep(*memo);
+    memo->corrections = corrections;
+  }
   return p;
 }
 

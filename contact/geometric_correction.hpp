@@ -111,10 +111,11 @@ struct RayMemo {
   std::array<double, 2> xi{0, 0};
   std::array<std::array<double, 3>, 3> jacobian{};  ///< rows: components; columns: ξ_α…, g
   bool learned = false;                        ///< jacobian holds a learned one
+  int corrections = 0;  ///< corrections the last projection evaluated (what a warm start saves)
 };
 
 /// Derivatives of the idealised point x̃ and normal ñ at ξ of one facet (what the gap's
-/// linearisation and the ray's Newton iteration need).
+/// linearisation needs).
 ///   x_node[a][j], n_node[a][j]: ∂x̃/∂x_aj and ∂ñ/∂x_aj at fixed ξ, for facet node a (facet order)
 ///     and component j: through the facet point (N_a e_j) and the facet's rotation Q (its frame
 ///     (t1, t2, n) moves with the tangents a_α, ∂a_α/∂x_aj = N_a,α e_j); exact.
@@ -153,8 +154,10 @@ class SurfaceCorrection {
   /// x_s, so the gap (x_s − x̃)·ñ is the difference of radii; at the faceted closest point it
   /// would be off by about half the square of the angle between the two rays.
   /// `memo`, when given: its Jacobian, when `learned`, starts the iteration (else the facet's
-  /// tangents and the normal do); on return it holds the one learned (facet and ξ are the
-  /// caller's to set).
+  /// tangents and the normal do); where that does not converge, the iteration reruns from the
+  /// tangents, from the same ξ. On return the memo holds the Jacobian learned and the count of
+  /// corrections (facet and ξ are the caller's to set); unchanged when the point at the start
+  /// is not corrected.
   CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs,
                          RayMemo* memo = nullptr) const;
   /// correct(f, xi, x) with its derivatives in `d` (the ξ derivatives only when `with_xi`).
@@ -262,7 +265,8 @@ class SurfaceCorrections {
 /// idealised point, normal and tangents, gap = (xs − x̃_m)·ñ. Unchanged where no correction
 /// applies. `dim`: 2 or 3 (the tangent basis). Both discretisations measure this way.
 /// `memo`: the point's last ray projection; when it was onto p.facet, the refinement starts from
-/// its ξ and Jacobian instead of p.xi. Updated to this one.
+/// its ξ and Jacobian instead of p.xi. Updated to this one; cleared (a cold start next time)
+/// when this one is not corrected.
 /// Returns whether it was corrected.
 bool correct_projection(const SurfaceCorrections& master, std::span<const Facet> facets, std::span<const Vec3> x,
                         const Vec3& xs, int dim, Projection& p, RayMemo* memo = nullptr);

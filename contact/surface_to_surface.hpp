@@ -41,10 +41,11 @@
 ///
 /// Each point's projection onto the master facet it projected into at the last update starts
 /// from the ξ found then (ProjectionHint) instead of a grid search, and its geometric correction
-/// on the same facet from the corrected ξ of then: the same points to round-off (on every
-/// contact deck: CPRESS within 1.2e-11 of its largest value, U within 1.2e-13 of its largest, the
-/// same iterations; COPEN of closed nodes within 1e-15, of open ones far from the master — where
-/// the correction stops at its 10 iterations — within 4e-9 of the gap).
+/// on the same facet from the corrected ξ and the ray's Jacobian of then (RayMemo): the same
+/// points to round-off where the rays converge (the default job's CPRESS within 5e-10 of its
+/// largest value). Where a ray does not converge — open points far from the master, whose rays
+/// stop on a facet's edge — the point found depends on the start, so on the updates before
+/// (the default job's far-open COPEN moved up to 2.5e-5 when the Jacobian was first kept).
 /// The slave facets' points are projected on PairKinematics::set_threads() threads (each facet
 /// on one thread); the sums over a node's points then run facet after facet on one thread, so
 /// the results do not depend on the thread count.

@@ -13,7 +13,10 @@ after a change). Every deck runs with TYPE=SURFACE TO SURFACE (-P type=...). --d
 pin_in_hole_l2 and pin_in_hole_l3 too, the default job's finer meshes (generated, not run by
 default): on 2026-12-06 the default job's ratio was 1.91 (level 1), 1.53 (level 2), 0.97 (level 3),
 against 2.33, 1.70 and 1.13 for the build before 222b5a7 (a 6 x 6 plain rule on faces, every point
-searched at every update) in the same run.
+searched at every update) in the same run. On 2026-12-06 (later), with the tabulated start grid
+and the kept ray Jacobian (a5c056a, 1db6f3a): 1.91, 1.47, 0.96 against 2.00, 1.50, 0.99 for
+42d276b in the same run (contact per iteration 12.96 -> 12.34 ms at level 1; this machine's
+floor moves by 20 % between runs, so compare ratios within one run only).
 
     contact_iteration.py --inpact BUILD/apps/inpact [--base OTHER/inpact] [--runs 5] [--threads 1]
                          [--decks hertz_2d ...] [--out bench/results/contact_iteration.md]
