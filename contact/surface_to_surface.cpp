@@ -155,7 +155,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
   const Facet& f = slave_.facets()[fi];
   const auto rule = facet_points(x, f);
   auto& pts = points_[fi];
-  if (pts.size() != rule.size()) pts.assign(rule.size(), Point{});  // another layout: no warm starts
+  if (pts.size() != rule.size()) relayout(pts, rule);
   for (std::size_t q = 0; q < rule.size(); ++q) {
     Point& pt = pts[q];
     if (pt.param[0] == rule[q].xi && pt.param[1] == rule[q].eta) continue;
@@ -183,6 +183,29 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine && projects_orthogonally(pr);
     if (!pt.overlaps) continue;
     pt.master_corrected = correct_master(x, g.x, pt.projection, &pt.corrected_hint);
+  }
+}
+
+/// Another layout of a facet's points (a master edge moved across it): each new point starts
+/// from the state of the old point nearest to it on the facet (its faceted hint and its search
+/// memo). The memo stays valid: it holds where that point was, and reproject() bounds the new
+/// point's distance from there like any motion. The ray memo is not carried: started from
+/// another point's ξ and Jacobian, rays that end on a facet's edge end elsewhere on it (the
+/// default job's CPRESS then moved by 6e-7 of its largest, against 1e-10 without).
+void SurfaceToSurfacePair::relayout(std::vector<Point>& pts, std::span<const QuadPoint> rule) {
+  thread_local std::vector<Point> old;
+  old.swap(pts);
+  pts.assign(rule.size(), Point{});  // (a cold ray from each point's faceted ξ: see above)
+  if (old.empty()) return;
+  for (std::size_t q = 0; q < rule.size(); ++q) {
+    auto distance2 = [&](const Point& o) {
+      const double d0 = o.param[0] - rule[q].xi, d1 = o.param[1] - rule[q].eta;
+      return d0 * d0 + d1 * d1;
+    };
+    const auto nearest = std::min_element(old.begin(), old.end(),
+                                          [&](const Point& a, const Point& b) { return distance2(a) < distance2(b); });
+    pts[q].hint = nearest->hint;
+    pts[q].memo = nearest->memo;
   }
 }
 

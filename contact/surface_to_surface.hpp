@@ -37,7 +37,8 @@
 /// By Leibniz's rule the neglected term is the jump of the integrand across a cut times the cut's
 /// speed: across a master facet edge the gap, N_m and W are continuous, so the term vanishes; it
 /// does not where a piece ends at the master's free edge (W g jumps to 0 there).
-/// A facet whose point count changes between updates drops its warm starts (below).
+/// A facet whose point count changes between updates gives each new point the faceted hint and
+/// search memo of the nearest old one (below).
 ///
 /// Each point's projection onto the master facet it projected into at the last update starts
 /// from the ξ found then (ProjectionHint) instead of a grid search, and its geometric correction
@@ -149,6 +150,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
   /// Projects the integration points of slave facet fi (points_[fi]; one thread per facet).
   void measure_facet(std::span<const Vec3> x, std::size_t fi);
+  /// `pts` resized to the layout `rule`, each point carrying the state of the nearest old one.
+  static void relayout(std::vector<Point>& pts, std::span<const QuadPoint> rule);
   /// The integration points of slave facet f on x: the mortar rule against the master facets near
   /// it, or the plain rule (mortar_segments.hpp). Valid until the thread's next call.
   std::span<const QuadPoint> facet_points(std::span<const Vec3> x, const Facet& f) const;
