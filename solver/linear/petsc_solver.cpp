@@ -188,7 +188,7 @@ class PetscSolver final : public LinearSolver {
   void build(const SparseMatrix& a);
   void preallocate_from_every_rank(PetscInt m, PetscInt n);
   /// GAMG's near null space for this rank's m of the n rows: the mesh's rigid-body modes.
-  MatNullSpace rigid_body_modes(PetscInt m, PetscInt n) const;
+  PetscOwned<MatNullSpace, MatNullSpaceDestroy> rigid_body_modes(PetscInt m, PetscInt n) const;
   void set_fixed_diagonals();
   void fill_values(const SparseMatrix& a);
   void configure_krylov(KSPType type);
@@ -251,11 +251,7 @@ void PetscSolver::build(const SparseMatrix& a) {
                          "preallocation");
   else preallocate_from_every_rank(m, n);
   check(MatSetOption(a_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
-  if (!saddle_point_) {
-    MatNullSpace rigid = rigid_body_modes(m, n);
-    check(MatSetNearNullSpace(a_, rigid), "MatSetNearNullSpace");
-    MatNullSpaceDestroy(&rigid);
-  }
+  if (!saddle_point_) check(MatSetNearNullSpace(a_, rigid_body_modes(m, n).get()), "MatSetNearNullSpace");
   check(MatCreateVecs(a_, &x_, &b_), "MatCreateVecs");
   check(VecScatterCreateToAll(x_, &to_everywhere_, &x_everywhere_), "VecScatterCreateToAll");
   check(KSPCreate(comm_, &lu_), "KSPCreate");
@@ -278,24 +274,24 @@ void PetscSolver::build(const SparseMatrix& a) {
 
 /// Without rotation nodes, PETSc's own modes from the coordinates; with them, those of
 /// rigid_body_modes.hpp, orthonormalised (Gram–Schmidt).
-MatNullSpace PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
+PetscOwned<MatNullSpace, MatNullSpaceDestroy> PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
   const PetscInt dim = points_.dim;
   const double* coords = layout_->block_coords.data() + rows_->begin;
-  MatNullSpace rigid;
+  PetscOwned<MatNullSpace, MatNullSpaceDestroy> rigid;
   if (layout_->block_rotation.empty()) {
-    Vec c;
-    check(VecCreateMPIWithArray(comm_, dim, m, n, coords, &c), "coords");
-    check(MatNullSpaceCreateRigidBody(c, &rigid), "MatNullSpaceCreateRigidBody");
-    VecDestroy(&c);
+    PetscOwned<Vec, VecDestroy> c;
+    check(VecCreateMPIWithArray(comm_, dim, m, n, coords, c.out()), "coords");
+    check(MatNullSpaceCreateRigidBody(c.get(), rigid.out()), "MatNullSpaceCreateRigidBody");
     return rigid;
   }
   const auto values = solver::rigid_body_modes(
       static_cast<int>(dim), std::span<const double>(coords, static_cast<std::size_t>(m)),
       std::span<const char>(layout_->block_rotation.data() + rows_->begin / dim, static_cast<std::size_t>(m / dim)));
+  std::vector<PetscOwned<Vec, VecDestroy>> owned(values.size());
   std::vector<Vec> modes(values.size());
   for (std::size_t k = 0; k < values.size(); ++k) {
-    Vec& v = modes[k];
-    check(VecCreateMPI(comm_, m, n, &v), "VecCreateMPI");
+    check(VecCreateMPI(comm_, m, n, owned[k].out()), "VecCreateMPI");
+    Vec v = modes[k] = owned[k].get();
     PetscScalar* a;
     check(VecGetArray(v, &a), "VecGetArray");
     std::copy(values[k].begin(), values[k].end(), a);
@@ -307,17 +303,17 @@ MatNullSpace PetscSolver::rigid_body_modes(PetscInt m, PetscInt n) const {
     }
     check(VecNormalize(v, nullptr), "VecNormalize");
   }
-  check(MatNullSpaceCreate(comm_, PETSC_FALSE, static_cast<PetscInt>(modes.size()), modes.data(), &rigid),
+  check(MatNullSpaceCreate(comm_, PETSC_FALSE, static_cast<PetscInt>(modes.size()), modes.data(), rigid.out()),
         "MatNullSpaceCreate");
-  for (Vec& v : modes) VecDestroy(&v);
   return rigid;
 }
 
 /// Several ranks: each holds the entries of its own elements, in rows other ranks may own
 /// (Assembler). PETSc's preallocator gathers each row's columns from every rank at its owner.
 void PetscSolver::preallocate_from_every_rank(PetscInt m, PetscInt n) {
-  Mat counter;
-  check(MatCreate(comm_, &counter), "MatCreate");
+  PetscOwned<Mat, MatDestroy> owned;
+  check(MatCreate(comm_, owned.out()), "MatCreate");
+  Mat counter = owned.get();
   check(MatSetType(counter, MATPREALLOCATOR), "MatSetType");
   check(MatSetSizes(counter, m, m, n, n), "MatSetSizes");
   if (!saddle_point_) check(MatSetBlockSize(counter, points_.dim), "MatSetBlockSize");
@@ -329,7 +325,6 @@ void PetscSolver::preallocate_from_every_rank(PetscInt m, PetscInt n) {
   check(MatAssemblyBegin(counter, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(counter, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   check(MatPreallocatorPreallocate(counter, PETSC_TRUE, a_), "MatPreallocatorPreallocate");
-  MatDestroy(&counter);
 }
 
 /// The inpact values into the PETSc matrix. On several ranks each holds a partial sum (its share
@@ -369,8 +364,9 @@ void PetscSolver::fill_values(const SparseMatrix& a) {
 /// rank holds a whole diagonal before the assembly.
 void PetscSolver::set_fixed_diagonals() {
   if (layout_->fixed_slots.empty()) return;
-  Vec diagonal;
-  check(MatCreateVecs(a_, nullptr, &diagonal), "MatCreateVecs");
+  PetscOwned<Vec, VecDestroy> owned;
+  check(MatCreateVecs(a_, nullptr, owned.out()), "MatCreateVecs");
+  Vec diagonal = owned.get();
   check(MatGetDiagonal(a_, diagonal), "MatGetDiagonal");
   const PetscScalar* d = nullptr;
   check(VecGetArrayRead(diagonal, &d), "VecGetArrayRead");
@@ -386,7 +382,6 @@ void PetscSolver::set_fixed_diagonals() {
     sums[1] += 1.0;
   }
   check(VecRestoreArrayRead(diagonal, &d), "VecRestoreArrayRead");
-  VecDestroy(&diagonal);
   if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
   const PetscScalar scale = sums[1] > 0 && sums[0] > 0 ? sums[0] / sums[1] : 1.0;
   for (auto f = std::lower_bound(fixed.begin(), fixed.end(), rows_->begin); f != fixed.end() && *f < rows_->end; ++f)
