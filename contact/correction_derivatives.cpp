@@ -36,32 +36,46 @@ Vec3 rotated_change(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& 
   return out;
 }
 
-/// The facet's own point and normal with their node derivatives (no correction: x̃ = x_f, ñ = n),
-/// with the facet's frame q at g (`framed`: not degenerate); then rotate(a, j, dq) for node a,
-/// component j and the frame's change dq, which adds what the frame carries (a correction's
-/// offset and normal; nothing for the plain facet).
-template <class Rotate>
+/// What a change dq of the facet's frame changes x̃ and ñ by (linear in dq).
+struct FrameEffect {
+  Vec3 dx{}, dn{};
+};
+
+/// The facet's point x_f with its node derivatives, and the node derivatives of x̃ and ñ through
+/// the facet's frame q at g (`framed`: not degenerate): effect(dq) for the frame's change dq.
+/// Node a's component j moves tangent a_α by N_a,α e_j, and the frame's change is linear in the
+/// tangents' (frame_change()), so the effects of the 2 × 3 unit tangent changes are combined
+/// node by node.
+template <class Effect>
 void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, bool framed,
-                            const std::array<Vec3, 3>& q, CorrectionDerivatives& d, Rotate&& rotate) {
+                            const std::array<Vec3, 3>& q, CorrectionDerivatives& d, Effect&& effect) {
+  std::array<std::array<FrameEffect, 3>, 2> unit_effect{};
+  if (framed)
+    for (int al = 0; al < pd; ++al)
+      for (int j = 0; j < 3; ++j) {
+        std::array<Vec3, 2> da{};
+        da[static_cast<std::size_t>(al)][static_cast<std::size_t>(j)] = 1.0;
+        unit_effect[static_cast<std::size_t>(al)][static_cast<std::size_t>(j)] = effect(frame_change(g, q, pd, da));
+      }
   for (int a = 0; a < sh.n; ++a)
     for (int j = 0; j < 3; ++j) {
-      d.x_node[a][j] = {0, 0, 0};
-      d.x_node[a][j][j] = sh.N[a];
-      d.n_node[a][j] = {0, 0, 0};
-      if (!framed) continue;
-      std::array<Vec3, 2> da{};
-      da[0][j] = sh.dN[a][0];
-      da[1][j] = sh.dN[a][1];
-      const std::array<Vec3, 3> dq = frame_change(g, q, pd, da);
-      d.n_node[a][j] = dq[2];
-      rotate(a, j, dq);
+      Vec3 dx{}, dn{};
+      dx[static_cast<std::size_t>(j)] = sh.N[a];
+      for (int al = 0; al < pd; ++al) {
+        const FrameEffect& e = unit_effect[static_cast<std::size_t>(al)][static_cast<std::size_t>(j)];
+        dx = axpy(sh.dN[a][al], e.dx, dx);
+        dn = axpy(sh.dN[a][al], e.dn, dn);
+      }
+      d.x_node[a][j] = dx;
+      d.n_node[a][j] = dn;
     }
 }
 
+/// The facet's own point and normal (no correction: x̃ = x_f, ñ = n): the frame carries only n.
 void facet_node_derivatives(const FacetGeometry& g, const ShapeEval& sh, int pd, CorrectionDerivatives& d) {
   std::array<Vec3, 3> q{};
   const bool framed = facet_frame(g, q);
-  facet_node_derivatives(g, sh, pd, framed, q, d, [](int, int, const std::array<Vec3, 3>&) {});
+  facet_node_derivatives(g, sh, pd, framed, q, d, [](const std::array<Vec3, 3>& dq) { return FrameEffect{{}, dq[2]}; });
 }
 
 }  // namespace
@@ -76,11 +90,10 @@ CorrectedPoint SurfaceCorrection::node_derivatives(std::size_t i, std::array<dou
   Parts c;
   const CorrectedPoint p = correct_at(i, sh, x, c);
   // x̃ = x_f + Q d, ñ = unit(Q ñ_ref): Q moves with the current frame (uncorrected: x_f and n).
-  facet_node_derivatives(c.gx, sh, pd, c.framed, c.qx, d, [&](int a, int j, const std::array<Vec3, 3>& dq) {
-    if (!c.rotated) return;
-    d.x_node[a][j] = add(d.x_node[a][j], rotated_change(c.qX, dq, c.offset));
+  facet_node_derivatives(c.gx, sh, pd, c.framed, c.qx, d, [&](const std::array<Vec3, 3>& dq) {
+    if (!c.rotated) return FrameEffect{{}, dq[2]};
     const Vec3 dn = rotated_change(c.qX, dq, c.normal);
-    d.n_node[a][j] = axpy(-dot(p.normal, dn), p.normal, dn);
+    return FrameEffect{rotated_change(c.qX, dq, c.offset), axpy(-dot(p.normal, dn), p.normal, dn)};
   });
   return p;
 }
