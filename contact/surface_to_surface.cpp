@@ -207,6 +207,7 @@ void SurfaceToSurfacePair::relayout(std::vector<Point>& pts, std::span<const Qua
     pts[q].hint = nearest->hint;
     pts[q].memo = nearest->memo;
   }
+  old.clear();  // (their linearisations' storage goes now, not when the thread ends)
 }
 
 Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,

@@ -13,10 +13,13 @@ after a change). Every deck runs with TYPE=SURFACE TO SURFACE (-P type=...). --d
 pin_in_hole_l2 and pin_in_hole_l3 too, the default job's finer meshes (generated, not run by
 default): on 2026-12-06 the default job's ratio was 1.91 (level 1), 1.53 (level 2), 0.97 (level 3),
 against 2.33, 1.70 and 1.13 for the build before 222b5a7 (a 6 x 6 plain rule on faces, every point
-searched at every update) in the same run. On 2026-12-06 (later), with the tabulated start grid
-and the kept ray Jacobian (a5c056a, 1db6f3a): 1.91, 1.47, 0.96 against 2.00, 1.50, 0.99 for
-42d276b in the same run (contact per iteration 12.96 -> 12.34 ms at level 1; this machine's
-floor moves by 20 % between runs, so compare ratios within one run only).
+searched at every update) in the same run. Later that day (the tabulated projection start grid,
+the kept ray Jacobian, hints and memos kept across point layouts, cheaper correction
+derivatives: a5c056a..df2382b), 9 runs against 42d276b in the same run: contact per iteration
+12.89 -> 12.23 ms at level 1 (ratio 1.96 -> 1.92), 27.57 -> 26.23 ms at level 2 (1.53 -> 1.53),
+55.80 -> 54.90 ms at level 3 (0.99 -> 0.98); with --threads 2, 1.51 -> 1.46 at level 1 (the
+floor itself grows with 2 threads on so small a system). This machine's floor moves by 20 %
+between runs: compare ratios within one run only.
 
     contact_iteration.py --inpact BUILD/apps/inpact [--base OTHER/inpact] [--runs 5] [--threads 1]
                          [--decks hertz_2d ...] [--out bench/results/contact_iteration.md]
