@@ -396,7 +396,6 @@ constexpr int kWarmRayIterations = 10, kColdRayIterations = 10;
 /// idealised surface's own tangents from the steps taken (rank-one updates): superlinear at
 /// the cost of one correction per iteration. The facet's tangents alone (Gauss–Newton) converge
 /// linearly, at a rate of about the gap over the radius: far from the master, not in 10 steps.
-
 struct RayIteration {
   int n = 3;                        ///< unknowns: param_dim + 1
   double J[3][3] = {};              ///< rows: components (x, y[, z]); columns: ξ_α…, g

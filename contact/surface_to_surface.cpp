@@ -182,7 +182,7 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
     // would look orthogonal too)
     pt.overlaps = pr.facet >= 0 && dot(g.n, pr.normal) <= -kOverlapCosine && projects_orthogonally(pr);
     if (!pt.overlaps) continue;
-    pt.master_corrected = correct_master(x, g.x, pt.projection, &pt.corrected_hint);
+    pt.master_corrected = correct_master(x, g.x, pt.projection, &pt.ray_memo);
   }
 }
 

@@ -122,7 +122,7 @@ class SurfaceToSurfacePair final : public PairKinematics {
     Vec3 x{};
     Projection projection;
     ProjectionHint hint;  ///< the faceted projection's facet and ξ when inside it: the next start
-    RayMemo corrected_hint;  ///< the corrected projection's facet, ξ and ray Jacobian: the next one's start
+    RayMemo ray_memo;  ///< the corrected projection's facet, ξ and ray Jacobian: the next one's start
     /// The last full search: its closest facet, how close any other facet then came (less the
     /// round-off of those bounds), where the point was and the master's motion then.
     struct SearchMemo {
@@ -150,7 +150,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
   /// Projects the integration points of slave facet fi (points_[fi]; one thread per facet).
   void measure_facet(std::span<const Vec3> x, std::size_t fi);
-  /// `pts` resized to the layout `rule`, each point carrying the state of the nearest old one.
+  /// `pts` resized to the layout `rule`, each point with the faceted hint and search memo of the
+  /// nearest old one.
   static void relayout(std::vector<Point>& pts, std::span<const QuadPoint> rule);
   /// The integration points of slave facet f on x: the mortar rule against the master facets near
   /// it, or the plain rule (mortar_segments.hpp). Valid until the thread's next call.
