@@ -95,8 +95,9 @@ TEST_P(SmoothedGapGradient, MatchesCentralDifferencesOfTheGap) {
     EXPECT_GT(c.nodes, 0);
     // The o-ring's slave faces are cut where master facets begin and end (mortar_segments.hpp),
     // and under the wobble some cuts fall where the gap is not smooth (the groove's ends): the
-    // cuts' motion is not in the linearisation (surface_to_surface.hpp). Measured 1.9e-3 there,
-    // 1.7e-8 without the wobble; the plane and the sphere decks stay within 1e-6.
+    // cuts' motion is not in the linearisation (surface_to_surface.hpp). Measured 1.9e-3 there
+    // once, 5.9e-7 now (2026-12-06), 1.6e-8 without the wobble; the plane and the sphere decks
+    // stay within 1e-6.
     const bool cut_cells_move = std::string(GetParam()) == "oring_axi_smoothed.inp" && wobble > 0.0;
     EXPECT_LT(c.worst, cut_cells_move ? 5e-3 : 1e-6) << GetParam() << " wobble " << wobble;
   }
