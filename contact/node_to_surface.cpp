@@ -20,6 +20,10 @@ void NodeToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKinemat
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     SlaveKinematics& k = out[i];
     k.node = nodes[i];
+    if (!measures(i)) {
+      k.found = false;
+      continue;
+    }
     k.area = area_weight_ * areas[i];
     candidates_.clear();
     search_.query(x[nodes[i]], candidates_);

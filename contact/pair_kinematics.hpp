@@ -74,6 +74,13 @@ class PairKinematics {
   /// Threads update() may run on (its results do not depend on how many).
   void set_threads(int threads) { threads_ = threads; }
 
+  /// A distributed run: the slave nodes this rank measures, per slave node (empty: every one).
+  /// update() fills the entries of these (their value does not depend on which others are
+  /// measured) and leaves the others unfound; linearize() is asked for these only. A rigid
+  /// analytical master measures every node (its measure costs no search).
+  void set_measured_nodes(std::vector<char> measured) { measured_ = std::move(measured); }
+  bool measures(std::size_t i) const { return measured_.empty() || measured_[i] != 0; }
+
  protected:
   /// The pair's surfaces from `model`, and their search_radius().
   PairKinematics(const model::Model& model, const model::Surface& slave, const model::Surface& master, int dim,
@@ -90,6 +97,7 @@ class PairKinematics {
   double area_weight_ = 1.0;
   bool self_contact_ = false;
   int threads_ = 1;
+  std::vector<char> measured_;  ///< set_measured_nodes() (empty: every node)
 };
 
 /// Self-contact: drops from `candidates` every facet that has a node of `own` (a facet's rows).

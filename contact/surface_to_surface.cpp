@@ -102,12 +102,22 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   facet_boxes(master_.facets(), x, master_boxes_);
   centre_normals(master_.facets(), x, master_normals_);
   track_master_motion(x);
-  parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) { measure_facet(x, fi); });
+  // A measured node needs every facet around it (set_measured_nodes).
+  std::vector<char> facet_measured(facets.size(), 1);
+  if (!measured_.empty())
+    for (std::size_t fi = 0; fi < facets.size(); ++fi)
+      facet_measured[fi] = std::ranges::any_of(facets[fi].node_rows(), [&](std::int32_t row) {
+        return measures(static_cast<std::size_t>(slave_.local_index(row)));
+      });
+  parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) {
+    if (facet_measured[fi]) measure_facet(x, fi);
+  });
   // The sums over each node's points, facet after facet and point after point: the same order
   // whatever the thread count, so the same bits.
   std::vector<double> weighted_gap(nodes.size(), 0.0);
   std::vector<Vec3> weighted_normal(nodes.size(), Vec3{});
   for (std::size_t fi = 0; fi < facets.size(); ++fi) {
+    if (!facet_measured[fi]) continue;
     const Facet& f = facets[fi];
     for (const Point& pt : points_[fi]) {
       if (!pt.overlaps) continue;
@@ -123,6 +133,7 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   parallel_for(nodes.size(), threads_, 32, [&](std::size_t i) {
     SlaveKinematics& k = out[i];
     k.node = nodes[i];
+    if (!measures(i)) return;  // (unfound)
     project_node(x, k);
     const double len = norm(weighted_normal[i]);
     k.found = k.area > 0.0 && len > 0.0;

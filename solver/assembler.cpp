@@ -40,8 +40,8 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
   const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
   return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (PETSc's "
                      "partitioner on the element graph), holds their part of the system and owns the rows of their "
-                     "nodes; contact, constraints and output are computed alike on every rank (contact's part of "
-                     "the system on rank 0), rank 0 writes the results",
+                     "nodes; contact's slave nodes are shared by the rank of their rows, constraints and output are "
+                     "computed alike on every rank, rank 0 writes the results",
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 
@@ -52,7 +52,7 @@ void Assembler::build_pattern(const ExtraCouplings* extra) {
   const std::size_t n_el = am_.model->mesh.elements.size();
   const std::int64_t n_mult = extra ? static_cast<std::int64_t>(extra->multiplier_dofs.size()) : 0;
   // Pattern: every pair of equations reached from one element's DOFs through their masters (of
-  // this rank's elements), and on rank 0 the shared terms' couplings; every diagonal is in it.
+  // this rank's elements), and the extra couplings this rank adds; every diagonal is in it.
   tangent_ = SparseMatrix{};  // the old pattern's memory is free for the new one
   PatternBuilder pattern(dofs.n_equations() + n_mult);
   std::vector<std::int64_t> el_dofs, eqs;
@@ -72,7 +72,7 @@ void Assembler::build_pattern(const ExtraCouplings* extra) {
     element_dofs(e, el_dofs);
     add(el_dofs, -1);
   }
-  if (extra && adds_shared_terms()) {
+  if (extra) {
     for (const auto& block : extra->dof_blocks) add(block, -1);
     for (std::int64_t m = 0; m < n_mult; ++m) add(extra->multiplier_dofs[m], dofs.n_equations() + m);
   }
@@ -348,9 +348,6 @@ void Assembler::reduce(std::span<const double> full, std::span<double> reduced) 
 
 void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<const double> k,
                                        std::vector<SkewEntry>& skew) {
-  // Off rank 0 nothing is added, yet the skew entries are kept (at zero): whether Newton solves
-  // the unsymmetric system must be the same on every rank.
-  const double share = adds_shared_terms() ? 1.0 : 0.0;
   const std::size_t n = eqs.size();
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a; b < n; ++b) {
@@ -361,8 +358,8 @@ void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<cons
         for (const auto& [eb, wb] : eqs[b]) {
           // Entry (ea, eb) gets w (sym + skw), entry (eb, ea) w (sym − skw); when a ≠ b both land
           // in the upper triangle's one position for the symmetric part.
-          const double w = share * wa * wb;
-          if (sym != 0.0 && share != 0.0) {
+          const double w = wa * wb;
+          if (sym != 0.0) {
             const std::int64_t pos = tangent_.find(std::min(ea, eb), std::max(ea, eb));
             if (pos >= 0) tangent_.values[pos] += (ea == eb && a != b ? 2.0 : 1.0) * w * sym;
           }
@@ -376,7 +373,6 @@ void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<cons
 
 void Assembler::add_multiplier_column(std::int64_t row, std::span<const std::int64_t> dofs, double scale,
                                       std::span<const double> gradient, double diagonal) {
-  if (!adds_shared_terms()) return;
   if (diagonal != 0.0)
     if (const std::int64_t pos = tangent_.find(row, row); pos >= 0) tangent_.values[pos] += diagonal;
   for (std::size_t a = 0; a < dofs.size(); ++a)

@@ -82,9 +82,11 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world);
 /// evaluates its share of the elements (element_partition.hpp): the internal forces are
 /// summed over the ranks (every rank has f_int whole), the tangent is not: each rank's pattern
 /// and values hold its elements' part (add_diagonal: the diagonal of its nodes' equations,
-/// ElementPartition::rank_of_node), which the PETSc solver adds up. The terms every rank computes alike (contact:
-/// add_local_matrix and the other add_ functions but add_diagonal) go into rank 0's tangent
-/// only. An assembly that keeps points evaluates every element on every rank (complete_states).
+/// ElementPartition::rank_of_node), which the PETSc solver adds up. The terms beyond the
+/// elements (contact: set_extra_couplings, add_local_matrix and the other add_ functions) are
+/// added by every rank as it gives them: their caller shares them out (contact: each slave node
+/// on the rank of its rows). An assembly that keeps points evaluates every element on every rank
+/// (complete_states).
 class Assembler {
  public:
   /// `threads`: element computations run on this many threads (the sum stays in element order).
@@ -99,7 +101,9 @@ class Assembler {
   /// Size of the system: the DOF map's equations plus the multipliers of set_extra_couplings().
   std::int64_t n_equations() const { return tangent_.n; }
   /// Rebuilds the pattern with the elements' couplings and `extra` (contact, whenever its
-  /// couplings or multipliers change; the linear solvers redo their analysis then).
+  /// couplings or multipliers change; the linear solvers redo their analysis then). On a
+  /// distributed run `extra` holds this rank's couplings, and every multiplier of the system
+  /// (those another rank couples with an empty block).
   void set_extra_couplings(const ExtraCouplings& extra);
 
   /// Internal forces at u (full, overwritten) and, when asked, the reduced tangent.
@@ -118,9 +122,7 @@ class Assembler {
   /// Adds a local matrix k (n × n, row-major) on global DOFs `dofs` into the reduced tangent,
   /// through the DOF map's masters, as the elements' are (contact blocks: their couplings must
   /// be in the pattern, set_extra_couplings).
-  void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) {
-    if (adds_shared_terms()) scatter(dofs, k);
-  }
+  void add_local_matrix(std::span<const std::int64_t> dofs, std::span<const double> k) { scatter(dofs, k); }
 
   /// Adds `value` to the diagonal of free DOF `dof` (nothing for another kind): on a distributed
   /// run on the rank of its node, so that each rank adds its own.
@@ -171,8 +173,6 @@ class Assembler {
   bool owns_node(std::int64_t node) const {
     return !world_.distributed() || rank_of_node_[static_cast<std::size_t>(node)] == world_.rank;
   }
-  /// Whether the terms every rank computes alike go into this rank's tangent (rank 0's).
-  bool adds_shared_terms() const { return world_.rank == 0; }
   /// The smallest value over the ranks, and the lowest element row that has it.
   void smallest_over_ranks(SmallestAtElement& smallest) const;
   /// Sums a partitioned assembly's forces and force measures over the ranks.

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
+#include "element_partition.hpp"
+#include "slave_node_share.hpp"
 #include "shell_contact_offsets.hpp"
 #include "two_sided_exterior.hpp"
 #include "model/element_types.hpp"
@@ -98,6 +100,7 @@ struct ContactProblem::Pair {
   const model::ContactPair* deck = nullptr;
   const contact::ResolvedInteraction* resolved = nullptr;  ///< what check printed for this step
   std::unique_ptr<contact::PairKinematics> geometry;
+  SlaveNodeShare share;  ///< a distributed run: which slave nodes this rank measures and assembles
   std::unique_ptr<contact::Enforcement> enforcement;
   std::optional<contact::FrictionLaw> friction;     ///< unset: frictionless
   bool finite_sliding = true, surface_to_surface = false;
@@ -296,7 +299,7 @@ void ContactProblem::mark_step_change(Pair& p, const AnalysisModel& am, std::siz
   p.new_enforcement = prev && (prev->enforcement != p.resolved->enforcement || prev->augmented != p.resolved->augmented);
 }
 
-ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) : am_(am) {
+ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) : am_(am), world_(rank_world()) {
   const model::Model& m = *am.model;
   n_pairs_total_ = am.contact->rows.size();
   for (const contact::ResolvedInteraction& r : am.interactions.at(step_index)) {
@@ -319,6 +322,10 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     // (a clearance or a tied start sets the gap itself: the shells' faces do not shift it again)
     if (r.offsets == contact::GapOffsets::None && !entry.general)
       p->gap_offset = shell_thickness_offsets(m, entry.pair, *p->geometry);
+    if (world_.distributed()) {
+      p->share = SlaveNodeShare(world_, element_partition(am, world_).rank_of_node, p->geometry->slave().nodes());
+      p->geometry->set_measured_nodes(p->share.owned_mask());
+    }
     pairs_.push_back(std::move(p));
   }
 }
@@ -457,7 +464,7 @@ std::vector<double> ContactProblem::pair_forces(std::span<const std::size_t> row
     if (std::find(rows.begin(), rows.end(), static_cast<std::size_t>(p->row)) == rows.end()) continue;
     const auto& slaves = state.pairs[p->row];
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
-      if (!p->contributes[i]) continue;
+      if (!p->contributes[i] || !p->share.owns(i)) continue;
       // As assemble(): f_c = A c ∇g, and friction's A Bᵀ τ over its own kinematics.
       const contact::GapLinearization& lin = p->kin[i].lin;
       const double area = p->kin[i].area;
@@ -471,6 +478,7 @@ std::vector<double> ContactProblem::pair_forces(std::span<const std::size_t> row
         for (int d = 0; d < am_.dim; ++d, ++a) f[static_cast<std::size_t>(node) * am_.dim + d] += area * p->fric[i].force[a];
     }
   }
+  world_.sum(f);
   return f;
 }
 
@@ -489,6 +497,37 @@ void ContactProblem::evaluate(std::span<const double> u) {
     for (std::size_t i = 0; i < p->gap_offset.size(); ++i)
       if (p->kin[i].found) p->kin[i].projection.gap += p->gap_offset[i];
   }
+  // (after every pair's measure: a rank that owns more of one pair than of another does not
+  // wait for the others pair by pair)
+  for (auto& p : pairs_) gather_measures(*p);
+}
+
+namespace {
+
+/// What every rank needs of a slave node's measure: SlaveKinematics without its linearisations.
+struct MeasuredNode {
+  contact::Projection projection;
+  double area = 0.0, overlap = 1.0;
+  std::int32_t node = -1;
+  bool found = false, friction_found = false;
+};
+
+}  // namespace
+
+void ContactProblem::gather_measures(Pair& p) const {
+  p.share.gather<MeasuredNode>(
+      p.kin,
+      [](const contact::SlaveKinematics& k) {
+        return MeasuredNode{k.projection, k.area, k.overlap, k.node, k.found, k.friction_found};
+      },
+      [](const MeasuredNode& r, contact::SlaveKinematics& k) {
+        k.projection = r.projection;
+        k.area = r.area;
+        k.overlap = r.overlap;
+        k.node = r.node;
+        k.found = r.found;
+        k.friction_found = r.friction_found;
+      });
 }
 
 namespace {
@@ -574,6 +613,10 @@ void ContactProblem::set_pattern(std::vector<std::int64_t> signature, Assembler&
   for (const auto& p : pairs_)
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
       if (!p->contributes[i] && !p->damped[i]) continue;
+      if (!p->share.owns(i)) {  // (another rank's couplings)
+        if (p->multiplier[i] >= 0) extra.multiplier_dofs.emplace_back();
+        continue;
+      }
       std::vector<std::int64_t> dofs = p->local_dofs(i, am_.dim);
       if (p->multiplier[i] >= 0) extra.multiplier_dofs.push_back(dofs);
       extra.dof_blocks.push_back(std::move(dofs));
@@ -606,18 +649,24 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
       if (fs) p.clear_friction(i, *fs);
       p.damped[i] = p.damps(i, s);
       if (!p.contributes[i] && !p.damped[i]) continue;
+      if (p.uses_multipliers() && p.contributes[i]) {
+        p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
+        multipliers_.push_back({pi, i});
+      }
+      if (!p.share.owns(i)) {  // (its multiplier is an equation of the system all the same)
+        if (p.multiplier[i] >= 0) signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i), -1});
+        continue;
+      }
       p.geometry->linearize(x, p.kin[i], p.finite_sliding);
       if (fs && s.closed && p.friction_found(i) && p.contributes[i]) {
         p.update_friction(i, s, *fs, x);
         ++friction_evaluations_;
       }
       add_couplings(pi, i, signature);
-      if (p.uses_multipliers() && p.contributes[i]) {
-        p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
-        multipliers_.push_back({pi, i});
-      }
     }
   }
+  for (const auto& p : pairs_)  // (each rank's friction states, once every pair is done)
+    if (p->friction) p->share.gather(state.friction[p->row]);
   set_pattern(std::move(signature), assembler);
   return it;
 }
@@ -628,10 +677,17 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
   std::vector<double> k;
   skew_.clear();
   damping_dissipated_ = 0.0;
+  // A distributed run: this rank's nodes' forces apart, summed over the ranks below.
+  std::span<double> forces = f_int;
+  if (world_.distributed()) {
+    shared_forces_.assign(f_int.size() + 2, 0.0);
+    forces = std::span(shared_forces_).first(f_int.size());
+  }
   for (const auto& p : pairs_) {
     const auto& slaves = state.pairs[p->row];
     for (std::size_t i = 0; i < p->kin.size(); ++i) {
-      if (p->damped[i]) assemble_damping(*p, i, f_int, assembler);
+      if (!p->share.owns(i)) continue;
+      if (p->damped[i]) assemble_damping(*p, i, forces, assembler);
       if (!p->contributes[i]) continue;
       const contact::GapLinearization& lin = p->kin[i].lin;
       const double area = p->kin[i].area;
@@ -644,15 +700,29 @@ void ContactProblem::assemble(const ContactState& state, std::span<double> f_int
       const double s = nf.coefficient * area, stiff = nf.stiffness * area;
       k.assign(n * n, 0.0);
       for (std::size_t a = 0; a < n; ++a) {
-        f_int[dofs[a]] += s * lin.gradient[a];
+        forces[dofs[a]] += s * lin.gradient[a];
         for (std::size_t b = 0; b < n; ++b)
           k[a * n + b] = stiff * lin.gradient[a] * lin.gradient[b] + s * lin.hessian[a * n + b];
       }
       assembler.add_local_matrix(dofs, k);
-      if (p->friction_acts(i)) assemble_friction(*p, i, slaves[i], f_int, assembler);
+      if (p->friction_acts(i)) assemble_friction(*p, i, slaves[i], forces, assembler);
       if (p->multiplier[i] >= 0) assemble_constraint_column(*p, i, slaves[i], dofs, assembler);
     }
   }
+  unsymmetric_ = !skew_.empty();
+  if (world_.distributed()) sum_over_ranks(f_int);
+}
+
+void ContactProblem::sum_over_ranks(std::span<double> f_int) {
+  // (with the damping's dissipation and whether a rank's friction is unsymmetric: Newton solves
+  // the unsymmetric system on every rank or on none)
+  const std::size_t n = f_int.size();
+  shared_forces_[n] = damping_dissipated_;
+  shared_forces_[n + 1] = unsymmetric_ ? 1.0 : 0.0;
+  world_.sum(shared_forces_);
+  for (std::size_t d = 0; d < n; ++d) f_int[d] += shared_forces_[d];
+  damping_dissipated_ = shared_forces_[n];
+  unsymmetric_ = shared_forces_[n + 1] > 0.0;
 }
 
 void ContactProblem::assemble_friction(const Pair& p, std::size_t i, const SlaveState& s, std::span<double> f_int,

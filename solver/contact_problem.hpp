@@ -9,6 +9,11 @@
 /// through the assembler, the multiplier equations (after the DOF map's, see
 /// Assembler::set_extra_couplings), the augmentation check and the output values.
 ///
+/// A distributed run shares the slave nodes out by the rank of their rows (slave_node_share.hpp):
+/// each rank measures, linearises and assembles its own (the system's entries and the forces,
+/// summed over the ranks), and gathers every node's measure and friction state, so that the
+/// status, the multipliers, the checks and the output are the same on every rank.
+///
 /// ∇g = [n; −N_a n] over the slave node and its master facet's nodes; ∇²g only for finite
 /// sliding; A the slave node's area, held fixed in the linearisation. A status change of a
 /// multiplier's node is a severe discontinuity iteration.
@@ -33,6 +38,7 @@
 #include "assembler.hpp"
 #include "contact/enforcement.hpp"
 #include "contact_results.hpp"
+#include "linear/petsc_module.hpp"
 #include "iteration_seconds.hpp"
 
 namespace inpact::solver {
@@ -166,8 +172,9 @@ class ContactProblem {
   /// was to hold is free, and no smaller increment changes that. Empty when every pair just
   /// started holds something, or none just started.
   std::string untouched_at_start() const;
-  /// Did the last assemble() leave an unsymmetric part (friction with a pressure coupling)?
-  bool unsymmetric() const { return !skew_.empty(); }
+  /// Did the last assemble() leave an unsymmetric part (friction with a pressure coupling; on a
+  /// distributed run, on any rank)?
+  bool unsymmetric() const { return unsymmetric_; }
   /// The full (both triangles) tangent: the assembler's symmetric upper triangle `upper`
   /// mirrored, plus the skew part of the last assemble(). For UMFPACK.
   const SparseMatrix& unsymmetric_tangent(const SparseMatrix& upper);
@@ -228,7 +235,13 @@ class ContactProblem {
   struct Pair;
   /// Search, projection and gap of every slave node at u; a call at the u of the last one
   /// (the output of a converged state, whose last iteration evaluated it) keeps its results.
+  /// On a distributed run each rank measures its own slave nodes (SlaveNodeShare) and every
+  /// rank then has every node's measure (gather_measures).
   void evaluate(std::span<const double> u);
+  void gather_measures(Pair& p) const;
+  /// A distributed run: the contact forces of every rank's nodes (shared_forces_) into f_int on
+  /// every rank, with the damping's dissipation and the unsymmetric flag.
+  void sum_over_ranks(std::span<double> f_int);
   /// update() of slave i: its status, and the checks every method shares (chattering, HCRIT).
   void mark_step_change(Pair& p, const AnalysisModel& am, std::size_t step_index);
   void start_step(const Pair& p, ContactState& state) const;
@@ -251,6 +264,7 @@ class ContactProblem {
   /// The damping of slave i into f_int and the tangent (its symmetric part).
   void assemble_damping(const Pair& p, std::size_t i, std::span<double> f_int, Assembler& assembler);
   const AnalysisModel& am_;
+  RankWorld world_;
   std::size_t n_pairs_total_ = 0;
   std::vector<std::unique_ptr<Pair>> pairs_;
   std::vector<std::int64_t> signature_;  ///< couplings the assembler's pattern holds
@@ -258,6 +272,8 @@ class ContactProblem {
   std::vector<std::pair<std::size_t, std::size_t>> multipliers_;
   /// Skew part of the contact tangent, ½(K − Kᵀ) entries (row, column equation, value).
   std::vector<Assembler::SkewEntry> skew_;
+  bool unsymmetric_ = false;  ///< unsymmetric(): skew_ not empty on some rank
+  std::vector<double> shared_forces_;  ///< a distributed run's scratch: this rank's contact forces, then two flags
   Assembler::LocalEquations friction_eqs_;  ///< assemble_friction's scratch
   std::vector<double> friction_k_;
   SparseMatrix full_;

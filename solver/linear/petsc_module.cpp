@@ -23,6 +23,7 @@ struct Module {
   decltype(&inpact_petsc_finish) finish = nullptr;
   decltype(&inpact_mpi_world) world = nullptr;
   decltype(&inpact_mpi_allreduce) allreduce = nullptr;
+  decltype(&inpact_mpi_allgather) allgather = nullptr;
   decltype(&inpact_mpi_abort) abort = nullptr;
   decltype(&inpact_partition_elements) partition = nullptr;
   std::string error;  ///< why it could not be started
@@ -73,9 +74,10 @@ Module& module() {
     m.finish = reinterpret_cast<decltype(&inpact_petsc_finish)>(dlsym(m.handle, "inpact_petsc_finish"));
     m.world = reinterpret_cast<decltype(&inpact_mpi_world)>(dlsym(m.handle, "inpact_mpi_world"));
     m.allreduce = reinterpret_cast<decltype(&inpact_mpi_allreduce)>(dlsym(m.handle, "inpact_mpi_allreduce"));
+    m.allgather = reinterpret_cast<decltype(&inpact_mpi_allgather)>(dlsym(m.handle, "inpact_mpi_allgather"));
     m.abort = reinterpret_cast<decltype(&inpact_mpi_abort)>(dlsym(m.handle, "inpact_mpi_abort"));
     m.partition = reinterpret_cast<decltype(&inpact_partition_elements)>(dlsym(m.handle, "inpact_partition_elements"));
-    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.abort || !m.partition) {
+    if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.allgather || !m.abort || !m.partition) {
       m.error = "the PETSc module lacks its entry points";
       m.create = nullptr;
       return;
@@ -129,6 +131,12 @@ void RankWorld::sum(std::span<double> values) const {
 
 void RankWorld::abort(int code) const {
   if (distributed()) module().abort(code);
+}
+
+void RankWorld::gather(std::span<const std::byte> mine, std::span<std::byte> all,
+                       std::span<const long> bytes_of_rank) const {
+  if (distributed()) module().allgather(mine.data(), static_cast<long>(mine.size()), all.data(), bytes_of_rank.data());
+  else std::copy(mine.begin(), mine.end(), all.begin());
 }
 
 double RankWorld::min(double value) const {

@@ -328,8 +328,8 @@ void PetscSolver::preallocate_from_every_rank(PetscInt m, PetscInt n) {
 }
 
 /// The inpact values into the PETSc matrix. On several ranks each holds a partial sum (its share
-/// of the elements; rank 0 the contact and other terms every rank computes alike,
-/// solver/assembler.hpp): every rank adds what it has, the rows of others included, and PETSc's
+/// of the elements and of the contact's slave nodes, solver/assembler.hpp): every rank adds what
+/// it has, the rows of others included, and PETSc's
 /// assembly sends those to their owners. Then the identity rows (set_fixed_diagonals).
 void PetscSolver::fill_values(const SparseMatrix& a) {
   std::fill(values_.begin(), values_.end(), 0.0);
@@ -429,7 +429,7 @@ FactorStatus PetscSolver::set_up_lu() {
 }
 
 FactorStatus PetscSolver::factorize(const SparseMatrix& a) {
-  // Each rank holds its own part of the pattern: a change in one (contact, on rank 0) is a new
+  // Each rank holds its own part of the pattern: a change in one (its contact nodes') is a new
   // matrix on every rank.
   int changed = !a_ || a.n != n_ || a.col_ptr != col_ptr_ || a.row_idx != row_idx_ ? 1 : 0;
   if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, comm_);
@@ -524,6 +524,20 @@ void inpact_petsc_finish() { PetscFinalize(); }
 void inpact_mpi_world(int* rank, int* size) {
   MPI_Comm_rank(PETSC_COMM_WORLD, rank);
   MPI_Comm_size(PETSC_COMM_WORLD, size);
+}
+
+void inpact_mpi_allgather(const void* send, long send_bytes, void* recv, const long* bytes_of_rank) {
+  int size = 0;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  std::vector<int> counts(static_cast<std::size_t>(size)), displacements(static_cast<std::size_t>(size));
+  long at = 0;
+  for (int r = 0; r < size; ++r) {
+    counts[static_cast<std::size_t>(r)] = static_cast<int>(bytes_of_rank[r]);
+    displacements[static_cast<std::size_t>(r)] = static_cast<int>(at);
+    at += bytes_of_rank[r];
+  }
+  MPI_Allgatherv(send, static_cast<int>(send_bytes), MPI_BYTE, recv, counts.data(), displacements.data(), MPI_BYTE,
+                 PETSC_COMM_WORLD);
 }
 
 void inpact_mpi_abort(int code) {

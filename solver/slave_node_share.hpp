@@ -1,0 +1,66 @@
+#pragma once
+/// How a distributed run shares a contact pair's slave nodes (solver/contact_problem.hpp): each
+/// node is measured, linearised and assembled by the rank that owns its rows
+/// (ElementPartition::rank_of_node), so that its terms land mostly in that rank's rows and the
+/// search and projection, contact's cost, are divided. What the status rules read of a node
+/// (its measure without the linearisations, its friction state) is then gathered to every
+/// rank: every rank holds the same contact state and takes the same decisions, as the
+/// analysis's control flow requires. On one rank every node is its own and nothing moves.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "linear/petsc_module.hpp"
+
+namespace inpact::solver {
+
+class SlaveNodeShare {
+ public:
+  /// One rank: every node owned.
+  SlaveNodeShare() = default;
+  /// The share of `slave_nodes` (node rows) by `rank_of_node` over `world`'s ranks.
+  SlaveNodeShare(RankWorld world, std::span<const int> rank_of_node, std::span<const std::int32_t> slave_nodes);
+
+  bool shared() const { return !owner_.empty(); }
+  /// Does this rank own slave node i (its position in the surface's node list)?
+  bool owns(std::size_t i) const { return owner_.empty() || owner_[i] == world_.rank; }
+  /// Per slave node, 1 where this rank owns it (PairKinematics::set_measured_nodes); empty on one rank.
+  std::vector<char> owned_mask() const;
+
+  /// Every rank's owned entries of `items` (one per slave node) copied into every rank's
+  /// `items`, through `pack` (item → trivially copyable Record) and `unpack` (Record, item&).
+  template <class Record, class Item, class Pack, class Unpack>
+  void gather(std::vector<Item>& items, Pack pack, Unpack unpack) const {
+    static_assert(std::is_trivially_copyable_v<Record>);
+    if (!shared()) return;
+    std::vector<Record> mine;
+    mine.reserve(static_cast<std::size_t>(count_of_rank_[static_cast<std::size_t>(world_.rank)]));
+    for (std::size_t i = 0; i < items.size(); ++i)
+      if (owns(i)) mine.push_back(pack(items[i]));
+    std::vector<Record> all(items.size());
+    std::vector<long> bytes(count_of_rank_.size());
+    for (std::size_t r = 0; r < bytes.size(); ++r) bytes[r] = count_of_rank_[r] * static_cast<long>(sizeof(Record));
+    world_.gather(std::as_bytes(std::span(mine)), std::as_writable_bytes(std::span(all)), bytes);
+    // Rank r's records follow those of the ranks before it, in slave node order.
+    std::vector<long> next = first_of_rank();
+    for (std::size_t i = 0; i < items.size(); ++i)
+      unpack(all[static_cast<std::size_t>(next[static_cast<std::size_t>(owner_[i])]++)], items[i]);
+  }
+  /// The same with the items themselves as records.
+  template <class Item>
+  void gather(std::vector<Item>& items) const {
+    gather<Item>(items, [](const Item& item) { return item; }, [](const Item& r, Item& item) { item = r; });
+  }
+
+ private:
+  /// Per rank, the position of its first record in the gathered list.
+  std::vector<long> first_of_rank() const;
+
+  RankWorld world_;
+  std::vector<int> owner_;           ///< per slave node, its rank (empty on one rank)
+  std::vector<long> count_of_rank_;  ///< slave nodes per rank
+};
+
+}  // namespace inpact::solver
