@@ -54,8 +54,9 @@ class PairKinematics {
   const ContactSurface& master() const { return master_; }
   /// Largest distance at which a master facet is guaranteed to be found (a facet size).
   double search_radius() const { return radius_; }
-  /// Searches and measures every slave node on coordinates `x` (all node rows); `out` gets one
-  /// entry per slave node, in slave().nodes() order.
+  /// Searches and measures every slave node (set_measured_nodes: those measured) on coordinates
+  /// `x` (all node rows); `out` gets one entry per slave node, in slave().nodes() order (an
+  /// unmeasured node's: unfound, the rest of it meaningless).
   virtual void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) = 0;
   /// Fills k.lin (the gradient; the Hessian too when `finite_sliding`) on coordinates `x`, for
   /// the state of the last update(); surface to surface also k.friction_lin.
@@ -75,9 +76,10 @@ class PairKinematics {
   void set_threads(int threads) { threads_ = threads; }
 
   /// A distributed run: the slave nodes this rank measures, per slave node (empty: every one).
-  /// update() fills the entries of these (their value does not depend on which others are
-  /// measured) and leaves the others unfound; linearize() is asked for these only. A rigid
-  /// analytical master measures every node (its measure costs no search).
+  /// update() fills the entries of these and leaves the others unfound; linearize() is asked
+  /// for these only. While the set stays the same, a measured node gets the bits it gets when
+  /// every node is measured (its facets' points keep their history). A rigid analytical
+  /// master measures every node (its measure costs no search).
   void set_measured_nodes(std::vector<char> measured) { measured_ = std::move(measured); }
   bool measures(std::size_t i) const { return measured_.empty() || measured_[i] != 0; }
 

@@ -40,8 +40,8 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
   const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
   return fmt::format("distributed run on {} MPI ranks: each evaluates {}-{} of the {} elements (PETSc's "
                      "partitioner on the element graph), holds their part of the system and owns the rows of their "
-                     "nodes; contact's slave nodes are shared by the rank of their rows, constraints and output are "
-                     "computed alike on every rank, rank 0 writes the results",
+                     "nodes; contact's slave nodes are shared in compact patches of even cost, constraints and "
+                     "output are computed alike on every rank, rank 0 writes the results",
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 

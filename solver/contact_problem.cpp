@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 
 #include "analysis_error.hpp"
-#include "element_partition.hpp"
 #include "slave_node_share.hpp"
 #include "shell_contact_offsets.hpp"
 #include "two_sided_exterior.hpp"
@@ -108,7 +107,7 @@ struct ContactProblem::Pair {
   std::vector<contact::SlaveKinematics> kin;
   std::vector<char> contributes;           ///< per slave node, at the last update
   std::vector<std::int64_t> multiplier;    ///< per slave node: multiplier index or −1
-  std::vector<contact::FrictionPoint> fric;  ///< frictional pairs: per slave node, at the last update
+  std::vector<contact::FrictionPoint> fric;  ///< frictional pairs: per slave node (this rank's), at the last update
   /// *CLEARANCE or the TIED law: per slave node, what is added to the measured gap (empty: none).
   std::vector<double> gap_offset;
   /// Per slave node: starts_closed() when the pair came into force (at the step's start).
@@ -322,10 +321,6 @@ ContactProblem::ContactProblem(const AnalysisModel& am, std::size_t step_index) 
     // (a clearance or a tied start sets the gap itself: the shells' faces do not shift it again)
     if (r.offsets == contact::GapOffsets::None && !entry.general)
       p->gap_offset = shell_thickness_offsets(m, entry.pair, *p->geometry);
-    if (world_.distributed()) {
-      p->share = SlaveNodeShare(world_, element_partition(am, world_).rank_of_node, p->geometry->slave().nodes());
-      p->geometry->set_measured_nodes(p->share.owned_mask());
-    }
     pairs_.push_back(std::move(p));
   }
 }
@@ -497,6 +492,8 @@ void ContactProblem::evaluate(std::span<const double> u) {
     for (std::size_t i = 0; i < p->gap_offset.size(); ++i)
       if (p->kin[i].found) p->kin[i].projection.gap += p->gap_offset[i];
   }
+  if (!world_.distributed()) return;
+  if (!shared_) return share_slave_nodes();  // (this measure was whole on every rank)
   // (after every pair's measure: a rank that owns more of one pair than of another does not
   // wait for the others pair by pair)
   for (auto& p : pairs_) gather_measures(*p);
@@ -513,6 +510,27 @@ struct MeasuredNode {
 };
 
 }  // namespace
+
+/// A slave node facing its master (found) costs the projections of its facets' points onto the
+/// candidate facets and, smoothed, their rays onto the idealised surface: some 1e4 instructions
+/// a point (the default job's profile); one facing nothing costs a search that finds no facet,
+/// a few hundred. Twenty to one is a round figure between them.
+constexpr double kFacingNodeCost = 20.0;
+
+void ContactProblem::share_slave_nodes() {
+  const auto& coords = am_.model->mesh.nodes.coords;
+  for (auto& p : pairs_) {
+    std::vector<std::array<double, 3>> points;
+    std::vector<double> cost;
+    for (std::size_t i = 0; i < p->kin.size(); ++i) {
+      points.push_back(coords[static_cast<std::size_t>(p->geometry->slave().nodes()[i])]);
+      cost.push_back(p->kin[i].found ? kFacingNodeCost : 1.0);
+    }
+    p->share = SlaveNodeShare(world_, points, cost);
+    p->geometry->set_measured_nodes(p->share.owned_mask());
+  }
+  shared_ = true;
+}
 
 void ContactProblem::gather_measures(Pair& p) const {
   p.share.gather<MeasuredNode>(

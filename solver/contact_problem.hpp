@@ -12,7 +12,9 @@
 /// A distributed run shares the slave nodes out by the rank of their rows (slave_node_share.hpp):
 /// each rank measures, linearises and assembles its own (the system's entries and the forces,
 /// summed over the ranks), and gathers every node's measure and friction state, so that the
-/// status, the multipliers, the checks and the output are the same on every rank.
+/// status, the multipliers, the checks and the output are the same on every rank. So on such a
+/// run begin_attempt, update, assemble, results and pair_forces are collective: every rank
+/// calls them, in the same order.
 ///
 /// ∇g = [n; −N_a n] over the slave node and its master facet's nodes; ∇²g only for finite
 /// sliding; A the slave node's area, held fixed in the linearisation. A status change of a
@@ -176,9 +178,9 @@ class ContactProblem {
   /// distributed run, on any rank)?
   bool unsymmetric() const { return unsymmetric_; }
   /// The full (both triangles) tangent: the assembler's symmetric upper triangle `upper`
-  /// mirrored, plus the skew part of the last assemble(). For UMFPACK.
+  /// mirrored, plus the skew part of the last assemble(). For UMFPACK (and PETSc's GMRES).
   const SparseMatrix& unsymmetric_tangent(const SparseMatrix& upper);
-  /// Friction return mappings evaluated so far (0 for a frictionless model: tests).
+  /// Friction return mappings evaluated so far (0 for a frictionless model: tests), by this rank.
   std::int64_t friction_evaluations() const { return friction_evaluations_; }
 
   /// *CONTACT CONTROLS, STIFFNESS SCALE FACTOR=USER ADAPTIVE: does a pair ask for a reduced
@@ -239,6 +241,10 @@ class ContactProblem {
   /// rank then has every node's measure (gather_measures).
   void evaluate(std::span<const double> u);
   void gather_measures(Pair& p) const;
+  /// A distributed run's first measure (whole on every rank): each pair's slave nodes shared
+  /// out by the cost of their measure (SlaveNodeShare), for the rest of the step. Each
+  /// measured facet's points thus keep their whole history, as on one rank.
+  void share_slave_nodes();
   /// A distributed run: the contact forces of every rank's nodes (shared_forces_) into f_int on
   /// every rank, with the damping's dissipation and the unsymmetric flag.
   void sum_over_ranks(std::span<double> f_int);
@@ -265,6 +271,7 @@ class ContactProblem {
   void assemble_damping(const Pair& p, std::size_t i, std::span<double> f_int, Assembler& assembler);
   const AnalysisModel& am_;
   RankWorld world_;
+  bool shared_ = false;  ///< share_slave_nodes() done (a distributed run)
   std::size_t n_pairs_total_ = 0;
   std::vector<std::unique_ptr<Pair>> pairs_;
   std::vector<std::int64_t> signature_;  ///< couplings the assembler's pattern holds

@@ -1,11 +1,15 @@
 #pragma once
 /// How a distributed run shares a contact pair's slave nodes (solver/contact_problem.hpp): each
-/// node is measured, linearised and assembled by the rank that owns its rows
-/// (ElementPartition::rank_of_node), so that its terms land mostly in that rank's rows and the
-/// search and projection, contact's cost, are divided. What the status rules read of a node
+/// rank measures, linearises and assembles its own share of them, a compact patch of the
+/// surface (recursive coordinate bisection of the nodes' reference positions) of even cost, so
+/// that the search and projection, contact's cost, are divided whatever the element partition
+/// (which may well leave a whole slave surface on one rank: two bodies touching only through
+/// contact are two components of the element graph). The patch's terms go into rows other
+/// ranks may own; PETSc's assembly sends them there. What the status rules read of a node
 /// (its measure without the linearisations, its friction state) is then gathered to every
 /// rank: every rank holds the same contact state and takes the same decisions, as the
 /// analysis's control flow requires. On one rank every node is its own and nothing moves.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -20,8 +24,10 @@ class SlaveNodeShare {
  public:
   /// One rank: every node owned.
   SlaveNodeShare() = default;
-  /// The share of `slave_nodes` (node rows) by `rank_of_node` over `world`'s ranks.
-  SlaveNodeShare(RankWorld world, std::span<const int> rank_of_node, std::span<const std::int32_t> slave_nodes);
+  /// The share of the slave nodes at `points` (their reference positions, in the surface's node
+  /// order) over `world`'s ranks, each rank's `cost` (per slave node) as even as can be. The
+  /// same on every rank given the same arguments.
+  SlaveNodeShare(RankWorld world, std::span<const std::array<double, 3>> points, std::span<const double> cost);
 
   bool shared() const { return !owner_.empty(); }
   /// Does this rank own slave node i (its position in the surface's node list)?

@@ -1,9 +1,10 @@
 // A distributed run measures each slave node on one rank only (PairKinematics::set_measured_nodes,
 // solver/slave_node_share.hpp) and gathers the measures: that is right only if a node's measure
-// does not depend on which other nodes are measured. Checked here on one process: a pair that
+// does not depend on which other nodes are measured, the set staying the same from update to
+// update (the points' memos warm start the later ones). Checked here on one process: a pair that
 // measures every other node gives those nodes the bits of a pair that measures them all (gap,
-// area, normal, projection, linearisation), over successive updates (the points' memos warm
-// start the later ones), and leaves the others unfound.
+// area, overlap, projection, friction's own projection, linearisations) over successive
+// updates, and leaves the others unfound.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,14 +63,27 @@ void expect_same_measures(contact::PairKinematics& whole, contact::PairKinematic
     EXPECT_TRUE(same_bits(all[i].projection.gap, some[i].projection.gap));
     EXPECT_TRUE(same_bits(all[i].area, some[i].area));
     EXPECT_TRUE(same_bits(all[i].overlap, some[i].overlap));
-    EXPECT_EQ(all[i].projection.facet, some[i].projection.facet);
-    for (int c = 0; c < 3; ++c) EXPECT_TRUE(same_bits(all[i].projection.normal[c], some[i].projection.normal[c]));
+    EXPECT_EQ(all[i].friction_found, some[i].friction_found);
+    const contact::Projection &pa = all[i].projection, &pb = some[i].projection;
+    EXPECT_EQ(pa.facet, pb.facet);
+    EXPECT_EQ(pa.region, pb.region);
+    for (int c = 0; c < 2; ++c) EXPECT_TRUE(same_bits(pa.xi[c], pb.xi[c]));
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_TRUE(same_bits(pa.normal[c], pb.normal[c]));
+      EXPECT_TRUE(same_bits(pa.x_master[c], pb.x_master[c]));
+      EXPECT_TRUE(same_bits(pa.t1[c], pb.t1[c]));
+      EXPECT_TRUE(same_bits(pa.t2[c], pb.t2[c]));
+    }
     whole.linearize(x, all[i], true);
     part.linearize(x, some[i], true);
     EXPECT_EQ(all[i].lin.nodes, some[i].lin.nodes);
     ASSERT_EQ(all[i].lin.gradient.size(), some[i].lin.gradient.size());
     for (std::size_t a = 0; a < all[i].lin.gradient.size(); ++a)
       EXPECT_TRUE(same_bits(all[i].lin.gradient[a], some[i].lin.gradient[a]));
+    EXPECT_EQ(all[i].friction_lin.nodes, some[i].friction_lin.nodes);
+    ASSERT_EQ(all[i].friction_lin.gradient.size(), some[i].friction_lin.gradient.size());
+    for (std::size_t a = 0; a < all[i].friction_lin.gradient.size(); ++a)
+      EXPECT_TRUE(same_bits(all[i].friction_lin.gradient[a], some[i].friction_lin.gradient[a]));
   }
   EXPECT_GT(found, 0);  // (the test measures something)
 }
@@ -106,6 +120,10 @@ TEST(MeasuredNodes, SurfaceToSurfaceGivesTheWholePairsBits) {
 
 TEST(MeasuredNodes, NodeToSurfaceGivesTheWholePairsBits) {
   check_deck<contact::NodeToSurfacePair>("sphere_3d.inp", false);
+}
+
+TEST(MeasuredNodes, NodeToSurfaceSmoothedGivesTheWholePairsBits) {
+  check_deck<contact::NodeToSurfacePair>("spherical_seat_3d_smoothed.inp", true);
 }
 
 }  // namespace
