@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "parallel_for.hpp"
+
 namespace inpact::contact {
 
 PairKinematics::PairKinematics(const model::Model& model, const model::Surface& slave, const model::Surface& master,
@@ -34,6 +36,17 @@ void PairKinematics::refresh_search(std::span<const Vec3> x) {
   o.margin = 0.5 * radius_;
   search_.build(master_.facets(), x, o);
   built_ = true;
+}
+
+void PairKinematics::linearize_nodes(std::span<const Vec3> x, std::span<SlaveKinematics> kin,
+                                     std::span<const std::size_t> nodes, bool finite_sliding) {
+  if (threads_ > 1) {  // (what nodes share is filled first; one thread fills it as it goes)
+    std::vector<std::size_t> found;
+    for (std::size_t i : nodes)
+      if (kin[i].found) found.push_back(i);
+    prepare_linearization(x, found, finite_sliding);
+  }
+  parallel_for(nodes.size(), threads_, 8, [&](std::size_t n) { linearize(x, kin[nodes[n]], finite_sliding); });
 }
 
 }  // namespace inpact::contact

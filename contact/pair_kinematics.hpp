@@ -61,6 +61,10 @@ class PairKinematics {
   /// Fills k.lin (the gradient; the Hessian too when `finite_sliding`) on coordinates `x`, for
   /// the state of the last update(); surface to surface also k.friction_lin.
   virtual void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const = 0;
+  /// linearize() of kin[i] for every i of `nodes` (ascending slave node positions), on the
+  /// pair's threads; the same bits whatever their number.
+  void linearize_nodes(std::span<const Vec3> x, std::span<SlaveKinematics> kin, std::span<const std::size_t> nodes,
+                       bool finite_sliding);
 
   /// Scales every slave area update() reports (not the gaps or their gradients): ½ for each of
   /// the two rows of a balanced master-slave interaction (interaction_table.hpp).
@@ -89,6 +93,10 @@ class PairKinematics {
                  double out_of_plane_thickness);
   /// Rebuilds the search tree when the master moved more than its margin since the last build.
   void refresh_search(std::span<const Vec3> x);
+  /// Before linearize() runs on several threads: fills whatever it caches and shares between
+  /// slave nodes (surface to surface: its points' gradients), for the slave nodes `nodes`.
+  virtual void prepare_linearization(std::span<const Vec3> x, std::span<const std::size_t> nodes,
+                                     bool finite_sliding) {}
 
   int dim_;
   ContactSurface slave_, master_;

@@ -375,6 +375,44 @@ const GapLinearization& SurfaceToSurfacePair::point_linearization(std::span<cons
   return pt.lin;
 }
 
+void SurfaceToSurfacePair::smoothed_point_gradient(std::span<const Vec3> x, const Facet& sf, const Point& pt) const {
+  if (pt.smoothed_valid) return;
+  const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
+  // (the point's own ξ on its facet: the layout is the facet's cut cells, or the plain rule)
+  const SmoothedPoint sp{&sf, pt.param, &mf, &pt.projection, pt.x, pt.master_corrected};
+  smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, pt.smoothed_gradient);
+  area_element_log_gradient(sf, pt.param, x, dim_, slave_.axisymmetric(), pt.log_area_gradient);
+  pt.smoothed_valid = true;
+}
+
+void SurfaceToSurfacePair::fill_point_caches(std::span<const Vec3> x, std::size_t fi, std::span<const char> linearised,
+                                             bool finite_sliding) const {
+  const Facet& sf = slave_.facets()[fi];
+  for (const Point& pt : points_[fi]) {
+    if (!pt.overlaps) continue;
+    bool weighed = false;
+    for (int a = 0; a < sf.n_nodes && !weighed; ++a)
+      weighed = linearised[static_cast<std::size_t>(slave_.local_index(sf.nodes[static_cast<std::size_t>(a)]))] &&
+                pt.W[static_cast<std::size_t>(a)] * pt.da != 0.0;
+    if (!weighed) continue;
+    if (smoothed()) smoothed_point_gradient(x, sf, pt);
+    else point_linearization(x, pt, finite_sliding);
+  }
+}
+
+void SurfaceToSurfacePair::prepare_linearization(std::span<const Vec3> x, std::span<const std::size_t> nodes,
+                                                 bool finite_sliding) {
+  std::vector<char> linearised(slave_.nodes().size(), 0);
+  for (std::size_t i : nodes) linearised[i] = 1;
+  std::vector<std::size_t> facets;  // those around the nodes
+  for (std::size_t fi = 0; fi < slave_.facets().size(); ++fi)
+    if (std::ranges::any_of(slave_.facets()[fi].node_rows(), [&](std::int32_t row) {
+          return linearised[static_cast<std::size_t>(slave_.local_index(row))] != 0;
+        }))
+      facets.push_back(fi);
+  parallel_for(facets.size(), threads_, 2, [&](std::size_t n) { fill_point_caches(x, facets[n], linearised, finite_sliding); });
+}
+
 void SurfaceToSurfacePair::linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const {
   GapLinearization& L = k.lin;
   L = {};
@@ -478,13 +516,7 @@ void SurfaceToSurfacePair::linearize_smoothed(std::span<const Vec3> x, SlaveKine
       const double c = pt.W[a] * pt.da / sum_w;
       if (c == 0.0) continue;
       const Facet& mf = master_.facets()[static_cast<std::size_t>(pt.projection.facet)];
-      if (!pt.smoothed_valid) {  // once per point after an update(), for every node of the facet
-        // (the point's own ξ on its facet: the layout is the facet's cut cells, or the plain rule)
-        const SmoothedPoint sp{&sf, pt.param, &mf, &pt.projection, pt.x, pt.master_corrected};
-        smoothed_gap_gradient(slave_correction_, master_correction_, sp, x, dim_, pt.smoothed_gradient);
-        area_element_log_gradient(sf, pt.param, x, dim_, slave_.axisymmetric(), pt.log_area_gradient);
-        pt.smoothed_valid = true;
-      }
+      smoothed_point_gradient(x, sf, pt);  // (once per point after an update(), for every node of the facet)
       const std::vector<double>& grad = pt.smoothed_gradient;
       const std::vector<double>& dlnda = pt.log_area_gradient;
       const double cw = c * (pt.projection.gap - g_node);

@@ -108,6 +108,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
 
   void update(std::span<const Vec3> x, std::vector<SlaveKinematics>& out) override;
   void linearize(std::span<const Vec3> x, SlaveKinematics& k, bool finite_sliding) const override;
+  void prepare_linearization(std::span<const Vec3> x, std::span<const std::size_t> nodes,
+                             bool finite_sliding) override;
 
   /// Smoothing of the master and slave surfaces (empty sets: none).
   void set_geometric_correction(SurfaceCorrections master, SurfaceCorrections slave);
@@ -137,7 +139,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
     bool master_corrected = false;  ///< the projection was moved onto the master's idealised surface
     /// The point's gap linearised against its master facet: computed by the first linearize()
     /// of a slave node that needs it after an update(), and kept for the other nodes of the
-    /// facet (linearize() runs on one thread, on the coordinates of the last update()).
+    /// facet (on the coordinates of the last update(); filled by prepare_linearization() before
+    /// linearize() runs on several threads).
     mutable GapLinearization lin;
     mutable bool lin_valid = false;
     mutable bool lin_hessian = false;  ///< lin has the Hessian (else the gradient only)
@@ -148,6 +151,12 @@ class SurfaceToSurfacePair final : public PairKinematics {
   };
   /// The point's linearisation; with the Hessian when `hessian`.
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
+  /// A smoothed pair: pt.smoothed_gradient and pt.log_area_gradient, unless valid.
+  void smoothed_point_gradient(std::span<const Vec3> x, const Facet& sf, const Point& pt) const;
+  /// Fills the caches above of every point of slave facet fi that a found node of `linearised`
+  /// weighs (W da ≠ 0): those its linearize() reads.
+  void fill_point_caches(std::span<const Vec3> x, std::size_t fi, std::span<const char> linearised,
+                         bool finite_sliding) const;
   /// Projects the integration points of slave facet fi (points_[fi]; one thread per facet).
   void measure_facet(std::span<const Vec3> x, std::size_t fi);
   /// `pts` resized to the layout `rule`, each point with the faceted hint and search memo of the

@@ -330,7 +330,7 @@ ContactProblem::~ContactProblem() = default;
 bool ContactProblem::empty() const { return pairs_.empty(); }
 
 void ContactProblem::set_threads(int threads) {
-  for (auto& p : pairs_) p->geometry->set_threads(threads);
+  for (auto& p : pairs_) p->geometry->set_threads(threads);  // (their update and linearisation)
 }
 
 bool ContactProblem::has_friction() const {
@@ -652,32 +652,19 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
   multipliers_.clear();
   for (std::size_t pi = 0; pi < pairs_.size(); ++pi) {
     Pair& p = *pairs_[pi];
-    auto& slaves = state.pairs[p.row];
-    const std::size_t n = p.kin.size();
-    p.contributes.assign(n, 0);
-    p.damped.assign(n, 0);
-    p.multiplier.assign(n, -1);
-    if (p.friction) p.fric.resize(n);
-    const contact::StatusLimits limits = status_limits(*p.enforcement, slaves, p.l_char);
-    p.starting = std::exchange(p.start_pending, false);
-    for (std::size_t i = 0; i < n; ++i) {
-      SlaveState& s = slaves[i];
-      update_node(p, i, s, limits, x, it);
-      FrictionNodeState* fs = p.friction ? &state.friction[p.row][i] : nullptr;
-      if (fs) p.clear_friction(i, *fs);
-      p.damped[i] = p.damps(i, s);
+    // Status of every node, the linearisation of those that act (on the pair's threads), then
+    // their friction and couplings.
+    const std::vector<std::size_t> acting = update_statuses(pi, state, x, it);
+    p.geometry->linearize_nodes(x, p.kin, acting, p.finite_sliding);
+    for (std::size_t i = 0; i < p.kin.size(); ++i) {
       if (!p.contributes[i] && !p.damped[i]) continue;
-      if (p.uses_multipliers() && p.contributes[i]) {
-        p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
-        multipliers_.push_back({pi, i});
-      }
       if (!p.share.owns(i)) {  // (its multiplier is an equation of the system all the same)
         if (p.multiplier[i] >= 0) signature.insert(signature.end(), {static_cast<std::int64_t>(pi), static_cast<std::int64_t>(i), -1});
         continue;
       }
-      p.geometry->linearize(x, p.kin[i], p.finite_sliding);
-      if (fs && s.closed && p.friction_found(i) && p.contributes[i]) {
-        p.update_friction(i, s, *fs, x);
+      const SlaveState& s = state.pairs[p.row][i];
+      if (p.friction && s.closed && p.friction_found(i) && p.contributes[i]) {
+        p.update_friction(i, s, state.friction[p.row][i], x);
         ++friction_evaluations_;
       }
       add_couplings(pi, i, signature);
@@ -687,6 +674,33 @@ ContactIteration ContactProblem::update(std::span<const double> u, ContactState&
     if (p->friction) p->share.gather(state.friction[p->row]);
   set_pattern(std::move(signature), assembler);
   return it;
+}
+
+std::vector<std::size_t> ContactProblem::update_statuses(std::size_t pi, ContactState& state,
+                                                         std::span<const contact::Vec3> x, ContactIteration& it) {
+  Pair& p = *pairs_[pi];
+  auto& slaves = state.pairs[p.row];
+  const std::size_t n = p.kin.size();
+  p.contributes.assign(n, 0);
+  p.damped.assign(n, 0);
+  p.multiplier.assign(n, -1);
+  if (p.friction) p.fric.resize(n);
+  const contact::StatusLimits limits = status_limits(*p.enforcement, slaves, p.l_char);
+  p.starting = std::exchange(p.start_pending, false);
+  std::vector<std::size_t> acting;  // this rank's nodes that contribute or damp
+  for (std::size_t i = 0; i < n; ++i) {
+    SlaveState& s = slaves[i];
+    update_node(p, i, s, limits, x, it);
+    if (p.friction) p.clear_friction(i, state.friction[p.row][i]);
+    p.damped[i] = p.damps(i, s);
+    if (!p.contributes[i] && !p.damped[i]) continue;
+    if (p.uses_multipliers() && p.contributes[i]) {
+      p.multiplier[i] = static_cast<std::int64_t>(multipliers_.size());
+      multipliers_.push_back({pi, i});
+    }
+    if (p.share.owns(i)) acting.push_back(i);
+  }
+  return acting;
 }
 
 void ContactProblem::assemble(const ContactState& state, std::span<double> f_int, Assembler& assembler) {

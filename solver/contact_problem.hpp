@@ -135,8 +135,8 @@ class ContactProblem {
   /// One line per pair in force: contact::describe() of its resolved record (the step's messages).
   std::vector<std::string> describe() const;
 
-  /// Threads the surfaces' update may run on (surface to surface: across slave facets); the
-  /// results do not depend on how many.
+  /// Threads the surfaces' update and the nodes' linearisation may run on (surface to surface:
+  /// across slave facets); the results do not depend on how many.
   void set_threads(int threads);
 
   bool has_friction() const;
@@ -251,6 +251,10 @@ class ContactProblem {
   /// update() of slave i: its status, and the checks every method shares (chattering, HCRIT).
   void mark_step_change(Pair& p, const AnalysisModel& am, std::size_t step_index);
   void start_step(const Pair& p, ContactState& state) const;
+  /// update()'s first pass over pair pi: every node's status (update_node), friction cleared,
+  /// damping and multipliers; the nodes of this rank that act (contribute or damp).
+  std::vector<std::size_t> update_statuses(std::size_t pi, ContactState& state, std::span<const contact::Vec3> x,
+                                           ContactIteration& it);
   void update_node(Pair& p, std::size_t i, SlaveState& s, const contact::StatusLimits& limits,
                    std::span<const contact::Vec3> x, ContactIteration& it) const;
   /// A closed node that lost its master: did it go through it by more than HCRIT?

@@ -1,3 +1,5 @@
+// Contact's work shared out, over ranks and over threads, must not change a bit.
+//
 // A distributed run measures each slave node on one rank only (PairKinematics::set_measured_nodes,
 // solver/slave_node_share.hpp) and gathers the measures: that is right only if a node's measure
 // does not depend on which other nodes are measured, the set staying the same from update to
@@ -124,6 +126,47 @@ TEST(MeasuredNodes, NodeToSurfaceGivesTheWholePairsBits) {
 
 TEST(MeasuredNodes, NodeToSurfaceSmoothedGivesTheWholePairsBits) {
   check_deck<contact::NodeToSurfacePair>("spherical_seat_3d_smoothed.inp", true);
+}
+
+/// linearize_nodes() on 2 threads (the points' caches filled first, facet by facet) against
+/// linearize() node after node on one: the same bits for every found node.
+template <class PairType>
+void check_threads(const std::string& deck, bool smoothed) {
+  const model::Model m = read_model(deck);
+  const model::ContactPair& pair = m.contact_pairs.at(0);
+  PairType one(m, m.mesh.surfaces.at(pair.slave), m.mesh.surfaces.at(pair.master), 3, 1.0);
+  PairType two(m, m.mesh.surfaces.at(pair.slave), m.mesh.surfaces.at(pair.master), 3, 1.0);
+  if (smoothed)
+    for (PairType* p : {&one, &two})
+      p->set_geometric_correction(contact::build_corrections(m, pair.master, &pair),
+                                  contact::build_corrections(m, pair.slave, &pair));
+  two.set_threads(2);
+  const auto x = moved(m, 0.02 * one.search_radius());
+  std::vector<contact::SlaveKinematics> a, b;
+  one.update(x, a);
+  two.update(x, b);
+  std::vector<std::size_t> nodes;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].found) nodes.push_back(i);
+  ASSERT_GT(nodes.size(), 16u);  // (enough for two threads)
+  for (std::size_t i : nodes) one.linearize(x, a[i], true);
+  two.linearize_nodes(x, b, nodes, true);
+  for (std::size_t i : nodes) {
+    SCOPED_TRACE("slave node " + std::to_string(i));
+    EXPECT_EQ(a[i].lin.nodes, b[i].lin.nodes);
+    ASSERT_EQ(a[i].lin.gradient.size(), b[i].lin.gradient.size());
+    for (std::size_t k = 0; k < a[i].lin.gradient.size(); ++k) EXPECT_TRUE(same_bits(a[i].lin.gradient[k], b[i].lin.gradient[k]));
+    ASSERT_EQ(a[i].lin.hessian.size(), b[i].lin.hessian.size());
+    for (std::size_t k = 0; k < a[i].lin.hessian.size(); ++k) EXPECT_TRUE(same_bits(a[i].lin.hessian[k], b[i].lin.hessian[k]));
+  }
+}
+
+TEST(LinearizeNodes, TwoThreadsGiveOneThreadsBitsSmoothed) {
+  check_threads<contact::SurfaceToSurfacePair>("spherical_seat_3d_smoothed.inp", true);
+}
+
+TEST(LinearizeNodes, TwoThreadsGiveOneThreadsBits) {
+  check_threads<contact::SurfaceToSurfacePair>("sphere_3d.inp", false);
 }
 
 }  // namespace
