@@ -46,9 +46,8 @@ class SlaveNodeShare {
     for (std::size_t i = 0; i < items.size(); ++i)
       if (owns(i)) mine.push_back(pack(items[i]));
     std::vector<Record> all(items.size());
-    std::vector<long> bytes(count_of_rank_.size());
-    for (std::size_t r = 0; r < bytes.size(); ++r) bytes[r] = count_of_rank_[r] * static_cast<long>(sizeof(Record));
-    world_.gather(std::as_bytes(std::span(mine)), std::as_writable_bytes(std::span(all)), bytes);
+    world_.gather(std::as_bytes(std::span(mine)), std::as_writable_bytes(std::span(all)), sizeof(Record),
+                  count_of_rank_);
     // Rank r's records follow those of the ranks before it, in slave node order.
     std::vector<long> next = first_of_rank();
     for (std::size_t i = 0; i < items.size(); ++i)

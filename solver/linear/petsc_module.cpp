@@ -133,9 +133,11 @@ void RankWorld::abort(int code) const {
   if (distributed()) module().abort(code);
 }
 
-void RankWorld::gather(std::span<const std::byte> mine, std::span<std::byte> all,
-                       std::span<const long> bytes_of_rank) const {
-  if (distributed()) module().allgather(mine.data(), static_cast<long>(mine.size()), all.data(), bytes_of_rank.data());
+void RankWorld::gather(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t record_bytes,
+                       std::span<const long> count_of_rank) const {
+  if (distributed())
+    module().allgather(mine.data(), static_cast<long>(mine.size() / record_bytes), static_cast<long>(record_bytes),
+                       all.data(), count_of_rank.data());
   else std::copy(mine.begin(), mine.end(), all.begin());
 }
 

@@ -17,9 +17,10 @@ void inpact_petsc_finish();
 void inpact_mpi_world(int* rank, int* size);
 /// values[0..n) combined over every rank, in place: op 0 sum, 1 min, 2 max.
 void inpact_mpi_allreduce(double* values, long n, int op);
-/// Every rank's `send_bytes` bytes at `send`, concatenated in rank order into `recv` on every
-/// rank; `bytes_of_rank[r]`: what rank r sends (the same list on every rank).
-void inpact_mpi_allgather(const void* send, long send_bytes, void* recv, const long* bytes_of_rank);
+/// Every rank's `count` records of `record_bytes` bytes at `send`, concatenated in rank order
+/// into `recv` on every rank; `count_of_rank[r]`: how many rank r sends (the same list on every
+/// rank). Counted in records, so that a gather of more than 2 GiB stays within MPI's int counts.
+void inpact_mpi_allgather(const void* send, long count, long record_bytes, void* recv, const long* count_of_rank);
 /// Ends every rank of the run (MPI_Abort) with exit code `code`.
 void inpact_mpi_abort(int code);
 /// PETSc's graph partitioner (petsc_partition.cpp) on the graph of n vertices whose neighbours
@@ -51,9 +52,11 @@ struct RankWorld {
   void sum(std::span<double> values) const;
   /// The smallest value over the ranks.
   double min(double value) const;
-  /// Every rank's `mine`, concatenated in rank order into `all` (on every rank); rank r gives
-  /// bytes_of_rank[r] bytes, which every rank knows. On one rank `all` is `mine`.
-  void gather(std::span<const std::byte> mine, std::span<std::byte> all, std::span<const long> bytes_of_rank) const;
+  /// Every rank's `mine` (records of `record_bytes` bytes), concatenated in rank order into `all`
+  /// (on every rank); rank r gives count_of_rank[r] records, which every rank knows. On one
+  /// rank `all` is `mine`.
+  void gather(std::span<const std::byte> mine, std::span<std::byte> all, std::size_t record_bytes,
+              std::span<const long> count_of_rank) const;
   /// A rank that cannot go on ends them all (on one rank: nothing; the caller exits).
   void abort(int code) const;
 };

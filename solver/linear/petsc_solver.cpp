@@ -526,18 +526,22 @@ void inpact_mpi_world(int* rank, int* size) {
   MPI_Comm_size(PETSC_COMM_WORLD, size);
 }
 
-void inpact_mpi_allgather(const void* send, long send_bytes, void* recv, const long* bytes_of_rank) {
+void inpact_mpi_allgather(const void* send, long count, long record_bytes, void* recv, const long* count_of_rank) {
   int size = 0;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   std::vector<int> counts(static_cast<std::size_t>(size)), displacements(static_cast<std::size_t>(size));
   long at = 0;
   for (int r = 0; r < size; ++r) {
-    counts[static_cast<std::size_t>(r)] = static_cast<int>(bytes_of_rank[r]);
+    counts[static_cast<std::size_t>(r)] = static_cast<int>(count_of_rank[r]);
     displacements[static_cast<std::size_t>(r)] = static_cast<int>(at);
-    at += bytes_of_rank[r];
+    at += count_of_rank[r];
   }
-  MPI_Allgatherv(send, static_cast<int>(send_bytes), MPI_BYTE, recv, counts.data(), displacements.data(), MPI_BYTE,
+  MPI_Datatype record;
+  MPI_Type_contiguous(static_cast<int>(record_bytes), MPI_BYTE, &record);
+  MPI_Type_commit(&record);
+  MPI_Allgatherv(send, static_cast<int>(count), record, recv, counts.data(), displacements.data(), record,
                  PETSC_COMM_WORLD);
+  MPI_Type_free(&record);
 }
 
 void inpact_mpi_abort(int code) {
