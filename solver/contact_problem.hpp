@@ -243,7 +243,9 @@ class ContactProblem {
   void gather_measures(Pair& p) const;
   /// A distributed run's first measure (whole on every rank): each pair's slave nodes shared
   /// out by the cost of their measure (SlaveNodeShare), for the rest of the step. Each
-  /// measured facet's points thus keep their whole history, as on one rank.
+  /// measured facet's points thus keep their whole history, as on one rank. (A step whose
+  /// contact forms later is shared by the nodes facing the master at its start: unevenly,
+  /// but correctly.)
   void share_slave_nodes();
   /// A distributed run: the contact forces of every rank's nodes (shared_forces_) into f_int on
   /// every rank, with the damping's dissipation and the unsymmetric flag.

@@ -34,7 +34,7 @@ void bisect(std::span<const std::array<double, 3>> points, std::span<const doubl
   const double target = total * left / ranks;
   std::size_t cut = 0;
   for (double sum = 0.0; cut < items.size() && sum + 0.5 * cost[items[cut]] < target; ++cut) sum += cost[items[cut]];
-  cut = std::clamp<std::size_t>(cut, 1, items.size() - 1);  // (every rank gets a node while there are enough)
+  cut = std::clamp<std::size_t>(cut, 1, items.size() - 1);  // (each side gets a node; one costly node may still leave a rank none)
   bisect(points, cost, items.first(cut), first, left, owner);
   bisect(points, cost, items.subspan(cut), first + left, ranks - left, owner);
 }

@@ -23,7 +23,7 @@ struct Module {
   decltype(&inpact_petsc_finish) finish = nullptr;
   decltype(&inpact_mpi_world) world = nullptr;
   decltype(&inpact_mpi_allreduce) allreduce = nullptr;
-  decltype(&inpact_mpi_allgather) allgather = nullptr;
+  decltype(&inpact_mpi_allgather_records) allgather = nullptr;
   decltype(&inpact_mpi_abort) abort = nullptr;
   decltype(&inpact_partition_elements) partition = nullptr;
   std::string error;  ///< why it could not be started
@@ -74,7 +74,7 @@ Module& module() {
     m.finish = reinterpret_cast<decltype(&inpact_petsc_finish)>(dlsym(m.handle, "inpact_petsc_finish"));
     m.world = reinterpret_cast<decltype(&inpact_mpi_world)>(dlsym(m.handle, "inpact_mpi_world"));
     m.allreduce = reinterpret_cast<decltype(&inpact_mpi_allreduce)>(dlsym(m.handle, "inpact_mpi_allreduce"));
-    m.allgather = reinterpret_cast<decltype(&inpact_mpi_allgather)>(dlsym(m.handle, "inpact_mpi_allgather"));
+    m.allgather = reinterpret_cast<decltype(&inpact_mpi_allgather_records)>(dlsym(m.handle, "inpact_mpi_allgather_records"));
     m.abort = reinterpret_cast<decltype(&inpact_mpi_abort)>(dlsym(m.handle, "inpact_mpi_abort"));
     m.partition = reinterpret_cast<decltype(&inpact_partition_elements)>(dlsym(m.handle, "inpact_partition_elements"));
     if (!start || !m.create || !m.finish || !m.world || !m.allreduce || !m.allgather || !m.abort || !m.partition) {

@@ -20,7 +20,7 @@ void inpact_mpi_allreduce(double* values, long n, int op);
 /// Every rank's `count` records of `record_bytes` bytes at `send`, concatenated in rank order
 /// into `recv` on every rank; `count_of_rank[r]`: how many rank r sends (the same list on every
 /// rank). Counted in records, so that a gather of more than 2 GiB stays within MPI's int counts.
-void inpact_mpi_allgather(const void* send, long count, long record_bytes, void* recv, const long* count_of_rank);
+void inpact_mpi_allgather_records(const void* send, long count, long record_bytes, void* recv, const long* count_of_rank);
 /// Ends every rank of the run (MPI_Abort) with exit code `code`.
 void inpact_mpi_abort(int code);
 /// PETSc's graph partitioner (petsc_partition.cpp) on the graph of n vertices whose neighbours

@@ -526,7 +526,7 @@ void inpact_mpi_world(int* rank, int* size) {
   MPI_Comm_size(PETSC_COMM_WORLD, size);
 }
 
-void inpact_mpi_allgather(const void* send, long count, long record_bytes, void* recv, const long* count_of_rank) {
+void inpact_mpi_allgather_records(const void* send, long count, long record_bytes, void* recv, const long* count_of_rank) {
   int size = 0;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   std::vector<int> counts(static_cast<std::size_t>(size)), displacements(static_cast<std::size_t>(size));
