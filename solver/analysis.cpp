@@ -396,6 +396,11 @@ AnalysisOutcome run_steps(const AnalysisModel& am, MaterialStates& material_stat
     output_seconds += run.output_seconds;
     previous_factor = run.stabilization ? run.stabilization->factor() : 0.0;
     if (run.stabilization) allsd = run.stabilization->allsd();
+    if (const auto shared = run.contact ? run.contact->share_summary() : std::nullopt) {
+      const std::string line = fmt::format("step {} ({}): {}", s + 1, step.name, *shared);
+      observer.message(line);
+      observer.status_note("     " + line);
+    }
     for (const auto& warning : {run.stabilization ? run.stabilization->end_of_step_warning() : std::nullopt,
                                 run.contact && outcome.completed ? run.contact->deep_penetration_warning()
                                                                  : std::nullopt})

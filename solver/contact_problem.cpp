@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis_error.hpp"
 #include "slave_node_share.hpp"
@@ -516,6 +517,17 @@ struct MeasuredNode {
 /// a point (the default job's profile); one facing nothing costs a search that finds no facet,
 /// a few hundred. Twenty to one is a round figure between them.
 constexpr double kFacingNodeCost = 20.0;
+
+std::optional<std::string> ContactProblem::share_summary() const {
+  if (!shared_) return std::nullopt;
+  std::string out = fmt::format("contact's slave nodes shared over the {} ranks in patches of even cost (a node facing "
+                                "the master counted {:g} times one facing nothing), per rank:",
+                                world_.size, kFacingNodeCost);
+  for (const auto& p : pairs_)
+    out += fmt::format(" {}/{} {};", p->deck->slave, p->deck->master, fmt::join(p->share.count_of_rank(), "+"));
+  out.pop_back();
+  return out;
+}
 
 void ContactProblem::share_slave_nodes() {
   const auto& coords = am_.model->mesh.nodes.coords;

@@ -207,6 +207,10 @@ class ContactProblem {
   /// a body, and the area it loses carries no pressure: the answer may be wrong.
   std::optional<std::string> deep_penetration_warning() const;
 
+  /// A distributed run, once the step's slave nodes are shared out: how many each rank holds,
+  /// pair by pair (the log and the .sta); else nothing.
+  std::optional<std::string> share_summary() const;
+
   /// Augmented Lagrange: are all penetrations (c0 − g of closed nodes) within the tolerance?
   AugmentationCheck check_augmentation(const ContactState& state) const;
   /// The augmented-Lagrange pairs' penetrations at the last update.

@@ -30,6 +30,8 @@ class SlaveNodeShare {
   SlaveNodeShare(RankWorld world, std::span<const std::array<double, 3>> points, std::span<const double> cost);
 
   bool shared() const { return !owner_.empty(); }
+  /// Slave nodes per rank (empty on one rank).
+  std::span<const long> count_of_rank() const { return count_of_rank_; }
   /// Does this rank own slave node i (its position in the surface's node list)?
   bool owns(std::size_t i) const { return owner_.empty() || owner_[i] == world_.rank; }
   /// Per slave node, 1 where this rank owns it (PairKinematics::set_measured_nodes); empty on one rank.

@@ -4,7 +4,7 @@
 # frame within 1e-6 of the field's largest value over the step. The differences are the Krylov
 # tolerance's (solver/linear_solve.cpp), not the distribution's.
 #
-#   cmake -DINPACT=inpact -DSOURCE=repo -DCASE=name -DWORK=dir [-DDECK=path] -P mpi_run.cmake
+#   cmake -DINPACT=inpact -DSOURCE=repo -DCASE=name -DWORK=dir [-DDECK=path] [-DCONTACT=ON] -P mpi_run.cmake
 # CASE names a case of compare_solvers.py, or with DECK that deck (named by its file).
 cmake_minimum_required(VERSION 3.22)
 foreach(var INPACT SOURCE CASE WORK)
@@ -36,4 +36,12 @@ string(FIND "${dat}" "LINEAR SOLVER: petsc" solver_at)
 string(FIND "${dat}" "; 2 MPI ranks" ranks_at)
 if(solver_at EQUAL -1 OR ranks_at EQUAL -1)
   message(FATAL_ERROR "${CASE}.dat does not say it was solved by PETSc on 2 MPI ranks")
+endif()
+# A contact case says in its .sta how its slave nodes were shared over the ranks.
+if(CONTACT)
+  file(READ "${WORK}/petsc/${CASE}.sta" sta)
+  string(FIND "${sta}" "contact's slave nodes shared over the 2 ranks" share_at)
+  if(share_at EQUAL -1)
+    message(FATAL_ERROR "${CASE}.sta does not say how contact's slave nodes were shared over the ranks")
+  endif()
 endif()
