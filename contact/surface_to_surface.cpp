@@ -103,12 +103,8 @@ void SurfaceToSurfacePair::update(std::span<const Vec3> x, std::vector<SlaveKine
   centre_normals(master_.facets(), x, master_normals_);
   track_master_motion(x);
   // A measured node needs every facet around it (set_measured_nodes).
-  std::vector<char> facet_measured(facets.size(), 1);
-  if (!measured_.empty())
-    for (std::size_t fi = 0; fi < facets.size(); ++fi)
-      facet_measured[fi] = std::ranges::any_of(facets[fi].node_rows(), [&](std::int32_t row) {
-        return measures(static_cast<std::size_t>(slave_.local_index(row)));
-      });
+  const std::vector<char> facet_measured =
+      measured_.empty() ? std::vector<char>(facets.size(), 1) : facets_around(measured_);
   parallel_for(facets.size(), threads_, 2, [&](std::size_t fi) {
     if (facet_measured[fi]) measure_facet(x, fi);
   });
@@ -385,15 +381,26 @@ void SurfaceToSurfacePair::smoothed_point_gradient(std::span<const Vec3> x, cons
   pt.smoothed_valid = true;
 }
 
+std::vector<char> SurfaceToSurfacePair::facets_around(std::span<const char> node_mask) const {
+  std::vector<char> around(slave_.facets().size(), 0);
+  for (std::size_t i = 0; i < node_mask.size(); ++i)
+    if (node_mask[i])
+      for (std::int32_t fi : slave_.facets_of_node(i)) around[static_cast<std::size_t>(fi)] = 1;
+  return around;
+}
+
 void SurfaceToSurfacePair::fill_point_caches(std::span<const Vec3> x, std::size_t fi, std::span<const char> linearised,
                                              bool finite_sliding) const {
   const Facet& sf = slave_.facets()[fi];
+  std::array<bool, 8> node_linearised{};
+  for (int a = 0; a < sf.n_nodes; ++a)
+    node_linearised[static_cast<std::size_t>(a)] =
+        linearised[static_cast<std::size_t>(slave_.local_index(sf.nodes[static_cast<std::size_t>(a)]))] != 0;
   for (const Point& pt : points_[fi]) {
     if (!pt.overlaps) continue;
     bool weighed = false;
     for (int a = 0; a < sf.n_nodes && !weighed; ++a)
-      weighed = linearised[static_cast<std::size_t>(slave_.local_index(sf.nodes[static_cast<std::size_t>(a)]))] &&
-                pt.W[static_cast<std::size_t>(a)] * pt.da != 0.0;
+      weighed = node_linearised[static_cast<std::size_t>(a)] && pt.W[static_cast<std::size_t>(a)] * pt.da != 0.0;
     if (!weighed) continue;
     if (smoothed()) smoothed_point_gradient(x, sf, pt);
     else point_linearization(x, pt, finite_sliding);
@@ -404,12 +411,10 @@ void SurfaceToSurfacePair::prepare_linearization(std::span<const Vec3> x, std::s
                                                  bool finite_sliding) {
   std::vector<char> linearised(slave_.nodes().size(), 0);
   for (std::size_t i : nodes) linearised[i] = 1;
-  std::vector<std::size_t> facets;  // those around the nodes
-  for (std::size_t fi = 0; fi < slave_.facets().size(); ++fi)
-    if (std::ranges::any_of(slave_.facets()[fi].node_rows(), [&](std::int32_t row) {
-          return linearised[static_cast<std::size_t>(slave_.local_index(row))] != 0;
-        }))
-      facets.push_back(fi);
+  const std::vector<char> around = facets_around(linearised);
+  std::vector<std::size_t> facets;
+  for (std::size_t fi = 0; fi < around.size(); ++fi)
+    if (around[fi]) facets.push_back(fi);
   parallel_for(facets.size(), threads_, 2, [&](std::size_t n) { fill_point_caches(x, facets[n], linearised, finite_sliding); });
 }
 

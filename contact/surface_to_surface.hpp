@@ -153,6 +153,8 @@ class SurfaceToSurfacePair final : public PairKinematics {
   const GapLinearization& point_linearization(std::span<const Vec3> x, const Point& pt, bool hessian) const;
   /// A smoothed pair: pt.smoothed_gradient and pt.log_area_gradient, unless valid.
   void smoothed_point_gradient(std::span<const Vec3> x, const Facet& sf, const Point& pt) const;
+  /// Per slave facet, 1 where it has a node of `node_mask` (per slave node).
+  std::vector<char> facets_around(std::span<const char> node_mask) const;
   /// Fills the caches above of every point of slave facet fi that a found node of `linearised`
   /// weighs (W da ≠ 0): those its linearize() reads.
   void fill_point_caches(std::span<const Vec3> x, std::size_t fi, std::span<const char> linearised,
