@@ -4,7 +4,10 @@ verification deck (decks/contact_verification, each enforcement method its <meth
 takes: direct multipliers, penalty, augmented Lagrange) and the friction decks of decks/contact.
 
 A case passes when both runs completed and every field of every frame agrees to 1e-6 of the
-field's largest value over the step (max |petsc − direct| <= 1e-6 · max |direct|).
+field's largest value over the step (max |petsc − direct| <= 1e-6 · max |direct|). A case
+over it is rerun with Newton converged to R_n = 1e-9 on both paths: when the direct run differs
+itself by more than 1e-6 from its own tightened run, Newton's criterion leaves more open than
+1e-6 in any correct answer, and the case is judged on the tightened runs (saying so).
 
   /usr/bin/python3 bench/petsc_solver/compare_solvers.py --inpact build/apps/inpact [--out DIR] [--only NAME...]
                                                          [--ranks N]
@@ -116,6 +119,46 @@ def worst_difference(a, b):
     return worst, where
 
 
+TIGHT_R_N = 1e-9  # Newton's R_n and C_n of the rerun of a case that differs (newton_tolerance_verdict)
+
+
+def tightened_deck(deck, out):
+    """A copy of `deck` in `out` whose every step converges Newton to TIGHT_R_N (a *CONTROLS
+    before each *STATIC); None when the deck includes others (their paths are relative)."""
+    text = open(deck).read()
+    if "*INCLUDE" in text.upper():
+        return None
+    controls = f"*CONTROLS, PARAMETERS=FIELD\n{TIGHT_R_N:g}, {TIGHT_R_N:g}\n"
+    lines = text.splitlines(keepends=True)
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, os.path.basename(deck)[:-4] + "_tight.inp")
+    with open(path, "w") as f:
+        f.write("".join((controls if l.upper().startswith("*STATIC") else "") + l for l in lines))
+    return path
+
+
+def newton_tolerance_verdict(a, job, deck, params, direct_fields, worst):
+    """A case over the tolerance, rerun with Newton converged to TIGHT_R_N on both paths. When
+    the direct run itself is farther than the tolerance from its own tightened run, Newton's
+    criterion leaves more open than the tolerance asks of the solvers, and they are compared
+    where it does not: (tightened runs' worst difference, direct's own) when the tightened runs
+    agree, else None."""
+    tight = tightened_deck(deck, os.path.join(a.out, "tight"))
+    if tight is None:
+        return None
+    rc_d, _, _, _ = run(a.inpact, tight, job, params, "direct", os.path.join(a.out, "tight", "direct"), a.reuse)
+    rc_p, _, _, _ = run(a.inpact, tight, job, params, "petsc", os.path.join(a.out, "tight", "petsc"), a.reuse, a.ranks)
+    if rc_d != 0 or rc_p != 0:
+        return None
+    td, _ = fields(os.path.join(a.out, "tight", "direct", job + ".h5"))
+    tp, _ = fields(os.path.join(a.out, "tight", "petsc", job + ".h5"))
+    own, _ = worst_difference(td, direct_fields)
+    tight_worst, _ = worst_difference(td, tp)
+    if own > a.tolerance and tight_worst <= a.tolerance:
+        return tight_worst, own
+    return None
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--inpact", required=True)
@@ -147,9 +190,16 @@ def main():
         fp, it_p = fields(os.path.join(a.out, "petsc", job + ".h5"))
         worst, where = worst_difference(fd, fp)
         ok = worst <= a.tolerance
+        verdict = "yes" if ok else "NO"
+        if not ok:
+            newton = newton_tolerance_verdict(a, job, deck, params, fd, worst)
+            if newton:
+                ok = True
+                verdict = (f"at R_n {TIGHT_R_N:g}: {newton[0]:.1e} (direct's own answer moves {newton[1]:.1e} "
+                           f"from the default R_n to it)")
         failed += not ok
         rows.append(f"| {job} | {s_d:.1f} | {s_p:.1f} | {it_d} / {it_p} | {int(t_p.get('krylov_iterations', 0))} | "
-                    f"{worst:.2e} | {where} | {'yes' if ok else 'NO'} |")
+                    f"{worst:.2e} | {where} | {verdict} |")
         print(rows[-1], flush=True)
     text = "\n".join(rows) + "\n"
     with open(os.path.join(a.out, "compare.md"), "w") as f:
