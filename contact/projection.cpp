@@ -259,13 +259,21 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
         std::max(1e-14, 8.0 * std::numeric_limits<double>::epsilon() * magnitude / std::sqrt(std::min(m00, m11)));
     double h00 = m00 - dot(r, l.a00), h01 = m01 - dot(r, l.a01), h11 = m11 - dot(r, l.a11);
     double det = h00 * h11 - h01 * h01;
-    if (!(h00 > 0 && det > 0)) {  // not a descent direction: Gauss–Newton (metric) instead
+    const bool newton_hessian = h00 > 0 && det > 0;
+    if (!newton_hessian) {  // not a descent direction: Gauss–Newton (metric) instead
       h00 = m00, h01 = m01, h11 = m11;
       det = h00 * h11 - h01 * h01;
       if (!(det > 0)) return res;  // degenerate facet
     }
     const double d0 = -(h11 * g0 - h01 * g1) / det, d1 = -(h00 * g1 - h01 * g0) / det;
     if (std::abs(d0) + std::abs(d1) < step_tol) {
+      res.converged = true;
+      break;
+    }
+    // Newton with φ's own Hessian converges quadratically: after a step under √step_tol the
+    // next would be under step_tol, so the step is taken and nothing is left to confirm.
+    if (newton_hessian && std::abs(d0) + std::abs(d1) < std::sqrt(step_tol)) {
+      xi = {xi[0] + d0, xi[1] + d1};
       res.converged = true;
       break;
     }
