@@ -31,7 +31,7 @@ Assembler::Assembler(const AnalysisModel& am, const DofMap& dofs, int threads, M
       if (rank_of_element_[e] == world_.rank) own_elements_.push_back(e);
     rank_of_node_ = element_partition(am, world_).rank_of_node;
   }
-  build_pattern(nullptr);
+  build_element_pattern();
 }
 
 std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
@@ -45,38 +45,47 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 
-void Assembler::set_extra_couplings(const ExtraCouplings& extra) { build_pattern(&extra); }
+void Assembler::add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block,
+                              std::int64_t multiplier_eq) const {
+  thread_local std::vector<std::int64_t> eqs;
+  eqs.clear();
+  for (std::int64_t d : block)
+    for (const auto& m : dofs_.masters(d))
+      if (dofs_.equation(m.dof) >= 0) eqs.push_back(dofs_.equation(m.dof));
+  if (multiplier_eq < 0) {
+    pattern.add_block(eqs);
+    return;
+  }
+  pattern.add_pair(multiplier_eq, multiplier_eq);
+  for (std::int64_t e : eqs) pattern.add_pair(e, multiplier_eq);
+}
 
-void Assembler::build_pattern(const ExtraCouplings* extra) {
-  const DofMap& dofs = dofs_;
-  const std::size_t n_el = am_.model->mesh.elements.size();
-  const std::int64_t n_mult = extra ? static_cast<std::int64_t>(extra->multiplier_dofs.size()) : 0;
-  // Pattern: every pair of equations reached from one element's DOFs through their masters (of
-  // this rank's elements), and the extra couplings this rank adds; every diagonal is in it.
-  tangent_ = SparseMatrix{};  // the old pattern's memory is free for the new one
-  PatternBuilder pattern(dofs.n_equations() + n_mult);
-  std::vector<std::int64_t> el_dofs, eqs;
-  auto add = [&](std::span<const std::int64_t> block, std::int64_t multiplier_eq) {
-    eqs.clear();
-    for (std::int64_t d : block)
-      for (const auto& m : dofs.masters(d))
-        if (dofs.equation(m.dof) >= 0) eqs.push_back(dofs.equation(m.dof));
-    if (multiplier_eq < 0) pattern.add_block(eqs);
-    else {
-      pattern.add_pair(multiplier_eq, multiplier_eq);
-      for (std::int64_t e : eqs) pattern.add_pair(e, multiplier_eq);
-    }
-  };
-  for (std::size_t e = 0; e < n_el; ++e) {
+// Pattern: every pair of equations reached from one element's DOFs through their masters (of
+// this rank's elements); every diagonal is in it.
+void Assembler::build_element_pattern() {
+  tangent_ = SparseMatrix{};
+  PatternBuilder pattern(dofs_.n_equations());
+  std::vector<std::int64_t> el_dofs;
+  for (std::size_t e = 0; e < am_.model->mesh.elements.size(); ++e) {
     if (!owns(e)) continue;
     element_dofs(e, el_dofs);
-    add(el_dofs, -1);
-  }
-  if (extra) {
-    for (const auto& block : extra->dof_blocks) add(block, -1);
-    for (std::int64_t m = 0; m < n_mult; ++m) add(extra->multiplier_dofs[m], dofs.n_equations() + m);
+    add_couplings(pattern, el_dofs, -1);
   }
   tangent_ = pattern.build(true);
+  element_entry_.assign(tangent_.nnz(), true);
+}
+
+void Assembler::set_extra_couplings(const ExtraCouplings& extra) {
+  const std::int64_t n_eq = dofs_.n_equations();
+  const auto n_mult = static_cast<std::int64_t>(extra.multiplier_dofs.size());
+  PatternBuilder pattern(n_eq + n_mult);
+  for (const auto& block : extra.dof_blocks) add_couplings(pattern, block, -1);
+  for (std::int64_t m = 0; m < n_mult; ++m) add_couplings(pattern, extra.multiplier_dofs[m], n_eq + m);
+  const SparseMatrix added = pattern.build(true);
+  std::vector<double>().swap(tangent_.values);  // (its values are assembled anew)
+  std::vector<bool> element_entry;
+  tangent_ = merge_patterns(tangent_, element_entry_, added, element_entry);
+  element_entry_ = std::move(element_entry);
 }
 
 void Assembler::add_diagonal(std::int64_t dof, double value) {

@@ -69,6 +69,36 @@ SparseMatrix PatternBuilder::build(bool upper_only) {
   return full;
 }
 
+SparseMatrix merge_patterns(const SparseMatrix& kept, const std::vector<bool>& keep, const SparseMatrix& added,
+                            std::vector<bool>& from_kept) {
+  SparseMatrix m;
+  m.n = added.n;
+  m.upper_only = true;
+  m.col_ptr.assign(static_cast<std::size_t>(m.n) + 1, 0);
+  m.row_idx.reserve(kept.nnz() + added.nnz());
+  from_kept.clear();
+  from_kept.reserve(kept.nnz() + added.nnz());
+  for (std::int64_t c = 0; c < m.n; ++c) {
+    std::int64_t k = c < kept.n ? kept.col_ptr[c] : 0, k_end = c < kept.n ? kept.col_ptr[c + 1] : 0;
+    std::int64_t a = c < added.n ? added.col_ptr[c] : 0, a_end = c < added.n ? added.col_ptr[c + 1] : 0;
+    while (k < k_end || a < a_end) {
+      if (k < k_end && !keep[static_cast<std::size_t>(k)]) {
+        ++k;
+        continue;
+      }
+      const bool take_kept = k < k_end && (a == a_end || kept.row_idx[k] <= added.row_idx[a]);
+      const std::int64_t row = take_kept ? kept.row_idx[k] : added.row_idx[a];
+      if (take_kept && a < a_end && added.row_idx[a] == row) ++a;  // (in both: once, as kept)
+      take_kept ? ++k : ++a;
+      m.row_idx.push_back(row);
+      from_kept.push_back(take_kept);
+    }
+    m.col_ptr[c + 1] = static_cast<std::int64_t>(m.row_idx.size());
+  }
+  m.values.assign(m.row_idx.size(), 0.0);
+  return m;
+}
+
 void mirror_upper(const SparseMatrix& a, SparseMatrix& full) {
   std::vector<std::int64_t> count(static_cast<std::size_t>(a.n) + 1, 0);
   for (std::int64_t c = 0; c < a.n; ++c)

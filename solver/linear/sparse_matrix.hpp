@@ -22,6 +22,13 @@ struct SparseMatrix {
   void multiply(std::span<const double> x, std::span<double> y) const;
 };
 
+/// The union of two upper-triangle patterns of added.n columns: the entries of `kept` flagged in
+/// `keep` (all of them in its first added.n columns) and every entry of `added`, each column
+/// sorted, the values zero. `from_kept` gets the result's flags: whether an entry came from
+/// `kept`'s kept ones.
+SparseMatrix merge_patterns(const SparseMatrix& kept, const std::vector<bool>& keep, const SparseMatrix& added,
+                            std::vector<bool>& from_kept);
+
 /// The full (both triangles) matrix of a symmetric one stored as its upper triangle, into
 /// `full` (its buffers reused). Every column comes out sorted.
 void mirror_upper(const SparseMatrix& upper, SparseMatrix& full);

@@ -1,0 +1,131 @@
+// The pattern of the reduced tangent: merge_patterns() keeps the flagged entries of one pattern
+// and adds another's; the Assembler rebuilds its extra (contact) couplings that way, so that a
+// change of them leaves the elements' couplings and drops the stale extra ones.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "fixtures/deck_fixture.hpp"
+#include "solver/analysis_model.hpp"
+#include "solver/assembler.hpp"
+#include "solver/dof_map.hpp"
+#include "solver/linear/sparse_matrix.hpp"
+#include "solver/step_conditions.hpp"
+
+namespace solver = inpact::solver;
+using Entries = std::set<std::pair<std::int64_t, std::int64_t>>;  // (row, column)
+
+namespace {
+
+Entries entries_of(const solver::SparseMatrix& m) {
+  Entries out;
+  for (std::int64_t c = 0; c < m.n; ++c)
+    for (std::int64_t k = m.col_ptr[c]; k < m.col_ptr[c + 1]; ++k) out.insert({m.row_idx[k], c});
+  return out;
+}
+
+bool columns_sorted(const solver::SparseMatrix& m) {
+  for (std::int64_t c = 0; c < m.n; ++c)
+    for (std::int64_t k = m.col_ptr[c] + 1; k < m.col_ptr[c + 1]; ++k)
+      if (m.row_idx[k - 1] >= m.row_idx[k]) return false;
+  return true;
+}
+
+solver::SparseMatrix pattern(std::int64_t n, const std::vector<std::vector<std::int64_t>>& blocks) {
+  solver::PatternBuilder b(n);
+  for (const auto& block : blocks) b.add_block(block);
+  return b.build(true);
+}
+
+TEST(MergePatterns, KeepsTheFlaggedEntriesAndAddsTheOthersColumnsIncluded) {
+  const solver::SparseMatrix kept = pattern(4, {{0, 1}, {2, 3}});  // (0,0) (0,1) (1,1) (2,2) (2,3) (3,3)
+  std::vector<bool> keep(kept.nnz(), true);
+  keep[static_cast<std::size_t>(kept.find(2, 3))] = false;  // a stale coupling
+  const solver::SparseMatrix added = pattern(5, {{1, 4}, {0, 1}});  // (1,4) in a new column, (0,1) again
+  std::vector<bool> from_kept;
+  const solver::SparseMatrix m = solver::merge_patterns(kept, keep, added, from_kept);
+  EXPECT_EQ(m.n, 5);
+  EXPECT_TRUE(m.upper_only);
+  EXPECT_TRUE(columns_sorted(m));
+  EXPECT_EQ(entries_of(m), (Entries{{0, 0}, {0, 1}, {1, 1}, {2, 2}, {3, 3}, {1, 4}, {4, 4}}));
+  ASSERT_EQ(from_kept.size(), m.nnz());
+  ASSERT_EQ(m.values.size(), m.nnz());
+  for (std::int64_t c = 0; c < m.n; ++c)
+    for (std::int64_t k = m.col_ptr[c]; k < m.col_ptr[c + 1]; ++k) {
+      const bool was_kept = c < kept.n && kept.find(m.row_idx[k], c) >= 0 && !(m.row_idx[k] == 2 && c == 3);
+      EXPECT_EQ(from_kept[static_cast<std::size_t>(k)], was_kept) << m.row_idx[k] << "," << c;
+      EXPECT_EQ(m.values[static_cast<std::size_t>(k)], 0.0);
+    }
+}
+
+/// Two unit cubes side by side (nodes 1-8 and 9-16), node 1 held: the elements' couplings never
+/// join the cubes; extra couplings do.
+struct TwoCubes {
+  TwoCubes()
+      : read(dir.read(deck())), am(solver::build_analysis_model(read.model)),
+        conditions(am, read.model.steps[0], solver::initial_history(am), 0.0),
+        dofs(solver::DofMap::build(am, conditions.prescribed())) {}
+  static std::string deck() {
+    return "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+           "9,3,0,0\n10,4,0,0\n11,4,1,0\n12,3,1,0\n13,3,0,1\n14,4,0,1\n15,4,1,1\n16,3,1,1\n"
+           "*ELEMENT, TYPE=C3D8, ELSET=E\n1,1,2,3,4,5,6,7,8\n2,9,10,11,12,13,14,15,16\n"
+           "*SOLID SECTION, ELSET=E, MATERIAL=M\n*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n"
+           "*BOUNDARY\n1, 1, 3\n9, 1, 3\n*STEP\n*STATIC\n*END STEP\n";
+  }
+  inpact::test::DeckDir dir;
+  inpact::parser::ReadResult read;
+  solver::AnalysisModel am;
+  solver::StepConditions conditions;
+  solver::DofMap dofs;
+};
+
+/// Global DOF (node label − 1) × 3 + component.
+std::int64_t dof(int node, int component) { return (node - 1) * 3 + component; }
+
+TEST(AssemblerPattern, NewExtraCouplingsReplaceTheOldOnesAndKeepTheElements) {
+  TwoCubes m;
+  ASSERT_TRUE(m.read.ok()) << m.read.report();
+  solver::Assembler assembler(m.am, m.dofs);
+  const Entries elements = entries_of(assembler.tangent());
+  const std::int64_t n_eq = m.dofs.n_equations();
+
+  solver::ExtraCouplings first;  // node 7 with node 10, and one multiplier on node 3's x
+  first.dof_blocks.push_back({dof(7, 0), dof(7, 1), dof(7, 2), dof(10, 0), dof(10, 1), dof(10, 2)});
+  first.multiplier_dofs.push_back({dof(3, 0)});
+  assembler.set_extra_couplings(first);
+  const auto eq = [&](int node, int c) { return m.dofs.equation(dof(node, c)); };
+  const Entries with_first = entries_of(assembler.tangent());
+  EXPECT_EQ(assembler.n_equations(), n_eq + 1);
+  EXPECT_TRUE(with_first.count({eq(7, 0), eq(10, 2)}));
+  EXPECT_TRUE(with_first.count({eq(3, 0), n_eq}));
+  EXPECT_TRUE(with_first.count({n_eq, n_eq}));
+
+  solver::ExtraCouplings second;  // node 6 with node 15 instead, no multiplier
+  second.dof_blocks.push_back({dof(6, 0), dof(6, 1), dof(6, 2), dof(15, 0), dof(15, 1), dof(15, 2)});
+  assembler.set_extra_couplings(second);
+  const Entries with_second = entries_of(assembler.tangent());
+  EXPECT_EQ(assembler.n_equations(), n_eq);
+  EXPECT_FALSE(with_second.count({eq(7, 0), eq(10, 2)}));  // the stale coupling is gone
+  EXPECT_TRUE(with_second.count({eq(6, 1), eq(15, 0)}));
+  EXPECT_TRUE(columns_sorted(assembler.tangent()));
+  EXPECT_EQ(assembler.tangent().values.size(), assembler.tangent().nnz());
+
+  // The same as elements plus those couplings built at once, and as a fresh assembler given them.
+  Entries expected = elements;
+  for (int a : {6, 15})
+    for (int b : {6, 15})
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          if (eq(a, i) <= eq(b, j)) expected.insert({eq(a, i), eq(b, j)});
+  EXPECT_EQ(with_second, expected);
+  solver::Assembler fresh(m.am, m.dofs);
+  fresh.set_extra_couplings(second);
+  EXPECT_EQ(entries_of(fresh.tangent()), with_second);
+
+  assembler.set_extra_couplings({});
+  EXPECT_EQ(entries_of(assembler.tangent()), elements);
+}
+
+}  // namespace
