@@ -245,6 +245,7 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
       if (v < best) best = v, xi = grid.xi[static_cast<std::size_t>(k)];
     }
   }
+  double previous_step = 0.0;  // the last full Newton step's size (0: none)
   for (int it = 0; it < 60; ++it) {
     const Local l = fn.eval(xi[0], xi[1]);
     const Vec3 r = sub(xs, l.x);
@@ -270,9 +271,13 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
       res.converged = true;
       break;
     }
-    // Newton with φ's own Hessian converges quadratically: after a step under √step_tol the
-    // next would be under step_tol, so the step is taken and nothing is left to confirm.
-    if (newton_hessian && std::abs(d0) + std::abs(d1) < std::sqrt(step_tol)) {
+    // Newton with φ's own Hessian converges quadratically, |d_next| ≈ C |d|² with C measured
+    // from the last two steps: when that predicts a next step under step_tol, this step is taken
+    // and nothing is left to confirm (a facet evaluation saved).
+    const double step = std::abs(d0) + std::abs(d1);
+    const bool last_step = newton_hessian && previous_step > 0 && step < 1e-6 &&
+                           step / (previous_step * previous_step) * step * step < step_tol;
+    if (last_step) {
       xi = {xi[0] + d0, xi[1] + d1};
       res.converged = true;
       break;
@@ -285,6 +290,7 @@ InteriorResult newton_interior(const FacetNodes& fn, const Vec3& xs, const std::
       while (lambda > 1e-6 && fn.phi(xs, xi[0] + lambda * d0, xi[1] + lambda * d1) > phi0 + 1e-4 * lambda * slope)
         lambda *= 0.5;
     xi = {xi[0] + lambda * d0, xi[1] + lambda * d1};
+    previous_step = newton_hessian && lambda == 1.0 ? step : 0.0;
     if (lambda * (std::abs(d0) + std::abs(d1)) < step_tol) {
       res.converged = true;
       break;

@@ -45,9 +45,8 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 
-void Assembler::add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block,
-                              std::int64_t multiplier_eq) const {
-  thread_local std::vector<std::int64_t> eqs;
+void Assembler::add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block, std::int64_t multiplier_eq,
+                              std::vector<std::int64_t>& eqs) const {
   eqs.clear();
   for (std::int64_t d : block)
     for (const auto& m : dofs_.masters(d))
@@ -65,11 +64,11 @@ void Assembler::add_couplings(PatternBuilder& pattern, std::span<const std::int6
 void Assembler::build_element_pattern() {
   tangent_ = SparseMatrix{};
   PatternBuilder pattern(dofs_.n_equations());
-  std::vector<std::int64_t> el_dofs;
+  std::vector<std::int64_t> el_dofs, eqs;
   for (std::size_t e = 0; e < am_.model->mesh.elements.size(); ++e) {
     if (!owns(e)) continue;
     element_dofs(e, el_dofs);
-    add_couplings(pattern, el_dofs, -1);
+    add_couplings(pattern, el_dofs, -1, eqs);
   }
   tangent_ = pattern.build(true);
   element_entry_.assign(tangent_.nnz(), true);
@@ -79,12 +78,14 @@ void Assembler::set_extra_couplings(const ExtraCouplings& extra) {
   const std::int64_t n_eq = dofs_.n_equations();
   const auto n_mult = static_cast<std::int64_t>(extra.multiplier_dofs.size());
   PatternBuilder pattern(n_eq + n_mult);
-  for (const auto& block : extra.dof_blocks) add_couplings(pattern, block, -1);
-  for (std::int64_t m = 0; m < n_mult; ++m) add_couplings(pattern, extra.multiplier_dofs[m], n_eq + m);
+  std::vector<std::int64_t> eqs;
+  for (const auto& block : extra.dof_blocks) add_couplings(pattern, block, -1, eqs);
+  for (std::int64_t m = 0; m < n_mult; ++m) add_couplings(pattern, extra.multiplier_dofs[m], n_eq + m, eqs);
   const SparseMatrix added = pattern.build(true);
-  std::vector<double>().swap(tangent_.values);  // (its values are assembled anew)
+  std::vector<double>().swap(tangent_.values);  // (assembled anew; freed before the new pattern grows)
   std::vector<bool> element_entry;
   tangent_ = merge_patterns(tangent_, element_entry_, added, element_entry);
+  tangent_.values.assign(tangent_.nnz(), 0.0);
   element_entry_ = std::move(element_entry);
 }
 

@@ -185,8 +185,9 @@ class Assembler {
   /// The elements' pattern (every diagonal in it), all of it flagged in element_entry_.
   void build_element_pattern();
   /// Adds to `pattern` the couplings of global DOFs `block` through their masters; with a
-  /// `multiplier_eq` (>= 0) those of the multiplier with them instead.
-  void add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block, std::int64_t multiplier_eq) const;
+  /// `multiplier_eq` (>= 0) those of the multiplier with them instead. `eqs`: scratch.
+  void add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block, std::int64_t multiplier_eq,
+                     std::vector<std::int64_t>& eqs) const;
 
   /// Element e's system into `out` (its buffers are reused from element to element).
   void compute(std::size_t e, std::span<const double> u, const AssemblyRequest& request,
@@ -202,9 +203,8 @@ class Assembler {
   const DofMap& dofs_;
   SparseMatrix tangent_;
   /// Per entry of tangent_: whether an element block couples it. The elements' couplings do not
-  /// change in the assembler's life, so set_extra_couplings() builds only the extra ones and
-  /// merges them with these (one bit per entry; a rebuild of the elements' part cost the default
-  /// job's contact 9 % of its time).
+  /// change in the assembler's life, so set_extra_couplings() builds only the extra ones (contact
+  /// changes them from one iteration to the next) and merges them with these, one bit per entry.
   std::vector<bool> element_entry_;
   int threads_ = 1;
   MaterialStates* states_ = nullptr;

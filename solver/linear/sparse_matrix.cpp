@@ -1,6 +1,7 @@
 #include "sparse_matrix.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace inpact::solver {
 
@@ -69,33 +70,52 @@ SparseMatrix PatternBuilder::build(bool upper_only) {
   return full;
 }
 
+namespace {
+
+/// Walks column c of the merge: calls emit(row, from_kept) for each row of the union, in order.
+template <class Emit>
+void merge_column(const SparseMatrix& kept, const std::vector<bool>& keep, const SparseMatrix& added, std::int64_t c,
+                  Emit&& emit) {
+  std::int64_t k = c < kept.n ? kept.col_ptr[c] : 0, k_end = c < kept.n ? kept.col_ptr[c + 1] : 0;
+  std::int64_t a = added.col_ptr[c], a_end = added.col_ptr[c + 1];
+  while (k < k_end || a < a_end) {
+    if (k < k_end && !keep[static_cast<std::size_t>(k)]) {
+      ++k;
+      continue;
+    }
+    const bool take_kept = k < k_end && (a == a_end || kept.row_idx[k] <= added.row_idx[a]);
+    const std::int64_t row = take_kept ? kept.row_idx[k] : added.row_idx[a];
+    if (take_kept && a < a_end && added.row_idx[a] == row) ++a;  // (in both: once, as kept)
+    take_kept ? ++k : ++a;
+    emit(row, take_kept);
+  }
+}
+
+}  // namespace
+
 SparseMatrix merge_patterns(const SparseMatrix& kept, const std::vector<bool>& keep, const SparseMatrix& added,
                             std::vector<bool>& from_kept) {
+  if (keep.size() != kept.nnz()) throw std::logic_error("merge_patterns: one flag per entry of the kept pattern");
+  for (std::int64_t c = added.n; c < kept.n; ++c)
+    for (std::int64_t k = kept.col_ptr[c]; k < kept.col_ptr[c + 1]; ++k)
+      if (keep[static_cast<std::size_t>(k)]) throw std::logic_error("merge_patterns: a kept entry beyond the columns");
   SparseMatrix m;
   m.n = added.n;
   m.upper_only = true;
   m.col_ptr.assign(static_cast<std::size_t>(m.n) + 1, 0);
-  m.row_idx.reserve(kept.nnz() + added.nnz());
+  // At most the kept entries and the added ones: over by their overlap (every diagonal, and the
+  // added couplings the elements have too), a small part.
+  const auto bound = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), true)) + added.nnz();
+  m.row_idx.reserve(bound);
   from_kept.clear();
-  from_kept.reserve(kept.nnz() + added.nnz());
+  from_kept.reserve(bound);
   for (std::int64_t c = 0; c < m.n; ++c) {
-    std::int64_t k = c < kept.n ? kept.col_ptr[c] : 0, k_end = c < kept.n ? kept.col_ptr[c + 1] : 0;
-    std::int64_t a = c < added.n ? added.col_ptr[c] : 0, a_end = c < added.n ? added.col_ptr[c + 1] : 0;
-    while (k < k_end || a < a_end) {
-      if (k < k_end && !keep[static_cast<std::size_t>(k)]) {
-        ++k;
-        continue;
-      }
-      const bool take_kept = k < k_end && (a == a_end || kept.row_idx[k] <= added.row_idx[a]);
-      const std::int64_t row = take_kept ? kept.row_idx[k] : added.row_idx[a];
-      if (take_kept && a < a_end && added.row_idx[a] == row) ++a;  // (in both: once, as kept)
-      take_kept ? ++k : ++a;
+    merge_column(kept, keep, added, c, [&](std::int64_t row, bool was_kept) {
       m.row_idx.push_back(row);
-      from_kept.push_back(take_kept);
-    }
+      from_kept.push_back(was_kept);
+    });
     m.col_ptr[c + 1] = static_cast<std::int64_t>(m.row_idx.size());
   }
-  m.values.assign(m.row_idx.size(), 0.0);
   return m;
 }
 

@@ -24,8 +24,8 @@ struct SparseMatrix {
 
 /// The union of two upper-triangle patterns of added.n columns: the entries of `kept` flagged in
 /// `keep` (all of them in its first added.n columns) and every entry of `added`, each column
-/// sorted, the values zero. `from_kept` gets the result's flags: whether an entry came from
-/// `kept`'s kept ones.
+/// sorted; no values (the caller sizes them, once `kept` is gone). `from_kept` gets the result's
+/// flags: whether an entry came from `kept`'s kept ones.
 SparseMatrix merge_patterns(const SparseMatrix& kept, const std::vector<bool>& keep, const SparseMatrix& added,
                             std::vector<bool>& from_kept);
 
