@@ -101,11 +101,13 @@ void Assembler::add_diagonal(std::int64_t dof, double value) {
 // per entry); every entry receives the same addition as before, so the sum is bit-identical.
 void Assembler::scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k) {
   const std::size_t n = el_dofs.size();
-  constexpr std::size_t kMaxLocal = 64;
+  // (a 27-node brick has 81 DOFs; a smoothed contact node's block, its facets' and its master
+  // points' nodes, up to a few hundred)
+  constexpr std::size_t kMaxLocal = 384;
   bool plain = n <= kMaxLocal;
   for (std::size_t a = 0; plain && a < n; ++a) plain = dofs_.kind(el_dofs[a]) != DofMap::Kind::Dependent;
   std::array<std::int64_t, kMaxLocal> eq;
-  std::array<std::uint8_t, kMaxLocal> order;  // local DOFs with an equation, ascending
+  std::array<std::uint16_t, kMaxLocal> order;  // local DOFs with an equation, ascending
   std::size_t n_free = 0;
   if (plain) {
     for (std::size_t a = 0; a < n; ++a) {
@@ -113,7 +115,7 @@ void Assembler::scatter(std::span<const std::int64_t> el_dofs, std::span<const d
       if (eq[a] < 0) continue;
       std::size_t i = n_free++;
       for (; i > 0 && eq[order[i - 1]] > eq[a]; --i) order[i] = order[i - 1];
-      order[i] = static_cast<std::uint8_t>(a);
+      order[i] = static_cast<std::uint16_t>(a);
     }
     for (std::size_t i = 1; plain && i < n_free; ++i) plain = eq[order[i - 1]] != eq[order[i]];
   }
