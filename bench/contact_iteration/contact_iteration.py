@@ -18,8 +18,12 @@ the kept ray Jacobian, hints and memos kept across point layouts, cheaper correc
 derivatives: a5c056a..df2382b), 9 runs against 42d276b in the same run: contact per iteration
 12.89 -> 12.23 ms at level 1 (ratio 1.96 -> 1.92), 27.57 -> 26.23 ms at level 2 (1.53 -> 1.53),
 55.80 -> 54.90 ms at level 3 (0.99 -> 0.98); with --threads 2, 1.51 -> 1.46 at level 1 (the
-floor itself grows with 2 threads on so small a system). This machine's floor moves by 20 %
-between runs: compare ratios within one run only.
+floor itself grows with 2 threads on so small a system). On 2026-12-07 (the elements' pattern
+kept when contact's couplings change, contact blocks scattered column by column, the face
+projection's last Newton step predicted), 7 runs against e14b43a in the same run: ratio 1.93 ->
+1.80 at level 1, 1.52 -> 1.33 at level 2, 0.96 -> 0.84 at level 3, sphere_3d 0.14 -> 0.09; with
+--threads 2, 1.41 -> 1.32 and 1.25 -> 1.09. This machine's floor moves by 20 % between runs:
+compare ratios within one run only.
 
     contact_iteration.py --inpact BUILD/apps/inpact [--base OTHER/inpact] [--runs 5] [--threads 1]
                          [--decks hertz_2d ...] [--out bench/results/contact_iteration.md]
