@@ -212,6 +212,7 @@ def main():
                     f"{worst:.2e} | {where} | {verdict} |")
         print(rows[-1], flush=True)
     text = "\n".join(rows) + "\n"
+    os.makedirs(a.out, exist_ok=True)  # (no case may have run)
     with open(os.path.join(a.out, "compare.md"), "w") as f:
         f.write(text)
     print(text)
