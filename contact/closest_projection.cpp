@@ -114,8 +114,8 @@ class CandidateSet {
  public:
   CandidateSet(std::span<const Facet> facets, std::span<const std::int32_t> candidates, std::span<const Vec3> x,
                const Vec3& xs, const ProjectionHint* hint, std::span<const FacetBox> boxes,
-               std::vector<Candidate>& storage)
-      : facets_(facets), x_(x), xs_(xs), hint_(hint), all_(storage) {
+               std::vector<Candidate>& storage, const Projection* known)
+      : facets_(facets), x_(x), xs_(xs), hint_(hint), known_(known), all_(storage) {
     all_.resize(candidates.size());
     double size2 = 0.0, magnitude = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -162,8 +162,10 @@ class CandidateSet {
   const Projection& projected(std::size_t i) {
     Candidate& c = all_[i];
     if (!c.projected)
-      c.p = project_to_facet(facets_[static_cast<std::size_t>(c.index)], x_, xs_, c.index,
-                             hint_ && hint_->facet == c.index ? &hint_->xi : nullptr);
+      c.p = known_ && known_->facet == c.index
+                ? *known_
+                : project_to_facet(facets_[static_cast<std::size_t>(c.index)], x_, xs_, c.index,
+                                   hint_ && hint_->facet == c.index ? &hint_->xi : nullptr);
     c.projected = true;
     return c.p;
   }
@@ -204,6 +206,7 @@ class CandidateSet {
   std::span<const Vec3> x_;
   Vec3 xs_;
   const ProjectionHint* hint_;
+  const Projection* known_;
   std::vector<Candidate>& all_;
   double tol_ = 0.0, slack_ = 0.0;
 };
@@ -285,10 +288,10 @@ Projection finish(Projection best, const Vec3& nbar, double tol, const Vec3& xs,
 
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                               std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint,
-                              std::span<const FacetBox> boxes, ClosestMargin* margin) {
+                              std::span<const FacetBox> boxes, ClosestMargin* margin, const Projection* known) {
   if (candidates.empty()) return {};
   thread_local std::vector<Candidate> storage;  // (no allocation per point)
-  CandidateSet set(facets, candidates, x, xs, hint, boxes, storage);
+  CandidateSet set(facets, candidates, x, xs, hint, boxes, storage, known);
   const Projection best = set.projected(set.select());
   const Vec3 nbar = set.shared_normal(best);
   if (margin) *margin = {set.others_bound(best.facet), set.slack()};
@@ -296,9 +299,10 @@ Projection closest_projection(std::span<const Facet> facets, std::span<const std
 }
 
 Projection sole_projection(std::span<const Facet> facets, std::int32_t index, std::span<const Vec3> x, const Vec3& xs,
-                           const ProjectionHint* hint, double tol) {
+                           const ProjectionHint* hint, double tol, Projection* raw) {
   const Facet& f = facets[static_cast<std::size_t>(index)];
   const Projection best = project_to_facet(f, x, xs, index, hint && hint->facet == index ? &hint->xi : nullptr);
+  if (raw) *raw = best;
   return finish(best, add(Vec3{}, best.facet_normal), tol, xs, f);
 }
 

@@ -100,17 +100,23 @@ struct ClosestMargin {
 
 /// `boxes`: facet_boxes() of `facets` on `x`, when the caller has them (many points against the
 /// same facets); otherwise each candidate's box is computed here. `margin`: filled when given.
+/// `known`: project_to_facet()'s result for candidate known->facet on the same x, xs and hint,
+/// when the caller has it (sole_projection()'s `raw`): used wherever the search would project
+/// that candidate, so the answer is the same to the bit.
 Projection closest_projection(std::span<const Facet> facets, std::span<const std::int32_t> candidates,
                               std::span<const Vec3> x, const Vec3& xs, const ProjectionHint* hint = nullptr,
-                              std::span<const FacetBox> boxes = {}, ClosestMargin* margin = nullptr);
+                              std::span<const FacetBox> boxes = {}, ClosestMargin* margin = nullptr,
+                              const Projection* known = nullptr);
 
 /// closest_projection()'s result when facet `index` is its only candidate within its tie
 /// tolerance of the closest distance: the same numbers, to the bit, without the other
 /// candidates. The caller must know that no other facet comes that close, and pass a `tol` at
 /// least that tolerance and below the distance (so that, as in the search, the normal is the
 /// facet's own, not an average over facets sharing the point).
+/// `raw`, when given, receives project_to_facet()'s result before it is finished (for
+/// closest_projection()'s `known`, when the caller searches after all).
 Projection sole_projection(std::span<const Facet> facets, std::int32_t index, std::span<const Vec3> x, const Vec3& xs,
-                           const ProjectionHint* hint, double tol);
+                           const ProjectionHint* hint, double tol, Projection* raw = nullptr);
 
 /// The tangent basis for a unit normal `n` (dim 3: Abaqus's surface convention; dim 2: t1 = n
 /// rotated counter-clockwise, t2 = 0).

@@ -219,13 +219,14 @@ void SurfaceToSurfacePair::relayout(std::vector<Point>& pts, std::span<const Qua
 
 Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
                                               std::vector<std::int32_t>& candidates) const {
-  if (reproject(x, f, g, pt)) return pt.projection;
+  Projection memo_facet;  // (its projection, when reproject() made one: not made again)
+  if (reproject(x, f, g, pt, memo_facet)) return pt.projection;
   candidates.clear();
   search_.query(g.x, candidates);
   if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), candidates);
   ClosestMargin margin;
   Projection p = closest_projection(master_.facets(), candidates, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr,
-                                    master_boxes_, &margin);
+                                    master_boxes_, &margin, memo_facet.facet >= 0 ? &memo_facet : nullptr);
   // (a facet left out of the candidates lies beyond the search radius, or is the point's own
   // neighbour in self contact, which never competes)
   pt.memo = {p.facet, std::min(margin.others, search_radius()) - margin.slack, g.x, master_shift_, master_motion_,
@@ -243,7 +244,8 @@ Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Fac
 /// those of the largest master facet and coordinate), the search would choose the memo facet
 /// alone, and project onto it just as sole_projection() does. A point whose projection does not
 /// face it is searched again (project_onto_facing() needs the candidates).
-bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt) const {
+bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
+                                     Projection& raw) const {
   const Point::SearchMemo& m = pt.memo;
   if (m.facet < 0) return false;
   if (m.generation != memo_generation_) return false;
@@ -253,7 +255,7 @@ bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const Facet& f, co
   const double others = m.others - drift - slack;
   if (!(others > 2 * tol)) return false;
   const Projection p =
-      sole_projection(master_.facets(), m.facet, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, tol);
+      sole_projection(master_.facets(), m.facet, x, g.x, pt.hint.facet >= 0 ? &pt.hint : nullptr, tol, &raw);
   // (beyond tol the search's own tolerance, whatever it is now, leaves the normal unaveraged)
   if (!(p.distance > tol && others > p.distance + tol) || dot(g.n, p.normal) > -kOverlapCosine) return false;
   if (projection_self_check) {  // (tests: the search's own answer, to the bit)

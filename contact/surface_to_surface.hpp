@@ -173,8 +173,9 @@ class SurfaceToSurfacePair final : public PairKinematics {
   /// as the full search: sole_projection()), else by the search (`candidates` then filled).
   Projection search_point(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
                           std::vector<std::int32_t>& candidates) const;
-  /// Projects onto pt.memo's facet alone when that gives the search's result; false otherwise.
-  bool reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt) const;
+  /// Projects onto pt.memo's facet alone when that gives the search's result; false otherwise,
+  /// with `raw` the memo facet's projection when it was made (raw.facet −1 when not).
+  bool reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt, Projection& raw) const;
   /// Adds to master_motion_ how far the master moved since the last update (master_x_, updated).
   void track_master_motion(std::span<const Vec3> x);
   /// Replaces a point's projection `p` that does not face it by the closest facing one.

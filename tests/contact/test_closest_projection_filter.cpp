@@ -232,7 +232,11 @@ TEST(SoleProjection, IsTheSearchsResultWhenNoOtherFacetCanHaveComeClose) {
       const contact::ProjectionHint hint{then.facet, then.xi};
       const Projection now = contact::closest_projection(mesh.facets, candidates, x, moved_p, &hint);
       ++checked;
-      const Projection sole = contact::sole_projection(mesh.facets, then.facet, x, moved_p, &hint, tol);
+      Projection raw;
+      const Projection sole = contact::sole_projection(mesh.facets, then.facet, x, moved_p, &hint, tol, &raw);
+      // Ruled out or not, the kept facet's projection stands in for the search's own.
+      const Projection reused = contact::closest_projection(mesh.facets, candidates, x, moved_p, &hint, {}, nullptr, &raw);
+      EXPECT_TRUE(same_bits(reused, now)) << "shape " << int(shape) << " point " << k;
       if (!(sole.distance > tol && others > sole.distance + tol)) continue;
       ++kept;
       EXPECT_TRUE(same_bits(sole, now)) << "shape " << int(shape) << " point " << k << ": facet " << sole.facet
