@@ -360,6 +360,7 @@ void Assembler::reduce(std::span<const double> full, std::span<double> reduced) 
 
 void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<const double> k,
                                        std::vector<SkewEntry>& skew) {
+  if (add_unsymmetric_plain(eqs, k, skew)) return;
   const std::size_t n = eqs.size();
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a; b < n; ++b) {
@@ -381,6 +382,52 @@ void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<cons
           }
         }
     }
+}
+
+/// add_unsymmetric_matrix() where each unknown feeds one equation of its own with weight 1 (no
+/// constraint masters, none repeated): the symmetric part by the sorted column walk of
+/// scatter(), one addition per entry as in the general path (the same sums, to the bit). False,
+/// with nothing added, otherwise.
+bool Assembler::add_unsymmetric_plain(const LocalEquations& eqs, std::span<const double> k,
+                                      std::vector<SkewEntry>& skew) {
+  constexpr std::size_t kMaxLocal = 384;
+  const std::size_t n = eqs.size();
+  if (n > kMaxLocal) return false;
+  std::array<std::int64_t, kMaxLocal> eq;
+  std::array<std::uint16_t, kMaxLocal> order;  // local unknowns with an equation, ascending
+  std::size_t n_free = 0;
+  for (std::size_t a = 0; a < n; ++a) {
+    if (eqs[a].size() > 1 || (eqs[a].size() == 1 && eqs[a][0].second != 1.0)) return false;
+    if (eqs[a].empty()) continue;
+    eq[a] = eqs[a][0].first;
+    std::size_t i = n_free++;
+    for (; i > 0 && eq[order[i - 1]] > eq[a]; --i) order[i] = order[i - 1];
+    order[i] = static_cast<std::uint16_t>(a);
+  }
+  for (std::size_t i = 1; i < n_free; ++i)
+    if (eq[order[i - 1]] == eq[order[i]]) return false;
+  const std::int64_t* rows = tangent_.row_idx.data();
+  double* values = tangent_.values.data();
+  for (std::size_t j = 0; j < n_free; ++j) {  // column eq[b], rows up to it: the first j + 1 in order
+    const std::size_t b = order[j];
+    const std::int64_t* p = std::lower_bound(rows + tangent_.col_ptr[eq[b]], rows + tangent_.col_ptr[eq[b] + 1],
+                                             eq[order[0]]);
+    const std::int64_t* end = rows + tangent_.col_ptr[eq[b] + 1];
+    for (std::size_t i = 0; i <= j; ++i) {
+      const std::size_t a = order[i];
+      const double sym = a == b ? k[a * n + a] : 0.5 * (k[a * n + b] + k[b * n + a]);
+      const double skw = a == b ? 0.0 : 0.5 * (k[a * n + b] - k[b * n + a]);
+      while (p < end && *p < eq[a]) ++p;
+      if (sym != 0.0 && p < end && *p == eq[a]) values[p - rows] += sym;
+      if (skw != 0.0) {  // (in the general path's order: the lower local index first)
+        const std::size_t lo = std::min(a, b), hi = std::max(a, b);
+        const double v = lo == a ? skw : -skw;  // ½(k_lo,hi − k_hi,lo)
+        skew.push_back({eq[lo], eq[hi], v});
+        skew.push_back({eq[hi], eq[lo], -v});
+      }
+    }
+  }
+  return true;
 }
 
 void Assembler::add_multiplier_column(std::int64_t row, std::span<const std::int64_t> dofs, double scale,

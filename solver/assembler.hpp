@@ -194,6 +194,7 @@ class Assembler {
                elements::ElementSystem& out) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
+  bool add_unsymmetric_plain(const LocalEquations& eqs, std::span<const double> k, std::vector<SkewEntry>& skew);
   /// request.product += k · request.multiply on the element's DOFs; adds Σ |f + k · v| over
   /// them (f the element's forces) to `moved`, per field.
   void multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,

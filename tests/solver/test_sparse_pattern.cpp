@@ -3,6 +3,7 @@
 // change of them leaves the elements' couplings and drops the stale extra ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -139,6 +140,47 @@ TEST(AssemblerPattern, NewExtraCouplingsReplaceTheOldOnesAndKeepTheElements) {
 
   assembler.set_extra_couplings({});
   EXPECT_EQ(entries_of(assembler.tangent()), elements);
+}
+
+// An unsymmetric local matrix (friction's) whose unknowns each feed one equation, in no order,
+// one of them none (a held DOF): its symmetric part lands in the upper triangle and its skew
+// part in the list, each entry exactly ½(k_ab ± k_ba), as the general path adds it.
+TEST(AssemblerUnsymmetric, PlainUnknownsGetTheSymmetricAndSkewPartsExactly) {
+  TwoCubes m;
+  ASSERT_TRUE(m.read.ok()) << m.read.report();
+  solver::Assembler assembler(m.am, m.dofs);
+  const std::vector<std::int64_t> block{dof(10, 2), dof(7, 0), dof(1, 0), dof(10, 0), dof(7, 2), dof(7, 1)};
+  solver::ExtraCouplings extra;
+  extra.dof_blocks.push_back(block);
+  assembler.set_extra_couplings(extra);
+  solver::Assembler::LocalEquations eqs(block.size());
+  for (std::size_t a = 0; a < block.size(); ++a) {
+    if (const std::int64_t e = m.dofs.equation(block[a]); e >= 0) eqs[a].push_back({e, 1.0});
+  }
+  ASSERT_TRUE(eqs[2].empty());  // (node 1 is held)
+  const std::size_t n = block.size();
+  std::vector<double> k(n * n);
+  for (std::size_t i = 0; i < k.size(); ++i) k[i] = 0.37 * static_cast<double>(i % 7) - 0.11 * static_cast<double>(i);
+  std::vector<solver::Assembler::SkewEntry> skew;
+  assembler.add_unsymmetric_matrix(eqs, k, skew);
+  const solver::SparseMatrix& t = assembler.tangent();
+  std::size_t skew_checked = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) {
+      if (eqs[a].empty() || eqs[b].empty()) continue;
+      const std::int64_t ea = eqs[a][0].first, eb = eqs[b][0].first;
+      const double sym = a == b ? k[a * n + a] : 0.5 * (k[a * n + b] + k[b * n + a]);
+      if (ea <= eb) {
+        EXPECT_EQ(t.values[static_cast<std::size_t>(t.find(ea, eb))], sym) << a << "," << b;
+      }
+      if (a == b) continue;
+      const double skw = 0.5 * (k[a * n + b] - k[b * n + a]);
+      const auto it = std::find_if(skew.begin(), skew.end(), [&](const auto& s) { return s.row == ea && s.col == eb; });
+      ASSERT_NE(it, skew.end()) << a << "," << b;
+      EXPECT_EQ(it->value, skw) << a << "," << b;
+      ++skew_checked;
+    }
+  EXPECT_EQ(skew.size(), skew_checked);  // (one entry per position: none twice, none beyond)
 }
 
 }  // namespace
