@@ -207,7 +207,9 @@ Polygon clip_to_domain(const Polygon& subject, FacetShape shape) {
 
 bool polygon_rule(const Polygon& p, int n, std::vector<QuadPoint>& out) {
   const std::size_t start = out.size();
-  const auto rule = facet_rule(FacetShape::Tri3, n);  // on the unit triangle, weights summing to ½
+  // (on the unit triangle, weights summing to ½)
+  std::span<const QuadPoint> rule = symmetric_triangle_rule(2 * n - 2);
+  if (rule.empty()) rule = facet_rule(FacetShape::Tri3, n);
   const double scale2 = std::abs(2 * polygon_area(p));
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
     const auto e1 = minus2(p[i], p[0]), e2 = minus2(p[i + 1], p[0]);

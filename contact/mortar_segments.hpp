@@ -14,7 +14,7 @@
 ///   3D (faces): each master facet's projected corner polygon is clipped against the slave
 ///     domain (Sutherland–Hodgman, clip_to_domain); a quadrilateral cell gets a mapped n × n
 ///     Gauss rule (quad_rule), any other one is fanned into triangles (polygon_rule) with a
-///     collapsed-Gauss triangle rule each; n = max(3 (4 on quadratic faces), round(b/√cells)) for
+///     symmetric triangle rule of the same degree each; n = max(3 (4 on quadratic faces), round(b/√cells)) for
 ///     the plain rule's b points per direction (surface-to-surface contact: 4, so 3 or 4),
 ///     one less on a sliver (a cell under 1 % of the facet).
 ///     Only master facets facing the slave facet (centre
@@ -65,9 +65,10 @@ Polygon domain_polygon(FacetShape shape);
 double polygon_area(const Polygon& p);
 /// `subject` clipped against the (convex, counter-clockwise) parametric domain of `shape`.
 Polygon clip_to_domain(const Polygon& subject, FacetShape shape);
-/// Appends a rule over the polygon (its fan from vertex 0, each triangle with the collapsed Gauss
-/// rule of n points per direction, exact to degree 2n − 2). False (nothing appended) when a fan
-/// triangle turns the wrong way (a non-convex polygon).
+/// Appends a rule over the polygon (its fan from vertex 0, each triangle with a rule exact to
+/// degree 2n − 2, as the n × n rule of a quadrilateral cell: symmetric_triangle_rule(), 6 points
+/// where the collapsed Gauss rule takes 9 for n = 3; that rule beyond n = 4). False (nothing
+/// appended) when a fan triangle turns the wrong way (a non-convex polygon).
 bool polygon_rule(const Polygon& p, int n, std::vector<QuadPoint>& out);
 
 /// Appends the n × n Gauss rule over the quadrilateral `p` (counter-clockwise), mapped

@@ -3,7 +3,9 @@
 // at the master nodes) exactly.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "contact/mortar_segments.hpp"
@@ -89,9 +91,58 @@ TEST(MortarSegments, PolygonRuleIsExactForDegreeFour) {
   EXPECT_NEAR(integral, (b * b * b - a * a * a) * (d * d * d - c * c * c) / 9, 1e-15);
 }
 
+// The symmetric triangle rules integrate every monomial ξ^i η^j of their degree over the unit
+// triangle exactly (i! j! / (i + j + 2)!), with points inside and positive weights, in fewer
+// points than the collapsed rule of the same degree.
+TEST(MortarSegments, SymmetricTriangleRulesAreExactToTheirDegree) {
+  const std::array<std::pair<int, std::size_t>, 3> expected{{{2, 3}, {4, 6}, {6, 12}}};  // degree, points
+  for (const auto& [degree, points] : expected) {
+    const auto rule = contact::symmetric_triangle_rule(degree);
+    ASSERT_EQ(rule.size(), points) << "degree " << degree;
+    EXPECT_LT(rule.size(), contact::facet_rule(FacetShape::Tri3, degree / 2 + 1).size());
+    for (const QuadPoint& q : rule) {
+      EXPECT_GT(q.weight, 0.0);
+      EXPECT_GT(q.xi, 0.0);
+      EXPECT_GT(q.eta, 0.0);
+      EXPECT_LT(q.xi + q.eta, 1.0);
+    }
+    for (int i = 0; i <= degree; ++i)
+      for (int j = 0; i + j <= degree; ++j) {
+        double sum = 0.0;
+        for (const QuadPoint& q : rule) sum += q.weight * std::pow(q.xi, i) * std::pow(q.eta, j);
+        const double exact = std::tgamma(i + 1.0) * std::tgamma(j + 1.0) / std::tgamma(i + j + 3.0);
+        EXPECT_NEAR(sum, exact, 4e-16) << "degree " << degree << ": xi^" << i << " eta^" << j;
+      }
+  }
+  EXPECT_EQ(contact::symmetric_triangle_rule(1).size(), 3u);
+  EXPECT_TRUE(contact::symmetric_triangle_rule(8).empty());
+}
+
+// A pentagonal cell's fan: 6 points a triangle for n = 3 (the collapsed rule's 9), the same
+// integral of a degree-4 polynomial as the collapsed rule's fan.
+TEST(MortarSegments, PolygonRuleFansWithTheSymmetricRule) {
+  const Polygon pentagon{{-0.9, -0.8}, {0.7, -0.6}, {0.9, 0.3}, {0.4, 0.9}, {-0.5, 0.6}};
+  std::vector<QuadPoint> fan;
+  ASSERT_TRUE(contact::polygon_rule(pentagon, 3, fan));
+  EXPECT_EQ(fan.size(), 3u * 6u);
+  double by_symmetric = 0.0, by_collapsed = 0.0;
+  auto f = [](double x, double y) { return x * x * y * y - 3 * x * x * x * y + 2 * y * y * y - x + 0.5; };
+  for (const QuadPoint& q : fan) by_symmetric += q.weight * f(q.xi, q.eta);
+  const auto collapsed = contact::facet_rule(FacetShape::Tri3, 3);
+  for (std::size_t i = 1; i + 1 < pentagon.size(); ++i) {
+    const double e1x = pentagon[i][0] - pentagon[0][0], e1y = pentagon[i][1] - pentagon[0][1];
+    const double e2x = pentagon[i + 1][0] - pentagon[0][0], e2y = pentagon[i + 1][1] - pentagon[0][1];
+    const double twice = e1x * e2y - e1y * e2x;
+    for (const QuadPoint& q : collapsed)
+      by_collapsed += q.weight * twice *
+                      f(pentagon[0][0] + q.xi * e1x + q.eta * e2x, pentagon[0][1] + q.xi * e1y + q.eta * e2y);
+  }
+  EXPECT_NEAR(by_symmetric, by_collapsed, 1e-14);
+}
+
 TEST(MortarSegments, QuadRuleIsExactOnAGeneralQuadrilateral) {
   // A trapezoid (not a parallelogram): the mapped 3 × 3 rule is exact to total degree 4, like
-  // the fan of two triangles with the 3-point collapsed rule; both against each other.
+  // the fan of two triangles with the 6-point symmetric rule; both against each other.
   const Polygon trapezoid{{-0.9, -0.8}, {0.7, -0.6}, {0.4, 0.9}, {-0.5, 0.6}};
   std::vector<QuadPoint> quad, fan;
   ASSERT_TRUE(contact::quad_rule(trapezoid, 3, quad));
