@@ -111,7 +111,7 @@ bool face_rule(const Facet& slave, std::span<const Facet> facets, std::span<cons
   if (cells.size() == 1 && largest >= domain_area * (1 - kMinSegment)) return false;  // one master facet
   // W_a N_m: degree 4 on linear faces (bilinear × bilinear), up to 6 with quadratic ones: 3 or 4
   // points per direction at least; more when few cells share the facet, about the plain rule's
-  // base² points in all (base 4: one cell 4 × 4, two cells 3 × 3 each on linear faces).
+  // base² points in all (surface to surface's base is that least: plain_rule_points()).
   // A sliver (under kSliverFraction of the facet: a master edge just inside it) gets one point
   // per direction fewer: over its width the integrand is nearly linear.
   const int n_min = quadratic ? 4 : 3;

@@ -15,8 +15,9 @@
 ///     domain (Sutherland–Hodgman, clip_to_domain); a quadrilateral cell gets a mapped n × n
 ///     Gauss rule (quad_rule), any other one is fanned into triangles (polygon_rule) with a
 ///     symmetric triangle rule of the same degree each; n = max(3 (4 on quadratic faces), round(b/√cells)) for
-///     the plain rule's b points per direction (surface-to-surface contact: 4, so 3 or 4),
-///     one less on a sliver (a cell under 1 % of the facet).
+///     the plain rule's b points per direction (surface-to-surface contact: 3 on linear faces and
+///     4 on quadratic ones, so n is that least), one less on a sliver (a cell under 1 % of the
+///     facet).
 ///     Only master facets facing the slave facet (centre
 ///     normals within 45° of opposite, the points' own overlap test) make cells; the part of the
 ///     slave facet no master facet covers (beyond the master's free edge) gets no point.

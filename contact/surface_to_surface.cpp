@@ -68,7 +68,7 @@ void add_point_hessian(const ExpandedTerms& terms, double c, const GapLinearizat
 
 }  // namespace
 
-int plain_rule_points(FacetShape shape) { return facet_param_dim(shape) == 1 ? 6 : 4; }
+int plain_rule_points(FacetShape shape) { return facet_param_dim(shape) == 1 ? 6 : facet_is_quadratic(shape) ? 4 : 3; }
 
 std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N) {
   if (shape != FacetShape::Tri6 && shape != FacetShape::Quad8) return N;

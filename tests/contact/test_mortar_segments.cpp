@@ -253,13 +253,16 @@ TEST(MortarSegments, FaceOverAGridOfMasterFacesIsTiledByTheClippedCells) {
   EXPECT_TRUE(ambiguous);  // (the caller's plain rule then takes kAmbiguousRulePoints)
 }
 
-// The point budget of surface-to-surface slave faces: 4 × 4 where no master edge crosses the
-// face, 4 × 4 in a lone cell that covers part of it (a master's free edge), 3 × 3 in each of two
-// cells; 6 on 2D edges. A face entirely inside one master facet is not cut (not ambiguous).
+// The point budget of surface-to-surface slave faces: on linear faces 3 × 3 where no master edge
+// crosses the face, in a lone cell that covers part of it (a master's free edge) and in each of
+// two cells; 4 × 4 on quadratic faces; 6 on 2D edges. A face entirely inside one master facet is
+// not cut (not ambiguous).
 TEST(MortarSegments, FacePointBudgetFollowsTheCellCount) {
   EXPECT_EQ(contact::plain_rule_points(FacetShape::Line2), 6);
-  EXPECT_EQ(contact::plain_rule_points(FacetShape::Quad4), 4);
+  EXPECT_EQ(contact::plain_rule_points(FacetShape::Quad4), 3);
+  EXPECT_EQ(contact::plain_rule_points(FacetShape::Tri3), 3);
   EXPECT_EQ(contact::plain_rule_points(FacetShape::Quad8), 4);
+  EXPECT_EQ(contact::plain_rule_points(FacetShape::Tri6), 4);
   const int base = contact::plain_rule_points(FacetShape::Quad4);
   // The slave [0, 2]² facing down; masters facing up, 0.1 below.
   std::vector<Vec3> x{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
@@ -276,7 +279,7 @@ TEST(MortarSegments, FacePointBudgetFollowsTheCellCount) {
   EXPECT_FALSE(ambiguous);
   const std::vector<Facet> part{master(-1.0, 1.2)};  // its free edge at x = 1.2
   ASSERT_TRUE(contact::mortar_rule(slave, part, std::vector<std::int32_t>{0}, x, base, rule));
-  EXPECT_EQ(rule.size(), 16u);
+  EXPECT_EQ(rule.size(), 9u);
   EXPECT_NEAR(weight_sum(rule), 4.0 * 1.2 / 2.0, 1e-13);
   const std::vector<Facet> two{master(-1.0, 1.2), master(1.2, 3.0)};
   ASSERT_TRUE(contact::mortar_rule(slave, two, std::vector<std::int32_t>{0, 1}, x, base, rule));
