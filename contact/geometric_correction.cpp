@@ -339,11 +339,14 @@ bool SurfaceCorrection::reference_ideal(std::size_t i, const ShapeEval& sh, Vec3
   return true;
 }
 
-CorrectedPoint SurfaceCorrection::correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x) const {
+CorrectedPoint SurfaceCorrection::correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x,
+                                          FacetGeometry* geometry) const {
   if (facet < 0 || static_cast<std::size_t>(facet) >= facets_.size())
     throw std::invalid_argument("SurfaceCorrection::correct: facet index out of range");
   FacetGeometry gx;
-  return correct_at(static_cast<std::size_t>(facet), xi, x, gx);
+  const CorrectedPoint p = correct_at(static_cast<std::size_t>(facet), xi, x, gx);
+  if (geometry) *geometry = gx;
+  return p;
 }
 
 CorrectedPoint SurfaceCorrection::correct_at(std::size_t i, std::array<double, 2> xi, std::span<const Vec3> x,
@@ -559,9 +562,11 @@ const SurfaceCorrection* SurfaceCorrections::find(const Facet& f) const {
   return nullptr;
 }
 
-CorrectedPoint SurfaceCorrections::correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x) const {
-  if (const SurfaceCorrection* c = find(f)) return c->correct(c->find(f), xi, x);
+CorrectedPoint SurfaceCorrections::correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
+                                           FacetGeometry* geometry) const {
+  if (const SurfaceCorrection* c = find(f)) return c->correct(c->find(f), xi, x, geometry);
   const FacetGeometry g = facet_geometry(f, x, xi[0], xi[1]);
+  if (geometry) *geometry = g;
   return {g.x, g.n, false};
 }
 

@@ -145,8 +145,10 @@ class SurfaceCorrection {
   /// The idealised point and normal at ξ of facet `f` on coordinates `x` (all node rows).
   /// Throws std::invalid_argument when `f` is not a facet of this correction's surface.
   CorrectedPoint correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x) const;
-  /// The same for this correction's own facet number `facet`.
-  CorrectedPoint correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x) const;
+  /// The same for this correction's own facet number `facet`; `geometry`, when given, gets the
+  /// facet's own geometry at ξ on x (computed on the way).
+  CorrectedPoint correct(std::int32_t facet, std::array<double, 2> xi, std::span<const Vec3> x,
+                         FacetGeometry* geometry = nullptr) const;
   /// The point of the idealised surface over facet `f` whose normal passes through `xs`: `xi`,
   /// on entry a start (the closest point of the faceted surface), is refined by Broyden's
   /// iteration on x̃(ξ) + g ñ(ξ) = x_s for (ξ, g) (at most 10 + 10 iterations), kept inside the
@@ -245,8 +247,10 @@ class SurfaceCorrections {
   /// The correction that applies to facet `f`, or nullptr.
   const SurfaceCorrection* find(const Facet& f) const;
   /// The idealised point and normal at ξ of `f` on coordinates `x`; where no correction applies,
-  /// the facet's own point and normal (corrected = false).
-  CorrectedPoint correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x) const;
+  /// the facet's own point and normal (corrected = false). `geometry`, when given, gets the
+  /// facet's own geometry there, facet_geometry(f, x, ξ) (computed on the way).
+  CorrectedPoint correct(const Facet& f, std::array<double, 2> xi, std::span<const Vec3> x,
+                         FacetGeometry* geometry = nullptr) const;
   /// SurfaceCorrection::project() with the correction that applies to `f`; where none does, the
   /// facet's own point and normal at `xi` (unchanged).
   CorrectedPoint project(const Facet& f, std::array<double, 2>& xi, std::span<const Vec3> x, const Vec3& xs,

@@ -173,10 +173,12 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
   thread_local std::vector<std::int32_t> candidates;
   for (std::size_t q = 0; q < rule.size(); ++q) {
     Point& pt = pts[q];
-    FacetGeometry g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
+    FacetGeometry g;  // the facet's own geometry at the point (the area element is of it)
+    CorrectedPoint c;
+    if (slave_correction_.empty()) g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
+    else c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x, &g);  // (g comes with it)
     pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
     if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
-      const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x);
       g.x = c.x;
       g.n = c.normal;
     }
