@@ -77,6 +77,10 @@ void Assembler::build_element_pattern() {
 void Assembler::set_extra_couplings(const ExtraCouplings& extra) {
   const std::int64_t n_eq = dofs_.n_equations();
   const auto n_mult = static_cast<std::int64_t>(extra.multiplier_dofs.size());
+  if (has_exactly(extra)) {  // (contact's nodes changed, not the couplings they make)
+    tangent_.set_zero();
+    return;
+  }
   PatternBuilder pattern(n_eq + n_mult);
   std::vector<std::int64_t> eqs;
   for (const auto& block : extra.dof_blocks) add_couplings(pattern, block, -1, eqs);
@@ -87,6 +91,52 @@ void Assembler::set_extra_couplings(const ExtraCouplings& extra) {
   tangent_ = merge_patterns(tangent_, element_entry_, added, element_entry);
   tangent_.values.assign(tangent_.nnz(), 0.0);
   element_entry_ = std::move(element_entry);
+}
+
+/// Whether the pattern is already the elements' and exactly `extra`'s couplings: every entry
+/// they make is in it (each column walked once from its first row, as scatter() does), and
+/// every entry beyond the elements' is one of them.
+bool Assembler::has_exactly(const ExtraCouplings& extra) {
+  const std::int64_t n_eq = dofs_.n_equations();
+  if (tangent_.n != n_eq + static_cast<std::int64_t>(extra.multiplier_dofs.size())) return false;
+  if (hit_.size() != tangent_.nnz() || ++stamp_ == 0) {
+    hit_.assign(tangent_.nnz(), 0);
+    stamp_ = 1;
+  }
+  const std::int64_t* rows = tangent_.row_idx.data();
+  // Marks (r, col) for every r of the ascending `eqs` up to `last`; false where one is missing.
+  auto mark_column = [&](std::int64_t col, std::span<const std::int64_t> eqs, std::size_t last) {
+    const std::int64_t* p = std::lower_bound(rows + tangent_.col_ptr[col], rows + tangent_.col_ptr[col + 1], eqs[0]);
+    const std::int64_t* end = rows + tangent_.col_ptr[col + 1];
+    for (std::size_t i = 0; i <= last; ++i) {
+      while (p < end && *p < eqs[i]) ++p;
+      if (p == end || *p != eqs[i]) return false;
+      hit_[static_cast<std::size_t>(p - rows)] = stamp_;
+    }
+    return true;
+  };
+  std::vector<std::int64_t> eqs;
+  auto equations_of = [&](std::span<const std::int64_t> block) {
+    eqs.clear();
+    for (std::int64_t d : block)
+      for (const auto& m : dofs_.masters(d))
+        if (dofs_.equation(m.dof) >= 0) eqs.push_back(dofs_.equation(m.dof));
+    std::sort(eqs.begin(), eqs.end());
+    eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
+  };
+  for (const auto& block : extra.dof_blocks) {
+    equations_of(block);
+    for (std::size_t j = 0; j < eqs.size(); ++j)
+      if (!mark_column(eqs[j], eqs, j)) return false;
+  }
+  for (std::size_t m = 0; m < extra.multiplier_dofs.size(); ++m) {
+    equations_of(extra.multiplier_dofs[m]);
+    eqs.push_back(n_eq + static_cast<std::int64_t>(m));  // (above every DOF equation)
+    if (!mark_column(eqs.back(), eqs, eqs.size() - 1)) return false;
+  }
+  for (std::size_t k = 0; k < hit_.size(); ++k)
+    if (!element_entry_[k] && hit_[k] != stamp_) return false;
+  return true;
 }
 
 void Assembler::add_diagonal(std::int64_t dof, double value) {

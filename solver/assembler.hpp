@@ -207,6 +207,10 @@ class Assembler {
   /// change in the assembler's life, so set_extra_couplings() builds only the extra ones (contact
   /// changes them from one iteration to the next) and merges them with these, one bit per entry.
   std::vector<bool> element_entry_;
+  /// has_exactly()'s marks: an entry met in this call holds stamp_.
+  bool has_exactly(const ExtraCouplings& extra);
+  std::vector<std::uint32_t> hit_;
+  std::uint32_t stamp_ = 0;
   int threads_ = 1;
   MaterialStates* states_ = nullptr;
   RankWorld world_;

@@ -142,6 +142,48 @@ TEST(AssemblerPattern, NewExtraCouplingsReplaceTheOldOnesAndKeepTheElements) {
   EXPECT_EQ(entries_of(assembler.tangent()), elements);
 }
 
+// The same couplings given again, listed otherwise (contact's nodes change, not what they
+// couple), keep the pattern and zero its values; a subset of them is a change (the stale
+// entries go).
+TEST(AssemblerPattern, TheSameCouplingsListedOtherwiseKeepThePattern) {
+  TwoCubes m;
+  ASSERT_TRUE(m.read.ok()) << m.read.report();
+  solver::Assembler assembler(m.am, m.dofs);
+  const Entries elements = entries_of(assembler.tangent());
+  solver::ExtraCouplings extra;
+  extra.dof_blocks.push_back({dof(7, 0), dof(7, 1), dof(7, 2), dof(10, 0), dof(10, 1), dof(10, 2)});
+  extra.dof_blocks.push_back({dof(6, 0), dof(10, 0)});
+  extra.multiplier_dofs.push_back({dof(3, 0), dof(11, 1)});
+  assembler.set_extra_couplings(extra);
+  const Entries with_extra = entries_of(assembler.tangent());
+  const std::vector<std::int64_t> row_idx = assembler.tangent().row_idx;
+  const std::int64_t n_equations = assembler.n_equations();
+  std::fill(assembler.tangent().values.begin(), assembler.tangent().values.end(), 1.0);
+
+  solver::ExtraCouplings again;  // the blocks in another order, their DOFs too, one repeated
+  again.dof_blocks.push_back({dof(10, 0), dof(6, 0)});
+  again.dof_blocks.push_back({dof(10, 2), dof(7, 1), dof(10, 1), dof(7, 0), dof(10, 0), dof(7, 2)});
+  again.dof_blocks.push_back({dof(6, 0), dof(10, 0)});
+  again.multiplier_dofs.push_back({dof(11, 1), dof(3, 0)});
+  assembler.set_extra_couplings(again);
+  EXPECT_EQ(assembler.tangent().row_idx, row_idx);
+  EXPECT_EQ(assembler.n_equations(), n_equations);
+  for (double v : assembler.tangent().values) ASSERT_EQ(v, 0.0);
+
+  solver::ExtraCouplings fewer = again;  // without node 6's block: its coupling is stale
+  fewer.dof_blocks.erase(fewer.dof_blocks.begin());
+  fewer.dof_blocks.pop_back();
+  assembler.set_extra_couplings(fewer);
+  const auto eq = [&](int node, int c) { return m.dofs.equation(dof(node, c)); };
+  const Entries with_fewer = entries_of(assembler.tangent());
+  EXPECT_TRUE(with_extra.count({eq(6, 0), eq(10, 0)}));
+  EXPECT_FALSE(with_fewer.count({eq(6, 0), eq(10, 0)}));
+  solver::Assembler fresh(m.am, m.dofs);
+  fresh.set_extra_couplings(fewer);
+  EXPECT_EQ(entries_of(fresh.tangent()), with_fewer);
+  EXPECT_NE(with_fewer, elements);
+}
+
 // An unsymmetric local matrix (friction's) whose unknowns each feed one equation, in no order,
 // one of them none (a held DOF): its symmetric part lands in the upper triangle and its skew
 // part in the list, each entry exactly ½(k_ab ± k_ba), as the general path adds it.
