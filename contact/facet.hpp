@@ -78,11 +78,11 @@ struct QuadPoint {
 /// Gauss rule with `n` points per direction (Gauss–Legendre on lines and quads, the collapsed
 /// Duffy product on triangles: exact to degree 2n−1 per direction, 2n−2 on triangles).
 std::span<const QuadPoint> facet_rule(FacetShape s, int n);
-/// The symmetric rule on the unit triangle (weights summing to ½) of the fewest points exact to
-/// total degree `degree`: Strang and Fix's 3 points up to degree 2, Dunavant's 6 up to 4 and 12
-/// up to 6 (Dunavant 1985, refined to round-off on the moment equations), every point inside
-/// and every weight positive; empty beyond degree 6. The collapsed rule facet_rule(Tri3, n) of
-/// the same degree 2n − 2 takes 4, 9 and 16.
+/// A symmetric rule on the unit triangle (weights summing to ½) exact to total degree `degree`,
+/// every point inside and every weight positive: Strang and Fix's 3 points up to degree 2,
+/// Dunavant's 6 up to 4 and 12 up to 6 (Dunavant 1985, refined to round-off on the moment
+/// equations); empty beyond degree 6. For degrees 2, 4 and 6 the collapsed rule
+/// facet_rule(Tri3, n) of the same degree 2n − 2 takes 4, 9 and 16 points.
 std::span<const QuadPoint> symmetric_triangle_rule(int degree);
 
 /// Points whose convex hull contains the facet (the Bernstein–Bézier control points: the nodes

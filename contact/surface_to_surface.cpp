@@ -68,7 +68,10 @@ void add_point_hessian(const ExpandedTerms& terms, double c, const GapLinearizat
 
 }  // namespace
 
-int plain_rule_points(FacetShape shape) { return facet_param_dim(shape) == 1 ? 6 : facet_is_quadratic(shape) ? 4 : 3; }
+int plain_rule_points(FacetShape shape, bool quadratic_master) {
+  if (facet_param_dim(shape) == 1) return 6;
+  return facet_is_quadratic(shape) || quadratic_master ? 4 : 3;
+}
 
 std::array<double, 8> weighting_functions(FacetShape shape, const std::array<double, 8>& N) {
   if (shape != FacetShape::Tri6 && shape != FacetShape::Quad8) return N;
@@ -152,7 +155,10 @@ std::span<const QuadPoint> SurfaceToSurfacePair::facet_points(std::span<const Ve
   near.clear();
   search_.query_box(box.lo, box.hi, near);
   if (self_contact_) drop_neighbours(master_.facets(), f.node_rows(), near);
-  const int plain = plain_rule_points(f.shape);
+  const bool quadratic_master = std::any_of(near.begin(), near.end(), [&](std::int32_t m) {
+    return facet_is_quadratic(master_.facets()[static_cast<std::size_t>(m)].shape);
+  });
+  const int plain = plain_rule_points(f.shape, quadratic_master);
   bool ambiguous = false;
   if (mortar_rule(f, master_.facets(), near, x, plain, layout, master_normals_, &ambiguous)) return layout;
   return facet_rule(f.shape, ambiguous ? kAmbiguousRulePoints : plain);
@@ -173,15 +179,13 @@ void SurfaceToSurfacePair::measure_facet(std::span<const Vec3> x, std::size_t fi
   thread_local std::vector<std::int32_t> candidates;
   for (std::size_t q = 0; q < rule.size(); ++q) {
     Point& pt = pts[q];
-    FacetGeometry g;  // the facet's own geometry at the point (the area element is of it)
-    CorrectedPoint c;
-    if (slave_correction_.empty()) g = facet_geometry(f, x, rule[q].xi, rule[q].eta);
-    else c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x, &g);  // (g comes with it)
+    // The point on the slave's idealised surface (its own where none applies), and the facet's
+    // own geometry there, which the area element is of.
+    FacetGeometry g;
+    const CorrectedPoint c = slave_correction_.correct(f, {rule[q].xi, rule[q].eta}, x, &g);
     pt.da = rule[q].weight * g.jacobian * slave_.area_factor(g.x);
-    if (!slave_correction_.empty()) {  // the point on the slave's idealised surface
-      g.x = c.x;
-      g.n = c.normal;
-    }
+    g.x = c.x;
+    g.n = c.normal;
     pt.x = g.x;
     pt.lin_valid = pt.smoothed_valid = false;
     pt.projection = search_point(x, f, g, pt, candidates);
@@ -248,6 +252,7 @@ Projection SurfaceToSurfacePair::search_point(std::span<const Vec3> x, const Fac
 /// face it is searched again (project_onto_facing() needs the candidates).
 bool SurfaceToSurfacePair::reproject(std::span<const Vec3> x, const Facet& f, const FacetGeometry& g, Point& pt,
                                      Projection& raw) const {
+  raw = {};
   const Point::SearchMemo& m = pt.memo;
   if (m.facet < 0) return false;
   if (m.generation != memo_generation_) return false;

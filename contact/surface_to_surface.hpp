@@ -79,9 +79,11 @@ namespace inpact::contact {
 
 /// Gauss points per parametric direction of a slave facet's plain rule (no master facet edge
 /// crosses it), and the budget mortar_rule() shares out among a cut facet's cells (at least 3,
-/// 4 with a quadratic side; contact/mortar_segments.hpp).
-/// Edges (2D): 6. Faces: the fewest that integrate W_a × N_m exactly on flat faces: 3 between
-/// linear faces (degree 2 per direction each), 4 with a quadratic side (degree 6). Smoothed and
+/// 4 with a quadratic side; contact/mortar_segments.hpp). `quadratic_master`: a master facet
+/// near the slave facet is quadratic.
+/// Edges (2D): 6. Faces: 3 between linear faces, which integrates W_a × N_m times the area
+/// element of a flat quadrilateral exactly (degree 4 per direction at most), 4 with a quadratic
+/// side on either (degree 6). Smoothed and
 /// curved faces make the integrand no polynomial, so the choice is measured: 4 × 4 gave the
 /// contact verification figures of a 6 × 6 rule to 1e-6 of their value with the same Newton
 /// counts (C3D8 decks; the 3D sphere meshed with C3D20 agreed to 2.6e-5 of its largest CPRESS),
@@ -90,7 +92,7 @@ namespace inpact::contact {
 /// spherical seats to 5e-8; the default job, smoothed, to 1.5e-5 of its largest CPRESS). On 2D
 /// edges a 4-point rule did not (spherical_seat_axi_smoothed: its worst node 2.13 % from the
 /// thick sphere, over the test's 2 % bound).
-int plain_rule_points(FacetShape shape);
+int plain_rule_points(FacetShape shape, bool quadratic_master = false);
 /// A face's plain rule where mortar_rule() found its cells ambiguous (two master layers, a folded
 /// cell: master edges cross the face, and N_m's kinks fall between the points; 6 per direction
 /// is 2 % off over a hat function, 4 is 4.3 % off), or the slave facet degenerate.

@@ -45,12 +45,16 @@ std::string describe_distribution(const AnalysisModel& am, RankWorld world) {
                      world.size, *fewest, *most, am.model->mesh.elements.size());
 }
 
-void Assembler::add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block, std::int64_t multiplier_eq,
-                              std::vector<std::int64_t>& eqs) const {
+void Assembler::block_equations(std::span<const std::int64_t> block, std::vector<std::int64_t>& eqs) const {
   eqs.clear();
   for (std::int64_t d : block)
     for (const auto& m : dofs_.masters(d))
       if (dofs_.equation(m.dof) >= 0) eqs.push_back(dofs_.equation(m.dof));
+}
+
+void Assembler::add_couplings(PatternBuilder& pattern, std::span<const std::int64_t> block, std::int64_t multiplier_eq,
+                              std::vector<std::int64_t>& eqs) const {
+  block_equations(block, eqs);
   if (multiplier_eq < 0) {
     pattern.add_block(eqs);
     return;
@@ -96,13 +100,10 @@ void Assembler::set_extra_couplings(const ExtraCouplings& extra) {
 /// Whether the pattern is already the elements' and exactly `extra`'s couplings: every entry
 /// they make is in it (each column walked once from its first row, as scatter() does), and
 /// every entry beyond the elements' is one of them.
-bool Assembler::has_exactly(const ExtraCouplings& extra) {
+bool Assembler::has_exactly(const ExtraCouplings& extra) const {
   const std::int64_t n_eq = dofs_.n_equations();
   if (tangent_.n != n_eq + static_cast<std::int64_t>(extra.multiplier_dofs.size())) return false;
-  if (hit_.size() != tangent_.nnz() || ++stamp_ == 0) {
-    hit_.assign(tangent_.nnz(), 0);
-    stamp_ = 1;
-  }
+  std::vector<bool> hit(tangent_.nnz(), false);  // (a bit an entry, for this call only)
   const std::int64_t* rows = tangent_.row_idx.data();
   // Marks (r, col) for every r of the ascending `eqs` up to `last`; false where one is missing.
   auto mark_column = [&](std::int64_t col, std::span<const std::int64_t> eqs, std::size_t last) {
@@ -111,16 +112,13 @@ bool Assembler::has_exactly(const ExtraCouplings& extra) {
     for (std::size_t i = 0; i <= last; ++i) {
       while (p < end && *p < eqs[i]) ++p;
       if (p == end || *p != eqs[i]) return false;
-      hit_[static_cast<std::size_t>(p - rows)] = stamp_;
+      hit[static_cast<std::size_t>(p - rows)] = true;
     }
     return true;
   };
   std::vector<std::int64_t> eqs;
-  auto equations_of = [&](std::span<const std::int64_t> block) {
-    eqs.clear();
-    for (std::int64_t d : block)
-      for (const auto& m : dofs_.masters(d))
-        if (dofs_.equation(m.dof) >= 0) eqs.push_back(dofs_.equation(m.dof));
+  auto equations_of = [&](std::span<const std::int64_t> block) {  // (ascending, once each)
+    block_equations(block, eqs);
     std::sort(eqs.begin(), eqs.end());
     eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
   };
@@ -134,8 +132,8 @@ bool Assembler::has_exactly(const ExtraCouplings& extra) {
     eqs.push_back(n_eq + static_cast<std::int64_t>(m));  // (above every DOF equation)
     if (!mark_column(eqs.back(), eqs, eqs.size() - 1)) return false;
   }
-  for (std::size_t k = 0; k < hit_.size(); ++k)
-    if (!element_entry_[k] && hit_[k] != stamp_) return false;
+  for (std::size_t k = 0; k < hit.size(); ++k)
+    if (!element_entry_[k] && !hit[k]) return false;
   return true;
 }
 
@@ -151,9 +149,6 @@ void Assembler::add_diagonal(std::int64_t dof, double value) {
 // per entry); every entry receives the same addition as before, so the sum is bit-identical.
 void Assembler::scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k) {
   const std::size_t n = el_dofs.size();
-  // (a 27-node brick has 81 DOFs; a smoothed contact node's block, its facets' and its master
-  // points' nodes, up to a few hundred)
-  constexpr std::size_t kMaxLocal = 384;
   bool plain = n <= kMaxLocal;
   for (std::size_t a = 0; plain && a < n; ++a) plain = dofs_.kind(el_dofs[a]) != DofMap::Kind::Dependent;
   std::array<std::int64_t, kMaxLocal> eq;
@@ -440,7 +435,6 @@ void Assembler::add_unsymmetric_matrix(const LocalEquations& eqs, std::span<cons
 /// with nothing added, otherwise.
 bool Assembler::add_unsymmetric_plain(const LocalEquations& eqs, std::span<const double> k,
                                       std::vector<SkewEntry>& skew) {
-  constexpr std::size_t kMaxLocal = 384;
   const std::size_t n = eqs.size();
   if (n > kMaxLocal) return false;
   std::array<std::int64_t, kMaxLocal> eq;
@@ -469,7 +463,9 @@ bool Assembler::add_unsymmetric_plain(const LocalEquations& eqs, std::span<const
       const double skw = a == b ? 0.0 : 0.5 * (k[a * n + b] - k[b * n + a]);
       while (p < end && *p < eq[a]) ++p;
       if (sym != 0.0 && p < end && *p == eq[a]) values[p - rows] += sym;
-      if (skw != 0.0) {  // (in the general path's order: the lower local index first)
+      // The skew pairs in another order than the general path's, each position once a call: the
+      // same sums (unsymmetric_tangent adds them position by position in list order).
+      if (skw != 0.0) {
         const std::size_t lo = std::min(a, b), hi = std::max(a, b);
         const double v = lo == a ? skw : -skw;  // ½(k_lo,hi − k_hi,lo)
         skew.push_back({eq[lo], eq[hi], v});

@@ -100,10 +100,11 @@ class Assembler {
   const DofMap& dofs() const { return dofs_; }
   /// Size of the system: the DOF map's equations plus the multipliers of set_extra_couplings().
   std::int64_t n_equations() const { return tangent_.n; }
-  /// Rebuilds the pattern with the elements' couplings and `extra` (contact, whenever its
-  /// couplings or multipliers change; the linear solvers redo their analysis then). On a
-  /// distributed run `extra` holds this rank's couplings, and every multiplier of the system
-  /// (those another rank couples with an empty block).
+  /// Makes the pattern the elements' couplings and `extra`'s (contact, whenever its couplings or
+  /// multipliers change), and zeroes its values. The pattern is rebuilt (the linear solvers
+  /// redo their analysis then) unless it is that already. On a distributed run `extra` holds
+  /// this rank's couplings, and every multiplier of the system (those another rank couples with
+  /// an empty block).
   void set_extra_couplings(const ExtraCouplings& extra);
 
   /// Internal forces at u (full, overwritten) and, when asked, the reduced tangent.
@@ -194,7 +195,16 @@ class Assembler {
                elements::ElementSystem& out) const;
   /// Adds element matrix k (n × n, row-major) on DOFs `el_dofs` into the reduced tangent.
   void scatter(std::span<const std::int64_t> el_dofs, std::span<const double> k);
+  /// add_unsymmetric_matrix() where each unknown feeds one equation of its own with weight 1,
+  /// by scatter()'s column walk; false, with nothing added, otherwise.
   bool add_unsymmetric_plain(const LocalEquations& eqs, std::span<const double> k, std::vector<SkewEntry>& skew);
+  /// The pattern is the elements' and exactly `extra`'s couplings already.
+  bool has_exactly(const ExtraCouplings& extra) const;
+  /// The equations the global DOFs `block` feed through their masters, into `eqs`.
+  void block_equations(std::span<const std::int64_t> block, std::vector<std::int64_t>& eqs) const;
+  /// Local blocks up to this many DOFs take scatter()'s sorted column walk (a 27-node brick has
+  /// 81; a smoothed contact node's block, its facets' and its master points' nodes, a few hundred).
+  static constexpr std::size_t kMaxLocal = 384;
   /// request.product += k · request.multiply on the element's DOFs; adds Σ |f + k · v| over
   /// them (f the element's forces) to `moved`, per field.
   void multiply(std::span<const std::int64_t> el_dofs, const elements::ElementSystem& sys,
@@ -207,10 +217,6 @@ class Assembler {
   /// change in the assembler's life, so set_extra_couplings() builds only the extra ones (contact
   /// changes them from one iteration to the next) and merges them with these, one bit per entry.
   std::vector<bool> element_entry_;
-  /// has_exactly()'s marks: an entry met in this call holds stamp_.
-  bool has_exactly(const ExtraCouplings& extra);
-  std::vector<std::uint32_t> hit_;
-  std::uint32_t stamp_ = 0;
   int threads_ = 1;
   MaterialStates* states_ = nullptr;
   RankWorld world_;

@@ -237,6 +237,13 @@ TEST(SoleProjection, IsTheSearchsResultWhenNoOtherFacetCanHaveComeClose) {
       // Ruled out or not, the kept facet's projection stands in for the search's own.
       const Projection reused = contact::closest_projection(mesh.facets, candidates, x, moved_p, &hint, {}, nullptr, &raw);
       EXPECT_TRUE(same_bits(reused, now)) << "shape " << int(shape) << " point " << k;
+      Projection marked = raw;  // (stands in for the facet's projection wherever the search makes it)
+      marked.x_master[0] += 1e-3;
+      const Projection with_mark =
+          contact::closest_projection(mesh.facets, candidates, x, moved_p, &hint, {}, nullptr, &marked);
+      if (now.facet == raw.facet) {
+        EXPECT_EQ(with_mark.x_master[0], marked.x_master[0]) << "point " << k;
+      }
       if (!(sole.distance > tol && others > sole.distance + tol)) continue;
       ++kept;
       EXPECT_TRUE(same_bits(sole, now)) << "shape " << int(shape) << " point " << k << ": facet " << sole.facet

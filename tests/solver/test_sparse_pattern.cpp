@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -157,6 +158,7 @@ TEST(AssemblerPattern, TheSameCouplingsListedOtherwiseKeepThePattern) {
   assembler.set_extra_couplings(extra);
   const Entries with_extra = entries_of(assembler.tangent());
   const std::vector<std::int64_t> row_idx = assembler.tangent().row_idx;
+  const std::int64_t* rows_kept = assembler.tangent().row_idx.data();  // (a rebuild makes new ones)
   const std::int64_t n_equations = assembler.n_equations();
   std::fill(assembler.tangent().values.begin(), assembler.tangent().values.end(), 1.0);
 
@@ -166,6 +168,7 @@ TEST(AssemblerPattern, TheSameCouplingsListedOtherwiseKeepThePattern) {
   again.dof_blocks.push_back({dof(6, 0), dof(10, 0)});
   again.multiplier_dofs.push_back({dof(11, 1), dof(3, 0)});
   assembler.set_extra_couplings(again);
+  EXPECT_EQ(assembler.tangent().row_idx.data(), rows_kept);
   EXPECT_EQ(assembler.tangent().row_idx, row_idx);
   EXPECT_EQ(assembler.n_equations(), n_equations);
   for (double v : assembler.tangent().values) ASSERT_EQ(v, 0.0);
@@ -223,6 +226,21 @@ TEST(AssemblerUnsymmetric, PlainUnknownsGetTheSymmetricAndSkewPartsExactly) {
       ++skew_checked;
     }
   EXPECT_EQ(skew.size(), skew_checked);  // (one entry per position: none twice, none beyond)
+
+  // The general path (taken when an unknown feeds two equations; here the second with weight
+  // 0, which adds nothing) gives the same bits.
+  solver::Assembler general(m.am, m.dofs);
+  general.set_extra_couplings(extra);
+  solver::Assembler::LocalEquations twice = eqs;
+  twice[0].push_back({eqs[1][0].first, 0.0});
+  std::vector<solver::Assembler::SkewEntry> general_skew;
+  general.add_unsymmetric_matrix(twice, k, general_skew);
+  EXPECT_EQ(general.tangent().values, t.values);
+  std::map<std::pair<std::int64_t, std::int64_t>, double> plain_sums, general_sums;
+  for (const auto& e : skew) plain_sums[{e.row, e.col}] += e.value;
+  for (const auto& e : general_skew)
+    if (e.value != 0.0) general_sums[{e.row, e.col}] += e.value;
+  EXPECT_EQ(general_sums, plain_sums);
 }
 
 }  // namespace
