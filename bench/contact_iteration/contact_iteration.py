@@ -22,7 +22,11 @@ floor itself grows with 2 threads on so small a system). On 2026-12-07 (the elem
 kept when contact's couplings change, contact blocks scattered column by column, the face
 projection's last Newton step predicted), 7 runs against e14b43a in the same run: ratio 1.93 ->
 1.80 at level 1, 1.52 -> 1.33 at level 2, 0.96 -> 0.84 at level 3, sphere_3d 0.14 -> 0.09; with
---threads 2, 1.41 -> 1.32 and 1.25 -> 1.09. This machine's floor moves by 20 % between runs:
+--threads 2, 1.41 -> 1.32 and 1.25 -> 1.09. Later that day (symmetric triangle rules in the
+mortar cells' fans, 3 x 3 plain rules on linear faces: 27 points a slave facet instead of 33;
+projections and patterns not redone), 9 runs against 2dfb4eb in the same run: 1.74 -> 1.45 at
+level 1 (1.78 -> 1.47 in a run of 15), 1.25 -> 1.09 at level 2, 0.78 -> 0.72 at level 3; with
+--threads 2, 1.37 -> 1.09 and 1.22 -> 1.02. This machine's floor moves by 20 % between runs:
 compare ratios within one run only.
 
     contact_iteration.py --inpact BUILD/apps/inpact [--base OTHER/inpact] [--runs 5] [--threads 1]
