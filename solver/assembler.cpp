@@ -142,6 +142,26 @@ void Assembler::add_diagonal(std::int64_t dof, double value) {
   tangent_.values[tangent_.find(dofs_.equation(dof), dofs_.equation(dof))] += value;
 }
 
+namespace {
+
+/// The positions a of the local unknowns that have an equation (eq[a] >= 0), by ascending
+/// equation, into `order`; how many, or −1 when two share an equation (the column walks of
+/// scatter() and add_unsymmetric_plain() need each position once).
+std::ptrdiff_t order_by_equation(std::span<const std::int64_t> eq, std::span<std::uint16_t> order) {
+  std::size_t n_free = 0;
+  for (std::size_t a = 0; a < eq.size(); ++a) {
+    if (eq[a] < 0) continue;
+    std::size_t i = n_free++;
+    for (; i > 0 && eq[order[i - 1]] > eq[a]; --i) order[i] = order[i - 1];
+    order[i] = static_cast<std::uint16_t>(a);
+  }
+  for (std::size_t i = 1; i < n_free; ++i)
+    if (eq[order[i - 1]] == eq[order[i]]) return -1;
+  return static_cast<std::ptrdiff_t>(n_free);
+}
+
+}  // namespace
+
 // Positions are found in each column rather than cached: a cache of every element entry's
 // position costs ~14 kB per hexahedron (14 GB at a million elements). When no element DOF is
 // tied by an *EQUATION (the usual case), the element's equations are sorted once and each
@@ -155,14 +175,10 @@ void Assembler::scatter(std::span<const std::int64_t> el_dofs, std::span<const d
   std::array<std::uint16_t, kMaxLocal> order;  // local DOFs with an equation, ascending
   std::size_t n_free = 0;
   if (plain) {
-    for (std::size_t a = 0; a < n; ++a) {
-      eq[a] = dofs_.equation(el_dofs[a]);
-      if (eq[a] < 0) continue;
-      std::size_t i = n_free++;
-      for (; i > 0 && eq[order[i - 1]] > eq[a]; --i) order[i] = order[i - 1];
-      order[i] = static_cast<std::uint16_t>(a);
-    }
-    for (std::size_t i = 1; plain && i < n_free; ++i) plain = eq[order[i - 1]] != eq[order[i]];
+    for (std::size_t a = 0; a < n; ++a) eq[a] = dofs_.equation(el_dofs[a]);
+    const std::ptrdiff_t sorted = order_by_equation({eq.data(), n}, order);
+    plain = sorted >= 0;
+    n_free = plain ? static_cast<std::size_t>(sorted) : 0;
   }
   if (plain) {  // (a node listed twice, as in a collapsed brick, takes the general path below)
     if (n_free == 0) return;
@@ -439,17 +455,13 @@ bool Assembler::add_unsymmetric_plain(const LocalEquations& eqs, std::span<const
   if (n > kMaxLocal) return false;
   std::array<std::int64_t, kMaxLocal> eq;
   std::array<std::uint16_t, kMaxLocal> order;  // local unknowns with an equation, ascending
-  std::size_t n_free = 0;
   for (std::size_t a = 0; a < n; ++a) {
     if (eqs[a].size() > 1 || (eqs[a].size() == 1 && eqs[a][0].second != 1.0)) return false;
-    if (eqs[a].empty()) continue;
-    eq[a] = eqs[a][0].first;
-    std::size_t i = n_free++;
-    for (; i > 0 && eq[order[i - 1]] > eq[a]; --i) order[i] = order[i - 1];
-    order[i] = static_cast<std::uint16_t>(a);
+    eq[a] = eqs[a].empty() ? -1 : eqs[a][0].first;
   }
-  for (std::size_t i = 1; i < n_free; ++i)
-    if (eq[order[i - 1]] == eq[order[i]]) return false;
+  const std::ptrdiff_t sorted = order_by_equation({eq.data(), n}, order);
+  if (sorted < 0) return false;
+  const auto n_free = static_cast<std::size_t>(sorted);
   const std::int64_t* rows = tangent_.row_idx.data();
   double* values = tangent_.values.data();
   for (std::size_t j = 0; j < n_free; ++j) {  // column eq[b], rows up to it: the first j + 1 in order
